@@ -1,0 +1,23 @@
+/* Shared pieces of the subcommands. */
+#ifndef FS_CLI_H
+#define FS_CLI_H
+#include "scene.h"
+
+int cmd_render(int argc, char **argv);
+int cmd_info(int argc, char **argv);
+int cmd_convert(int argc, char **argv);
+int cmd_methods(int argc, char **argv);
+
+/* Prints "fluidsurf: MESSAGE" and returns code. */
+int cli_error(int code);
+/* Usage error: "fluidsurf: MESSAGE" + "try 'fluidsurf CMD --help'", returns 2. */
+int cli_usage(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A scene from SCENE.json, or a default scene around a particle file. */
+int cli_scene_from_arg(fs_scene *s, const char *arg);
+/* Parses a positive integer / float option value; 2 on error. */
+int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out);
+int cli_float(const char *cmd, const char *opt, const char *text, double lo, double hi, float *out);
+/* 1 when a and b name the same existing file. */
+int cli_same_file(const char *a, const char *b);
+
+#endif

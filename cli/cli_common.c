@@ -1,0 +1,67 @@
+#include "cli.h"
+#include "fs_error.h"
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+int cli_error(int code)
+{
+    fprintf(stderr, "fluidsurf: %s\n", fs_error_message());
+    return code;
+}
+
+int cli_usage(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "fluidsurf: ");
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, " (try 'fluidsurf %s --help')\n", cmd);
+    va_end(ap);
+    return FS_ERR_INPUT;
+}
+
+int cli_scene_from_arg(fs_scene *s, const char *arg)
+{
+    size_t n = strlen(arg);
+    if (n > 5 && !strcmp(arg + n - 5, ".json")) return fs_scene_load(s, arg);
+    fs_scene_defaults(s);
+    if (n >= sizeof s->source) return fs_fail(FS_ERR_INPUT, "%s: path too long", arg);
+    strcpy(s->source, arg);
+    unsigned long long h = 1469598103934665603ull;
+    for (const char *p = arg; *p; p++) h = (h ^ (unsigned char)*p) * 1099511628211ull;
+    s->hash = h;
+    return FS_OK;
+}
+
+int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = text ? strtol(text, &end, 10) : 0;
+    if (!text || end == text || *end || errno || v < lo || v > hi)
+        return cli_usage(cmd, "%s %s: expected an integer in [%d, %d]", opt, text ? text : "(missing)", lo, hi);
+    *out = (int)v;
+    return FS_OK;
+}
+
+int cli_float(const char *cmd, const char *opt, const char *text, double lo, double hi, float *out)
+{
+    char *end;
+    errno = 0;
+    double v = text ? strtod(text, &end) : 0;
+    if (!text || end == text || *end || errno || !isfinite(v) || v < lo || v > hi)
+        return cli_usage(cmd, "%s %s: expected a number in [%g, %g]", opt, text ? text : "(missing)", lo, hi);
+    *out = (float)v;
+    return FS_OK;
+}
+
+int cli_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}

@@ -1,0 +1,30 @@
+#include "cli.h"
+#include "method.h"
+#include <stdio.h>
+#include <string.h>
+
+int cmd_methods(int argc, char **argv)
+{
+    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        printf("usage: fluidsurf methods [NAME]\nLists every method (or one) with its paper and parameters;\n"
+               "set a parameter with --set NAME.PARAM=VALUE in any command that renders.\n");
+        return 0;
+    }
+    if (argc > 1 && !fs_method_find(argv[1])) return cli_usage("methods", "unknown method '%s'", argv[1]);
+    for (int i = 0; i < fs_method_count(); i++) {
+        const fs_method *m = fs_method_at(i);
+        if (argc > 1 && strcmp(argv[1], m->name)) continue;
+        printf("%s — %s\n  paper: %s; runs on: %s\n", m->name, m->description, m->paper[0] ? m->paper : "(ours)",
+               m->needs_gl ? "OpenGL 4.5" : "CPU");
+        for (int k = 0; k < m->nparams; k++) {
+            const fs_param_def *p = &m->params[k];
+            char def[64], range[96];
+            fs_param_format(p, p->def, def, sizeof def);
+            if (p->type == FS_PARAM_ENUM) snprintf(range, sizeof range, "%s", p->choices);
+            else if (p->type == FS_PARAM_BOOL) snprintf(range, sizeof range, "on|off");
+            else snprintf(range, sizeof range, "[%g, %g]", p->min, p->max);
+            printf("    %-14s = %-8s %-16s %s\n", p->name, def, range, p->help);
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,142 @@
+#include "cli.h"
+#include "frame_source.h"
+#include "fs_error.h"
+#include "gl_context.h"
+#include "method_params.h"
+#include "render_output.h"
+#include "shading.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: fluidsurf render SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]\n"
+    "  --method NAME        method to run (fluidsurf methods lists them); default reference\n"
+    "  --set M.P=V          set a method parameter (repeatable)\n"
+    "  -W N, -H N           image size in pixels (default: the scene's, else 512x512)\n"
+    "  --radius R           particle radius r (default: the scene's, else 0.025)\n"
+    "  --format FMT         particle file format (default: from the extension)\n"
+    "  --frame N            frame of a sequence scene (default: its first)\n"
+    "  --gl osmesa|egl      OpenGL context (default osmesa, or FLUIDSURF_GL)\n"
+    "  --timings            print per-stage times and the renderer they ran on\n"
+    "  -q                   no notes on stderr\n"
+    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage and the provenance.\n";
+
+int cmd_render(int argc, char **argv)
+{
+    const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL;
+    int w = 0, h = 0, frame = -1, timings = 0, quiet = 0, rc;
+    float radius = 0;
+    fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
+    static fs_scene scene;
+    const char *sets[FS_MAX_SETS];
+    int nsets = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
+        else if (!strcmp(a, "--method") && v) { mname = v; i++; }
+        else if (!strcmp(a, "-o") && v) { out = v; i++; }
+        else if (!strcmp(a, "--set") && v) {
+            if (nsets == FS_MAX_SETS) return cli_usage("render", "too many --set");
+            sets[nsets++] = v;
+            i++;
+        }
+        else if (!strcmp(a, "-W")) { if ((rc = cli_int("render", a, v, 1, 16384, &w))) return rc; i++; }
+        else if (!strcmp(a, "-H")) { if ((rc = cli_int("render", a, v, 1, 16384, &h))) return rc; i++; }
+        else if (!strcmp(a, "--frame")) { if ((rc = cli_int("render", a, v, 0, 100000000, &frame))) return rc; i++; }
+        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("render", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
+        else if (!strcmp(a, "--format") && v) { format = v; i++; }
+        else if (!strcmp(a, "--gl") && v) {
+            int k = fs_ctx_kind_from_name(v);
+            if (k != FS_CTX_OSMESA && k != FS_CTX_EGL) return cli_usage("render", "--gl %s: expected osmesa or egl", v);
+            ctx_kind = (fs_ctx_kind)k;
+            i++;
+        }
+        else if (!strcmp(a, "--timings")) timings = 1;
+        else if (!strcmp(a, "-q")) quiet = 1;
+        else if (a[0] == '-' && a[1]) return cli_usage("render", "unknown or incomplete option '%s'", a);
+        else if (!input) input = a;
+        else return cli_usage("render", "more than one input ('%s' and '%s')", input, a);
+    }
+    if (!input) return cli_usage("render", "no scene or particle file given");
+    if (!out) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
+    const fs_method *m = fs_method_find(mname);
+    if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
+    if ((rc = fs_check_render_path(out))) return cli_error(rc);
+    if (cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
+
+    if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
+    if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
+    for (int i = 0; i < nsets; i++)
+        if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);
+    if (w) scene.camera.width = w;
+    if (h) scene.camera.height = h;
+    if ((long)scene.camera.width * scene.camera.height > 16384L * 16384L / 4)
+        return cli_usage("render", "%dx%d pixels is too large", scene.camera.width, scene.camera.height);
+    double params[FS_MAX_PARAMS];
+    if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
+
+    int first, last;
+    fs_scene_frames(&scene, &first, &last);
+    if (frame >= 0) {
+        if (scene.frame_first < 0 && !scene.synth.shape) return cli_usage("render", "--frame: the scene is not a sequence");
+        first = frame;
+    }
+    fs_particles p;
+    if ((rc = fs_scene_load_frame(&scene, first, &p))) return cli_error(rc);
+    if (radius > 0) scene.radius = radius;
+    else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
+    else if (!scene.path[0] && !quiet)
+        fprintf(stderr, "fluidsurf: note: %s: using r = %g (set --radius)\n", input, scene.radius);
+    fs_scene_finish_camera(&scene, p.bmin, p.bmax);
+    fs_method_setup setup = {fs_scene_field(&scene), params};
+
+    fs_grid grid = {0};
+    fs_gl_context ctx = {0};
+    fs_gbuffer g = {0};
+    fs_stages st = {0};
+    void *self = NULL;
+    float *rgba = NULL;
+    double t0 = fs_now_ms();
+    if ((rc = fs_grid_build(&grid, &p, setup.field.H))) goto done;
+    fs_stages_add(&st, "grid", fs_now_ms() - t0);
+    if (m->needs_gl && (rc = fs_gl_context_create(&ctx, ctx_kind, 16, 16))) goto done;
+    rc = FS_ERR_RUNTIME;
+    if (!(self = m->create(&setup))) goto done;
+    t0 = fs_now_ms();
+    if ((rc = m->upload(self, &p, &grid))) goto done;
+    fs_stages_add(&st, "upload", fs_now_ms() - t0);
+    if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, 0))) goto done;
+    if ((rc = m->render(self, &scene.camera, &g, &st))) goto done;
+    rc = FS_ERR_RUNTIME;
+    if (!(rgba = malloc((size_t)g.w * g.h * 4 * sizeof(float)))) { fs_fail(rc, "out of memory"); goto done; }
+    t0 = fs_now_ms();
+    fs_shade(&scene, &scene.camera, &g, fs_scene_floor(&scene, &p), rgba);
+    fs_stages_add(&st, "shade", fs_now_ms() - t0);
+    fs_provenance prov;
+    fs_provenance_init(&prov, &scene, m->needs_gl ? ctx.renderer : NULL, m->needs_gl ? ctx.version : NULL);
+    char pstr[600], fstr[32];
+    fs_method_params_string(m, params, pstr, sizeof pstr);
+    fs_provenance_set(&prov, "method", m->name);
+    fs_provenance_set(&prov, "params", pstr);
+    snprintf(fstr, sizeof fstr, "%d", first);
+    fs_provenance_set(&prov, "frame", fstr);
+    rc = fs_write_render(out, &g, rgba, &prov);
+    if (!rc && timings) {
+        printf("stage,ms,renderer\n");
+        /* grid building and shading always run in C on the CPU */
+        for (int i = 0; i < st.n; i++) {
+            int cpu = !m->needs_gl || !strcmp(st.name[i], "grid") || !strcmp(st.name[i], "shade");
+            printf("%s,%.3f,%s\n", st.name[i], st.ms[i], cpu ? "CPU" : ctx.renderer);
+        }
+    }
+done:
+    if (rc) cli_error(rc);
+    if (self) m->destroy(self);
+    free(rgba);
+    fs_gbuffer_free(&g);
+    if (m->needs_gl) fs_gl_context_destroy(&ctx);
+    fs_grid_free(&grid);
+    fs_particles_free(&p);
+    return rc;
+}

@@ -1,0 +1,31 @@
+/* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
+#include "cli.h"
+#include <stdio.h>
+#include <string.h>
+
+static const struct { const char *name; int (*run)(int, char **); const char *what; } commands[] = {
+    {"render", cmd_render, "render one view of a scene or particle file with one method"},
+    {"info", cmd_info, "print a particle file's count, bounds, spacing and density"},
+    {"convert", cmd_convert, "convert a particle file to another format"},
+    {"methods", cmd_methods, "list the methods, their papers and parameters"},
+};
+
+static int usage(FILE *f)
+{
+    fprintf(f, "usage: fluidsurf COMMAND [options]   (fluidsurf COMMAND --help for details)\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        fprintf(f, "  %-9s %s\n", commands[i].name, commands[i].what);
+    fprintf(f, "\nexit status: 0 success, 1 runtime failure, 2 bad usage or input, 3 diff beyond thresholds\n");
+    return f == stdout ? 0 : 2;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) return usage(stderr);
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) return usage(stdout);
+    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", FS_VERSION, FS_GIT); return 0; }
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "fluidsurf: unknown command '%s'\n", argv[1]);
+    return usage(stderr);
+}

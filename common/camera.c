@@ -1,0 +1,116 @@
+#include "camera.h"
+#include <math.h>
+#include <string.h>
+
+static void sub(const float a[3], const float b[3], float o[3]) { o[0] = a[0] - b[0]; o[1] = a[1] - b[1]; o[2] = a[2] - b[2]; }
+static float dot(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static void cross(const float a[3], const float b[3], float o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+static void normalize(float v[3])
+{
+    float l = sqrtf(dot(v, v));
+    if (l > 0) { v[0] /= l; v[1] /= l; v[2] /= l; }
+}
+
+void fs_camera_basis(const fs_camera *c, float right[3], float up[3], float fwd[3])
+{
+    sub(c->target, c->eye, fwd);
+    normalize(fwd);
+    cross(fwd, c->up, right);
+    if (dot(right, right) < 1e-12f) { /* up parallel to the view: pick any perpendicular */
+        float alt[3] = {fabsf(fwd[0]) < 0.9f ? 1.0f : 0.0f, fabsf(fwd[0]) < 0.9f ? 0.0f : 1.0f, 0};
+        cross(fwd, alt, right);
+    }
+    normalize(right);
+    cross(right, fwd, up);
+}
+
+void fs_camera_view_matrix(const fs_camera *c, float m[16])
+{
+    float r[3], u[3], f[3];
+    fs_camera_basis(c, r, u, f);
+    float t[16] = {r[0], u[0], -f[0], 0, r[1], u[1], -f[1], 0, r[2], u[2], -f[2], 0,
+                   -dot(r, c->eye), -dot(u, c->eye), dot(f, c->eye), 1};
+    memcpy(m, t, sizeof t);
+}
+
+void fs_camera_proj_matrix(const fs_camera *c, float m[16])
+{
+    float t = 1.0f / tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
+    float n = c->znear, f = c->zfar;
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = t / a;
+    m[5] = t;
+    m[10] = (f + n) / (n - f);
+    m[11] = -1;
+    m[14] = 2 * f * n / (n - f);
+}
+
+void fs_camera_ray(const fs_camera *c, float px, float py, float dir[3])
+{
+    float r[3], u[3], f[3];
+    fs_camera_basis(c, r, u, f);
+    float t = tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
+    float x = (2.0f * px / c->width - 1.0f) * t * a, y = (1.0f - 2.0f * py / c->height) * t;
+    for (int i = 0; i < 3; i++) dir[i] = f[i] + x * r[i] + y * u[i];
+    normalize(dir);
+}
+
+void fs_camera_to_view_dir(const fs_camera *c, const float w[3], float v[3])
+{
+    float r[3], u[3], f[3];
+    fs_camera_basis(c, r, u, f);
+    float x = dot(w, r), y = dot(w, u), z = -dot(w, f);
+    v[0] = x; v[1] = y; v[2] = z;
+}
+
+void fs_camera_from_view_dir(const fs_camera *c, const float v[3], float w[3])
+{
+    float r[3], u[3], f[3];
+    fs_camera_basis(c, r, u, f);
+    for (int i = 0; i < 3; i++) w[i] = v[0] * r[i] + v[1] * u[i] - v[2] * f[i];
+}
+
+void fs_camera_frame_box(fs_camera *c, const float bmin[3], const float bmax[3], int up_axis)
+{
+    float ctr[3], ext[3];
+    for (int i = 0; i < 3; i++) { ctr[i] = 0.5f * (bmin[i] + bmax[i]); ext[i] = bmax[i] - bmin[i]; }
+    float radius = 0.5f * sqrtf(dot(ext, ext));
+    if (radius <= 0) radius = 1;
+    /* Front-right view, 30 degrees above the horizon, far enough that the
+     * bounding sphere fits the smaller field of view. */
+    int a = (up_axis + 1) % 3, b = (up_axis + 2) % 3;
+    float dir[3] = {0, 0, 0};
+    dir[up_axis] = 0.5f;
+    dir[b] = 0.866f * 0.94f;
+    dir[a] = 0.866f * 0.34f;
+    float half = c->fovy_deg * (float)M_PI / 360.0f;
+    float aspect = (float)c->width / c->height;
+    if (aspect < 1) half = atanf(tanf(half) * aspect);
+    float dist = radius / sinf(half) * 1.02f;
+    for (int i = 0; i < 3; i++) {
+        c->target[i] = ctr[i];
+        c->eye[i] = ctr[i] + dir[i] * dist;
+        c->up[i] = i == up_axis ? 1.0f : 0.0f;
+    }
+}
+
+void fs_camera_fit_clip(fs_camera *c, const float bmin[3], const float bmax[3])
+{
+    float r[3], u[3], f[3], nearest = INFINITY, farthest = 0;
+    fs_camera_basis(c, r, u, f);
+    for (int k = 0; k < 8; k++) {
+        float p[3] = {k & 1 ? bmax[0] : bmin[0], k & 2 ? bmax[1] : bmin[1], k & 4 ? bmax[2] : bmin[2]}, d[3];
+        sub(p, c->eye, d);
+        float z = dot(d, f);
+        if (z < nearest) nearest = z;
+        if (z > farthest) farthest = z;
+    }
+    float span = farthest > 0 ? farthest : 1;
+    c->zfar = farthest * 1.05f + 1e-3f;
+    c->znear = nearest > span * 1e-3f ? nearest * 0.95f : span * 1e-3f;
+}

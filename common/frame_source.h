@@ -1,0 +1,22 @@
+/* Where a frame's particles come from: a file, a frame of a printf pattern,
+ * or a synthetic scene. Shared by every command that renders. */
+#ifndef FS_FRAME_SOURCE_H
+#define FS_FRAME_SOURCE_H
+#include "particles.h"
+#include "scene.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Frames to render: [first, last]; a single frame gives first = last = 0
+ * (or the scene's frame for a pattern). */
+void fs_scene_frames(const fs_scene *s, int *first, int *last);
+/* Loads frame `frame` (ignored for a single file) and validates it. */
+int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
+/* Height of the checker floor: the particles' lowest point minus r, along up. */
+float fs_scene_floor(const fs_scene *s, const fs_particles *p);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,196 @@
+#include "gl_context.h"
+#include "fs_error.h"
+
+typedef void *(*fs_gl_getproc)(const char *name);
+int fs_gl_load(fs_gl_getproc getproc);
+int fs_gl_check_core45(char *renderer, int rsize, char *version, int vsize);
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/osmesa.h> /* pulls GL/gl.h: so this file must not include gl.h */
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const kind_names[] = {"osmesa", "egl", "glfw"};
+
+int fs_ctx_kind_from_name(const char *name)
+{
+    for (int i = 0; i < 3; i++)
+        if (!strcmp(name, kind_names[i])) return i;
+    return -1;
+}
+const char *fs_ctx_kind_name(fs_ctx_kind k) { return (unsigned)k < 3 ? kind_names[k] : "?"; }
+
+fs_ctx_kind fs_gl_context_default_kind(void)
+{
+    const char *e = getenv("FLUIDSURF_GL");
+    int k = e ? fs_ctx_kind_from_name(e) : -1;
+    return k == FS_CTX_EGL ? FS_CTX_EGL : FS_CTX_OSMESA;
+}
+
+/* ---- OSMesa ---- */
+static void *osmesa_getproc(const char *name) { return (void *)OSMesaGetProcAddress(name); }
+
+static int create_osmesa(fs_gl_context *c)
+{
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
+                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, NULL);
+    if (!ctx) return fs_fail(FS_ERR_RUNTIME, "OpenGL: OSMesa cannot create a 4.5 core context (Mesa too old?)");
+    c->extra = calloc((size_t)c->width * c->height, 4);
+    if (!c->extra) { OSMesaDestroyContext(ctx); return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory"); }
+    c->handle = ctx;
+    return FS_OK;
+}
+
+/* ---- EGL, loaded with dlopen so the binary never links libEGL/libGL ---- */
+typedef struct egl_fns {
+    void *lib;
+    EGLDisplay dpy;
+    PFNEGLGETPROCADDRESSPROC GetProcAddress;
+    PFNEGLMAKECURRENTPROC MakeCurrent;
+    PFNEGLDESTROYCONTEXTPROC DestroyContext;
+    PFNEGLTERMINATEPROC Terminate;
+} egl_fns;
+static egl_fns *egl_current;
+
+static void *egl_getproc(const char *name) { return (void *)egl_current->GetProcAddress(name); }
+
+static int create_egl(fs_gl_context *c)
+{
+    egl_fns *e = calloc(1, sizeof *e);
+    if (!e) return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory");
+    e->lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!e->lib) { free(e); return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: libEGL.so.1 not found"); }
+    e->GetProcAddress = (PFNEGLGETPROCADDRESSPROC)dlsym(e->lib, "eglGetProcAddress");
+    const char *why = "eglGetProcAddress missing";
+    if (!e->GetProcAddress) goto fail;
+#define LOAD(T, n) T n = (T)e->GetProcAddress(#n)
+    LOAD(PFNEGLQUERYDEVICESEXTPROC, eglQueryDevicesEXT);
+    LOAD(PFNEGLGETPLATFORMDISPLAYEXTPROC, eglGetPlatformDisplayEXT);
+    LOAD(PFNEGLINITIALIZEPROC, eglInitialize);
+    LOAD(PFNEGLBINDAPIPROC, eglBindAPI);
+    LOAD(PFNEGLCHOOSECONFIGPROC, eglChooseConfig);
+    LOAD(PFNEGLCREATECONTEXTPROC, eglCreateContext);
+#undef LOAD
+    e->MakeCurrent = (PFNEGLMAKECURRENTPROC)e->GetProcAddress("eglMakeCurrent");
+    e->DestroyContext = (PFNEGLDESTROYCONTEXTPROC)e->GetProcAddress("eglDestroyContext");
+    e->Terminate = (PFNEGLTERMINATEPROC)e->GetProcAddress("eglTerminate");
+    why = "device enumeration (EGL_EXT_device_enumeration) unavailable";
+    if (!eglQueryDevicesEXT || !eglGetPlatformDisplayEXT || !eglInitialize || !e->MakeCurrent) goto fail;
+    EGLDeviceEXT devs[8];
+    EGLint ndev = 0, major, minor;
+    why = "no EGL device";
+    if (!eglQueryDevicesEXT(8, devs, &ndev) || ndev < 1) goto fail;
+    /* Take the first device that initialises (the GPU comes first on NVIDIA). */
+    for (int i = 0; i < ndev && !e->dpy; i++) {
+        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devs[i], NULL);
+        if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) e->dpy = d;
+    }
+    why = "no EGL display initialises";
+    if (!e->dpy) goto fail;
+    const EGLint cfg_attr[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig cfg;
+    EGLint ncfg = 0;
+    why = "no OpenGL config";
+    if (!eglBindAPI(EGL_OPENGL_API) || !eglChooseConfig(e->dpy, cfg_attr, &cfg, 1, &ncfg) || ncfg < 1) goto fail;
+    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext ctx = eglCreateContext(e->dpy, cfg, EGL_NO_CONTEXT, ctx_attr);
+    why = "cannot create a 4.5 core context";
+    if (ctx == EGL_NO_CONTEXT) goto fail;
+    c->handle = ctx;
+    c->extra = e;
+    return FS_OK;
+fail:
+    if (e->dpy && e->Terminate) e->Terminate(e->dpy);
+    dlclose(e->lib);
+    free(e);
+    return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: %s", why);
+}
+
+/* ---- GLFW ---- */
+static void *glfw_getproc(const char *name) { return (void *)glfwGetProcAddress(name); }
+
+static int create_glfw(fs_gl_context *c)
+{
+    if (!glfwInit()) return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot initialise (no display?)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow *w = glfwCreateWindow(c->width, c->height, "fluidsurf", NULL, NULL);
+    if (!w) { glfwTerminate(); return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot create a 4.5 core window"); }
+    c->handle = w;
+    return FS_OK;
+}
+
+int fs_gl_context_make_current(fs_gl_context *c)
+{
+    int ok = 0;
+    fs_gl_getproc gp = NULL;
+    switch (c->kind) {
+    case FS_CTX_OSMESA:
+        ok = OSMesaMakeCurrent(c->handle, c->extra, GL_UNSIGNED_BYTE, c->width, c->height);
+        gp = osmesa_getproc;
+        break;
+    case FS_CTX_EGL: {
+        egl_fns *e = c->extra;
+        ok = e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, c->handle);
+        egl_current = e;
+        gp = egl_getproc;
+        break;
+    }
+    case FS_CTX_GLFW:
+        glfwMakeContextCurrent(c->handle);
+        ok = 1;
+        gp = glfw_getproc;
+        break;
+    }
+    if (!ok) return fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot make the %s context current", fs_ctx_kind_name(c->kind));
+    int rc = fs_gl_load(gp);
+    if (rc) return rc;
+    return fs_gl_check_core45(c->renderer, sizeof c->renderer, c->version, sizeof c->version);
+}
+
+int fs_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int height)
+{
+    memset(c, 0, sizeof *c);
+    c->kind = kind;
+    c->width = width > 0 ? width : 16;
+    c->height = height > 0 ? height : 16;
+    int rc = kind == FS_CTX_EGL ? create_egl(c) : kind == FS_CTX_GLFW ? create_glfw(c) : create_osmesa(c);
+    if (rc) return rc;
+    rc = fs_gl_context_make_current(c);
+    if (rc) { char msg[1024]; snprintf(msg, sizeof msg, "%s", fs_error_message()); fs_gl_context_destroy(c); return fs_fail(rc, "%s", msg); }
+    return FS_OK;
+}
+
+void fs_gl_context_destroy(fs_gl_context *c)
+{
+    if (!c->handle) return;
+    switch (c->kind) {
+    case FS_CTX_OSMESA:
+        OSMesaDestroyContext(c->handle);
+        free(c->extra);
+        break;
+    case FS_CTX_EGL: {
+        egl_fns *e = c->extra;
+        e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        e->DestroyContext(e->dpy, c->handle);
+        e->Terminate(e->dpy);
+        dlclose(e->lib);
+        free(e);
+        break;
+    }
+    case FS_CTX_GLFW:
+        glfwDestroyWindow(c->handle);
+        glfwTerminate();
+        break;
+    }
+    memset(c, 0, sizeof *c);
+}

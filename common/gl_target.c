@@ -1,0 +1,109 @@
+#include "gl_target.h"
+#include "fs_error.h"
+#include "gl.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+int fs_gl_target_create(fs_gl_target *t, int w, int h)
+{
+    memset(t, 0, sizeof *t);
+    t->w = w;
+    t->h = h;
+    const GLenum fmt[FS_TARGET_COUNT] = {GL_R32F, GL_RGBA32F, GL_R32F, GL_RGBA32F};
+    glCreateTextures(GL_TEXTURE_2D, FS_TARGET_COUNT, t->tex);
+    for (int i = 0; i < FS_TARGET_COUNT; i++) {
+        glTextureStorage2D(t->tex[i], 1, fmt[i], w, h);
+        glTextureParameteri(t->tex[i], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t->tex[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glCreateRenderbuffers(1, &t->zbuf);
+    glNamedRenderbufferStorage(t->zbuf, GL_DEPTH_COMPONENT32F, w, h);
+    glCreateFramebuffers(1, &t->fbo_surface);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT0, t->tex[FS_TARGET_DEPTH], 0);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT1, t->tex[FS_TARGET_NORMAL], 0);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT2, t->tex[FS_TARGET_COLOR], 0);
+    glNamedFramebufferRenderbuffer(t->fbo_surface, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->zbuf);
+    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(t->fbo_surface, 3, bufs);
+    glCreateFramebuffers(1, &t->fbo_thickness);
+    glNamedFramebufferTexture(t->fbo_thickness, GL_COLOR_ATTACHMENT0, t->tex[FS_TARGET_THICKNESS], 0);
+    if (glCheckNamedFramebufferStatus(t->fbo_surface, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+        glCheckNamedFramebufferStatus(t->fbo_thickness, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        fs_gl_target_destroy(t);
+        return fs_fail(FS_ERR_RUNTIME, "OpenGL: float render targets of %dx%d are incomplete", w, h);
+    }
+    return FS_OK;
+}
+
+void fs_gl_target_destroy(fs_gl_target *t)
+{
+    if (t->fbo_surface) glDeleteFramebuffers(1, &t->fbo_surface);
+    if (t->fbo_thickness) glDeleteFramebuffers(1, &t->fbo_thickness);
+    if (t->tex[0]) glDeleteTextures(FS_TARGET_COUNT, t->tex);
+    if (t->zbuf) glDeleteRenderbuffers(1, &t->zbuf);
+    memset(t, 0, sizeof *t);
+}
+
+void fs_gl_target_clear(fs_gl_target *t)
+{
+    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+    for (int i = 0; i < 3; i++) glClearNamedFramebufferfv(t->fbo_surface, GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(t->fbo_surface, GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(t->fbo_thickness, GL_COLOR, 0, zero);
+}
+
+static void read_flipped(unsigned tex, int comps, int w, int h, float *dst)
+{
+    size_t row = (size_t)w * comps;
+    float *tmp = malloc(row * h * sizeof(float));
+    if (!tmp) return;
+    glGetTextureImage(tex, 0, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, (GLsizei)(row * h * sizeof(float)), tmp);
+    for (int y = 0; y < h; y++) memcpy(dst + row * y, tmp + row * (h - 1 - y), row * sizeof(float));
+    free(tmp);
+}
+
+int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g)
+{
+    size_t n = (size_t)t->w * t->h;
+    float *nrm = malloc(4 * n * sizeof(float));
+    if (!nrm) return fs_fail(FS_ERR_RUNTIME, "out of memory reading the G-buffer");
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    read_flipped(t->tex[FS_TARGET_DEPTH], 1, t->w, t->h, g->depth);
+    read_flipped(t->tex[FS_TARGET_NORMAL], 4, t->w, t->h, nrm);
+    read_flipped(t->tex[FS_TARGET_THICKNESS], 1, t->w, t->h, g->thickness);
+    if (g->color) read_flipped(t->tex[FS_TARGET_COLOR], 4, t->w, t->h, g->color);
+    for (size_t i = 0; i < n; i++) {
+        float cov = nrm[4 * i + 3] > 0.5f ? 1.0f : 0.0f;
+        g->coverage[i] = cov;
+        float *o = g->normal + 3 * i, *s = nrm + 4 * i;
+        float l = sqrtf(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        for (int k = 0; k < 3; k++) o[k] = cov && l > 0 ? s[k] / l : 0.0f;
+        if (!cov) g->depth[i] = INFINITY;
+    }
+    free(nrm);
+    return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "OpenGL: error while reading the G-buffer");
+}
+
+size_t fs_gl_ssbo_chunk(size_t elem_bytes)
+{
+    GLint64 max = 0;
+    GLint v = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &v);
+    max = v > 0 ? v : (128 << 20);
+    if (max > (GLint64)128 << 20) max = (GLint64)128 << 20;
+    return (size_t)max / elem_bytes;
+}
+
+int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs)
+{
+    int nb = (int)((n + chunk - 1) / chunk);
+    if (nb > maxbufs) return -fs_fail(FS_ERR_INPUT, "%zu particles need %d buffers of %zu: too many", n, nb, chunk);
+    for (int b = 0; b < nb; b++) {
+        size_t cnt = n - b * chunk < chunk ? n - b * chunk : chunk;
+        glCreateBuffers(1, &bufs[b]);
+        glNamedBufferStorage(bufs[b], (GLsizeiptr)(cnt * 4 * sizeof(float)), vec4s + 4 * b * chunk, 0);
+    }
+    if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
+    return nb;
+}

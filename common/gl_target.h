@@ -1,0 +1,40 @@
+/* The G-buffer as GL render targets, shared by every GL method: float
+ * attachments for eye depth, view normal (w = coverage), thickness, optional
+ * colour, and a depth buffer; read back into the CPU fs_gbuffer. */
+#ifndef FS_GL_TARGET_H
+#define FS_GL_TARGET_H
+#include "gbuffer.h"
+#include <stddef.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { FS_TARGET_DEPTH = 0, FS_TARGET_NORMAL, FS_TARGET_THICKNESS, FS_TARGET_COLOR, FS_TARGET_COUNT };
+
+typedef struct fs_gl_target {
+    int w, h;
+    unsigned fbo_surface;   /* depth + normal (+ colour) with the depth buffer */
+    unsigned fbo_thickness; /* thickness alone, for additive passes */
+    unsigned tex[FS_TARGET_COUNT];
+    unsigned zbuf;
+} fs_gl_target;
+
+int fs_gl_target_create(fs_gl_target *t, int w, int h);
+void fs_gl_target_destroy(fs_gl_target *t);
+/* Clears everything: depth 1, eye depth 0, normal 0, thickness 0, colour 0. */
+void fs_gl_target_clear(fs_gl_target *t);
+/* Reads the targets into g (flipping rows: GL is bottom-up), sets coverage from
+ * the normal's w and depth = INFINITY where uncovered. */
+int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g);
+
+/* Uploads n vec4s as shader storage buffers of at most `chunk` elements each
+ * (the 128 MiB SSBO limit, DESIGN.md); returns the number of buffers made,
+ * or minus the error code (fs_fail set). */
+int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs);
+/* Elements of `elem_bytes` that fit one SSBO binding on this context. */
+size_t fs_gl_ssbo_chunk(size_t elem_bytes);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

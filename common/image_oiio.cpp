@@ -1,0 +1,166 @@
+// Thin OpenImageIO adapter behind image_io.h. Every write goes to a temporary
+// file next to the target (output_file.h), so the format is named explicitly:
+// the temporary name has no useful extension.
+#include "image_io.h"
+#include "fs_error.h"
+#include "output_file.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace OIIO;
+
+namespace {
+
+std::string first_line(const std::string &msg)
+{
+    std::string s = msg.substr(0, msg.find('\n'));
+    return s.empty() ? std::string("unknown OpenImageIO error") : s;
+}
+
+bool valid_image(const fs_image *img)
+{
+    return img && img->w > 0 && img->h > 0 && img->nch > 0 && img->pix;
+}
+
+// Opens the temporary file, writes pixels of type fmt, renames on success.
+int write_safely(const char *path, const char *format, const ImageSpec &spec, TypeDesc fmt,
+                 const void *pix)
+{
+    char tmp[4096];
+    int rc = fs_output_begin(path, tmp, sizeof tmp);
+    if (rc) return rc;
+    auto out = ImageOutput::create(format);
+    bool ok = out && out->open(tmp, spec) && out->write_image(fmt, pix) && out->close();
+    std::string err = ok ? std::string() : out ? out->geterror() : OIIO::geterror();
+    out.reset();
+    if (!ok) {
+        fs_output_end(path, tmp, 0);
+        return fs_fail(FS_ERR_RUNTIME, "%s: %s", path, first_line(err).c_str());
+    }
+    return fs_output_end(path, tmp, 1);
+}
+
+} // namespace
+
+extern "C" int fs_write_exr(const char *path, const fs_image *img, const fs_attr *attrs, int nattrs)
+{
+    if (!valid_image(img)) return fs_fail(FS_ERR_INPUT, "%s: no image to write", path);
+    ImageSpec spec(img->w, img->h, img->nch, TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    for (int c = 0; c < img->nch; c++) {
+        const char *n = img->chnames ? img->chnames[c] : nullptr;
+        spec.channelnames.push_back(n && *n ? n : "C" + std::to_string(c));
+    }
+    spec.alpha_channel = -1;
+    for (int c = 0; c < img->nch; c++)
+        if (spec.channelnames[c] == "A") spec.alpha_channel = c;
+    spec.attribute("compression", "zip");
+    for (int i = 0; i < nattrs; i++)
+        if (attrs[i].name && attrs[i].value) spec.attribute(attrs[i].name, attrs[i].value);
+    return write_safely(path, "openexr", spec, TypeDesc::FLOAT, img->pix);
+}
+
+extern "C" int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
+{
+    if (!pix || w <= 0 || h <= 0 || nch < 1 || nch > 4)
+        return fs_fail(FS_ERR_INPUT, "%s: no 8-bit image with 1 to 4 channels to write", path);
+    ImageSpec spec(w, h, nch, TypeDesc::UINT8);
+    spec.alpha_channel = (nch == 2 || nch == 4) ? nch - 1 : -1;
+    // Our alpha is straight (not premultiplied): keep OIIO from dividing by it.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    return write_safely(path, "png", spec, TypeDesc::UINT8, pix);
+}
+
+extern "C" int fs_write_png(const char *path, const fs_image *img)
+{
+    if (!valid_image(img)) return fs_fail(FS_ERR_INPUT, "%s: no image to write", path);
+    // Colour: first 3 channels sRGB-encoded (gray for 1-2 channel images); alpha linear.
+    int color = img->nch >= 3 ? 3 : 1, out_nch = img->nch >= 4 ? 4 : color;
+    size_t n = (size_t)img->w * img->h;
+    std::vector<unsigned char> buf;
+    try {
+        buf.resize(n * out_nch);
+    } catch (const std::bad_alloc &) {
+        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, img->w, img->h);
+    }
+    for (size_t i = 0; i < n; i++) {
+        const float *p = img->pix + i * img->nch;
+        for (int c = 0; c < color; c++) buf[i * out_nch + c] = fs_srgb_encode8(p[c]);
+        if (out_nch == 4) {
+            float a = p[3] > 0 ? (p[3] < 1 ? p[3] : 1) : 0; // also NaN -> 0
+            buf[i * out_nch + 3] = (unsigned char)(a * 255.0f + 0.5f);
+        }
+    }
+    return fs_write_png8(path, buf.data(), img->w, img->h, out_nch);
+}
+
+extern "C" int fs_read_image(const char *path, fs_image *img)
+{
+    std::memset(img, 0, sizeof *img);
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1); // pixels as stored
+    auto in = ImageInput::open(path, &config);
+    if (!in) return fs_fail(FS_ERR_INPUT, "%s: %s", path, first_line(OIIO::geterror()).c_str());
+    const ImageSpec &spec = in->spec();
+    int w = spec.width, h = spec.height, nch = spec.nchannels;
+    if (w <= 0 || h <= 0 || nch <= 0) return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
+    size_t count = (size_t)w * h * nch;
+    float *pix = (float *)std::malloc(count * sizeof(float));
+    const char **names = (const char **)std::calloc(nch, sizeof(char *));
+    bool ok = pix && names;
+    for (int c = 0; ok && c < nch; c++) {
+        std::string n = c < (int)spec.channelnames.size() ? spec.channelnames[c] : "C" + std::to_string(c);
+        char *copy = strdup(n.c_str());
+        names[c] = copy;
+        ok = copy != nullptr;
+    }
+    img->w = w;
+    img->h = h;
+    img->nch = nch;
+    img->chnames = names;
+    img->pix = pix;
+    if (!ok) {
+        fs_image_free(img);
+        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%dx%d image", path, w, h, nch);
+    }
+    if (!in->read_image(0, 0, 0, nch, TypeDesc::FLOAT, pix)) {
+        std::string err = in->geterror();
+        fs_image_free(img);
+        return fs_fail(FS_ERR_INPUT, "%s: %s", path, first_line(err).c_str());
+    }
+    return FS_OK;
+}
+
+extern "C" int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
+{
+    if (size > 0) buf[0] = 0;
+    auto in = ImageInput::open(path);
+    if (!in) {
+        fs_fail(FS_ERR_INPUT, "%s: %s", path, first_line(OIIO::geterror()).c_str());
+        return -1;
+    }
+    const ParamValue *p = in->spec().find_attribute(name, TypeDesc::STRING);
+    if (!p) return 0;
+    if (size > 0) {
+        std::strncpy(buf, p->get_string().c_str(), size - 1);
+        buf[size - 1] = 0;
+    }
+    return 1;
+}
+
+extern "C" void fs_image_free(fs_image *img)
+{
+    if (!img) return;
+    if (img->chnames)
+        for (int c = 0; c < img->nch; c++) std::free((void *)img->chnames[c]);
+    std::free((void *)img->chnames);
+    std::free(img->pix);
+    std::memset(img, 0, sizeof *img);
+}

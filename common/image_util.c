@@ -1,0 +1,26 @@
+/* Image helpers that need no OpenImageIO: sRGB transfer and channel lookup. */
+#include "image_io.h"
+#include <math.h>
+#include <string.h>
+
+unsigned char fs_srgb_encode8(float linear)
+{
+    double v = linear;
+    if (!(v > 0)) v = 0; /* also NaN */
+    if (v > 1) v = 1;
+    double e = v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
+    return (unsigned char)(e * 255.0 + 0.5);
+}
+
+float fs_srgb_decode8(unsigned char code)
+{
+    double e = code / 255.0;
+    return (float)(e <= 0.04045 ? e / 12.92 : pow((e + 0.055) / 1.055, 2.4));
+}
+
+int fs_image_channel(const fs_image *img, const char *name)
+{
+    for (int c = 0; c < img->nch; c++)
+        if (img->chnames && img->chnames[c] && strcmp(img->chnames[c], name) == 0) return c;
+    return -1;
+}

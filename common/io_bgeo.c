@@ -1,0 +1,240 @@
+/* Houdini classic BGEO (version 5, as partio writes it), gzip-compressed or not.
+ * Layout: "Bgeo" 'V' int32 version, 8 int32 counts, point attribute definitions,
+ * then per point x y z w (float32) and its attribute values, all big-endian.
+ * Primitive/detail data after the points is ignored on reading. */
+#include "particle_io.h"
+#include "fs_error.h"
+#include "output_file.h"
+#include <limits.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+enum { BGEO_FLOAT = 0, BGEO_INT = 1, BGEO_INDEX = 4, BGEO_VECTOR = 5 };
+
+/* Decompresses the whole file (gzread also passes plain files through). */
+static int load_gz(const char *path, unsigned char **out, size_t *out_size)
+{
+    gzFile gz = gzopen(path, "rb");
+    if (!gz) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
+    size_t cap = 1 << 20, size = 0;
+    unsigned char *buf = malloc(cap);
+    int rc = buf ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    while (!rc) {
+        if (cap - size < (1u << 20)) {
+            unsigned char *nb = cap > SIZE_MAX / 2 ? NULL : realloc(buf, cap * 2);
+            if (!nb) { rc = fs_fail(FS_ERR_RUNTIME, "%s: out of memory decompressing", path); break; }
+            buf = nb;
+            cap *= 2;
+        }
+        int got = gzread(gz, buf + size, 1u << 20);
+        int err;
+        const char *msg = gzerror(gz, &err);
+        if (got < 0 || (err != Z_OK && err != Z_STREAM_END)) {
+            rc = fs_fail(FS_ERR_INPUT, "%s: corrupt or truncated gzip data (%s)", path, msg);
+            break;
+        }
+        if (got == 0) break;
+        size += (size_t)got;
+    }
+    if (gzclose(gz) != Z_OK && !rc) rc = fs_fail(FS_ERR_INPUT, "%s: truncated gzip data", path);
+    if (rc) { free(buf); return rc; }
+    *out = buf;
+    *out_size = size;
+    return FS_OK;
+}
+
+typedef struct { const unsigned char *p; size_t left; } cursor;
+
+static int take(cursor *c, size_t n, const unsigned char **at)
+{
+    if (c->left < n) return 0;
+    *at = c->p;
+    c->p += n;
+    c->left -= n;
+    return 1;
+}
+static uint32_t be32(const unsigned char *b) { return (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3]; }
+static float be32f(const unsigned char *b) { uint32_t u = be32(b); float f; memcpy(&f, &u, 4); return f; }
+static int rd_u16(cursor *c, unsigned *v) { const unsigned char *b; if (!take(c, 2, &b)) return 0; *v = (unsigned)b[0] << 8 | b[1]; return 1; }
+static int rd_i32(cursor *c, int32_t *v) { const unsigned char *b; if (!take(c, 4, &b)) return 0; *v = (int32_t)be32(b); return 1; }
+
+typedef struct { char name[64]; unsigned size; int32_t type; size_t offset; } bgeo_attr;
+
+/* Finds an attribute of `size` 4-byte float components by any of the given names; -1 if none. */
+static int find_attr(const bgeo_attr *a, int n, unsigned size, int want_int, const char *const *names)
+{
+    for (int i = 0; i < n; i++) {
+        int is_int = a[i].type == BGEO_INT;
+        int is_float = a[i].type == BGEO_FLOAT || a[i].type == BGEO_VECTOR;
+        if (a[i].size != size || (want_int ? !is_int : !is_float)) continue;
+        for (const char *const *nm = names; *nm; nm++)
+            if (strcmp(a[i].name, *nm) == 0) return i;
+    }
+    return -1;
+}
+
+static int parse_bgeo(fs_particles *p, const char *path, const unsigned char *data, size_t size)
+{
+    cursor c = {data, size};
+    const unsigned char *b;
+    if (size >= 4 && data[0] == 0x7f && data[1] == 'N')
+        return fs_fail(FS_ERR_INPUT, "%s: Houdini 12+ binary JSON geometry is not supported, only classic BGEO V5", path);
+    if (!take(&c, 5, &b) || memcmp(b, "BgeoV", 5) != 0)
+        return fs_fail(FS_ERR_INPUT, "%s: not a BGEO file (bad magic)", path);
+    int32_t h[9]; /* version, points, prims, point groups, prim groups, point/vertex/prim/detail attribs */
+    for (int i = 0; i < 9; i++)
+        if (!rd_i32(&c, &h[i])) return fs_fail(FS_ERR_INPUT, "%s: truncated BGEO header", path);
+    if (h[0] != 5) return fs_fail(FS_ERR_INPUT, "%s: unsupported BGEO version %d (only 5)", path, (int)h[0]);
+    for (int i = 1; i < 9; i++)
+        if (h[i] < 0) return fs_fail(FS_ERR_INPUT, "%s: negative count %d in BGEO header", path, (int)h[i]);
+    int32_t npoints = h[1], nattr = h[5];
+    /* Vertex attribute definitions would sit between the point attributes and the points. */
+    if (h[6] != 0) return fs_fail(FS_ERR_INPUT, "%s: BGEO vertex attributes are not supported", path);
+    /* Each definition takes at least 8 bytes: reject counts the file cannot hold before allocating. */
+    if ((size_t)nattr > c.left / 8)
+        return fs_fail(FS_ERR_INPUT, "%s: BGEO header claims %d point attributes, more than the file holds", path, (int)nattr);
+
+    bgeo_attr *attrs = calloc(nattr ? (size_t)nattr : 1, sizeof *attrs);
+    if (!attrs) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    size_t record = 16; /* x y z w */
+    int rc = FS_OK;
+    for (int32_t i = 0; i < nattr && !rc; i++) {
+        unsigned len, asize;
+        const unsigned char *name;
+        if (!rd_u16(&c, &len) || !take(&c, len, &name) || !rd_u16(&c, &asize) || !rd_i32(&c, &attrs[i].type)) {
+            rc = fs_fail(FS_ERR_INPUT, "%s: truncated BGEO attribute definition %d", path, (int)i);
+            break;
+        }
+        size_t keep = len < sizeof attrs[i].name ? len : sizeof attrs[i].name - 1;
+        memcpy(attrs[i].name, name, keep);
+        attrs[i].size = asize;
+        attrs[i].offset = record;
+        int32_t type = attrs[i].type;
+        if (type == BGEO_FLOAT || type == BGEO_INT || type == BGEO_VECTOR) {
+            if (!take(&c, (size_t)asize * 4, &b)) /* default values */
+                rc = fs_fail(FS_ERR_INPUT, "%s: truncated defaults of BGEO attribute '%s'", path, attrs[i].name);
+        } else if (type == BGEO_INDEX) { /* string table: count, then u16-length strings */
+            int32_t nstr;
+            if (!rd_i32(&c, &nstr) || nstr < 0)
+                rc = fs_fail(FS_ERR_INPUT, "%s: bad string table of BGEO attribute '%s'", path, attrs[i].name);
+            for (int32_t k = 0; k < nstr && !rc; k++) {
+                unsigned slen;
+                if (!rd_u16(&c, &slen) || !take(&c, slen, &b))
+                    rc = fs_fail(FS_ERR_INPUT, "%s: truncated string table of BGEO attribute '%s'", path, attrs[i].name);
+            }
+        } else {
+            rc = fs_fail(FS_ERR_INPUT, "%s: BGEO attribute '%s' has unknown type %d", path, attrs[i].name, (int)type);
+        }
+        record += (size_t)asize * 4; /* every supported type stores 4 bytes per component */
+    }
+    if (!rc && (size_t)npoints > c.left / record)
+        rc = fs_fail(FS_ERR_INPUT, "%s: truncated BGEO: header says %d points of %zu bytes but only %zu bytes follow",
+                     path, (int)npoints, record, c.left);
+    static const char *const vel_names[] = {"v", "velocity", NULL}, *const cd_names[] = {"Cd", NULL},
+                             *const phase_names[] = {"phase", NULL}, *const pscale_names[] = {"pscale", NULL};
+    int av = rc ? -1 : find_attr(attrs, nattr, 3, 0, vel_names);
+    int ac = rc ? -1 : find_attr(attrs, nattr, 3, 0, cd_names);
+    int ap = rc ? -1 : find_attr(attrs, nattr, 1, 1, phase_names);
+    int ar = rc ? -1 : find_attr(attrs, nattr, 1, 0, pscale_names);
+    unsigned fields = (av >= 0 ? FS_HAS_VELOCITY : 0) | (ac >= 0 ? FS_HAS_COLOR : 0) | (ap >= 0 ? FS_HAS_PHASE : 0);
+    if (!rc) rc = fs_particles_alloc(p, (size_t)npoints, fields);
+    for (size_t i = 0; !rc && i < (size_t)npoints; i++) {
+        const unsigned char *r = c.p + i * record;
+        p->x[i] = be32f(r);
+        p->y[i] = be32f(r + 4);
+        p->z[i] = be32f(r + 8);
+        if (av >= 0) {
+            const unsigned char *v = r + attrs[av].offset;
+            p->vx[i] = be32f(v);
+            p->vy[i] = be32f(v + 4);
+            p->vz[i] = be32f(v + 8);
+        }
+        if (ac >= 0)
+            for (int k = 0; k < 3; k++) p->color[3 * i + k] = be32f(r + attrs[ac].offset + 4 * k);
+        if (ap >= 0) p->phase[i] = (int32_t)be32(r + attrs[ap].offset);
+        if (ar >= 0 && i == 0) p->radius = be32f(r + attrs[ar].offset);
+    }
+    free(attrs);
+    return rc;
+}
+
+int fs_read_bgeo(fs_particles *p, const char *path)
+{
+    unsigned char *data;
+    size_t size;
+    int rc = load_gz(path, &data, &size);
+    if (rc) return rc;
+    rc = parse_bgeo(p, path, data, size);
+    free(data);
+    if (rc) fs_particles_free(p);
+    return rc;
+}
+
+/* ---- writer ---- */
+
+static unsigned char *put32(unsigned char *b, uint32_t v)
+{
+    b[0] = (unsigned char)(v >> 24); b[1] = (unsigned char)(v >> 16);
+    b[2] = (unsigned char)(v >> 8); b[3] = (unsigned char)v;
+    return b + 4;
+}
+static unsigned char *putf(unsigned char *b, float f) { uint32_t u; memcpy(&u, &f, 4); return put32(b, u); }
+
+/* Appends one attribute definition: name, component count, type, default values. */
+static unsigned char *put_attr(unsigned char *b, const char *name, unsigned size, int type, float def)
+{
+    size_t len = strlen(name);
+    *b++ = (unsigned char)(len >> 8); *b++ = (unsigned char)len;
+    memcpy(b, name, len); b += len;
+    *b++ = 0; *b++ = (unsigned char)size;
+    b = put32(b, (uint32_t)type);
+    for (unsigned k = 0; k < size; k++) b = type == BGEO_INT ? put32(b, 0) : putf(b, def);
+    return b;
+}
+
+int fs_write_bgeo(const fs_particles *p, const char *path)
+{
+    if (p->n > INT32_MAX) return fs_fail(FS_ERR_INPUT, "%s: too many particles for BGEO (%zu)", path, p->n);
+    char tmp[4096];
+    int rc = fs_output_begin(path, tmp, sizeof tmp);
+    if (rc) return rc;
+    unsigned fields = fs_particles_fields(p);
+    int has_v = fields & FS_HAS_VELOCITY, has_c = fields & FS_HAS_COLOR, has_ph = fields & FS_HAS_PHASE;
+    int has_r = p->radius > 0.0f;
+    int nattr = !!has_v + !!has_c + !!has_ph + has_r;
+
+    unsigned char head[256], *b = head;
+    memcpy(b, "BgeoV", 5); b += 5;
+    int32_t counts[9] = {5, (int32_t)p->n, 0, 0, 0, nattr, 0, 0, 0};
+    for (int i = 0; i < 9; i++) b = put32(b, (uint32_t)counts[i]);
+    if (has_v) b = put_attr(b, "v", 3, BGEO_VECTOR, 0.0f);
+    if (has_c) b = put_attr(b, "Cd", 3, BGEO_FLOAT, 1.0f);
+    if (has_ph) b = put_attr(b, "phase", 1, BGEO_INT, 0.0f);
+    if (has_r) b = put_attr(b, "pscale", 1, BGEO_FLOAT, p->radius);
+
+    gzFile gz = gzopen(tmp, "wb6");
+    int ok = gz && gzwrite(gz, head, (unsigned)(b - head)) == (int)(b - head);
+    enum { CHUNK = 1024 };
+    unsigned char buf[CHUNK * 48], *w = buf; /* 48 bytes: the largest record */
+    for (size_t i = 0; ok && i < p->n; i++) {
+        w = putf(w, p->x[i]); w = putf(w, p->y[i]); w = putf(w, p->z[i]); w = putf(w, 1.0f);
+        if (has_v) { w = putf(w, p->vx[i]); w = putf(w, p->vy[i]); w = putf(w, p->vz[i]); }
+        if (has_c) for (int k = 0; k < 3; k++) w = putf(w, p->color[3 * i + k]);
+        if (has_ph) w = put32(w, (uint32_t)p->phase[i]);
+        if (has_r) w = putf(w, p->radius);
+        if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {
+            ok = gzwrite(gz, buf, (unsigned)(w - buf)) == (int)(w - buf);
+            w = buf;
+        }
+    }
+    static const unsigned char tail[2] = {0x00, 0xff}; /* "begin extra" / "end extra" markers */
+    ok = ok && gzwrite(gz, tail, 2) == 2;
+    if (gz && gzclose(gz) != Z_OK) ok = 0;
+    if (!ok) {
+        fs_output_end(path, tmp, 0);
+        return fs_fail(FS_ERR_RUNTIME, "%s: error writing BGEO data", path);
+    }
+    return fs_output_end(path, tmp, 1);
+}

@@ -1,0 +1,337 @@
+/* PLY point clouds: ascii, binary_little_endian and binary_big_endian readers,
+ * binary little-endian writer. Only the "vertex" element is read: x y z
+ * (float or double), optional vx vy vz, red green blue (8-bit /255, 16-bit
+ * /65535, float as is), phase; other properties (normals...) are skipped. */
+#include "particle_io.h"
+#include "fs_error.h"
+#include "output_file.h"
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+enum { T_NONE, T_I8, T_U8, T_I16, T_U16, T_I32, T_U32, T_F32, T_F64 };
+enum { FMT_ASCII, FMT_LE, FMT_BE };
+enum { MAX_ELEMS = 16, MAX_PROPS = 64 };
+
+typedef struct { char name[32]; int type, count_type; /* count_type != T_NONE: a list */ } ply_prop;
+typedef struct { char name[32]; unsigned long long count; int nprops; ply_prop props[MAX_PROPS]; } ply_elem;
+
+/* Buffered reader over a FILE: binary values and ascii tokens both come from here. */
+typedef struct { FILE *f; size_t pos, len; unsigned long long consumed; unsigned char buf[1 << 16]; } breader;
+
+static const unsigned char *br_need(breader *r, size_t n)
+{
+    if (r->len - r->pos < n) {
+        memmove(r->buf, r->buf + r->pos, r->len - r->pos);
+        r->len -= r->pos;
+        r->pos = 0;
+        r->len += fread(r->buf + r->len, 1, sizeof r->buf - r->len, r->f);
+        if (r->len < n) return NULL;
+    }
+    const unsigned char *at = r->buf + r->pos;
+    r->pos += n;
+    r->consumed += n;
+    return at;
+}
+
+/* Reads one header line (without "\n" or "\r\n"); 0 at end of file or on an over-long line. */
+static int br_line(breader *r, char *line, size_t size)
+{
+    size_t k = 0;
+    for (;;) {
+        const unsigned char *c = br_need(r, 1);
+        if (!c) return 0;
+        if (*c == '\n') break;
+        if (k + 1 >= size) return 0;
+        line[k++] = (char)*c;
+    }
+    if (k && line[k - 1] == '\r') k--;
+    line[k] = 0;
+    return 1;
+}
+
+/* Next byte without consuming it; -1 at end of file. */
+static int br_peek(breader *r)
+{
+    if (r->pos == r->len) {
+        r->pos = 0;
+        r->len = fread(r->buf, 1, sizeof r->buf, r->f);
+    }
+    return r->pos < r->len ? r->buf[r->pos] : -1;
+}
+
+static int is_space(int c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+/* Next whitespace-separated token; 0 at end of file or when it does not fit. */
+static int br_token(breader *r, char *tok, size_t size)
+{
+    int c;
+    while ((c = br_peek(r)) >= 0 && is_space(c)) br_need(r, 1);
+    if (c < 0) return 0;
+    size_t k = 0;
+    while ((c = br_peek(r)) >= 0 && !is_space(c)) {
+        if (k + 1 >= size) return 0; /* no valid number is this long */
+        tok[k++] = (char)c;
+        br_need(r, 1);
+    }
+    tok[k] = 0;
+    return 1;
+}
+
+static int type_from_name(const char *s)
+{
+    static const struct { const char *name; int type; } t[] = {
+        {"char", T_I8},   {"int8", T_I8},     {"uchar", T_U8},  {"uint8", T_U8},    {"short", T_I16},
+        {"int16", T_I16}, {"ushort", T_U16},  {"uint16", T_U16}, {"int", T_I32},    {"int32", T_I32},
+        {"uint", T_U32},  {"uint32", T_U32},  {"float", T_F32}, {"float32", T_F32}, {"double", T_F64},
+        {"float64", T_F64},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
+        if (strcmp(s, t[i].name) == 0) return t[i].type;
+    return T_NONE;
+}
+
+static size_t type_size(int t)
+{
+    static const size_t s[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
+    return s[t];
+}
+
+/* Reads one value of type t; 0 on end of data or (ascii) a malformed number. */
+static int read_value(breader *r, int fmt, int t, double *v)
+{
+    if (fmt == FMT_ASCII) {
+        char tok[64], *end;
+        if (!br_token(r, tok, sizeof tok)) return 0;
+        *v = strtod(tok, &end);
+        return end != tok && *end == 0;
+    }
+    size_t n = type_size(t);
+    const unsigned char *b = br_need(r, n);
+    if (!b) return 0;
+    unsigned char le[8];
+    for (size_t k = 0; k < n; k++) le[k] = fmt == FMT_LE ? b[k] : b[n - 1 - k];
+    uint64_t u = 0;
+    for (size_t k = 0; k < n; k++) u |= (uint64_t)le[k] << (8 * k);
+    switch (t) {
+    case T_I8: *v = (int8_t)u; break;
+    case T_U8: *v = (uint8_t)u; break;
+    case T_I16: *v = (int16_t)u; break;
+    case T_U16: *v = (uint16_t)u; break;
+    case T_I32: *v = (int32_t)u; break;
+    case T_U32: *v = (uint32_t)u; break;
+    case T_F32: { uint32_t w = (uint32_t)u; float f; memcpy(&f, &w, 4); *v = f; break; }
+    default: { double d; memcpy(&d, &u, 8); *v = d; break; }
+    }
+    return 1;
+}
+
+/* Reads one property (a scalar, or a list whose items are discarded). */
+static int read_prop(breader *r, int fmt, const ply_prop *pr, double *v)
+{
+    if (pr->count_type == T_NONE) return read_value(r, fmt, pr->type, v);
+    double cnt, item;
+    if (!read_value(r, fmt, pr->count_type, &cnt) || cnt < 0 || cnt > 1e9) return 0;
+    for (long k = 0; k < (long)cnt; k++)
+        if (!read_value(r, fmt, pr->type, &item)) return 0;
+    *v = 0;
+    return 1;
+}
+
+static int parse_header(breader *r, const char *path, int *fmt, ply_elem *el, int *nel, float *radius)
+{
+    char line[1024];
+    if (!br_line(r, line, sizeof line) || strcmp(line, "ply") != 0)
+        return fs_fail(FS_ERR_INPUT, "%s: not a PLY file (bad magic)", path);
+    *fmt = -1;
+    *nel = 0;
+    for (;;) {
+        if (!br_line(r, line, sizeof line)) return fs_fail(FS_ERR_INPUT, "%s: PLY header has no end_header", path);
+        char a[64], b[64], c[64], d[64];
+        int k = sscanf(line, "%63s %63s %63s %63s", a, b, c, d);
+        if (k <= 0) continue;
+        if (strcmp(a, "end_header") == 0) break;
+        if (strcmp(a, "comment") == 0) {
+            if (k >= 3 && strcmp(b, "radius") == 0) *radius = strtof(c, NULL);
+        } else if (strcmp(a, "obj_info") == 0) {
+        } else if (strcmp(a, "format") == 0 && k >= 2) {
+            *fmt = strcmp(b, "ascii") == 0 ? FMT_ASCII : strcmp(b, "binary_little_endian") == 0 ? FMT_LE
+                 : strcmp(b, "binary_big_endian") == 0 ? FMT_BE : -1;
+            if (*fmt < 0) return fs_fail(FS_ERR_INPUT, "%s: unknown PLY format '%s'", path, b);
+        } else if (strcmp(a, "element") == 0 && k == 3) {
+            if (*nel == MAX_ELEMS) return fs_fail(FS_ERR_INPUT, "%s: too many PLY elements", path);
+            ply_elem *e = &el[(*nel)++];
+            memset(e, 0, sizeof *e);
+            char *end;
+            errno = 0;
+            e->count = strtoull(c, &end, 10);
+            if (*end || c[0] == '-' || errno)
+                return fs_fail(FS_ERR_INPUT, "%s: bad PLY element count '%s'", path, c);
+            snprintf(e->name, sizeof e->name, "%s", b);
+        } else if (strcmp(a, "property") == 0 && k >= 3 && *nel > 0) {
+            ply_elem *e = &el[*nel - 1];
+            if (e->nprops == MAX_PROPS) return fs_fail(FS_ERR_INPUT, "%s: too many PLY properties", path);
+            ply_prop *pr = &e->props[e->nprops++];
+            int list = strcmp(b, "list") == 0;
+            if (list && k < 4) return fs_fail(FS_ERR_INPUT, "%s: bad PLY header line '%s'", path, line);
+            pr->count_type = list ? type_from_name(c) : T_NONE;
+            pr->type = type_from_name(list ? d : b);
+            if (list) sscanf(line, "%*s %*s %*s %*s %31s", pr->name);
+            else snprintf(pr->name, sizeof pr->name, "%s", c);
+            if (pr->type == T_NONE || (list && pr->count_type == T_NONE) || !pr->name[0])
+                return fs_fail(FS_ERR_INPUT, "%s: bad PLY property line '%s'", path, line);
+        } else {
+            return fs_fail(FS_ERR_INPUT, "%s: bad PLY header line '%s'", path, line);
+        }
+    }
+    if (*fmt < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY header has no format line", path);
+    return FS_OK;
+}
+
+static int find_prop(const ply_elem *e, const char *const *names)
+{
+    for (int i = 0; i < e->nprops; i++)
+        for (const char *const *n = names; *n; n++)
+            if (e->props[i].count_type == T_NONE && strcmp(e->props[i].name, *n) == 0) return i;
+    return -1;
+}
+
+/* Reads the vertex element into p; elements before it are skipped. */
+static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, int nel,
+                     unsigned long long file_size, fs_particles *p)
+{
+    int vi = -1;
+    for (int i = 0; i < nel && vi < 0; i++)
+        if (strcmp(el[i].name, "vertex") == 0) vi = i;
+    if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
+    const ply_elem *v = &el[vi];
+    static const char *const nx[] = {"x", NULL}, *const ny[] = {"y", NULL}, *const nz[] = {"z", NULL},
+        *const nvx[] = {"vx", NULL}, *const nvy[] = {"vy", NULL}, *const nvz[] = {"vz", NULL},
+        *const nr[] = {"red", "r", "diffuse_red", NULL}, *const ng[] = {"green", "g", "diffuse_green", NULL},
+        *const nb[] = {"blue", "b", "diffuse_blue", NULL}, *const nph[] = {"phase", NULL};
+    int ix = find_prop(v, nx), iy = find_prop(v, ny), iz = find_prop(v, nz);
+    int ivx = find_prop(v, nvx), ivy = find_prop(v, nvy), ivz = find_prop(v, nvz);
+    int ir = find_prop(v, nr), ig = find_prop(v, ng), ib = find_prop(v, nb), iph = find_prop(v, nph);
+    if (ix < 0 || iy < 0 || iz < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY vertex element lacks x, y or z", path);
+    int has_v = ivx >= 0 && ivy >= 0 && ivz >= 0, has_c = ir >= 0 && ig >= 0 && ib >= 0;
+
+    double val[MAX_PROPS];
+    for (int e = 0; e < vi; e++)
+        for (unsigned long long i = 0; i < el[e].count; i++)
+            for (int k = 0; k < el[e].nprops; k++)
+                if (!read_prop(r, fmt, &el[e].props[k], &val[k]))
+                    return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY element '%s'", path, el[e].name);
+
+    /* Refuse counts the rest of the file cannot hold before allocating for them. */
+    unsigned long long left = file_size > r->consumed ? file_size - r->consumed : 0, min_record = 0;
+    for (int k = 0; k < v->nprops; k++)
+        min_record += fmt == FMT_ASCII ? 2 : type_size(v->props[k].count_type ? v->props[k].count_type : v->props[k].type);
+    if (v->count > (fmt == FMT_ASCII ? left + 1 : left) / min_record)
+        return fs_fail(FS_ERR_INPUT, "%s: truncated PLY: header says %llu vertices but only %llu bytes of data follow",
+                       path, v->count, left);
+    int rc = fs_particles_alloc(p, (size_t)v->count, (has_v ? FS_HAS_VELOCITY : 0) | (has_c ? FS_HAS_COLOR : 0) |
+                                                         (iph >= 0 ? FS_HAS_PHASE : 0));
+    if (rc) return rc;
+    double cscale[3] = {1, 1, 1};
+    for (int k = 0; has_c && k < 3; k++) {
+        int t = v->props[k == 0 ? ir : k == 1 ? ig : ib].type;
+        cscale[k] = t == T_U8 ? 1.0 / 255 : t == T_U16 ? 1.0 / 65535 : 1.0;
+    }
+    for (size_t i = 0; i < p->n; i++) {
+        for (int k = 0; k < v->nprops; k++)
+            if (!read_prop(r, fmt, &v->props[k], &val[k]))
+                return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
+        p->x[i] = (float)val[ix]; p->y[i] = (float)val[iy]; p->z[i] = (float)val[iz];
+        if (has_v) { p->vx[i] = (float)val[ivx]; p->vy[i] = (float)val[ivy]; p->vz[i] = (float)val[ivz]; }
+        if (has_c) {
+            p->color[3 * i] = (float)(val[ir] * cscale[0]);
+            p->color[3 * i + 1] = (float)(val[ig] * cscale[1]);
+            p->color[3 * i + 2] = (float)(val[ib] * cscale[2]);
+        }
+        if (iph >= 0) {
+            if (!(val[iph] >= INT32_MIN && val[iph] <= INT32_MAX))
+                return fs_fail(FS_ERR_INPUT, "%s: PLY vertex %zu: phase out of range", path, i);
+            p->phase[i] = (int32_t)val[iph];
+        }
+    }
+    return FS_OK;
+}
+
+int fs_read_ply(fs_particles *p, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
+    struct stat st;
+    fstat(fileno(f), &st);
+    breader *r = calloc(1, sizeof *r);
+    ply_elem *el = calloc(MAX_ELEMS, sizeof *el);
+    int rc = r && el ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    int fmt = FMT_ASCII, nel = 0;
+    float radius = 0;
+    if (!rc) {
+        r->f = f;
+        rc = parse_header(r, path, &fmt, el, &nel, &radius);
+    }
+    if (!rc) rc = read_body(r, path, fmt, el, nel, (unsigned long long)st.st_size, p);
+    if (!rc) p->radius = radius > 0 ? radius : 0;
+    if (rc) fs_particles_free(p);
+    free(el);
+    free(r);
+    fclose(f);
+    return rc;
+}
+
+/* ---- writer: binary little endian ---- */
+
+static unsigned char *put_le32(unsigned char *b, float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, 4);
+    b[0] = (unsigned char)u; b[1] = (unsigned char)(u >> 8); b[2] = (unsigned char)(u >> 16); b[3] = (unsigned char)(u >> 24);
+    return b + 4;
+}
+
+int fs_write_ply(const fs_particles *p, const char *path)
+{
+    char tmp[4096];
+    int rc = fs_output_begin(path, tmp, sizeof tmp);
+    if (rc) return rc;
+    unsigned fields = fs_particles_fields(p);
+    int has_v = fields & FS_HAS_VELOCITY, has_c = fields & FS_HAS_COLOR, has_ph = fields & FS_HAS_PHASE;
+    FILE *f = fopen(tmp, "wb");
+    int ok = f != NULL;
+    if (ok) {
+        fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment written by fluidsurf\n");
+        if (p->radius > 0) fprintf(f, "comment radius %.9g\n", p->radius);
+        fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", p->n);
+        if (has_v) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n");
+        if (has_c) fprintf(f, "property float red\nproperty float green\nproperty float blue\n");
+        if (has_ph) fprintf(f, "property int phase\n");
+        fprintf(f, "end_header\n");
+    }
+    enum { CHUNK = 1024 };
+    unsigned char buf[CHUNK * 40], *w = buf; /* 40 bytes: the largest record */
+    for (size_t i = 0; ok && i < p->n; i++) {
+        w = put_le32(w, p->x[i]); w = put_le32(w, p->y[i]); w = put_le32(w, p->z[i]);
+        if (has_v) { w = put_le32(w, p->vx[i]); w = put_le32(w, p->vy[i]); w = put_le32(w, p->vz[i]); }
+        if (has_c) for (int k = 0; k < 3; k++) w = put_le32(w, p->color[3 * i + k]);
+        if (has_ph) {
+            uint32_t u = (uint32_t)p->phase[i];
+            w[0] = (unsigned char)u; w[1] = (unsigned char)(u >> 8); w[2] = (unsigned char)(u >> 16); w[3] = (unsigned char)(u >> 24);
+            w += 4;
+        }
+        if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {
+            ok = fwrite(buf, 1, (size_t)(w - buf), f) == (size_t)(w - buf);
+            w = buf;
+        }
+    }
+    if (f && fclose(f) != 0) ok = 0;
+    if (!ok) {
+        fs_output_end(path, tmp, 0);
+        return fs_fail(FS_ERR_RUNTIME, "%s: error writing PLY data", path);
+    }
+    return fs_output_end(path, tmp, 1);
+}

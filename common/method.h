@@ -1,0 +1,47 @@
+/* The method interface (DESIGN.md): a struct of function pointers, one static
+ * registry (registry.c). A method turns particles + camera into a G-buffer. */
+#ifndef FS_METHOD_H
+#define FS_METHOD_H
+#include "camera.h"
+#include "gbuffer.h"
+#include "grid.h"
+#include "kernels.h"
+#include "params.h"
+#include "particles.h"
+#include "timing.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What every method sees of the scene. */
+typedef struct fs_method_setup {
+    fs_field field;         /* r, V, kernel, H, iso */
+    const double *params;   /* values in the order of the method's param table */
+} fs_method_setup;
+
+typedef struct fs_method {
+    const char *name;
+    const char *description; /* one line */
+    const char *paper;       /* "" for our own */
+    int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
+    const fs_param_def *params;
+    int nparams;
+    /* Returns NULL on failure with fs_fail() set. */
+    void *(*create)(const fs_method_setup *setup);
+    /* Particles (and a grid built with cell >= field.H) stay valid until destroy. */
+    int (*upload)(void *self, const fs_particles *p, const fs_grid *g);
+    /* Renders one view into out (already sized to the camera); adds stage times. */
+    int (*render)(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t);
+    void (*destroy)(void *self);
+} fs_method;
+
+const fs_method *fs_method_find(const char *name);
+int fs_method_count(void);
+const fs_method *fs_method_at(int i);
+/* Index of a parameter in m->params, or -1. */
+int fs_method_param_index(const fs_method *m, const char *name);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,89 @@
+/* Particle set storage: allocation, bounds and validation (stats live in particle_stats.c). */
+#include "particles.h"
+#include "fs_error.h"
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* calloc that never returns NULL for a zero count, so "allocated" means non-NULL. */
+static void *zalloc(size_t n, size_t elem)
+{
+    if (n && elem > SIZE_MAX / n) return NULL;
+    return calloc(n ? n : 1, elem);
+}
+
+int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields)
+{
+    memset(p, 0, sizeof *p);
+    p->n = n;
+    p->x = zalloc(n, sizeof(float));
+    p->y = zalloc(n, sizeof(float));
+    p->z = zalloc(n, sizeof(float));
+    int ok = p->x && p->y && p->z;
+    if (fields & FS_HAS_VELOCITY) {
+        p->vx = zalloc(n, sizeof(float));
+        p->vy = zalloc(n, sizeof(float));
+        p->vz = zalloc(n, sizeof(float));
+        ok = ok && p->vx && p->vy && p->vz;
+    }
+    if (fields & FS_HAS_COLOR) {
+        p->color = n > SIZE_MAX / 3 ? NULL : zalloc(3 * n, sizeof(float));
+        ok = ok && p->color;
+    }
+    if (fields & FS_HAS_PHASE) {
+        p->phase = zalloc(n, sizeof(int32_t));
+        ok = ok && p->phase;
+    }
+    if (!ok) {
+        fs_particles_free(p);
+        return fs_fail(FS_ERR_RUNTIME, "out of memory allocating %zu particles", n);
+    }
+    return FS_OK;
+}
+
+void fs_particles_free(fs_particles *p)
+{
+    if (!p) return;
+    free(p->x); free(p->y); free(p->z);
+    free(p->vx); free(p->vy); free(p->vz);
+    free(p->color);
+    free(p->phase);
+    memset(p, 0, sizeof *p);
+}
+
+unsigned fs_particles_fields(const fs_particles *p)
+{
+    unsigned f = 0;
+    if (p->vx && p->vy && p->vz) f |= FS_HAS_VELOCITY;
+    if (p->color) f |= FS_HAS_COLOR;
+    if (p->phase) f |= FS_HAS_PHASE;
+    return f;
+}
+
+void fs_particles_bounds(fs_particles *p)
+{
+    if (p->n == 0) {
+        for (int k = 0; k < 3; k++) p->bmin[k] = p->bmax[k] = 0.0f;
+        return;
+    }
+    float lo[3] = {p->x[0], p->y[0], p->z[0]}, hi[3] = {p->x[0], p->y[0], p->z[0]};
+    for (size_t i = 1; i < p->n; i++) {
+        float v[3] = {p->x[i], p->y[i], p->z[i]};
+        for (int k = 0; k < 3; k++) {
+            if (v[k] < lo[k]) lo[k] = v[k];
+            if (v[k] > hi[k]) hi[k] = v[k];
+        }
+    }
+    memcpy(p->bmin, lo, sizeof lo);
+    memcpy(p->bmax, hi, sizeof hi);
+}
+
+int fs_particles_validate(const fs_particles *p, const char *name)
+{
+    if (p->n == 0 || !p->x) return fs_fail(FS_ERR_INPUT, "%s: no particles", name);
+    for (size_t i = 0; i < p->n; i++)
+        if (!isfinite(p->x[i]) || !isfinite(p->y[i]) || !isfinite(p->z[i]))
+            return fs_fail(FS_ERR_INPUT, "%s: particle %zu has a non-finite position", name, i);
+    return FS_OK;
+}

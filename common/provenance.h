@@ -1,0 +1,31 @@
+/* Provenance of every output (DESIGN.md): version, commit, renderer, threads,
+ * seed, scene hash, r, camera, method parameters, as name/value strings that
+ * become EXR header attributes, report lines or CSV comments. */
+#ifndef FS_PROVENANCE_H
+#define FS_PROVENANCE_H
+#include "image_io.h"
+#include "scene.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FS_PROV_MAX 40
+
+typedef struct fs_provenance {
+    int n;
+    fs_attr attr[FS_PROV_MAX];
+    char name[FS_PROV_MAX][48];
+    char value[FS_PROV_MAX][640];
+} fs_provenance;
+
+/* renderer: GL_RENDERER of the context that ran ("CPU" for CPU-only methods). */
+void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *renderer, const char *gl_version);
+/* Adds or replaces "fluidsurf:NAME". */
+void fs_provenance_set(fs_provenance *p, const char *name, const char *value);
+/* One line "# k=v; k=v ..." for CSV headers. */
+void fs_provenance_line(const fs_provenance *p, char *buf, int size);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

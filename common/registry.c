@@ -1,0 +1,28 @@
+/* The one static table of methods (libvmaf-style). Add a method here. */
+#include "method.h"
+#include <string.h>
+
+extern const fs_method fs_method_spheres;
+extern const fs_method fs_method_reference;
+
+static const fs_method *const methods[] = {
+    &fs_method_spheres,
+    &fs_method_reference,
+};
+
+int fs_method_count(void) { return (int)(sizeof methods / sizeof *methods); }
+const fs_method *fs_method_at(int i) { return i >= 0 && i < fs_method_count() ? methods[i] : NULL; }
+
+const fs_method *fs_method_find(const char *name)
+{
+    for (int i = 0; i < fs_method_count(); i++)
+        if (!strcmp(methods[i]->name, name)) return methods[i];
+    return NULL;
+}
+
+int fs_method_param_index(const fs_method *m, const char *name)
+{
+    for (int i = 0; i < m->nparams; i++)
+        if (!strcmp(m->params[i].name, name)) return i;
+    return -1;
+}

@@ -1,0 +1,20 @@
+/* Writes a rendered view: PNG (shaded image, sRGB) or EXR (RGBA + the G-buffer
+ * AOVs as named channels + provenance attributes), chosen by the extension. */
+#ifndef FS_RENDER_OUTPUT_H
+#define FS_RENDER_OUTPUT_H
+#include "gbuffer.h"
+#include "provenance.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* EXR channel names: R G B A depth normal.X normal.Y normal.Z thickness coverage
+ * (+ color.R color.G color.B color.A when the method wrote colour). */
+int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, const fs_provenance *prov);
+/* FS_ERR_INPUT unless path ends in .png or .exr. */
+int fs_check_render_path(const char *path);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

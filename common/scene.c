@@ -1,0 +1,329 @@
+#include "scene.h"
+#include "fs_error.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <stdlib.h>
+#include <cjson/cJSON.h>
+
+void fs_scene_defaults(fs_scene *s)
+{
+    memset(s, 0, sizeof *s);
+    s->frame_first = s->frame_last = -1;
+    s->synth.jitter = 0.1f;
+    s->synth.seed = 1;
+    s->radius = 0.025f;
+    s->volume_scale = 1.0f;
+    s->kernel = FS_KERNEL_CUBIC;
+    s->support_r = 4.0f;
+    s->iso = 0.6f;
+    s->up_axis = 1;
+    s->camera.fovy_deg = 40.0f;
+    s->camera.width = 512;
+    s->camera.height = 512;
+    float l[3] = {0.35f, 0.85f, 0.4f}, n = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    for (int i = 0; i < 3; i++) { s->light_dir[i] = l[i] / n; s->light_color[i] = 1.0f; }
+    s->ambient = 0.25f;
+    s->material = FS_MATERIAL_WATER;
+    s->material_color[0] = 0.55f; s->material_color[1] = 0.75f; s->material_color[2] = 0.95f;
+    s->ior = 1.333f;
+    /* Clear water tinted blue over a few tens of particle diameters. */
+    s->absorption[0] = 1.2f; s->absorption[1] = 0.45f; s->absorption[2] = 0.2f;
+    s->background = FS_BACKGROUND_CHECKER;
+}
+
+fs_field fs_scene_field(const fs_scene *s)
+{
+    fs_field f;
+    float d = 2.0f * s->radius;
+    f.r = s->radius;
+    f.volume = s->volume_scale * d * d * d;
+    f.kernel = s->kernel;
+    f.H = s->support_r * s->radius;
+    f.iso = s->iso;
+    return f;
+}
+
+int fs_scene_add_set(fs_scene *s, const char *set)
+{
+    const char *dot = strchr(set, '.'), *eq = strchr(set, '=');
+    if (!dot || !eq || dot > eq || dot == set || eq == dot + 1)
+        return fs_fail(FS_ERR_INPUT, "--set %s: expected METHOD.PARAM=VALUE", set);
+    if (s->nsets == FS_MAX_SETS) return fs_fail(FS_ERR_INPUT, "--set %s: too many settings", set);
+    if (strlen(set) >= sizeof s->sets[0]) return fs_fail(FS_ERR_INPUT, "--set %s: too long", set);
+    strcpy(s->sets[s->nsets++], set);
+    return FS_OK;
+}
+
+void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3])
+{
+    if (!s->has_camera) fs_camera_frame_box(&s->camera, bmin, bmax, s->up_axis);
+    /* Clip planes enclose the particles grown by the kernel support. */
+    float g = s->support_r * s->radius, lo[3], hi[3];
+    for (int i = 0; i < 3; i++) { lo[i] = bmin[i] - g; hi[i] = bmax[i] + g; }
+    fs_camera_fit_clip(&s->camera, lo, hi);
+}
+
+/* ---- JSON scene files ---- */
+
+typedef struct jctx { const char *path; int rc; } jctx;
+
+static int bad(jctx *c, const char *key, const char *what)
+{
+    if (!c->rc) c->rc = fs_fail(FS_ERR_INPUT, "%s: \"%s\" %s", c->path, key, what);
+    return c->rc;
+}
+
+static void check_keys(jctx *c, const cJSON *obj, const char *where, const char *const *allowed)
+{
+    for (const cJSON *it = obj->child; it && !c->rc; it = it->next) {
+        int ok = 0;
+        for (const char *const *a = allowed; *a; a++) ok |= !strcmp(*a, it->string);
+        if (!ok) {
+            char msg[256];
+            snprintf(msg, sizeof msg, "is not a known key%s%s", where ? " of " : "", where ? where : "");
+            bad(c, it->string, msg);
+        }
+    }
+}
+
+static void get_num(jctx *c, const cJSON *o, const char *key, float *out, double lo, double hi)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    if (!v || c->rc) return;
+    if (!cJSON_IsNumber(v)) { bad(c, key, "must be a number"); return; }
+    if (!(v->valuedouble >= lo && v->valuedouble <= hi)) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "must lie in [%g, %g], got %g", lo, hi, v->valuedouble);
+        bad(c, key, msg);
+        return;
+    }
+    *out = (float)v->valuedouble;
+}
+
+static void get_int(jctx *c, const cJSON *o, const char *key, int *out, int lo, int hi)
+{
+    float f = (float)*out;
+    get_num(c, o, key, &f, lo, hi);
+    if (!c->rc && f != floorf(f)) bad(c, key, "must be an integer");
+    *out = (int)f;
+}
+
+static void get_vec3(jctx *c, const cJSON *o, const char *key, float out[3])
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    if (!v || c->rc) return;
+    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3) { bad(c, key, "must be an array of 3 numbers"); return; }
+    for (int i = 0; i < 3; i++) {
+        const cJSON *e = cJSON_GetArrayItem(v, i);
+        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble)) { bad(c, key, "must be an array of 3 numbers"); return; }
+        out[i] = (float)e->valuedouble;
+    }
+}
+
+static const char *get_str(jctx *c, const cJSON *o, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    if (!v || c->rc) return NULL;
+    if (!cJSON_IsString(v)) { bad(c, key, "must be a string"); return NULL; }
+    return v->valuestring;
+}
+
+static void set_path(fs_scene *s, jctx *c, const char *file)
+{
+    const char *slash = strrchr(s->path, '/');
+    int n = file[0] != '/' && slash ? snprintf(s->source, sizeof s->source, "%.*s/%s", (int)(slash - s->path), s->path, file)
+                                   : snprintf(s->source, sizeof s->source, "%s", file);
+    if (n >= (int)sizeof s->source) bad(c, "particles", "path is too long");
+}
+
+static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
+{
+    if (cJSON_IsString(v)) { set_path(s, c, v->valuestring); return; }
+    if (!cJSON_IsObject(v)) { bad(c, "particles", "must be a file name or an object"); return; }
+    static const char *const keys[] = {"file", "format", "first", "last", "synthetic", "size", "jitter", "seed", "moving", NULL};
+    check_keys(c, v, "particles", keys);
+    const char *file = get_str(c, v, "file"), *fmt = get_str(c, v, "format"), *syn = get_str(c, v, "synthetic");
+    if (c->rc) return;
+    if (!!file == !!syn) { bad(c, "particles", "needs exactly one of \"file\" and \"synthetic\""); return; }
+    if (file) set_path(s, c, file);
+    if (fmt) snprintf(s->format, sizeof s->format, "%s", fmt);
+    if (syn) {
+        static const char *const shapes[] = {"", "slab", "sphere", "box"};
+        for (int i = 1; i < 4; i++)
+            if (!strcmp(syn, shapes[i])) s->synth.shape = (fs_synth_shape)i;
+        if (!s->synth.shape) { bad(c, "synthetic", "must be slab, sphere or box"); return; }
+        const cJSON *size = cJSON_GetObjectItemCaseSensitive(v, "size");
+        if (size) {
+            int n = cJSON_IsArray(size) ? cJSON_GetArraySize(size) : 0;
+            if (n < 1 || n > 3) { bad(c, "size", "must be an array of 1 to 3 particle counts"); return; }
+            for (int i = 0; i < n; i++) {
+                const cJSON *e = cJSON_GetArrayItem(size, i);
+                if (!cJSON_IsNumber(e) || e->valuedouble < 1 || e->valuedouble > 1000 || e->valuedouble != floor(e->valuedouble)) {
+                    bad(c, "size", "entries must be integers in [1, 1000]");
+                    return;
+                }
+                s->synth.size[i] = (int)e->valuedouble;
+            }
+        }
+        get_num(c, v, "jitter", &s->synth.jitter, 0, 1);
+        int seed = (int)s->synth.seed;
+        get_int(c, v, "seed", &seed, 0, 2147483647);
+        s->synth.seed = (unsigned)seed;
+        const cJSON *mv = cJSON_GetObjectItemCaseSensitive(v, "moving");
+        if (mv && !cJSON_IsBool(mv)) bad(c, "moving", "must be true or false");
+        s->synth.moving = mv && cJSON_IsTrue(mv);
+    }
+    const cJSON *first = cJSON_GetObjectItemCaseSensitive(v, "first"), *last = cJSON_GetObjectItemCaseSensitive(v, "last");
+    if (!!first != !!last) { bad(c, first ? "first" : "last", "needs both \"first\" and \"last\""); return; }
+    if (first) {
+        get_int(c, v, "first", &s->frame_first, 0, 100000000);
+        get_int(c, v, "last", &s->frame_last, 0, 100000000);
+        if (!c->rc && s->frame_last < s->frame_first) bad(c, "last", "is before \"first\"");
+    }
+}
+
+static void parse_camera(fs_scene *s, jctx *c, const cJSON *v)
+{
+    if (!cJSON_IsObject(v)) { bad(c, "camera", "must be an object"); return; }
+    static const char *const keys[] = {"eye", "target", "up", "fov", "width", "height", NULL};
+    check_keys(c, v, "camera", keys);
+    fs_camera *cam = &s->camera;
+    int has_eye = cJSON_GetObjectItemCaseSensitive(v, "eye") != NULL;
+    int has_target = cJSON_GetObjectItemCaseSensitive(v, "target") != NULL;
+    if (has_eye != has_target) { bad(c, has_eye ? "eye" : "target", "needs both \"eye\" and \"target\""); return; }
+    cam->up[0] = cam->up[2] = 0;
+    cam->up[1] = 1;
+    get_vec3(c, v, "eye", cam->eye);
+    get_vec3(c, v, "target", cam->target);
+    get_vec3(c, v, "up", cam->up);
+    get_num(c, v, "fov", &cam->fovy_deg, 1, 170);
+    get_int(c, v, "width", &cam->width, 1, 16384);
+    get_int(c, v, "height", &cam->height, 1, 16384);
+    s->has_camera = has_eye;
+    if (has_eye && !c->rc) {
+        float d[3] = {cam->target[0] - cam->eye[0], cam->target[1] - cam->eye[1], cam->target[2] - cam->eye[2]};
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-20f) bad(c, "target", "must differ from \"eye\"");
+    }
+}
+
+static void parse_material(fs_scene *s, jctx *c, const cJSON *v)
+{
+    const char *type = NULL;
+    if (cJSON_IsString(v)) type = v->valuestring;
+    else if (cJSON_IsObject(v)) {
+        static const char *const keys[] = {"type", "color", "ior", "absorption", NULL};
+        check_keys(c, v, "material", keys);
+        type = get_str(c, v, "type");
+        get_vec3(c, v, "color", s->material_color);
+        get_num(c, v, "ior", &s->ior, 1, 3);
+        get_vec3(c, v, "absorption", s->absorption);
+    } else { bad(c, "material", "must be \"water\", \"opaque\" or an object"); return; }
+    if (type && !strcmp(type, "opaque")) s->material = FS_MATERIAL_OPAQUE;
+    else if (type && strcmp(type, "water")) bad(c, "material", "type must be water or opaque");
+}
+
+static void parse_methods(fs_scene *s, jctx *c, const cJSON *v)
+{
+    if (!cJSON_IsObject(v)) { bad(c, "methods", "must be an object of method parameter objects"); return; }
+    for (const cJSON *m = v->child; m && !c->rc; m = m->next) {
+        if (!cJSON_IsObject(m)) { bad(c, m->string, "must be an object of parameters"); return; }
+        for (const cJSON *p = m->child; p && !c->rc; p = p->next) {
+            char set[200];
+            if (cJSON_IsNumber(p)) snprintf(set, sizeof set, "%s.%s=%.17g", m->string, p->string, p->valuedouble);
+            else if (cJSON_IsString(p)) snprintf(set, sizeof set, "%s.%s=%s", m->string, p->string, p->valuestring);
+            else if (cJSON_IsBool(p)) snprintf(set, sizeof set, "%s.%s=%s", m->string, p->string, cJSON_IsTrue(p) ? "on" : "off");
+            else { bad(c, p->string, "must be a number, a string or a boolean"); return; }
+            if (fs_scene_add_set(s, set)) c->rc = fs_fail(FS_ERR_INPUT, "%s: %s", c->path, fs_error_message());
+        }
+    }
+}
+
+static char *read_all(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *buf = NULL;
+    size_t cap = 0, n = 0;
+    for (;;) {
+        if (n + 4096 > cap) {
+            cap = (n + 4096) * 2;
+            char *nb = realloc(buf, cap);
+            if (!nb) { free(buf); fclose(f); return NULL; }
+            buf = nb;
+        }
+        size_t got = fread(buf + n, 1, cap - n - 1, f);
+        n += got;
+        if (!got) break;
+    }
+    fclose(f);
+    buf[n] = 0;
+    *len = n;
+    return buf;
+}
+
+int fs_scene_load(fs_scene *s, const char *path)
+{
+    fs_scene_defaults(s);
+    if (strlen(path) >= sizeof s->path) return fs_fail(FS_ERR_INPUT, "%s: path too long", path);
+    strcpy(s->path, path);
+    size_t len = 0;
+    char *text = read_all(path, &len);
+    if (!text) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
+    unsigned long long h = 1469598103934665603ull;
+    for (size_t i = 0; i < len; i++) h = (h ^ (unsigned char)text[i]) * 1099511628211ull;
+    s->hash = h;
+    if (!len) { free(text); return fs_fail(FS_ERR_INPUT, "%s: empty scene file", path); }
+    const char *err = NULL;
+    cJSON *root = cJSON_ParseWithOpts(text, &err, 1);
+    if (!root) {
+        int line = 1;
+        for (const char *p = text; err && p < err; p++) line += *p == '\n';
+        free(text);
+        return fs_fail(FS_ERR_INPUT, "%s: malformed JSON near line %d", path, line);
+    }
+    free(text);
+    jctx c = {path, 0};
+    if (!cJSON_IsObject(root)) bad(&c, "(top level)", "must be an object");
+    static const char *const keys[] = {"particles", "radius", "volume_scale", "kernel", "support", "iso", "up",
+                                       "camera", "light", "material", "background", "methods", "description", NULL};
+    if (!c.rc) check_keys(&c, root, NULL, keys);
+    const cJSON *v;
+    if (!c.rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(&c, "particles", "is missing");
+    else if (!c.rc) parse_particles(s, &c, v);
+    get_num(&c, root, "radius", &s->radius, 1e-9, 1e9);
+    get_num(&c, root, "volume_scale", &s->volume_scale, 1e-6, 1e6);
+    get_num(&c, root, "support", &s->support_r, 0.5, 64);
+    get_num(&c, root, "iso", &s->iso, 1e-6, 1e6);
+    const char *k = get_str(&c, root, "kernel");
+    if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0) bad(&c, "kernel", "must be cubic, poly6, spiky or wyvill");
+    const char *up = get_str(&c, root, "up");
+    if (up) {
+        if (strlen(up) == 1 && up[0] >= 'x' && up[0] <= 'z') s->up_axis = up[0] - 'x';
+        else bad(&c, "up", "must be x, y or z");
+    }
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "camera"))) parse_camera(s, &c, v);
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "light"))) {
+        static const char *const lkeys[] = {"direction", "color", "ambient", NULL};
+        if (!cJSON_IsObject(v)) bad(&c, "light", "must be an object");
+        else {
+            check_keys(&c, v, "light", lkeys);
+            get_vec3(&c, v, "direction", s->light_dir);
+            get_vec3(&c, v, "color", s->light_color);
+            get_num(&c, v, "ambient", &s->ambient, 0, 10);
+            float n = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] + s->light_dir[2] * s->light_dir[2]);
+            if (!c.rc && n < 1e-12f) bad(&c, "direction", "must not be zero");
+            else for (int i = 0; i < 3; i++) s->light_dir[i] /= n;
+        }
+    }
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "material"))) parse_material(s, &c, v);
+    const char *bg = get_str(&c, root, "background");
+    if (bg) {
+        if (!strcmp(bg, "sky")) s->background = FS_BACKGROUND_SKY;
+        else if (!strcmp(bg, "checker")) s->background = FS_BACKGROUND_CHECKER;
+        else bad(&c, "background", "must be sky or checker");
+    }
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "methods"))) parse_methods(s, &c, v);
+    cJSON_Delete(root);
+    return c.rc;
+}

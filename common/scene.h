@@ -1,0 +1,73 @@
+/* A scene (JSON, cJSON): particle source, units, field, camera, light,
+ * material, background and per-method parameters. Command-line flags and
+ * --set override it. See the scenes in experiments/scenes/ and README.md for the keys. */
+#ifndef FS_SCENE_H
+#define FS_SCENE_H
+#include "camera.h"
+#include "kernels.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FS_PATH_MAX 1024
+#define FS_MAX_SETS 64
+
+typedef enum { FS_MATERIAL_WATER = 0, FS_MATERIAL_OPAQUE } fs_material_kind;
+typedef enum { FS_BACKGROUND_SKY = 0, FS_BACKGROUND_CHECKER } fs_background_kind;
+typedef enum { FS_SYNTH_NONE = 0, FS_SYNTH_SLAB, FS_SYNTH_SPHERE, FS_SYNTH_BOX } fs_synth_shape;
+
+typedef struct fs_synthetic {
+    fs_synth_shape shape;
+    int size[3];        /* particles per axis (slab, box); size[0] = diameter in particles (sphere) */
+    float jitter;       /* amplitude in multiples of r (default 0.1) */
+    unsigned seed;
+    int moving;         /* sequence: 0 re-jitter per frame, 1 also translate */
+} fs_synthetic;
+
+typedef struct fs_scene {
+    char path[FS_PATH_MAX];      /* the scene file itself, "" when built from flags */
+    char source[FS_PATH_MAX];    /* particle file or printf pattern; "" for synthetic */
+    char format[16];             /* forced particle format, "" = from the extension */
+    int frame_first, frame_last; /* for a pattern source; -1 when not a sequence */
+    fs_synthetic synth;
+
+    float radius;        /* particle radius r */
+    float volume_scale;  /* V = volume_scale (2r)^3 */
+    fs_kernel kernel;
+    float support_r;     /* H in multiples of r */
+    float iso;
+    int up_axis;         /* 0 x, 1 y, 2 z */
+
+    fs_camera camera;
+    int has_camera;      /* 0: frame the particles */
+
+    float light_dir[3];  /* towards the light, world space */
+    float light_color[3];
+    float ambient;
+
+    fs_material_kind material;
+    float material_color[3]; /* opaque albedo, or water's tint */
+    float ior;
+    float absorption[3];     /* water, per scene unit of thickness */
+
+    fs_background_kind background;
+
+    int nsets;
+    char sets[FS_MAX_SETS][160]; /* "method.param=value", scene first, then --set */
+    unsigned long long hash;     /* FNV-1a of the scene file bytes, or of the flags */
+} fs_scene;
+
+void fs_scene_defaults(fs_scene *s);
+/* Reads a scene file; FS_ERR_INPUT with "path: what" on malformed JSON, bad keys
+ * or values. Relative particle paths are resolved against the scene's folder. */
+int fs_scene_load(fs_scene *s, const char *path);
+/* Appends "method.param=value" (FS_ERR_INPUT if the list is full or malformed). */
+int fs_scene_add_set(fs_scene *s, const char *set);
+fs_field fs_scene_field(const fs_scene *s);
+/* Completes the camera: frames the box when has_camera is 0, sets clip planes. */
+void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,177 @@
+#include "shader.h"
+#include "fs_error.h"
+#include "gl.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct fs_embedded_shader { const char *name; const char *text; };
+extern const struct fs_embedded_shader fs_embedded_shaders[];
+
+char *fs_shader_text(const char *name)
+{
+    const char *dir = getenv("FLUIDSURF_SHADER_DIR");
+    if (dir && *dir) {
+        char path[2048];
+        snprintf(path, sizeof path, "%s/%s", dir, name);
+        FILE *f = fopen(path, "rb");
+        if (!f) { fs_fail(FS_ERR_RUNTIME, "%s: cannot open shader (FLUIDSURF_SHADER_DIR)", path); return NULL; }
+        fseek(f, 0, SEEK_END);
+        long n = ftell(f);
+        rewind(f);
+        char *s = malloc(n + 1);
+        if (s && fread(s, 1, n, f) == (size_t)n) s[n] = 0;
+        else { free(s); s = NULL; fs_fail(FS_ERR_RUNTIME, "%s: cannot read shader", path); }
+        fclose(f);
+        return s;
+    }
+    for (const struct fs_embedded_shader *e = fs_embedded_shaders; e->name; e++)
+        if (!strcmp(e->name, name)) return strdup(e->text);
+    fs_fail(FS_ERR_RUNTIME, "shaders/%s: no such shader embedded", name);
+    return NULL;
+}
+
+/* Growing string. */
+typedef struct sbuf { char *s; size_t n, cap; } sbuf;
+static void sb_add(sbuf *b, const char *s, size_t n)
+{
+    if (b->n + n + 1 > b->cap) {
+        b->cap = (b->n + n + 1) * 2;
+        b->s = realloc(b->s, b->cap);
+    }
+    memcpy(b->s + b->n, s, n);
+    b->n += n;
+    b->s[b->n] = 0;
+}
+static void sb_printf(sbuf *b, const char *fmt, int a, int c)
+{
+    char tmp[64];
+    int n = snprintf(tmp, sizeof tmp, fmt, a, c);
+    sb_add(b, tmp, n);
+}
+
+#define MAX_FILES 32
+typedef struct srcmap { int n; char name[MAX_FILES][256]; } srcmap;
+
+/* Appends file `name` with includes expanded; its source-string number is its
+ * index in map. defines go after the #version line of the top file. */
+static int expand(sbuf *out, const char *name, srcmap *map, const char *defines, int depth)
+{
+    if (depth > 8 || map->n == MAX_FILES)
+        return fs_fail(FS_ERR_RUNTIME, "shaders/%s: includes nested too deep", name);
+    char *text = fs_shader_text(name);
+    if (!text) return FS_ERR_RUNTIME;
+    int id = map->n++;
+    snprintf(map->name[id], sizeof map->name[id], "%s", name);
+    int line = 1;
+    if (depth) sb_printf(out, "#line 1 %d\n", 1, id);
+    for (char *p = text; *p;) {
+        char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        char inc[256];
+        if (sscanf(p, " #include \"%255[^\"]\"", inc) == 1) {
+            int rc = expand(out, inc, map, NULL, depth + 1);
+            if (rc) { free(text); return rc; }
+            sb_printf(out, "#line %d %d\n", line + 1, id);
+        } else {
+            sb_add(out, p, len);
+            sb_add(out, "\n", 1);
+            if (!depth && !strncmp(p, "#version", 8)) {
+                if (defines) {
+                    for (const char *d = defines; *d;) {
+                        const char *e = strchr(d, '\n');
+                        size_t dl = e ? (size_t)(e - d) : strlen(d);
+                        sb_add(out, "#define ", 8);
+                        sb_add(out, d, dl);
+                        sb_add(out, "\n", 1);
+                        d += dl + (e ? 1 : 0);
+                    }
+                }
+                sb_printf(out, "#line %d %d\n", line + 1, id);
+            }
+        }
+        line++;
+        p += len + (nl ? 1 : 0);
+    }
+    free(text);
+    return FS_OK;
+}
+
+/* Rewrites the first error line of a driver log ("0:12(3): error: ..." from
+ * Mesa, "0(12) : error ..." from NVIDIA) as "shaders/FILE:LINE: message". */
+static void report(const char *what, const char *log, const srcmap *map)
+{
+    const char *p = log;
+    while (*p) {
+        int file = 0, line = 0, used = 0;
+        if ((sscanf(p, "%d:%d(%*d): %n", &file, &line, &used) == 2 && used) ||
+            (sscanf(p, "%d(%d) : %n", &file, &line, &used) == 2 && used)) {
+            const char *end = strchr(p, '\n');
+            int len = end ? (int)(end - p - used) : (int)strlen(p + used);
+            const char *fname = file >= 0 && file < map->n ? map->name[file] : "?";
+            fs_fail(FS_ERR_RUNTIME, "shaders/%s:%d: %.*s", fname, line, len, p + used);
+            return;
+        }
+        const char *nl = strchr(p, '\n');
+        if (!nl) break;
+        p = nl + 1;
+    }
+    const char *nl = strchr(log, '\n');
+    fs_fail(FS_ERR_RUNTIME, "%s: %.*s", what, nl ? (int)(nl - log) : (int)strlen(log), log);
+}
+
+static GLenum stage_type(const char *name)
+{
+    if (strstr(name, ".vert.")) return GL_VERTEX_SHADER;
+    if (strstr(name, ".geom.")) return GL_GEOMETRY_SHADER;
+    if (strstr(name, ".frag.")) return GL_FRAGMENT_SHADER;
+    if (strstr(name, ".comp.")) return GL_COMPUTE_SHADER;
+    return 0;
+}
+
+unsigned fs_program_build(const char *const *stages, const char *defines)
+{
+    GLuint prog = glCreateProgram();
+    GLuint sh[8];
+    int nsh = 0;
+    char log[4096];
+    srcmap map;
+    for (int i = 0; stages[i] && nsh < 8; i++) {
+        GLenum type = stage_type(stages[i]);
+        if (!type) { fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", stages[i]); goto fail; }
+        sbuf src = {0};
+        map.n = 0;
+        int rc = expand(&src, stages[i], &map, defines, 0);
+        if (rc) { free(src.s); goto fail; }
+        GLuint s = glCreateShader(type);
+        const char *text = src.s;
+        glShaderSource(s, 1, &text, NULL);
+        glCompileShader(s);
+        free(src.s);
+        sh[nsh++] = s;
+        GLint ok = 0;
+        glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+        if (!ok) {
+            glGetShaderInfoLog(s, sizeof log, NULL, log);
+            report(stages[i], log, &map);
+            goto fail;
+        }
+        glAttachShader(prog, s);
+    }
+    glLinkProgram(prog);
+    GLint ok = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        glGetProgramInfoLog(prog, sizeof log, NULL, log);
+        char *nl = strchr(log, '\n');
+        if (nl) *nl = 0;
+        fs_fail(FS_ERR_RUNTIME, "shaders/%s: link error: %s", stages[0], log);
+        goto fail;
+    }
+    for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
+    return prog;
+fail:
+    for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
+    glDeleteProgram(prog);
+    return 0;
+}

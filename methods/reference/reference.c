@@ -1,0 +1,377 @@
+/* reference: exact CPU ray caster of the SPH iso-surface phi = iso (DESIGN.md,
+ * References). Per pixel the ray walks the neighbour grid cell by cell (3D-DDA);
+ * empty cells are skipped, inside a non-empty cell the ray advances by steps
+ * proven not to cross the iso-surface, a sign change is bisected to 1e-4 r and
+ * the normal is the analytic -grad phi. See README.md for why the steps are safe. */
+#include "fs_error.h"
+#include "method.h"
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const fs_param_def params[] = {
+    {"step_min", FS_PARAM_FLOAT, 0.02, 1e-4, 1.0, NULL,
+     "smallest march step, multiples of r; crossing intervals shorter than this can be missed"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "march past the first hit and sum every inside interval (on/off)"},
+    {"max_layers", FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
+};
+enum { P_STEP_MIN, P_THICKNESS, P_MAX_LAYERS };
+
+typedef struct reference {
+    fs_field f;
+    float step_min;      /* scene units */
+    int thickness, max_layers;
+    const fs_grid *g;
+    uint32_t *count27;   /* particles in the 27 cells around each cell */
+    uint32_t max27;
+    float lip_unit;      /* V max|W'|: the cell's Lipschitz bound is lip_unit * count27 */
+} reference;
+
+/* A particle near the current cell's stretch of the ray, relative to the
+ * stretch's start point o: the ray reaches its foot at local t = a, b is the
+ * squared distance from the ray line, rel = p - o. */
+typedef struct near_particle { float a, b, rel[3]; } near_particle;
+
+typedef struct stretch {
+    const reference *R;
+    const near_particle *np;
+    int n;
+    float d[3];
+} stretch;
+
+typedef struct ray_result {
+    int hit;
+    float t;        /* ray distance of the first hit */
+    float n[3];     /* world normal, -grad phi normalised */
+    float thick;
+} ray_result;
+
+static void destroy(void *self)
+{
+    reference *R = self;
+    if (!R) return;
+    free(R->count27);
+    free(R);
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    const fs_field *f = &setup->field;
+    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
+        fs_fail(FS_ERR_INPUT, "reference: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume, f->iso);
+        return NULL;
+    }
+    reference *R = calloc(1, sizeof *R);
+    if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
+    R->f = *f;
+    double v[3];
+    for (int i = 0; i < 3; i++) v[i] = setup->params ? setup->params[i] : params[i].def;
+    R->step_min = (float)v[P_STEP_MIN] * f->r;
+    R->thickness = v[P_THICKNESS] != 0;
+    R->max_layers = (int)v[P_MAX_LAYERS];
+    R->lip_unit = f->volume * fs_kernel_max_dw(f->kernel, f->H);
+    return R;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    reference *R = self;
+    /* With cell >= H every particle within H of a point of cell c lies in the
+     * 27 cells around c: that is what makes the per-cell bound valid. */
+    if (!(g->cell >= R->f.H))
+        return fs_fail(FS_ERR_INPUT, "reference: grid cell %g is smaller than the kernel support H = %g", g->cell, R->f.H);
+    if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
+    free(R->count27);
+    R->count27 = malloc(g->ncells * sizeof *R->count27);
+    if (!R->count27) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
+    R->g = g;
+    uint32_t mx = 0;
+    int nk = g->dim[2];
+#pragma omp parallel for reduction(max : mx) schedule(static)
+    for (int k = 0; k < nk; k++)
+        for (int j = 0; j < g->dim[1]; j++)
+            for (int i = 0; i < g->dim[0]; i++) {
+                uint32_t c = 0;
+                int i0 = i > 0 ? i - 1 : 0, i1 = i < g->dim[0] - 1 ? i + 1 : i;
+                for (int kk = k - 1; kk <= k + 1; kk++)
+                    for (int jj = j - 1; jj <= j + 1; jj++) {
+                        if (kk < 0 || jj < 0 || kk >= g->dim[2] || jj >= g->dim[1]) continue;
+                        size_t row = fs_grid_cell_id(g, 0, jj, kk);
+                        c += g->start[row + i1 + 1] - g->start[row + i0];
+                    }
+                R->count27[fs_grid_cell_id(g, i, j, k)] = c;
+                if (c > mx) mx = c;
+            }
+    R->max27 = mx;
+    return FS_OK;
+}
+
+/* phi at local ray parameter t. */
+static float phi_at(const stretch *S, float t)
+{
+    const fs_field *f = &S->R->f;
+    float H2 = f->H * f->H, sum = 0;
+    for (int j = 0; j < S->n; j++) {
+        float u = t - S->np[j].a, d2 = S->np[j].b + u * u;
+        if (d2 < H2) sum += fs_kernel_w(f->kernel, sqrtf(d2), f->H);
+    }
+    return sum * f->volume;
+}
+
+/* Every kernel decreases with distance, so on the stretch [t, t+s] each particle
+ * contributes at most W(its distance to the stretch) and at least W(its
+ * distance to the farther end). upper = 1 gives the upper bound of phi there. */
+static float phi_bound(const stretch *S, float t, float s, int upper)
+{
+    const fs_field *f = &S->R->f;
+    float H2 = f->H * f->H, sum = 0;
+    for (int j = 0; j < S->n; j++) {
+        float u = S->np[j].a - t, e; /* foot relative to t */
+        if (upper) e = u < 0 ? u : (u > s ? u - s : 0);
+        else e = fmaxf(fabsf(u), fabsf(u - s));
+        float d2 = S->np[j].b + e * e;
+        if (d2 < H2) sum += fs_kernel_w(f->kernel, sqrtf(d2), f->H);
+    }
+    return sum * f->volume;
+}
+
+/* grad phi at local t (world axes). */
+static void grad_at(const stretch *S, float t, float gr[3])
+{
+    const fs_field *f = &S->R->f;
+    float H2 = f->H * f->H;
+    gr[0] = gr[1] = gr[2] = 0;
+    for (int j = 0; j < S->n; j++) {
+        float x[3] = {t * S->d[0] - S->np[j].rel[0], t * S->d[1] - S->np[j].rel[1], t * S->d[2] - S->np[j].rel[2]};
+        float d2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+        if (d2 >= H2 || d2 <= 0) continue;
+        float d = sqrtf(d2), w = fs_kernel_dw(f->kernel, d, f->H) / d;
+        for (int a = 0; a < 3; a++) gr[a] += w * x[a];
+    }
+    for (int a = 0; a < 3; a++) gr[a] *= f->volume;
+}
+
+/* Collects the particles that can reach the stretch o + t d, t in [0, len]:
+ * all lie in the 27 cells around cell c because cell >= H. */
+static int gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_particle *out)
+{
+    const fs_grid *g = R->g;
+    float H2 = R->f.H * R->f.H;
+    int n = 0;
+    int i0 = c[0] > 0 ? c[0] - 1 : 0, i1 = c[0] < g->dim[0] - 1 ? c[0] + 1 : c[0];
+    for (int k = c[2] - 1; k <= c[2] + 1; k++)
+        for (int j = c[1] - 1; j <= c[1] + 1; j++) {
+            if (k < 0 || j < 0 || k >= g->dim[2] || j >= g->dim[1]) continue;
+            size_t row = fs_grid_cell_id(g, 0, j, k);
+            for (uint32_t s = g->start[row + i0]; s < g->start[row + i1 + 1]; s++) {
+                const float *q = g->pos4 + 4 * (size_t)s;
+                float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
+                float a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
+                float b = fmaxf(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a, 0.0f);
+                if (b >= H2) continue;
+                float h = sqrtf(H2 - b);
+                if (a + h <= 0 || a - h >= len) continue;
+                near_particle *p = &out[n++];
+                p->a = a;
+                p->b = b;
+                memcpy(p->rel, rel, sizeof rel);
+            }
+        }
+    return n;
+}
+
+/* The march state carried from cell to cell along one ray. */
+typedef struct march {
+    int started;       /* phi has been sampled once */
+    int inside;        /* phi >= iso at the current point */
+    int counting;      /* the inside interval was entered from outside */
+    int layers;
+    float g;           /* phi - iso at the current point */
+    float t_enter;     /* ray distance where the current inside interval began */
+    float s_prev;
+} march;
+
+/* Largest step from local t that is proven to keep the sign of phi - iso:
+ * the per-cell Lipschitz step |g| / L_c is free, longer steps are tried
+ * (doubling the last one) against the monotone-kernel bound. */
+static float safe_step(const stretch *S, const march *m, float t, float rem, float lip)
+{
+    const reference *R = S->R;
+    float floor_s = fmaxf(R->step_min, fabsf(m->g) / lip);
+    float s = fminf(rem, fmaxf(2.0f * m->s_prev, floor_s));
+    while (s > floor_s) {
+        float b = phi_bound(S, t, s, !m->inside);
+        if (m->inside ? b >= R->f.iso : b < R->f.iso) break;
+        s = fmaxf(0.5f * s, floor_s);
+    }
+    return fminf(s, rem);
+}
+
+/* Marches the stretch [0, len] of one cell (ray distance t0 at its start).
+ * Returns 1 when the ray is finished. */
+static int march_stretch(const stretch *S, march *m, float t0, float len, float lip, ray_result *res)
+{
+    const reference *R = S->R;
+    float iso = R->f.iso, tol = 1e-4f * R->f.r;
+    if (!m->started) {
+        m->g = phi_at(S, 0) - iso;
+        m->inside = m->g >= 0; /* the ray starts in the fluid: not a visible crossing */
+        m->counting = 0;
+        m->started = 1;
+    }
+    float t = 0;
+    while (t < len) {
+        float rem = len - t, s = safe_step(S, m, t, rem, lip);
+        float tn = s >= rem ? len : t + s, gn = phi_at(S, tn) - iso;
+        if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
+        /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
+        float lo = t, hi = tn;
+        while (hi - lo > tol) {
+            float mid = 0.5f * (lo + hi);
+            if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
+        }
+        float tc = 0.5f * (lo + hi);
+        if (!m->inside) {
+            if (!res->hit) {
+                float gr[3], l;
+                grad_at(S, tc, gr);
+                l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
+                for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -S->d[a];
+                res->hit = 1;
+                res->t = t0 + tc;
+                if (!R->thickness) return 1;
+            }
+            m->t_enter = t0 + tc;
+            m->counting = 1;
+            m->layers++;
+        } else {
+            if (m->counting) res->thick += t0 + tc - m->t_enter;
+            m->counting = 0;
+            if (m->layers >= R->max_layers) return 1;
+        }
+        m->inside = !m->inside;
+        m->s_prev = R->step_min;
+        t = tn;
+        m->g = gn;
+    }
+    return 0;
+}
+
+/* Casts one ray from o along unit d through the grid. */
+static void cast(const reference *R, const float o[3], const float d[3], near_particle *buf, ray_result *res)
+{
+    const fs_grid *g = R->g;
+    memset(res, 0, sizeof *res);
+    float te = 0, tx = INFINITY; /* start at the eye: the reference is not clipped */
+    for (int a = 0; a < 3; a++) {
+        float lo = g->origin[a], hi = g->origin[a] + g->cell * g->dim[a];
+        if (d[a] == 0) {
+            if (o[a] < lo || o[a] > hi) return;
+            continue;
+        }
+        float u = (lo - o[a]) / d[a], v = (hi - o[a]) / d[a];
+        if (u > v) { float w = u; u = v; v = w; }
+        te = fmaxf(te, u);
+        tx = fminf(tx, v);
+    }
+    if (!(te < tx)) return;
+    int c[3], step[3];
+    float tmax[3], tdelta[3];
+    for (int a = 0; a < 3; a++) {
+        c[a] = fs_grid_clampi(fs_grid_coord(g, a, o[a] + te * d[a]), g->dim[a] - 1);
+        if (d[a] > 0) {
+            step[a] = 1;
+            tmax[a] = (g->origin[a] + (c[a] + 1) * g->cell - o[a]) / d[a];
+            tdelta[a] = g->cell / d[a];
+        } else if (d[a] < 0) {
+            step[a] = -1;
+            tmax[a] = (g->origin[a] + c[a] * g->cell - o[a]) / d[a];
+            tdelta[a] = -g->cell / d[a];
+        } else {
+            step[a] = 0;
+            tmax[a] = tdelta[a] = INFINITY;
+        }
+    }
+    march m = {0, 0, 0, 0, -R->f.iso, 0, R->step_min};
+    float t = te;
+    for (;;) {
+        float t_out = fminf(fminf(tmax[0], tmax[1]), fminf(tmax[2], tx));
+        if (t_out < t) t_out = t;
+        uint32_t cnt = R->count27[fs_grid_cell_id(g, c[0], c[1], c[2])];
+        stretch S = {R, buf, 0, {d[0], d[1], d[2]}};
+        float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+        if (cnt && t_out > t) S.n = gather(R, c, o_loc, d, t_out - t, buf);
+        if (S.n) {
+            if (march_stretch(&S, &m, t, t_out - t, R->lip_unit * cnt, res)) return;
+        } else if (t_out > t) {
+            /* phi = 0 on this whole stretch (it cannot be inside: phi is continuous). */
+            if (m.inside && m.counting) res->thick += t - m.t_enter;
+            m.inside = m.counting = 0;
+            m.g = -R->f.iso;
+            m.started = 1;
+        }
+        if (t_out >= tx) break;
+        int a = tmax[0] < tmax[1] ? (tmax[0] < tmax[2] ? 0 : 2) : (tmax[1] < tmax[2] ? 1 : 2);
+        c[a] += step[a];
+        if (c[a] < 0 || c[a] >= g->dim[a]) break;
+        tmax[a] += tdelta[a];
+        t = t_out;
+    }
+    if (m.inside && m.counting) res->thick += tx - m.t_enter; /* left the grid inside */
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
+{
+    reference *R = self;
+    if (!R->g || !R->count27) return fs_fail(FS_ERR_RUNTIME, "reference: render before upload");
+    if (out->w != cam->width || out->h != cam->height)
+        return fs_fail(FS_ERR_RUNTIME, "reference: G-buffer %dx%d does not match the camera %dx%d", out->w, out->h,
+                       cam->width, cam->height);
+    double t0 = fs_now_ms();
+    int nth = omp_get_max_threads();
+    size_t per = R->max27 ? R->max27 : 1;
+    near_particle *bufs = malloc((size_t)nth * per * sizeof *bufs);
+    if (!bufs) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %d ray buffers", nth);
+    float right[3], up[3], fwd[3];
+    fs_camera_basis(cam, right, up, fwd);
+    fs_gbuffer_clear(out);
+#pragma omp parallel num_threads(nth)
+    {
+        near_particle *buf = bufs + (size_t)omp_get_thread_num() * per;
+#pragma omp for schedule(dynamic, 1)
+        for (int py = 0; py < cam->height; py++)
+            for (int px = 0; px < cam->width; px++) {
+                float d[3];
+                ray_result res;
+                fs_camera_ray(cam, px + 0.5f, py + 0.5f, d);
+                cast(R, cam->eye, d, buf, &res);
+                size_t id = (size_t)py * cam->width + px;
+                out->thickness[id] = res.thick;
+                if (!res.hit) continue;
+                float nv[3], dv[3];
+                fs_camera_to_view_dir(cam, res.n, nv);
+                fs_camera_to_view_dir(cam, d, dv);
+                float s = nv[0] * dv[0] + nv[1] * dv[1] + nv[2] * dv[2] > 0 ? -1.0f : 1.0f; /* face the camera */
+                for (int a = 0; a < 3; a++) out->normal[3 * id + a] = s * nv[a];
+                out->depth[id] = res.t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+                out->coverage[id] = 1.0f;
+            }
+    }
+    free(bufs);
+    if (st) fs_stages_add(st, "march", fs_now_ms() - t0);
+    return FS_OK;
+}
+
+const fs_method fs_method_reference = {
+    .name = "reference",
+    .description = "exact CPU ray caster of the SPH iso-surface (safe steps, bisection, analytic normals)",
+    .paper = "",
+    .needs_gl = 0,
+    .params = params,
+    .nparams = (int)(sizeof params / sizeof *params),
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+};

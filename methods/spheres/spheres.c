@@ -1,0 +1,152 @@
+/* spheres: every particle drawn as an opaque sphere of radius r (sprite quads
+ * with exact ray-sphere depth replacement) — the baseline of inacio2010, Table II.
+ * Thickness is the sum of the view ray's chords through all spheres. */
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_target.h"
+#include "method.h"
+#include "shader.h"
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_CHUNKS 16
+
+static const fs_param_def params[] = {
+    {"radius_scale", FS_PARAM_FLOAT, 1.0, 0.05, 4.0, NULL, "sphere radius in multiples of the particle radius r"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive chord-length thickness pass (on/off)"},
+};
+
+typedef struct spheres {
+    fs_field field;
+    float radius;
+    int thickness;
+    unsigned prog_surface, prog_thickness, vao;
+    unsigned bufs[MAX_CHUNKS];
+    size_t counts[MAX_CHUNKS];
+    int nbufs;
+    fs_gl_target target;
+} spheres;
+
+static void destroy(void *self)
+{
+    spheres *s = self;
+    if (!s) return;
+    if (s->prog_surface) glDeleteProgram(s->prog_surface);
+    if (s->prog_thickness) glDeleteProgram(s->prog_thickness);
+    if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
+    fs_gl_target_destroy(&s->target);
+    free(s);
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    spheres *s = calloc(1, sizeof *s);
+    if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
+    s->field = setup->field;
+    s->radius = (float)setup->params[0] * setup->field.r;
+    s->thickness = setup->params[1] != 0;
+    const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
+    s->prog_surface = fs_program_build(surf, NULL);
+    if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "MODE_THICKNESS 1");
+    if (!s->prog_thickness) { destroy(s); return NULL; }
+    glCreateVertexArrays(1, &s->vao);
+    return s;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    (void)g;
+    spheres *s = self;
+    float *v = malloc(p->n * 4 * sizeof(float));
+    if (!v) return fs_fail(FS_ERR_RUNTIME, "out of memory uploading %zu particles", p->n);
+    for (size_t i = 0; i < p->n; i++) {
+        v[4 * i] = p->x[i];
+        v[4 * i + 1] = p->y[i];
+        v[4 * i + 2] = p->z[i];
+        v[4 * i + 3] = 0;
+    }
+    if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
+    size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
+    int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, MAX_CHUNKS);
+    free(v);
+    if (nb < 0) return -nb;
+    s->nbufs = nb;
+    for (int b = 0; b < nb; b++) s->counts[b] = p->n - b * chunk < chunk ? p->n - b * chunk : chunk;
+    return FS_OK;
+}
+
+static void set_uniforms(unsigned prog, const fs_camera *cam, float radius)
+{
+    float view[16], proj[16];
+    fs_camera_view_matrix(cam, view);
+    fs_camera_proj_matrix(cam, proj);
+    glUseProgram(prog);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
+    glUniform1f(glGetUniformLocation(prog, "u_radius"), radius);
+    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
+}
+
+static void draw(const spheres *s)
+{
+    glBindVertexArray(s->vao);
+    for (int b = 0; b < s->nbufs; b++) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->bufs[b]);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)s->counts[b]);
+    }
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
+{
+    spheres *s = self;
+    if (s->target.w != cam->width || s->target.h != cam->height) {
+        fs_gl_target_destroy(&s->target);
+        int rc = fs_gl_target_create(&s->target, cam->width, cam->height);
+        if (rc) return rc;
+    }
+    glFinish();
+    double t0 = fs_now_ms();
+    fs_gl_target_clear(&s->target);
+    glViewport(0, 0, cam->width, cam->height);
+    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    set_uniforms(s->prog_surface, cam, s->radius);
+    draw(s);
+    glFinish();
+    double t1 = fs_now_ms();
+    fs_stages_add(t, "splat", t1 - t0);
+    if (s->thickness) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
+        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        set_uniforms(s->prog_thickness, cam, s->radius);
+        draw(s);
+        glDisable(GL_BLEND);
+        glFinish();
+        fs_stages_add(t, "thickness", fs_now_ms() - t1);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    double t2 = fs_now_ms();
+    int rc = fs_gl_target_read(&s->target, out);
+    fs_stages_add(t, "readback", fs_now_ms() - t2);
+    return rc;
+}
+
+const fs_method fs_method_spheres = {
+    .name = "spheres",
+    .description = "particles as opaque spheres of radius r (sprites with exact depth replacement)",
+    .paper = "inacio2010 (Table II baseline)",
+    .needs_gl = 1,
+    .params = params,
+    .nparams = sizeof params / sizeof *params,
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+};

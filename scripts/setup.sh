@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages fluidsurf needs to build, test and run its
+# experiments. Idempotent: does nothing (quickly) when everything is present.
+set -euo pipefail
+PKGS=(build-essential cmake pkg-config git
+      libosmesa6-dev libglfw3-dev libegl-dev
+      libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
+      libopenimageio-dev openimageio-tools libvtk9-dev libcjson-dev zlib1g-dev
+      xvfb xauth fonts-dejavu-core gnuplot-nox)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PKGS[@]} packages present"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

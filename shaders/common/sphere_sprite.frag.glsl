@@ -1,0 +1,33 @@
+#version 450 core
+// Exact ray-sphere intersection per fragment; depth replaced by the hit.
+// MODE_DEPTH: eye depth + view normal (depth-tested). MODE_THICKNESS: the chord
+// length of the view ray through the sphere, added up by the blender.
+uniform mat4 u_proj;
+uniform float u_radius;
+uniform vec2 u_viewport;
+in flat vec3 v_center;
+#ifdef MODE_THICKNESS
+layout(location = 0) out float o_thickness;
+#else
+layout(location = 0) out float o_depth;
+layout(location = 1) out vec4 o_normal;
+#endif
+
+void main()
+{
+    vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
+    vec3 dir = normalize(vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0));
+    float b = dot(dir, v_center);
+    float h = b * b - dot(v_center, v_center) + u_radius * u_radius;
+    if (h < 0.0) discard;
+    float s = sqrt(h);
+#ifdef MODE_THICKNESS
+    o_thickness = 2.0 * s;
+#else
+    vec3 hit = dir * (b - s);
+    vec4 clip = u_proj * vec4(hit, 1.0);
+    gl_FragDepth = clip.z / clip.w * 0.5 + 0.5;
+    o_depth = -hit.z;
+    o_normal = vec4((hit - v_center) / u_radius, 1.0);
+#endif
+}
