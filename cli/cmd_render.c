@@ -83,7 +83,10 @@ int cmd_render(int argc, char **argv)
         first = frame;
     }
     fs_particles p;
+    fs_stages st = {0};
+    double tl = fs_now_ms();
     if ((rc = fs_scene_load_frame(&scene, first, &p))) return cli_error(rc);
+    fs_stages_add(&st, "load", fs_now_ms() - tl);
     if (radius > 0) scene.radius = radius;
     else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
     else if (!scene.path[0] && !quiet)
@@ -94,7 +97,6 @@ int cmd_render(int argc, char **argv)
     fs_grid grid = {0};
     fs_gl_context ctx = {0};
     fs_gbuffer g = {0};
-    fs_stages st = {0};
     void *self = NULL;
     float *rgba = NULL;
     double t0 = fs_now_ms();
@@ -124,9 +126,10 @@ int cmd_render(int argc, char **argv)
     rc = fs_write_render(out, &g, rgba, &prov);
     if (!rc && timings) {
         printf("stage,ms,renderer\n");
-        /* grid building and shading always run in C on the CPU */
+        /* loading, grid building and shading always run in C on the CPU */
         for (int i = 0; i < st.n; i++) {
-            int cpu = !m->needs_gl || !strcmp(st.name[i], "grid") || !strcmp(st.name[i], "shade");
+            int cpu = !m->needs_gl || !strcmp(st.name[i], "load") || !strcmp(st.name[i], "grid") ||
+                      !strcmp(st.name[i], "shade");
             printf("%s,%.3f,%s\n", st.name[i], st.ms[i], cpu ? "CPU" : ctx.renderer);
         }
     }

@@ -162,8 +162,8 @@ static int parse_bgeo(fs_particles *p, const char *path, const unsigned char *da
 
 int fs_read_bgeo(fs_particles *p, const char *path)
 {
-    unsigned char *data;
-    size_t size;
+    unsigned char *data = NULL;
+    size_t size = 0;
     int rc = load_gz(path, &data, &size);
     if (rc) return rc;
     rc = parse_bgeo(p, path, data, size);

@@ -170,7 +170,7 @@ static int parse_header(breader *r, const char *path, int *fmt, ply_elem *el, in
             e->count = strtoull(c, &end, 10);
             if (*end || c[0] == '-' || errno)
                 return fs_fail(FS_ERR_INPUT, "%s: bad PLY element count '%s'", path, c);
-            snprintf(e->name, sizeof e->name, "%s", b);
+            snprintf(e->name, sizeof e->name, "%.31s", b);
         } else if (strcmp(a, "property") == 0 && k >= 3 && *nel > 0) {
             ply_elem *e = &el[*nel - 1];
             if (e->nprops == MAX_PROPS) return fs_fail(FS_ERR_INPUT, "%s: too many PLY properties", path);
@@ -180,7 +180,7 @@ static int parse_header(breader *r, const char *path, int *fmt, ply_elem *el, in
             pr->count_type = list ? type_from_name(c) : T_NONE;
             pr->type = type_from_name(list ? d : b);
             if (list) sscanf(line, "%*s %*s %*s %*s %31s", pr->name);
-            else snprintf(pr->name, sizeof pr->name, "%s", c);
+            else snprintf(pr->name, sizeof pr->name, "%.31s", c);
             if (pr->type == T_NONE || (list && pr->count_type == T_NONE) || !pr->name[0])
                 return fs_fail(FS_ERR_INPUT, "%s: bad PLY property line '%s'", path, line);
         } else {

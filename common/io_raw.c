@@ -124,8 +124,8 @@ static int load_text(const char *path, char **out, size_t *size)
 
 int fs_read_csv(fs_particles *p, const char *path)
 {
-    char *text;
-    size_t size;
+    char *text = NULL;
+    size_t size = 0;
     int rc = load_text(path, &text, &size);
     if (rc) return rc;
     size_t max_rows = 1;

@@ -16,13 +16,14 @@
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkFieldData.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -45,15 +46,22 @@ void on_error(vtkObject *, unsigned long, void *client, void *call)
     ErrorLog *log = static_cast<ErrorLog *>(client);
     if (log->count++ || !call) return;
     std::string s = static_cast<const char *>(call);
-    size_t nl = s.find('\n'), obj = s.find("): ", nl == std::string::npos ? 0 : nl);
-    if (obj != std::string::npos) s = s.substr(obj + 3);
-    for (char &c : s)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-    log->first = s.empty() ? "unknown VTK error" : s;
+    // Drop "ERROR: In FILE, line N" / "Generic Warning: In FILE, line N" and "vtkClass (0x...): ".
+    size_t nl = s.find('\n');
+    if (nl != std::string::npos && s.rfind(", line ", nl) != std::string::npos) s = s.substr(nl + 1);
+    size_t obj = s.find("): ");
+    if (obj != std::string::npos && s.compare(0, 3, "vtk") == 0) s = s.substr(obj + 3);
+    std::string one;
+    for (char c : s) {
+        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+        if (c != ' ' || (!one.empty() && one.back() != ' ')) one += c;
+    }
+    while (!one.empty() && one.back() == ' ') one.pop_back();
+    log->first = "VTK: " + (one.empty() ? std::string("unknown error") : one);
 }
 
-// Routes VTK errors of `reader` and of any helper object into `log` while alive, silencing stderr.
+// Routes VTK errors and warnings of `reader` and of any helper object into `log`
+// while alive, and keeps them off stderr.
 class ErrorCapture {
 public:
     ErrorCapture(vtkAlgorithm *reader, ErrorLog *log) : reader_(reader)
@@ -63,13 +71,22 @@ public:
         window_ = vtkOutputWindow::GetInstance();
         mode_ = window_->GetDisplayMode();
         window_->SetDisplayModeToNever();
-        tag_reader_ = reader_->AddObserver(vtkCommand::ErrorEvent, cb_);
-        tag_window_ = window_->AddObserver(vtkCommand::ErrorEvent, cb_);
+        // Helper objects inside the readers also log straight to stderr through vtkLogger.
+        verbosity_ = vtkLogger::GetCurrentVerbosityCutoff();
+        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+        // Warnings count as failures: the legacy reader only warns about truncated data.
+        for (unsigned long event : {vtkCommand::ErrorEvent, vtkCommand::WarningEvent}) {
+            tags_[n_tags_++] = reader_->AddObserver(event, cb_);
+            tags_[n_tags_++] = window_->AddObserver(event, cb_);
+        }
     }
     ~ErrorCapture()
     {
-        reader_->RemoveObserver(tag_reader_);
-        window_->RemoveObserver(tag_window_);
+        for (int i = 0; i < n_tags_; i += 2) {
+            reader_->RemoveObserver(tags_[i]);
+            window_->RemoveObserver(tags_[i + 1]);
+        }
+        vtkLogger::SetStderrVerbosity(verbosity_);
         window_->SetDisplayMode(mode_);
     }
     ErrorCapture(const ErrorCapture &) = delete;
@@ -79,8 +96,10 @@ private:
     vtkAlgorithm *reader_;
     vtkOutputWindow *window_;
     vtkNew<vtkCallbackCommand> cb_;
-    unsigned long tag_reader_ = 0, tag_window_ = 0;
+    unsigned long tags_[4] = {0, 0, 0, 0};
+    int n_tags_ = 0;
     int mode_ = vtkOutputWindow::DEFAULT;
+    vtkLogger::Verbosity verbosity_ = vtkLogger::VERBOSITY_WARNING;
 };
 
 bool name_is(const char *name, const char *const *names)
@@ -218,6 +237,11 @@ extern "C" int fs_read_vtk(fs_particles *p, const char *path)
     {
         ErrorCapture capture(reader, &log);
         reader->SetFileName(path);
+        // Without these the reader keeps only the first SCALARS/VECTORS section.
+        reader->ReadAllScalarsOn();
+        reader->ReadAllVectorsOn();
+        reader->ReadAllColorScalarsOn();
+        reader->ReadAllFieldsOn();
         reader->Update();
     }
     vtkDataSet *ds = reader->GetOutput();

@@ -12,7 +12,9 @@ static int fs_test_failures;
     fprintf(stderr, __VA_ARGS__); fputc('\n', stderr); } } while (0)
 #define CHECK_NEAR(a, b, tol, what) do { double _a = (a), _b = (b); \
     CHECK(fabs(_a - _b) <= (tol), "%s: %g vs %g (tol %g)", what, _a, _b, (double)(tol)); } while (0)
-#define TEST_DONE() do { if (fs_test_failures) fprintf(stderr, "%d check(s) failed\n", fs_test_failures); \
-    else printf("all checks passed\n"); return fs_test_failures ? 1 : 0; } while (0)
+#define TEST_DONE() do { \
+    if (fs_test_failures) { fprintf(stderr, "%d check(s) failed\n", fs_test_failures); } \
+    else { printf("all checks passed\n"); } \
+    return fs_test_failures ? 1 : 0; } while (0)
 
 #endif

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Foundation benchmark (issue: load + grid build, reference and spheres frame
+# times, peak memory). Writes results/bench/foundation.csv with a provenance
+# header. Medians of RUNS runs (default 5) of the whole command; every row names
+# the renderer its GL stages ran on.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+RUNS=${RUNS:-5}
+BIN=./build/fluidsurf
+[ -x "$BIN" ] || bash scripts/build.sh build
+out=results/bench/foundation.csv
+mkdir -p results/bench out/bench
+tmp=$(mktemp)
+
+cat > out/bench/box1m.json <<'JSON'
+{"description": "synthetic 100^3 = 1,000,000-particle box, r = 0.025",
+ "particles": {"synthetic": "box", "size": [100, 100, 100], "jitter": 0.1, "seed": 1},
+ "radius": 0.025}
+JSON
+dam=experiments/scenes/dam_break.json
+box=out/bench/box1m.json
+
+median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+
+# bench LABEL SCENE METHOD SIZE: runs the render RUNS times, collects each stage's
+# median and the peak resident memory (max over runs).
+bench() {
+  local label=$1 scene=$2 method=$3 size=$4
+  rm -f "$tmp".*
+  for i in $(seq "$RUNS"); do
+    /usr/bin/time -f "%M" -o "$tmp.mem" "$BIN" render "$scene" --method "$method" -W "$size" -H "$size" \
+        --timings -q -o "out/bench/$label.png" > "$tmp.run"
+    cat "$tmp.mem" >> "$tmp.mems"
+    tail -n +2 "$tmp.run" >> "$tmp.stages"
+  done
+  local peak renderer
+  peak=$(sort -g "$tmp.mems" | tail -1)
+  for stage in $(cut -d, -f1 "$tmp.stages" | awk '!seen[$0]++'); do
+    renderer=$(grep "^$stage," "$tmp.stages" | head -1 | cut -d, -f3-)
+    med=$(grep "^$stage," "$tmp.stages" | cut -d, -f2 | median)
+    echo "$label,$method,$size,$stage,$med,$RUNS,$peak,\"$renderer\"" >> "$out.new"
+    printf '%-28s %-10s %5s %-10s %10.2f ms  peak %s KiB  (%s)\n' "$label" "$method" "$size" "$stage" "$med" "$peak" "$renderer"
+  done
+}
+
+{
+  echo "# fluidsurf foundation benchmark; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+  echo "# medians of $RUNS runs; peak_rss_kib is the largest over the runs (whole process)"
+  echo "scene,method,size,stage,ms_median,runs,peak_rss_kib,renderer"
+} > "$out.new"
+bench dam_break_24k_ref512 $dam reference 512
+bench dam_break_24k_sph512 $dam spheres 512
+bench dam_break_24k_sph1024 $dam spheres 1024
+bench box_1m_ref512 $box reference 512
+bench box_1m_sph512 $box spheres 512
+bench box_1m_sph1024 $box spheres 1024
+mv "$out.new" "$out"
+rm -f "$tmp" "$tmp".*
+echo "wrote $out"

@@ -1,0 +1,7 @@
+# Command-line behaviour: bad input gives exit 2, one line "fluidsurf: ...", no output.
+add_test(NAME cli_bad_input COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_input.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR}/experiments/data/splashsurf ${CMAKE_BINARY_DIR}/test-out/cli_bad)
+add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
+set_tests_properties(cli_bad_input cli_render PROPERTIES
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The render CLI end to end: PNG and EXR outputs exist, the EXR carries the
+# G-buffer channels and the provenance, --timings names the renderer.
+set -u
+BIN=$1 SRC=$2 T=$3
+rm -rf "$T"; mkdir -p "$T"
+fails=0
+fail() { echo "FAIL $*"; fails=$((fails + 1)); }
+cube=$SRC/experiments/data/splashsurf/cube_2366_particles.vtk
+"$BIN" render "$cube" --method spheres -W 96 -H 64 -q --timings -o "$T/cube.exr" > "$T/timings.csv" || fail "spheres exr render"
+grep -q '^splat,.*llvmpipe\|^splat,.*,' "$T/timings.csv" || fail "timings lack the splat stage: $(cat "$T/timings.csv")"
+grep -q '^grid,.*,CPU$' "$T/timings.csv" || fail "grid stage not marked CPU"
+if command -v iinfo >/dev/null; then
+  iinfo -v "$T/cube.exr" > "$T/iinfo.txt" 2>&1
+  for ch in depth normal.X normal.Y normal.Z thickness coverage; do grep -q "$ch" "$T/iinfo.txt" || fail "EXR lacks channel $ch"; done
+  for a in fluidsurf:commit fluidsurf:gl_renderer fluidsurf:camera fluidsurf:params fluidsurf:scene_hash; do
+    grep -q "$a" "$T/iinfo.txt" || fail "EXR lacks attribute $a"; done
+  grep -q "96 x  *64" "$T/iinfo.txt" || fail "EXR size is not 96x64: $(head -3 "$T/iinfo.txt")"
+else
+  fail "iinfo (openimageio-tools) missing"
+fi
+"$BIN" render "$cube" --method reference -W 64 -H 64 -q -o "$T/cube.png" || fail "reference png render"
+[ -s "$T/cube.png" ] || fail "no PNG written"
+"$BIN" methods | grep -q '^reference' || fail "methods does not list reference"
+"$BIN" methods | grep -q 'step_min' || fail "methods does not list parameters"
+"$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
+"$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
+for c in render info convert methods; do "$BIN" $c --help | grep -q usage || fail "$c --help"; done
+echo "$((14 - fails)) passed, $fails failed"
+[ $fails -eq 0 ]

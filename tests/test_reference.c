@@ -1,0 +1,221 @@
+/* The reference ray caster against the analytic G-buffer of synthetic scenes:
+ * flat-face normals on an exact lattice, depth bias / spread / IoU on jittered
+ * slab, box and sphere (stable across seeds), thickness, a camera inside the
+ * fluid, and its refusals. */
+#include "fs_error.h"
+#include "fs_test.h"
+#include "method.h"
+#include "synthetic.h"
+#include <stdlib.h>
+#include <string.h>
+
+static double g_ms;
+
+static fs_scene scene(fs_synth_shape shape, float jitter, unsigned seed)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    s.synth.shape = shape;
+    s.synth.jitter = jitter;
+    s.synth.seed = seed;
+    return s;
+}
+
+/* Generates the scene, renders it with the reference into out. */
+static int render(const fs_scene *s, const fs_camera *cam, const double *params, fs_gbuffer *out)
+{
+    const fs_method *m = fs_method_find("reference");
+    if (!m) return fs_fail(FS_ERR_RUNTIME, "reference not registered");
+    fs_particles p;
+    int rc = fs_synthetic_generate(s, 0, &p);
+    if (rc) return rc;
+    fs_method_setup setup = {fs_scene_field(s), params};
+    fs_grid g;
+    rc = fs_grid_build(&g, &p, setup.field.H);
+    void *self = rc ? NULL : m->create(&setup);
+    if (!rc && !self) rc = FS_ERR_RUNTIME;
+    if (!rc) rc = m->upload(self, &p, &g);
+    fs_stages st = {0};
+    if (!rc) rc = m->render(self, cam, out, &st);
+    if (!rc) {
+        CHECK(st.n == 1 && !strcmp(st.name[0], "march"), "stage named march");
+        g_ms += st.ms[0];
+    }
+    if (self) m->destroy(self);
+    fs_grid_free(&g);
+    fs_particles_free(&p);
+    return rc;
+}
+
+static fs_camera framing(const fs_scene *s)
+{
+    fs_particles p;
+    fs_synthetic_generate(s, 0, &p);
+    fs_camera c = s->camera;
+    c.width = c.height = 128;
+    fs_camera_frame_box(&c, p.bmin, p.bmax, s->up_axis);
+    fs_camera_fit_clip(&c, p.bmin, p.bmax);
+    fs_particles_free(&p);
+    return c;
+}
+
+/* (a) Exact lattice slab seen obliquely: the top face's normals. */
+static void flat_normals(void)
+{
+    fs_scene s = scene(FS_SYNTH_SLAB, 0, 1);
+    float r = s.radius;
+    fs_camera cam = {{0, 50 * r, 45 * r}, {0, 12 * r, 0}, {0, 1, 0}, 40.0f, 96, 96, 0.1f, 10.0f};
+    fs_gbuffer ref, ana;
+    fs_gbuffer_alloc(&ref, 96, 96, 0);
+    fs_gbuffer_alloc(&ana, 96, 96, 0);
+    CHECK(render(&s, &cam, NULL, &ref) == FS_OK, "render: %s", fs_error_message());
+    fs_synthetic_analytic(&s, 0, &cam, &ana);
+    float rt[3], up[3], fwd[3];
+    fs_camera_basis(&cam, rt, up, fwd);
+    int n = 0;
+    double worst = 0, sum = 0;
+    for (int py = 0; py < 96; py++)
+        for (int px = 0; px < 96; px++) {
+            size_t i = (size_t)py * 96 + px;
+            if (!ana.coverage[i] || !ref.coverage[i]) continue;
+            float d[3], w[3];
+            fs_camera_ray(&cam, px + 0.5f, py + 0.5f, d);
+            float t = ana.depth[i] / (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+            float x = cam.eye[0] + t * d[0], y = cam.eye[1] + t * d[1], z = cam.eye[2] + t * d[2];
+            /* On the ideal top face and at least 8r from its edges. */
+            if (fabsf(y - 12 * r) > 1e-3f * r || fabsf(x) > 40 * r || fabsf(z) > 40 * r) continue;
+            fs_camera_from_view_dir(&cam, &ref.normal[3 * i], w);
+            double ang = acos(fmin(1.0, w[1])) * 180 / FS_PI;
+            if (ang > worst) worst = ang;
+            sum += ang;
+            n++;
+        }
+    printf("(a) unjittered slab top face: %d pixels, normal error mean %.4f deg, max %.4f deg\n", n, n ? sum / n : 0, worst);
+    CHECK(n > 2000, "top-face pixels %d", n);
+    CHECK(worst < 1.0, "top-face normal off by %g degrees", worst);
+    fs_gbuffer_free(&ref);
+    fs_gbuffer_free(&ana);
+}
+
+typedef struct stats { double bias, spread, iou; int both; } stats;
+
+static stats compare(const fs_gbuffer *ref, const fs_gbuffer *ana, float r)
+{
+    stats st = {0, 0, 0, 0};
+    double s1 = 0, s2 = 0;
+    int either = 0;
+    for (int i = 0; i < ref->w * ref->h; i++) {
+        int a = ana->coverage[i] > 0, b = ref->coverage[i] > 0;
+        either += a || b;
+        if (!(a && b)) continue;
+        double d = (ref->depth[i] - ana->depth[i]) / r;
+        s1 += d;
+        s2 += d * d;
+        st.both++;
+    }
+    if (st.both) {
+        st.bias = s1 / st.both;
+        st.spread = sqrt(fmax(0, s2 / st.both - st.bias * st.bias));
+    }
+    st.iou = either ? (double)st.both / either : 0;
+    return st;
+}
+
+/* (b) Jittered shapes against the ideal surface, three seeds each. */
+static void against_analytic(void)
+{
+    const fs_synth_shape shapes[] = {FS_SYNTH_SLAB, FS_SYNTH_SPHERE, FS_SYNTH_BOX};
+    const char *names[] = {"slab", "sphere", "box"};
+    const unsigned seeds[] = {1, 2, 3};
+    for (int si = 0; si < 3; si++) {
+        double bmin = 1e9, bmax = -1e9;
+        for (int k = 0; k < 3; k++) {
+            fs_scene s = scene(shapes[si], 0.1f, seeds[k]);
+            fs_camera cam = framing(&s);
+            fs_gbuffer ref, ana;
+            fs_gbuffer_alloc(&ref, cam.width, cam.height, 0);
+            fs_gbuffer_alloc(&ana, cam.width, cam.height, 0);
+            CHECK(render(&s, &cam, NULL, &ref) == FS_OK, "render %s: %s", names[si], fs_error_message());
+            CHECK(fs_synthetic_analytic(&s, 0, &cam, &ana) == FS_OK, "analytic %s", names[si]);
+            stats st = compare(&ref, &ana, s.radius);
+            printf("(b) %-6s seed %u: depth bias %+.4f r, spread %.4f r, IoU %.4f over %d pixels\n", names[si], seeds[k],
+                   st.bias, st.spread, st.iou, st.both);
+            CHECK(st.both > 2000, "%s: %d pixels both cover", names[si], st.both);
+            CHECK(st.bias > -1.0 && st.bias < 0.5, "%s: depth bias %g r", names[si], st.bias);
+            CHECK(st.iou > 0.9, "%s: IoU %g", names[si], st.iou);
+            bmin = fmin(bmin, st.bias);
+            bmax = fmax(bmax, st.bias);
+            fs_gbuffer_free(&ref);
+            fs_gbuffer_free(&ana);
+        }
+        printf("(b) %-6s bias range over seeds %.4f r\n", names[si], bmax - bmin);
+        CHECK(bmax - bmin < 0.05, "%s: bias varies by %g r across seeds", names[si], bmax - bmin);
+    }
+}
+
+/* Vertical rays through an exact slab: depth just below the ideal top,
+ * thickness just under its height; thickness=off leaves depth alone. */
+static void thickness_and_params(void)
+{
+    fs_scene s = scene(FS_SYNTH_SLAB, 0, 1);
+    float r = s.radius;
+    fs_camera cam = {{0.3f * r, 60 * r, 0.7f * r}, {0.3f * r, 0, 0.7f * r}, {0, 0, -1}, 20.0f, 17, 17, 0.1f, 10.0f};
+    fs_gbuffer on, off;
+    fs_gbuffer_alloc(&on, 17, 17, 0);
+    fs_gbuffer_alloc(&off, 17, 17, 0);
+    const fs_method *m = fs_method_find("reference");
+    double params[3];
+    for (int i = 0; i < 3; i++) params[i] = m->params[i].def;
+    CHECK(render(&s, &cam, params, &on) == FS_OK, "thickness on");
+    params[fs_method_param_index(m, "thickness")] = 0;
+    CHECK(render(&s, &cam, params, &off) == FS_OK, "thickness off");
+    size_t mid = 8 * 17 + 8;
+    double depth = on.depth[mid] / r, thick = on.thickness[mid] / r;
+    printf("vertical ray through the exact slab: depth %.4f r (ideal %.1f r), thickness %.4f r (ideal 12 r)\n", depth,
+           60.0 - 12, thick);
+    CHECK(depth > 48 && depth < 48.6, "depth %g r", depth);
+    CHECK(thick > 10.8 && thick <= 12, "thickness %g r", thick);
+    CHECK(on.depth[mid] == off.depth[mid], "thickness=off keeps the depth");
+    CHECK(off.thickness[mid] == 0, "thickness=off writes 0");
+    /* Camera inside the slab looking down: no crossing from outside. */
+    cam.eye[1] = 6 * r;
+    CHECK(render(&s, &cam, NULL, &on) == FS_OK, "inside");
+    int cov = 0;
+    for (int i = 0; i < 17 * 17; i++) cov += on.coverage[i] > 0;
+    CHECK(cov == 0, "camera inside the fluid covers %d pixels", cov);
+    fs_gbuffer_free(&on);
+    fs_gbuffer_free(&off);
+}
+
+static void refusals(void)
+{
+    const fs_method *m = fs_method_find("reference");
+    CHECK(m && !m->needs_gl && m->nparams == 3, "registered, no GL, three parameters");
+    if (!m) return;
+    fs_scene s = scene(FS_SYNTH_BOX, 0.1f, 1);
+    fs_particles p;
+    fs_synthetic_generate(&s, 0, &p);
+    fs_method_setup setup = {fs_scene_field(&s), NULL};
+    fs_grid g;
+    fs_grid_build(&g, &p, 0.5f * setup.field.H);
+    void *self = m->create(&setup);
+    CHECK(self != NULL, "create");
+    int rc = self ? m->upload(self, &p, &g) : -1;
+    CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "smaller than the kernel support"),
+          "grid cell below H refused: %s", fs_error_message());
+    if (self) m->destroy(self);
+    setup.field.iso = 0;
+    CHECK(m->create(&setup) == NULL, "iso 0 refused");
+    fs_grid_free(&g);
+    fs_particles_free(&p);
+}
+
+int main(void)
+{
+    flat_normals();
+    against_analytic();
+    thickness_and_params();
+    refusals();
+    printf("reference march time, all renders: %.0f ms\n", g_ms);
+    TEST_DONE();
+}
