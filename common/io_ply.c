@@ -265,10 +265,10 @@ int fs_read_ply(fs_particles *p, const char *path)
     FILE *f = fopen(path, "rb");
     if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
     struct stat st;
-    fstat(fileno(f), &st);
     breader *r = calloc(1, sizeof *r);
     ply_elem *el = calloc(MAX_ELEMS, sizeof *el);
     int rc = r && el ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    if (!rc && fstat(fileno(f), &st) != 0) rc = fs_fail(FS_ERR_INPUT, "%s: cannot stat: %s", path, strerror(errno));
     int fmt = FMT_ASCII, nel = 0;
     float radius = 0;
     if (!rc) {

@@ -5,7 +5,9 @@
 // VTK reports problems through vtkErrorMacro and may still hand back partial
 // data, so every read captures the errors (observer on the reader and on the
 // output window, which is muted meanwhile) and checks the point count against
-// the file's own declaration.
+// the file's own declaration. The capture changes process-wide VTK state
+// (output window, logger) for the duration of a read: read VTK files from
+// one thread at a time.
 #include "particle_io.h"
 #include "fs_error.h"
 #include "output_file.h"
@@ -187,10 +189,11 @@ int check_legacy_header(const char *path, long long *declared)
     FILE *f = fopen(path, "rb");
     if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
     struct stat st;
-    fstat(fileno(f), &st);
     char line[512];
     int rc = FS_OK, binary = 0;
-    if (!fgets(line, sizeof line, f) || strncmp(line, "# vtk DataFile Version", 22) != 0)
+    if (fstat(fileno(f), &st) != 0)
+        rc = fs_fail(FS_ERR_INPUT, "%s: cannot stat", path);
+    else if (!fgets(line, sizeof line, f) || strncmp(line, "# vtk DataFile Version", 22) != 0)
         rc = fs_fail(FS_ERR_INPUT, "%s: not a legacy VTK file (bad magic)", path);
     if (!rc && (!fgets(line, sizeof line, f) || !fgets(line, sizeof line, f)))
         rc = fs_fail(FS_ERR_INPUT, "%s: truncated VTK header", path);

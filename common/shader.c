@@ -43,18 +43,32 @@ static void sb_add(sbuf *b, const char *s, size_t n)
     b->n += n;
     b->s[b->n] = 0;
 }
-static void sb_printf(sbuf *b, const char *fmt, int a, int c)
-{
-    char tmp[64];
-    int n = snprintf(tmp, sizeof tmp, fmt, a, c);
-    sb_add(b, tmp, n);
-}
 
 #define MAX_FILES 32
-typedef struct srcmap { int n; char name[MAX_FILES][256]; } srcmap;
+/* Where each line of the expanded source came from. No #line directives are
+ * emitted: Mesa drops the source-string number from some diagnostics, so errors
+ * are mapped back through this table instead, which works on every driver. */
+typedef struct srcmap {
+    int n;
+    char name[MAX_FILES][256];
+    int lines, cap;
+    short *file; /* per expanded line: index into name, -1 for inserted lines */
+    int *line;   /* per expanded line: line in that file */
+} srcmap;
 
-/* Appends file `name` with includes expanded; its source-string number is its
- * index in map. defines go after the #version line of the top file. */
+static void map_line(srcmap *m, int file, int line)
+{
+    if (m->lines == m->cap) {
+        m->cap = m->cap ? 2 * m->cap : 256;
+        m->file = realloc(m->file, m->cap * sizeof *m->file);
+        m->line = realloc(m->line, m->cap * sizeof *m->line);
+    }
+    m->file[m->lines] = (short)file;
+    m->line[m->lines++] = line;
+}
+
+/* Appends file `name` with includes expanded. defines go after the #version
+ * line of the top file. */
 static int expand(sbuf *out, const char *name, srcmap *map, const char *defines, int depth)
 {
     if (depth > 8 || map->n == MAX_FILES)
@@ -64,33 +78,29 @@ static int expand(sbuf *out, const char *name, srcmap *map, const char *defines,
     int id = map->n++;
     snprintf(map->name[id], sizeof map->name[id], "%s", name);
     int line = 1;
-    if (depth) sb_printf(out, "#line 1 %d\n", 1, id);
-    for (char *p = text; *p;) {
+    for (char *p = text; *p; line++) {
         char *nl = strchr(p, '\n');
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
         char inc[256];
         if (sscanf(p, " #include \"%255[^\"]\"", inc) == 1) {
             int rc = expand(out, inc, map, NULL, depth + 1);
             if (rc) { free(text); return rc; }
-            sb_printf(out, "#line %d %d\n", line + 1, id);
         } else {
             sb_add(out, p, len);
             sb_add(out, "\n", 1);
-            if (!depth && !strncmp(p, "#version", 8)) {
-                if (defines) {
-                    for (const char *d = defines; *d;) {
-                        const char *e = strchr(d, '\n');
-                        size_t dl = e ? (size_t)(e - d) : strlen(d);
-                        sb_add(out, "#define ", 8);
-                        sb_add(out, d, dl);
-                        sb_add(out, "\n", 1);
-                        d += dl + (e ? 1 : 0);
-                    }
+            map_line(map, id, line);
+            if (!depth && !strncmp(p, "#version", 8) && defines) {
+                for (const char *d = defines; *d;) {
+                    const char *e = strchr(d, '\n');
+                    size_t dl = e ? (size_t)(e - d) : strlen(d);
+                    sb_add(out, "#define ", 8);
+                    sb_add(out, d, dl);
+                    sb_add(out, "\n", 1);
+                    map_line(map, -1, 0);
+                    d += dl + (e ? 1 : 0);
                 }
-                sb_printf(out, "#line %d %d\n", line + 1, id);
             }
         }
-        line++;
         p += len + (nl ? 1 : 0);
     }
     free(text);
@@ -108,8 +118,13 @@ static void report(const char *what, const char *log, const srcmap *map)
             (sscanf(p, "%d(%d) : %n", &file, &line, &used) == 2 && used)) {
             const char *end = strchr(p, '\n');
             int len = end ? (int)(end - p - used) : (int)strlen(p + used);
-            const char *fname = file >= 0 && file < map->n ? map->name[file] : "?";
-            fs_fail(FS_ERR_RUNTIME, "shaders/%s:%d: %.*s", fname, line, len, p + used);
+            const char *fname = "(inserted #define)";
+            int src_line = line;
+            if (line >= 1 && line <= map->lines && map->file[line - 1] >= 0) {
+                fname = map->name[map->file[line - 1]];
+                src_line = map->line[line - 1];
+            }
+            fs_fail(FS_ERR_RUNTIME, "shaders/%s:%d: %.*s", fname, src_line, len, p + used);
             return;
         }
         const char *nl = strchr(p, '\n');
@@ -135,12 +150,12 @@ unsigned fs_program_build(const char *const *stages, const char *defines)
     GLuint sh[8];
     int nsh = 0;
     char log[4096];
-    srcmap map;
+    srcmap map = {0};
     for (int i = 0; stages[i] && nsh < 8; i++) {
         GLenum type = stage_type(stages[i]);
         if (!type) { fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", stages[i]); goto fail; }
         sbuf src = {0};
-        map.n = 0;
+        map.n = map.lines = 0;
         int rc = expand(&src, stages[i], &map, defines, 0);
         if (rc) { free(src.s); goto fail; }
         GLuint s = glCreateShader(type);
@@ -153,6 +168,7 @@ unsigned fs_program_build(const char *const *stages, const char *defines)
         glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
         if (!ok) {
             glGetShaderInfoLog(s, sizeof log, NULL, log);
+            if (getenv("FS_SHADER_DEBUG")) fprintf(stderr, "%s\n", log);
             report(stages[i], log, &map);
             goto fail;
         }
@@ -169,8 +185,12 @@ unsigned fs_program_build(const char *const *stages, const char *defines)
         goto fail;
     }
     for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
+    free(map.file);
+    free(map.line);
     return prog;
 fail:
+    free(map.file);
+    free(map.line);
     for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
     glDeleteProgram(prog);
     return 0;

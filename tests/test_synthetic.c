@@ -134,7 +134,7 @@ static void analytic(void)
     CHECK(fs_synthetic_analytic(&s, 0, &cam, &gb) == FS_OK, "sphere analytic");
     CHECK_NEAR(gb.depth[mid], eye - 2 * R, 1e-4 * r, "sphere depth");
     CHECK_NEAR(gb.thickness[mid], 2 * R, 1e-4 * r, "sphere thickness = diameter");
-    CHECK(R > 9.5 * r && R < 10.5 * r, "ideal radius %g r", R / r);
+    CHECK(R > 19.5 * r && R < 20.5 * r, "ideal radius %g r (diameter 20 particles of 2r)", R / r);
 
     /* Camera inside the solid: no crossing from outside, no coverage. */
     s = scene(FS_SYNTH_BOX, 0.1f, 1);
