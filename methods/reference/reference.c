@@ -129,7 +129,7 @@ static float phi_bound(const stretch *S, float t, float s, int upper)
     for (int j = 0; j < S->n; j++) {
         float u = S->np[j].a - t, e; /* foot relative to t */
         if (upper) e = u < 0 ? u : (u > s ? u - s : 0);
-        else e = fmaxf(fabsf(u), fabsf(u - s));
+        else e = u > 0.5f * s ? u : u - s; /* the farther end */
         float d2 = S->np[j].b + e * e;
         if (d2 < H2) sum += fs_kernel_w(f->kernel, sqrtf(d2), f->H);
     }
@@ -152,26 +152,35 @@ static void grad_at(const stretch *S, float t, float gr[3])
     for (int a = 0; a < 3; a++) gr[a] *= f->volume;
 }
 
-/* Collects the particles that can reach the stretch o + t d, t in [0, len]:
- * all lie in the 27 cells around cell c because cell >= H. */
+/* Collects the particles that can reach the stretch o + t d, t in [0, len]
+ * (distance to the stretch below H). They lie in the 27 cells around cell c
+ * because cell >= H; only the cells the stretch's box grown by H touches are read. */
 static int gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_particle *out)
 {
     const fs_grid *g = R->g;
-    float H2 = R->f.H * R->f.H;
+    float H = R->f.H, H2 = H * H;
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        float e = o[a] + len * d[a], x0 = o[a] < e ? o[a] : e, x1 = o[a] < e ? e : o[a];
+        lo[a] = fs_grid_coord(g, a, x0 - H);
+        hi[a] = fs_grid_coord(g, a, x1 + H);
+        lo[a] = lo[a] < c[a] - 1 ? c[a] - 1 : lo[a];
+        hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
+        lo[a] = lo[a] < 0 ? 0 : lo[a];
+        hi[a] = hi[a] > g->dim[a] - 1 ? g->dim[a] - 1 : hi[a];
+    }
     int n = 0;
-    int i0 = c[0] > 0 ? c[0] - 1 : 0, i1 = c[0] < g->dim[0] - 1 ? c[0] + 1 : c[0];
-    for (int k = c[2] - 1; k <= c[2] + 1; k++)
-        for (int j = c[1] - 1; j <= c[1] + 1; j++) {
-            if (k < 0 || j < 0 || k >= g->dim[2] || j >= g->dim[1]) continue;
+    for (int k = lo[2]; k <= hi[2]; k++)
+        for (int j = lo[1]; j <= hi[1]; j++) {
             size_t row = fs_grid_cell_id(g, 0, j, k);
-            for (uint32_t s = g->start[row + i0]; s < g->start[row + i1 + 1]; s++) {
+            for (uint32_t s = g->start[row + lo[0]]; s < g->start[row + hi[0] + 1]; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
                 float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
                 float a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
-                float b = fmaxf(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a, 0.0f);
-                if (b >= H2) continue;
-                float h = sqrtf(H2 - b);
-                if (a + h <= 0 || a - h >= len) continue;
+                float b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
+                float e = a < 0 ? a : (a > len ? a - len : 0); /* foot outside the stretch */
+                b = b > 0 ? b : 0;
+                if (b + e * e >= H2) continue;
                 near_particle *p = &out[n++];
                 p->a = a;
                 p->b = b;
@@ -198,14 +207,15 @@ typedef struct march {
 static float safe_step(const stretch *S, const march *m, float t, float rem, float lip)
 {
     const reference *R = S->R;
-    float floor_s = fmaxf(R->step_min, fabsf(m->g) / lip);
-    float s = fminf(rem, fmaxf(2.0f * m->s_prev, floor_s));
+    float s_lip = fabsf(m->g) / lip, floor_s = s_lip > R->step_min ? s_lip : R->step_min;
+    float s = 2.0f * m->s_prev > floor_s ? 2.0f * m->s_prev : floor_s;
+    s = s < rem ? s : rem;
     while (s > floor_s) {
         float b = phi_bound(S, t, s, !m->inside);
         if (m->inside ? b >= R->f.iso : b < R->f.iso) break;
-        s = fmaxf(0.5f * s, floor_s);
+        s = 0.5f * s > floor_s ? 0.5f * s : floor_s;
     }
-    return fminf(s, rem);
+    return s < rem ? s : rem;
 }
 
 /* Marches the stretch [0, len] of one cell (ray distance t0 at its start).
