@@ -89,8 +89,7 @@ int cmd_render(int argc, char **argv)
     fs_stages_add(&st, "load", fs_now_ms() - tl);
     if (radius > 0) scene.radius = radius;
     else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
-    else if (!scene.path[0] && !quiet)
-        fprintf(stderr, "fluidsurf: note: %s: using r = %g (set --radius)\n", input, scene.radius);
+    int radius_note = !scene.path[0] && !(radius > 0) && !(p.radius > 0) && !quiet;
     fs_scene_finish_camera(&scene, p.bmin, p.bmax);
     fs_method_setup setup = {fs_scene_field(&scene), params};
 
@@ -124,6 +123,8 @@ int cmd_render(int argc, char **argv)
     snprintf(fstr, sizeof fstr, "%d", first);
     fs_provenance_set(&prov, "frame", fstr);
     rc = fs_write_render(out, &g, rgba, &prov);
+    /* after success only, so a failing run prints exactly one line */
+    if (!rc && radius_note) fprintf(stderr, "fluidsurf: note: %s: used r = %g (set --radius)\n", input, scene.radius);
     if (!rc && timings) {
         printf("stage,ms,renderer\n");
         /* loading, grid building and shading always run in C on the CPU */

@@ -26,6 +26,6 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", FS_VERSION, FS_GIT); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
-    fprintf(stderr, "fluidsurf: unknown command '%s'\n", argv[1]);
-    return usage(stderr);
+    fprintf(stderr, "fluidsurf: unknown command '%s' (try 'fluidsurf --help')\n", argv[1]);
+    return 2;
 }

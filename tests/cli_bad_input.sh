@@ -64,7 +64,7 @@ render unknown_param_flag "bogus" "$vtk" --set reference.bogus=1
 render bad_param_value "step_min" "$vtk" --set reference.step_min=abc
 render param_out_of_range "step_min" "$vtk" --set reference.step_min=-5
 render set_unknown_method "nomethod" "$vtk" --set nomethod.x=1
-render bad_output_ext "out.txt" "$vtk" -o "$T/out.txt"
+expect_bad bad_output_ext "out.txt" render "$vtk" -o "$T/out.txt"
 render unknown_option "--frobnicate" "$vtk" --frobnicate
 expect_bad info_missing "missing.bgeo" info "$T/missing.bgeo"
 expect_bad convert_bad_target "out.xyz9" convert "$vtk" -o "$T/out.xyz9"

@@ -4,8 +4,10 @@
 set -u
 BIN=$1 SRC=$2 T=$3
 rm -rf "$T"; mkdir -p "$T"
-fails=0
+fails=0 n=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
+# every check below is one "cond || fail" line; count them for the summary
+n=$(($(grep -c '|| fail' "$0") - 1)) # minus this line
 cube=$SRC/experiments/data/splashsurf/cube_2366_particles.vtk
 "$BIN" render "$cube" --method spheres -W 96 -H 64 -q --timings -o "$T/cube.exr" > "$T/timings.csv" || fail "spheres exr render"
 grep -q '^splat,.*llvmpipe\|^splat,.*,' "$T/timings.csv" || fail "timings lack the splat stage: $(cat "$T/timings.csv")"
@@ -26,5 +28,5 @@ fi
 "$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
 "$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
 for c in render info convert methods; do "$BIN" $c --help | grep -q usage || fail "$c --help"; done
-echo "$((14 - fails)) passed, $fails failed"
+echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -1,0 +1,13 @@
+# The GLFW window context needs an X server: the test runs under Xvfb (xvfb-run).
+find_program(XVFB_RUN xvfb-run)
+if(NOT XVFB_RUN)
+  message(FATAL_ERROR "xvfb-run not found: the GLFW context test needs it. Run scripts/setup.sh (Debian package xvfb).")
+endif()
+add_executable(test_context_glfw test_context_glfw.c)
+target_link_libraries(test_context_glfw PRIVATE fscore)
+target_compile_definitions(test_context_glfw PRIVATE FS_TEST_DATA="${CMAKE_SOURCE_DIR}/experiments/data"
+  FS_TEST_OUT="${CMAKE_BINARY_DIR}/test-out")
+add_test(NAME test_context_glfw
+  COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" $<TARGET_FILE:test_context_glfw>)
+set_tests_properties(test_context_glfw PROPERTIES TIMEOUT 60
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")
