@@ -1,5 +1,6 @@
 /* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
 #include "cli.h"
+#include "provenance.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -23,7 +24,7 @@ int main(int argc, char **argv)
 {
     if (argc < 2) return usage(stderr);
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) return usage(stdout);
-    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", FS_VERSION, FS_GIT); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", fs_version, fs_commit); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
     fprintf(stderr, "fluidsurf: unknown command '%s' (try 'fluidsurf --help')\n", argv[1]);

@@ -57,6 +57,9 @@ typedef struct egl_fns {
     PFNEGLTERMINATEPROC Terminate;
 } egl_fns;
 static egl_fns *egl_current;
+/* EGL displays are per device and eglTerminate ends every context on one, so
+ * only the last EGL context terminates it. */
+static int egl_users;
 
 static void *egl_getproc(const char *name) { return (void *)egl_current->GetProcAddress(name); }
 
@@ -105,9 +108,10 @@ static int create_egl(fs_gl_context *c)
     if (ctx == EGL_NO_CONTEXT) goto fail;
     c->handle = ctx;
     c->extra = e;
+    egl_users++;
     return FS_OK;
 fail:
-    if (e->dpy && e->Terminate) e->Terminate(e->dpy);
+    if (e->dpy && e->Terminate && !egl_users) e->Terminate(e->dpy);
     dlclose(e->lib);
     free(e);
     return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: %s", why);
@@ -115,24 +119,57 @@ fail:
 
 /* ---- GLFW ---- */
 static void *glfw_getproc(const char *name) { return (void *)glfwGetProcAddress(name); }
+/* glfwTerminate destroys every window: only the last GLFW context calls it. */
+static int glfw_users;
 
 static int create_glfw(fs_gl_context *c)
 {
-    if (!glfwInit()) return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot initialise (no display?)");
+    if (!glfw_users && !glfwInit()) return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot initialise (no display?)");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     GLFWwindow *w = glfwCreateWindow(c->width, c->height, "fluidsurf", NULL, NULL);
-    if (!w) { glfwTerminate(); return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot create a 4.5 core window"); }
+    if (!w) {
+        if (!glfw_users) glfwTerminate();
+        return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot create a 4.5 core window");
+    }
+    glfw_users++;
     c->handle = w;
     return FS_OK;
+}
+
+/* ---- switching ----
+ * OSMesa, GLX (libGLX_mesa, loaded by GLFW) and EGL (libEGL_mesa) all dispatch
+ * GL calls through one per-thread slot in Mesa's shared libglapi. Unbinding a
+ * GLX or EGL context (glfwCreateWindow does it on return, glfwDestroyWindow
+ * does it for the window current in GLFW) empties that slot even while OSMesa
+ * believes its context is current: every later GL call is then a silent no-op.
+ * So the context bound last is released before another one is bound or
+ * created, and a context is unbound at destruction only if it is the bound one.
+ * A copy, so the caller may move its struct; per thread, as GL binding is. */
+static _Thread_local fs_gl_context bound;
+
+static void release_bound(void)
+{
+    if (!bound.handle) return;
+    switch (bound.kind) {
+    case FS_CTX_OSMESA: OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0); break;
+    case FS_CTX_EGL: {
+        egl_fns *e = bound.extra;
+        e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        break;
+    }
+    case FS_CTX_GLFW: glfwMakeContextCurrent(NULL); break;
+    }
+    bound.handle = NULL;
 }
 
 int fs_gl_context_make_current(fs_gl_context *c)
 {
     int ok = 0;
     fs_gl_getproc gp = NULL;
+    if (bound.handle != c->handle) release_bound();
     switch (c->kind) {
     case FS_CTX_OSMESA:
         ok = OSMesaMakeCurrent(c->handle, c->extra, GL_UNSIGNED_BYTE, c->width, c->height);
@@ -147,11 +184,12 @@ int fs_gl_context_make_current(fs_gl_context *c)
     }
     case FS_CTX_GLFW:
         glfwMakeContextCurrent(c->handle);
-        ok = 1;
+        ok = glfwGetCurrentContext() == c->handle;
         gp = glfw_getproc;
         break;
     }
     if (!ok) return fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot make the %s context current", fs_ctx_kind_name(c->kind));
+    bound = *c;
     int rc = fs_gl_load(gp);
     if (rc) return rc;
     return fs_gl_check_core45(c->renderer, sizeof c->renderer, c->version, sizeof c->version);
@@ -163,16 +201,26 @@ int fs_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int heig
     c->kind = kind;
     c->width = width > 0 ? width : 16;
     c->height = height > 0 ? height : 16;
+    /* Creating may bind and unbind (GLFW): release the bound context first and
+     * give it back if creation fails. */
+    fs_gl_context prev = bound;
+    release_bound();
     int rc = kind == FS_CTX_EGL ? create_egl(c) : kind == FS_CTX_GLFW ? create_glfw(c) : create_osmesa(c);
-    if (rc) return rc;
-    rc = fs_gl_context_make_current(c);
-    if (rc) { char msg[1024]; snprintf(msg, sizeof msg, "%s", fs_error_message()); fs_gl_context_destroy(c); return fs_fail(rc, "%s", msg); }
+    if (!rc) rc = fs_gl_context_make_current(c);
+    if (rc) {
+        char msg[1024];
+        snprintf(msg, sizeof msg, "%s", fs_error_message());
+        fs_gl_context_destroy(c);
+        if (prev.handle) fs_gl_context_make_current(&prev);
+        return fs_fail(rc, "%s", msg);
+    }
     return FS_OK;
 }
 
 void fs_gl_context_destroy(fs_gl_context *c)
 {
     if (!c->handle) return;
+    if (bound.handle == c->handle) release_bound();
     switch (c->kind) {
     case FS_CTX_OSMESA:
         OSMesaDestroyContext(c->handle);
@@ -180,16 +228,15 @@ void fs_gl_context_destroy(fs_gl_context *c)
         break;
     case FS_CTX_EGL: {
         egl_fns *e = c->extra;
-        e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         e->DestroyContext(e->dpy, c->handle);
-        e->Terminate(e->dpy);
+        if (--egl_users == 0) e->Terminate(e->dpy);
         dlclose(e->lib);
         free(e);
         break;
     }
     case FS_CTX_GLFW:
         glfwDestroyWindow(c->handle);
-        glfwTerminate();
+        if (--glfw_users == 0) glfwTerminate();
         break;
     }
     memset(c, 0, sizeof *c);

@@ -22,8 +22,8 @@ void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *rendere
 {
     char v[640];
     p->n = 0;
-    fs_provenance_set(p, "version", FS_VERSION);
-    fs_provenance_set(p, "commit", FS_GIT);
+    fs_provenance_set(p, "version", fs_version);
+    fs_provenance_set(p, "commit", fs_commit);
     fs_provenance_set(p, "gl_renderer", renderer ? renderer : "CPU");
     fs_provenance_set(p, "gl_version", gl_version ? gl_version : "none");
     snprintf(v, sizeof v, "%d", omp_get_max_threads());

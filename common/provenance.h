@@ -11,6 +11,10 @@ extern "C" {
 
 #define FS_PROV_MAX 40
 
+/* fluidsurf's version and `git describe` of the build (generated fs_version.c). */
+extern const char fs_version[];
+extern const char fs_commit[];
+
 typedef struct fs_provenance {
     int n;
     fs_attr attr[FS_PROV_MAX];

@@ -2,7 +2,9 @@
  * method renders the same lattice block on OSMesa, on a GLFW window (GLX,
  * llvmpipe under Xvfb) and, when Mesa offers one, on an EGL device; switching
  * back to OSMesa (which reloads the function table) must give the very same
- * G-buffer, also after the other contexts are destroyed. */
+ * G-buffer, also after the other contexts are destroyed.
+ * With --expect-failures (no display, no EGL vendor) GLFW and EGL must fail
+ * with one "OpenGL: ..." line each and leave OSMesa current and working. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl_context.h"
@@ -15,6 +17,7 @@
 
 static fs_scene scene;
 static fs_particles block;
+static int expect_failures;
 
 /* A 6x4x5 lattice block (as tests/test_spheres.c test_golden), framed at SIZE^2. */
 static void make_block(void)
@@ -138,32 +141,49 @@ static void osmesa_again(fs_gl_context *os, int switch_to, const fs_gbuffer *ref
     fs_gbuffer_free(&g);
 }
 
+/* A failed create: FS_ERR_RUNTIME, one line starting with `prefix`, no
+ * handle kept, and the OSMesa context still current and rendering. */
+static void check_failed_create(int rc, const fs_gl_context *c, const char *prefix, fs_gl_context *os,
+                                const fs_gbuffer *ref)
+{
+    const char *msg = fs_error_message();
+    printf("%s: not available here: %s\n", fs_ctx_kind_name(c->kind), msg);
+    CHECK(rc == FS_ERR_RUNTIME, "failure returned %d, not FS_ERR_RUNTIME", rc);
+    CHECK(!strncmp(msg, prefix, strlen(prefix)), "failure message does not start '%s': %s", prefix, msg);
+    CHECK(strchr(msg, '\n') == NULL, "failure message is not one line: %s", msg);
+    CHECK(c->handle == NULL, "a failed %s context keeps a handle", fs_ctx_kind_name(c->kind));
+    char what[64];
+    snprintf(what, sizeof what, "OSMesa still current after the failed %s create", fs_ctx_kind_name(c->kind));
+    osmesa_again(os, 0, ref, what);
+}
+
 /* EGL needs no GPU to be tested: it either works (Mesa's software device) and
  * renders what OSMesa renders, or fails with one clear line. */
-static void test_egl(const fs_gbuffer *ref)
+static void test_egl(fs_gl_context *os, const fs_gbuffer *ref)
 {
     fs_gl_context egl;
     int rc = fs_gl_context_create(&egl, FS_CTX_EGL, SIZE, SIZE);
     if (rc != FS_OK) {
-        const char *msg = fs_error_message();
-        printf("EGL: not available here: %s\n", msg);
-        CHECK(rc == FS_ERR_RUNTIME, "EGL failure returned %d, not FS_ERR_RUNTIME", rc);
-        CHECK(!strncmp(msg, "OpenGL: EGL: ", 13), "EGL failure message does not start 'OpenGL: EGL: ': %s", msg);
-        CHECK(strchr(msg, '\n') == NULL, "EGL failure message is not one line: %s", msg);
-        CHECK(egl.handle == NULL, "a failed EGL context keeps a handle");
+        egl.kind = FS_CTX_EGL;
+        check_failed_create(rc, &egl, "OpenGL: EGL: ", os, ref);
         return;
     }
+    CHECK(!expect_failures, "EGL context created although no EGL vendor should be found");
     printf("EGL: GL_RENDERER %s, GL_VERSION %s\n", egl.renderer, egl.version);
     fs_gbuffer g = {0};
     rc = render_block(&g);
     CHECK(rc == FS_OK, "EGL render: %s", fs_error_message());
     if (rc == FS_OK) compare("EGL vs OSMesa", ref, &g);
     fs_gbuffer_free(&g);
+    /* back to OSMesa, then destroy EGL behind its back */
+    osmesa_again(os, 1, ref, "OSMesa after EGL");
     fs_gl_context_destroy(&egl);
+    osmesa_again(os, 0, ref, "OSMesa still current after destroying EGL");
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    expect_failures = argc > 1 && !strcmp(argv[1], "--expect-failures");
     make_block();
     fs_gbuffer ref = {0}, g = {0};
 
@@ -181,7 +201,13 @@ int main(void)
     /* 2. a GLFW window on Xvfb: GLX, loaded by GLFW at run time */
     fs_gl_context win;
     int rc = fs_gl_context_create(&win, FS_CTX_GLFW, SIZE, SIZE);
-    CHECK(rc == FS_OK, "GLFW context: %s", fs_error_message());
+    if (expect_failures) {
+        CHECK(rc != FS_OK, "GLFW context created without a display");
+        win.kind = FS_CTX_GLFW;
+        if (rc != FS_OK) check_failed_create(rc, &win, "OpenGL: GLFW ", &os, &ref);
+    } else {
+        CHECK(rc == FS_OK, "GLFW context: %s", fs_error_message());
+    }
     if (rc == FS_OK) {
         printf("GLFW: GL_RENDERER %s, GL_VERSION %s\n", win.renderer, win.version);
         CHECK(strstr(win.renderer, "llvmpipe") != NULL, "GLFW renderer under Xvfb is '%s'", win.renderer);
@@ -199,9 +225,9 @@ int main(void)
         osmesa_again(&os, 0, &ref, "OSMesa still current after destroying GLFW");
     }
 
-    /* 4. EGL, then OSMesa once more */
-    test_egl(&ref);
-    osmesa_again(&os, 1, &ref, "OSMesa after EGL");
+    /* 4. EGL (or its one-line failure), and OSMesa after it */
+    test_egl(&os, &ref);
+    osmesa_again(&os, 1, &ref, "OSMesa at the end");
 
     fs_gl_context_destroy(&os);
     fs_gbuffer_free(&ref);

@@ -201,10 +201,12 @@ typedef struct march {
     float s_prev;
 } march;
 
-/* Largest step from local t that is proven to keep the sign of phi - iso:
- * the per-cell Lipschitz step |g| / L_c is free, longer steps are tried
- * (doubling the last one) against the monotone-kernel bound. */
-static float safe_step(const stretch *S, const march *m, float t, float rem, float lip)
+/* Step from local t. The per-cell Lipschitz step |g| / L_c is safe without a
+ * test; longer steps (doubling the last one) are tried against the
+ * monotone-kernel bound of phi on [t, t+s]. When that bound proves the step,
+ * *proven gets phi - iso's conservative value at the end (the bound minus iso)
+ * and returns 1; otherwise the step is |g| / L_c or step_min and phi must be sampled. */
+static int safe_step(const stretch *S, const march *m, float t, float rem, float lip, float *s_out, float *g_end)
 {
     const reference *R = S->R;
     float s_lip = fabsf(m->g) / lip, floor_s = s_lip > R->step_min ? s_lip : R->step_min;
@@ -212,10 +214,15 @@ static float safe_step(const stretch *S, const march *m, float t, float rem, flo
     s = s < rem ? s : rem;
     while (s > floor_s) {
         float b = phi_bound(S, t, s, !m->inside);
-        if (m->inside ? b >= R->f.iso : b < R->f.iso) break;
+        if (m->inside ? b >= R->f.iso : b < R->f.iso) {
+            *s_out = s;
+            *g_end = b - R->f.iso;
+            return 1;
+        }
         s = 0.5f * s > floor_s ? 0.5f * s : floor_s;
     }
-    return s < rem ? s : rem;
+    *s_out = s < rem ? s : rem;
+    return 0;
 }
 
 /* Marches the stretch [0, len] of one cell (ray distance t0 at its start).
@@ -232,8 +239,10 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
     }
     float t = 0;
     while (t < len) {
-        float rem = len - t, s = safe_step(S, m, t, rem, lip);
-        float tn = s >= rem ? len : t + s, gn = phi_at(S, tn) - iso;
+        float rem = len - t, s, gn;
+        int proven = safe_step(S, m, t, rem, lip, &s, &gn);
+        float tn = s >= rem ? len : t + s;
+        if (!proven) gn = phi_at(S, tn) - iso;
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
         float lo = t, hi = tn;
