@@ -90,7 +90,7 @@ int cmd_render(int argc, char **argv)
     if (radius > 0) scene.radius = radius;
     else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
     int radius_note = !scene.path[0] && !(radius > 0) && !(p.radius > 0) && !quiet;
-    fs_scene_finish_camera(&scene, p.bmin, p.bmax);
+    fs_scene_frame_particles(&scene, &p);
     fs_method_setup setup = {fs_scene_field(&scene), params};
 
     fs_grid grid = {0};

@@ -75,28 +75,58 @@ void fs_camera_from_view_dir(const fs_camera *c, const float v[3], float w[3])
     for (int i = 0; i < 3; i++) w[i] = v[0] * r[i] + v[1] * u[i] - v[2] * f[i];
 }
 
+/* Largest |NDC| coordinate of the box corners seen from c, and their NDC centre. */
+static float box_extent(const fs_camera *c, const float bmin[3], const float bmax[3], float ctr[2])
+{
+    float r[3], u[3], f[3], lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    fs_camera_basis(c, r, u, f);
+    float t = tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
+    for (int k = 0; k < 8; k++) {
+        float p[3] = {k & 1 ? bmax[0] : bmin[0], k & 2 ? bmax[1] : bmin[1], k & 4 ? bmax[2] : bmin[2]}, d[3];
+        sub(p, c->eye, d);
+        float z = fmaxf(dot(d, f), 1e-6f), x = dot(d, r) / (z * t * a), y = dot(d, u) / (z * t);
+        lo[0] = fminf(lo[0], x); hi[0] = fmaxf(hi[0], x);
+        lo[1] = fminf(lo[1], y); hi[1] = fmaxf(hi[1], y);
+    }
+    ctr[0] = 0.5f * (lo[0] + hi[0]);
+    ctr[1] = 0.5f * (lo[1] + hi[1]);
+    return fmaxf(fmaxf(hi[0] - ctr[0], ctr[0] - lo[0]), fmaxf(hi[1] - ctr[1], ctr[1] - lo[1]));
+}
+
 void fs_camera_frame_box(fs_camera *c, const float bmin[3], const float bmax[3], int up_axis)
 {
     float ctr[3], ext[3];
     for (int i = 0; i < 3; i++) { ctr[i] = 0.5f * (bmin[i] + bmax[i]); ext[i] = bmax[i] - bmin[i]; }
     float radius = 0.5f * sqrtf(dot(ext, ext));
     if (radius <= 0) radius = 1;
-    /* Front-right view, 30 degrees above the horizon, far enough that the
-     * bounding sphere fits the smaller field of view. */
+    /* Look across the longer horizontal side (a dam break is seen from its
+     * long side), 25 degrees above the horizon and 30 degrees off-axis. */
     int a = (up_axis + 1) % 3, b = (up_axis + 2) % 3;
-    float dir[3] = {0, 0, 0};
-    dir[up_axis] = 0.5f;
-    dir[b] = 0.866f * 0.94f;
-    dir[a] = 0.866f * 0.34f;
+    if (ext[a] < ext[b]) { int tmp = a; a = b; b = tmp; }
+    float dir[3];
+    dir[up_axis] = sinf(25.0f * (float)M_PI / 180);
+    dir[b] = cosf(25.0f * (float)M_PI / 180) * cosf(30.0f * (float)M_PI / 180);
+    dir[a] = cosf(25.0f * (float)M_PI / 180) * sinf(30.0f * (float)M_PI / 180);
     float half = c->fovy_deg * (float)M_PI / 360.0f;
     float aspect = (float)c->width / c->height;
     if (aspect < 1) half = atanf(tanf(half) * aspect);
-    float dist = radius / sinf(half) * 1.02f;
+    float dist = radius / sinf(half) * 1.02f; /* the bounding sphere fits: a safe start */
     for (int i = 0; i < 3; i++) {
         c->target[i] = ctr[i];
-        c->eye[i] = ctr[i] + dir[i] * dist;
         c->up[i] = i == up_axis ? 1.0f : 0.0f;
     }
+    /* Then tighten: move closer until the box corners fill 90% of the frame,
+     * re-centring the box's projection each time. */
+    for (int it = 0; it < 6; it++) {
+        for (int i = 0; i < 3; i++) c->eye[i] = c->target[i] + dir[i] * dist;
+        float nc[2], e = box_extent(c, bmin, bmax, nc);
+        float r[3], u[3], f[3], t = tanf(c->fovy_deg * (float)M_PI / 360.0f);
+        fs_camera_basis(c, r, u, f);
+        float zc = dot(dir, dir) * dist;
+        for (int i = 0; i < 3; i++) c->target[i] += (nc[0] * t * aspect * r[i] + nc[1] * t * u[i]) * zc;
+        if (e > 0) dist *= 0.5f + 0.5f * e / 0.9f;
+    }
+    for (int i = 0; i < 3; i++) c->eye[i] = c->target[i] + dir[i] * dist;
 }
 
 void fs_camera_fit_clip(fs_camera *c, const float bmin[3], const float bmax[3])

@@ -87,3 +87,26 @@ int fs_particles_validate(const fs_particles *p, const char *name)
             return fs_fail(FS_ERR_INPUT, "%s: particle %zu has a non-finite position", name, i);
     return FS_OK;
 }
+
+static int cmp_float(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3])
+{
+    size_t m = p->n < 65536 ? p->n : 65536;
+    float *v = m ? malloc(m * sizeof *v) : NULL;
+    const float *axis[3] = {p->x, p->y, p->z};
+    for (int a = 0; a < 3; a++) {
+        lo[a] = p->bmin[a];
+        hi[a] = p->bmax[a];
+        if (!v) continue;
+        for (size_t i = 0; i < m; i++) v[i] = axis[a][i * (p->n / m)];
+        qsort(v, m, sizeof *v, cmp_float);
+        lo[a] = v[(size_t)(frac * (m - 1))];
+        hi[a] = v[(size_t)((1 - frac) * (m - 1))];
+    }
+    free(v);
+}

@@ -27,6 +27,9 @@ unsigned fs_particles_fields(const fs_particles *p);
 void fs_particles_bounds(fs_particles *p);
 /* FS_ERR_INPUT with "name: ..." when there are no particles or a position is NaN/Inf. */
 int fs_particles_validate(const fs_particles *p, const char *name);
+/* Per-axis quantile box [frac, 1 - frac] (from at most 65536 evenly spaced
+ * particles): frames the body of the fluid without far-flung spray. */
+void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3]);
 
 typedef struct fs_particle_stats {
     size_t n;

@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "fs_error.h"
+#include "particles.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -62,6 +63,18 @@ void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3
     float g = s->support_r * s->radius, lo[3], hi[3];
     for (int i = 0; i < 3; i++) { lo[i] = bmin[i] - g; hi[i] = bmax[i] + g; }
     fs_camera_fit_clip(&s->camera, lo, hi);
+}
+
+void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
+{
+    if (!s->has_camera) {
+        float lo[3], hi[3];
+        fs_particles_core_bounds(p, 0.01f, lo, hi);
+        for (int i = 0; i < 3; i++) { lo[i] -= s->radius; hi[i] += s->radius; }
+        fs_camera_frame_box(&s->camera, lo, hi, s->up_axis);
+        s->has_camera = 1;
+    }
+    fs_scene_finish_camera(s, p->bmin, p->bmax);
 }
 
 /* ---- JSON scene files ---- */
