@@ -80,6 +80,8 @@ int cmd_render(int argc, char **argv)
     fs_scene_frames(&scene, &first, &last);
     if (frame >= 0) {
         if (scene.frame_first < 0 && !scene.synth.shape) return cli_usage("render", "--frame: the scene is not a sequence");
+        if (scene.frame_first >= 0 && (frame < scene.frame_first || frame > scene.frame_last))
+            return cli_usage("render", "--frame %d: the scene has frames %d..%d", frame, scene.frame_first, scene.frame_last);
         first = frame;
     }
     fs_particles p;

@@ -27,6 +27,16 @@ fi
 "$BIN" methods | grep -q 'step_min' || fail "methods does not list parameters"
 "$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
 "$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
+# a frame sequence: a printf pattern with first/last, one frame picked by --frame
+mkdir -p "$T/seq"
+cp "$SRC/experiments/data/splashsurf/double_dam_break_frame_01_4732_particles.vtk" "$T/seq/frame_0001.vtk"
+cp "$SRC/experiments/data/splashsurf/double_dam_break_frame_26_4732_particles.vtk" "$T/seq/frame_0002.vtk"
+printf '{"particles": {"file": "seq/frame_%%04d.vtk", "first": 1, "last": 2}, "camera": {"width": 48, "height": 48}}' > "$T/seq.json"
+"$BIN" render "$T/seq.json" --method spheres --frame 2 -q -o "$T/seq2.exr" || fail "render frame 2 of a pattern"
+"$BIN" render "$T/seq.json" --method spheres -q -o "$T/seq1.exr" || fail "render the first frame of a pattern"
+iinfo -v "$T/seq2.exr" 2>/dev/null | grep -q 'fluidsurf:frame: "2"' || fail "frame 2 not recorded in the provenance"
+! cmp -s "$T/seq1.exr" "$T/seq2.exr" || fail "frames 1 and 2 rendered identically"
+"$BIN" render "$T/seq.json" --method spheres --frame 3 -q -o "$T/seq3.exr" 2>/dev/null; [ $? -eq 2 ] || fail "a missing frame is not exit 2"
 for c in render info convert methods; do "$BIN" $c --help | grep -q usage || fail "$c --help"; done
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -1,0 +1,1 @@
+fs_add_test(test_scene test_scene.c)
