@@ -165,7 +165,7 @@ static void against_analytic(void)
                    st.interior, st.bias_in, st.angle_in);
             CHECK(st.both > 2000, "%s: %d pixels both cover", names[si], st.both);
             /* The iso-surface sits ~0.25 r inside the ideal faces (see the vertical
-             * ray below); seen at 30 degrees elevation that is ~0.5 r of depth. */
+             * ray below); seen at 25 degrees elevation that is ~0.6 r of depth. */
             CHECK(st.bias > 0 && st.bias < 1.0, "%s: depth bias %g r", names[si], st.bias);
             CHECK(st.bias_in > 0 && st.bias_in < 0.75, "%s: interior depth bias %g r", names[si], st.bias_in);
             CHECK(st.iou > 0.9, "%s: IoU %g", names[si], st.iou);
