@@ -37,6 +37,8 @@ int fs_image_channel(const fs_image *img, const char *name);
  * (clamped to [0,1], NaN -> 0, rounded), and code -> linear. */
 unsigned char fs_srgb_encode8(float linear);
 float fs_srgb_decode8(unsigned char code);
+/* The same encode without quantisation: linear (clamped, NaN -> 0) -> 0..1. */
+float fs_srgb_encode(float linear);
 
 #ifdef __cplusplus
 }

@@ -3,13 +3,23 @@
 #include <math.h>
 #include <string.h>
 
-unsigned char fs_srgb_encode8(float linear)
+/* IEC 61966-2-1 encode of a linear value clamped to [0,1] (NaN -> 0), in double. */
+static double srgb_encode_exact(float linear)
 {
     double v = linear;
     if (!(v > 0)) v = 0; /* also NaN */
     if (v > 1) v = 1;
-    double e = v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
-    return (unsigned char)(e * 255.0 + 0.5);
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
+}
+
+unsigned char fs_srgb_encode8(float linear)
+{
+    return (unsigned char)(srgb_encode_exact(linear) * 255.0 + 0.5);
+}
+
+float fs_srgb_encode(float linear)
+{
+    return (float)srgb_encode_exact(linear);
 }
 
 float fs_srgb_decode8(unsigned char code)

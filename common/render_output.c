@@ -1,5 +1,6 @@
 #include "render_output.h"
 #include "fs_error.h"
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -44,4 +45,46 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
     rc = fs_write_exr(path, &img, prov->attr, prov->n);
     free(pix);
     return rc;
+}
+
+int fs_read_render(const char *path, fs_gbuffer *g, float **rgba, float *r_out)
+{
+    fs_image img;
+    memset(g, 0, sizeof *g);
+    *rgba = NULL;
+    int rc = fs_read_image(path, &img);
+    if (rc) return rc;
+    static const char *need[] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z", "coverage"};
+    int ch[9];
+    for (int k = 0; k < 9; k++)
+        if ((ch[k] = fs_image_channel(&img, need[k])) < 0) {
+            fs_image_free(&img);
+            return fs_fail(FS_ERR_INPUT, "%s: no channel '%s' (not a fluidsurf G-buffer EXR)", path, need[k]);
+        }
+    int th = fs_image_channel(&img, "thickness"), col[4];
+    static const char *cn[] = {"color.R", "color.G", "color.B", "color.A"};
+    int has_color = 1;
+    for (int k = 0; k < 4; k++) has_color &= (col[k] = fs_image_channel(&img, cn[k])) >= 0;
+    size_t n = (size_t)img.w * img.h;
+    if ((rc = fs_gbuffer_alloc(g, img.w, img.h, has_color)) || !(*rgba = malloc(n * 4 * sizeof(float)))) {
+        fs_gbuffer_free(g);
+        fs_image_free(&img);
+        return rc ? rc : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    }
+    for (size_t i = 0; i < n; i++) {
+        const float *px = img.pix + i * img.nch;
+        for (int k = 0; k < 4; k++) (*rgba)[4 * i + k] = px[ch[k]];
+        float cov = px[ch[8]] > 0.5f ? 1.0f : 0.0f;
+        g->coverage[i] = cov;
+        g->depth[i] = cov ? px[ch[4]] : INFINITY;
+        for (int k = 0; k < 3; k++) g->normal[3 * i + k] = cov ? px[ch[5 + k]] : 0.0f;
+        g->thickness[i] = th >= 0 ? px[th] : 0.0f;
+        if (has_color)
+            for (int k = 0; k < 4; k++) g->color[4 * i + k] = px[col[k]];
+    }
+    fs_image_free(&img);
+    char buf[64];
+    *r_out = 0;
+    if (fs_read_image_attr(path, "fluidsurf:r", buf, sizeof buf) == 1) *r_out = strtof(buf, NULL);
+    return FS_OK;
 }

@@ -5,3 +5,7 @@ add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh 
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
 set_tests_properties(cli_bad_input cli_render PROPERTIES
   ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")
+add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
+set_tests_properties(cli_compare PROPERTIES
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")

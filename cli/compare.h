@@ -1,0 +1,69 @@
+/* `fluidsurf compare`: the state shared by the run (cmd_compare.c) and the
+ * writers of its outputs (compare_outputs.c). */
+#ifndef FS_COMPARE_H
+#define FS_COMPARE_H
+#include "gbuffer.h"
+#include "metrics.h"
+#include "provenance.h"
+#include "scene.h"
+#include "sweep.h"
+#include "timing.h"
+
+#define CMP_MAX_ENTRIES 64
+#define CMP_MAX_REFS 4
+#define CMP_MAX_FRAMES 256
+#define CMP_MAX_RUNS 64
+
+/* A view of one frame: its G-buffer and shaded image. */
+typedef struct cmp_view { fs_gbuffer g; float *rgba; } cmp_view;
+
+/* A reference: "reference", "reference:p=v,..." (the reference method with
+ * those parameters) or "analytic" (the ideal shape of a synthetic scene). */
+typedef struct cmp_ref {
+    char spec[160];
+    char label[160];     /* file-safe */
+    int analytic;
+    fs_variant v;        /* the reference method's parameters */
+    cmp_view *frames;    /* nframes */
+    double frame_ms;     /* median render time of the first frame */
+} cmp_ref;
+
+/* A method variant or an imported EXR. */
+typedef struct cmp_entry {
+    fs_variant v;        /* v.m NULL for an import */
+    char name[64];       /* method name, or the import's NAME */
+    char label[200];
+    char variant[200];
+    int imported;
+    cmp_view first;      /* the first frame's view, kept for the panel and heatmaps */
+    fs_metrics *metrics; /* [nrefs][nframes] */
+    double *frame_ms;    /* nframes; NAN for imports */
+    fs_stages *runs;     /* the first frame's timed runs, nruns */
+    int nruns;
+    char renderer[256];
+    double temporal_deg; /* mean normal change between consecutive frames */
+} cmp_entry;
+
+typedef struct cmp_run {
+    fs_scene scene;
+    char outdir[1024];
+    char command[4096];
+    int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;
+    cmp_entry entries[CMP_MAX_ENTRIES];
+    cmp_ref refs[CMP_MAX_REFS];
+    double normal_scale_deg, depth_scale_r; /* heatmap scales, the same for every entry */
+    double ref_temporal_deg;
+    fs_provenance prov;
+} cmp_run;
+
+/* Writers (compare_outputs.c); each writes DIR/NAME atomically. */
+int cmp_write_metrics(const cmp_run *r);
+int cmp_write_timings(const cmp_run *r);
+int cmp_write_temporal(const cmp_run *r);
+int cmp_write_diffs(const cmp_run *r);
+int cmp_write_panel(const cmp_run *r);
+int cmp_write_report(const cmp_run *r);
+/* DIR/name into buf. */
+void cmp_path(const cmp_run *r, const char *name, char *buf, int size);
+
+#endif

@@ -1,0 +1,371 @@
+/* The files `compare` writes: CSVs, heatmaps, the panel and the report. Each is
+ * written to a temporary file and renamed (output_file.h). */
+#include "compare.h"
+#include "figure.h"
+#include "fs_error.h"
+#include "output_file.h"
+#include "stats.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void cmp_path(const cmp_run *r, const char *name, char *buf, int size) { snprintf(buf, size, "%s/%s", r->outdir, name); }
+
+/* Opens DIR/name through a temporary file; cmp_close renames it into place. */
+typedef struct cmp_file { char final[1400], tmp[1500]; FILE *f; } cmp_file;
+
+static int cmp_open(const cmp_run *r, const char *name, cmp_file *cf)
+{
+    cmp_path(r, name, cf->final, sizeof cf->final);
+    int rc = fs_output_begin(cf->final, cf->tmp, sizeof cf->tmp);
+    if (rc) return rc;
+    if (!(cf->f = fopen(cf->tmp, "w"))) {
+        fs_output_end(cf->final, cf->tmp, 0);
+        return fs_fail(FS_ERR_RUNTIME, "%s: cannot write", cf->final);
+    }
+    return FS_OK;
+}
+
+static int cmp_close(cmp_file *cf)
+{
+    int ok = !ferror(cf->f);
+    ok &= fclose(cf->f) == 0;
+    if (!ok) { fs_output_end(cf->final, cf->tmp, 0); return fs_fail(FS_ERR_RUNTIME, "%s: write failed", cf->final); }
+    return fs_output_end(cf->final, cf->tmp, 1);
+}
+
+static void num(FILE *f, double v, const char *fmt)
+{
+    if (isnan(v)) fputs("", f);
+    else if (isinf(v)) fputs(v > 0 ? "inf" : "-inf", f);
+    else fprintf(f, fmt, v);
+}
+
+static void csv_text(FILE *f, const char *s)
+{
+    if (!strpbrk(s, ",\"\n")) { fputs(s, f); return; }
+    fputc('"', f);
+    for (; *s; s++) { if (*s == '"') fputc('"', f); fputc(*s, f); }
+    fputc('"', f);
+}
+
+static void provenance_header(const cmp_run *r, FILE *f)
+{
+    char line[8192];
+    fs_provenance_line(&r->prov, line, sizeof line);
+    fprintf(f, "%s\n", line);
+}
+
+int cmp_write_metrics(const cmp_run *r)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, "metrics.csv", &cf);
+    if (rc) return rc;
+    FILE *f = cf.f;
+    provenance_header(r, f);
+    fputs("method,variant,reference,frame,mask_iou,depth_bias_r,depth_rmse_r,depth_p95_r,normal_mean_deg,normal_p95_deg,"
+          "interior_normal_mean_deg,psnr_db,ssim,frame_ms,n_both,n_interior\n", f);
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        int nf = e->imported ? 1 : r->nframes;
+        for (int k = 0; k < r->nrefs; k++)
+            for (int fr = 0; fr < nf; fr++) {
+                const fs_metrics *m = &e->metrics[k * r->nframes + fr];
+                csv_text(f, e->name); fputc(',', f);
+                csv_text(f, e->variant); fputc(',', f);
+                csv_text(f, r->refs[k].spec); fputc(',', f);
+                if (r->sequence) fprintf(f, "%d", r->first_frame + fr);
+                const double v[] = {m->mask_iou, m->depth_bias_r, m->depth_rmse_r, m->depth_p95_r, m->normal_mean_deg,
+                                    m->normal_p95_deg, m->interior_normal_mean_deg, m->psnr_db, m->ssim, e->frame_ms[fr]};
+                for (int j = 0; j < 10; j++) { fputc(',', f); num(f, v[j], j == 9 ? "%.3f" : "%.6g"); }
+                fprintf(f, ",%zu,%zu\n", m->n_both, m->n_interior);
+            }
+    }
+    return cmp_close(&cf);
+}
+
+int cmp_write_timings(const cmp_run *r)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, "timings.csv", &cf);
+    if (rc) return rc;
+    FILE *f = cf.f;
+    provenance_header(r, f);
+    fputs("method,variant,stage,ms_median,ms_min,ms_max,runs,renderer\n", f);
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        if (e->imported || !e->nruns) continue;
+        /* every stage any run reported, then the total */
+        for (int s = 0; s <= e->runs[0].n; s++) {
+            double v[CMP_MAX_RUNS];
+            const char *name = s < e->runs[0].n ? e->runs[0].name[s] : "total";
+            for (int k = 0; k < e->nruns; k++) {
+                v[k] = 0;
+                if (s == e->runs[0].n) v[k] = fs_stages_total(&e->runs[k]);
+                else
+                    for (int j = 0; j < e->runs[k].n; j++)
+                        if (!strcmp(e->runs[k].name[j], name)) v[k] = e->runs[k].ms[j];
+            }
+            double med = fs_median(v, e->nruns); /* sorts v */
+            csv_text(f, e->name); fputc(',', f);
+            csv_text(f, e->variant);
+            fprintf(f, ",%s,%.3f,%.3f,%.3f,%d,", name, med, v[0], v[e->nruns - 1], e->nruns);
+            csv_text(f, e->renderer);
+            fputc('\n', f);
+        }
+    }
+    return cmp_close(&cf);
+}
+
+int cmp_write_temporal(const cmp_run *r)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, "temporal.csv", &cf);
+    if (rc) return rc;
+    FILE *f = cf.f;
+    provenance_header(r, f);
+    fputs("method,variant,frames,normal_change_deg,reference_normal_change_deg\n", f);
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        if (e->imported) continue;
+        csv_text(f, e->name); fputc(',', f);
+        csv_text(f, e->variant);
+        fprintf(f, ",%d,", r->nframes);
+        num(f, e->temporal_deg, "%.4f");
+        fputc(',', f);
+        num(f, r->ref_temporal_deg, "%.4f");
+        fputc('\n', f);
+    }
+    return cmp_close(&cf);
+}
+
+static int write_rgba_png(const cmp_run *r, const char *name, const fs_rgba_image *im)
+{
+    char path[1400];
+    cmp_path(r, name, path, sizeof path);
+    const char *names[4] = {"R", "G", "B", "A"};
+    fs_image img = {im->w, im->h, 4, names, im->pix};
+    return fs_write_png(path, &img);
+}
+
+/* The normal-error heatmap of entry e against the first reference. */
+static int normal_heatmap(const cmp_run *r, const cmp_entry *e, fs_rgba_image *out)
+{
+    const fs_gbuffer *a = &e->first.g, *b = &r->refs[0].frames[0].g;
+    float *map = malloc((size_t)a->w * a->h * sizeof *map);
+    if (!map) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+    fs_normal_error_map(a, b, map);
+    int rc = fs_heatmap(map, a->w, a->h, r->normal_scale_deg, "normal error", "deg", out);
+    free(map);
+    return rc;
+}
+
+static int depth_heatmap(const cmp_run *r, const cmp_entry *e, fs_rgba_image *out)
+{
+    const fs_gbuffer *a = &e->first.g, *b = &r->refs[0].frames[0].g;
+    float *map = malloc((size_t)a->w * a->h * sizeof *map);
+    if (!map) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+    double bias = e->metrics[0].depth_bias_r;
+    fs_depth_error_map(a, b, r->scene.radius, isfinite(bias) ? bias : 0, map);
+    int rc = fs_heatmap(map, a->w, a->h, r->depth_scale_r, "|depth error - bias|", "r", out);
+    free(map);
+    return rc;
+}
+
+int cmp_write_diffs(const cmp_run *r)
+{
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        fs_rgba_image hm[2] = {{0}}, panel = {0};
+        int rc = normal_heatmap(r, e, &hm[0]);
+        if (!rc) rc = depth_heatmap(r, e, &hm[1]);
+        char title[400], name[300];
+        snprintf(title, sizeof title, "%s against %s", e->label, r->refs[0].spec);
+        const fs_rgba_image *tiles[2] = {&hm[0], &hm[1]};
+        fs_panel_spec spec = {1, 2, tiles, NULL, NULL, NULL, title};
+        if (!rc) rc = fs_panel_compose(&spec, &panel);
+        snprintf(name, sizeof name, "diff_%s.png", e->label);
+        if (!rc) rc = write_rgba_png(r, name, &panel);
+        fs_rgba_free(&hm[0]);
+        fs_rgba_free(&hm[1]);
+        fs_rgba_free(&panel);
+        if (rc) return rc;
+    }
+    return FS_OK;
+}
+
+static void wrap_view(const cmp_view *v, fs_rgba_image *im) { im->w = v->g.w; im->h = v->g.h; im->pix = v->rgba; }
+
+static void caption(const cmp_run *r, const cmp_entry *e, char *buf, int size)
+{
+    const fs_metrics *m = &e->metrics[0];
+    int n = snprintf(buf, size, "%s", e->imported ? e->name : e->label);
+    if (isfinite(e->frame_ms[0])) n += snprintf(buf + n, size - n, "  %.1f ms", e->frame_ms[0]);
+    if (isfinite(m->normal_mean_deg)) snprintf(buf + n, size - n, "  %.1f deg", m->normal_mean_deg);
+    (void)r;
+}
+
+/* A grid: exactly one method swept over two parameters, rows = first, columns = second. */
+static int is_grid(const cmp_run *r)
+{
+    int methods = 0;
+    for (int i = 0; i < r->nentries; i++) methods += !r->entries[i].imported;
+    return methods > 1 && r->entries[0].v.nswept == 2 && methods == r->nentries && r->entries[0].v.m &&
+           r->entries[methods - 1].v.m == r->entries[0].v.m;
+}
+
+static int write_grid_panel(const cmp_run *r)
+{
+    const cmp_entry *e0 = &r->entries[0];
+    int rows = 1 + e0->v.value_index[0], cols = 1 + e0->v.value_index[1];
+    for (int i = 0; i < r->nentries; i++) {
+        if (r->entries[i].v.value_index[0] + 1 > rows) rows = r->entries[i].v.value_index[0] + 1;
+        if (r->entries[i].v.value_index[1] + 1 > cols) cols = r->entries[i].v.value_index[1] + 1;
+    }
+    fs_rgba_image *img = calloc((size_t)rows * cols, sizeof *img), *hm = calloc((size_t)rows * cols, sizeof *hm);
+    const fs_rgba_image **ti = calloc((size_t)rows * cols, sizeof *ti), **th = calloc((size_t)rows * cols, sizeof *th);
+    char (*cap)[256] = calloc((size_t)rows * cols, sizeof *cap), (*rh)[200] = calloc(rows, sizeof *rh), (*ch)[200] = calloc(cols, sizeof *ch);
+    const char **capp = calloc((size_t)rows * cols, sizeof *capp), **rhp = calloc(rows, sizeof *rhp), **chp = calloc(cols, sizeof *chp);
+    int rc = img && hm && ti && th && cap && rh && ch && capp && rhp && chp ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
+    for (int i = 0; i < r->nentries && !rc; i++) {
+        const cmp_entry *e = &r->entries[i];
+        int k = e->v.value_index[0] * cols + e->v.value_index[1];
+        const fs_sweep *s0 = NULL;
+        (void)s0;
+        wrap_view(&e->first, &img[k]);
+        ti[k] = &img[k];
+        rc = normal_heatmap(r, e, &hm[k]);
+        th[k] = &hm[k];
+        const fs_metrics *m = &e->metrics[0];
+        snprintf(cap[k], sizeof cap[k], "%.1f ms  %.1f deg", e->frame_ms[0], m->normal_mean_deg);
+        capp[k] = cap[k];
+        /* headers from the variant string "p=v;q=w" */
+        char var[200];
+        snprintf(var, sizeof var, "%s", e->variant);
+        char *semi = strchr(var, ';');
+        if (semi) *semi = 0;
+        snprintf(rh[e->v.value_index[0]], sizeof rh[0], "%s", var);
+        snprintf(ch[e->v.value_index[1]], sizeof ch[0], "%s", semi ? semi + 1 : "");
+    }
+    for (int i = 0; i < rows; i++) rhp[i] = rh[i];
+    for (int i = 0; i < cols; i++) chp[i] = ch[i];
+    fs_rgba_image out = {0};
+    char title[300];
+    snprintf(title, sizeof title, "%s (normal error against %s on the right)", e0->name, r->refs[0].spec);
+    /* images and heatmaps side by side: 2*cols columns */
+    const fs_rgba_image **both = calloc((size_t)rows * cols * 2, sizeof *both);
+    const char **bcap = calloc((size_t)rows * cols * 2, sizeof *bcap), **bch = calloc((size_t)cols * 2, sizeof *bch);
+    if (!rc && (!both || !bcap || !bch)) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
+    for (int y = 0; y < rows && !rc; y++)
+        for (int x = 0; x < cols; x++) {
+            both[y * 2 * cols + x] = ti[y * cols + x];
+            both[y * 2 * cols + cols + x] = th[y * cols + x];
+            bcap[y * 2 * cols + x] = capp[y * cols + x];
+            bcap[y * 2 * cols + cols + x] = capp[y * cols + x];
+        }
+    for (int x = 0; x < cols && !rc; x++) { bch[x] = chp[x]; bch[cols + x] = chp[x]; }
+    fs_panel_spec spec = {rows, 2 * cols, both, bcap, bch, rhp, title};
+    if (!rc) rc = fs_panel_compose(&spec, &out);
+    if (!rc) rc = write_rgba_png(r, "panel.png", &out);
+    fs_rgba_free(&out);
+    for (int i = 0; hm && i < rows * cols; i++) fs_rgba_free(&hm[i]);
+    free(img); free(hm); free(ti); free(th); free(cap); free(rh); free(ch); free(capp); free(rhp); free(chp);
+    free(both); free(bcap); free(bch);
+    return rc;
+}
+
+int cmp_write_panel(const cmp_run *r)
+{
+    if (is_grid(r)) return write_grid_panel(r);
+    /* columns: the first reference, then every entry; row 2: normal-error heatmaps */
+    int cols = 1 + r->nentries;
+    fs_rgba_image *img = calloc(cols, sizeof *img), *hm = calloc(cols, sizeof *hm);
+    const fs_rgba_image **tiles = calloc(2 * cols, sizeof *tiles);
+    char (*cap)[256] = calloc(2 * cols, sizeof *cap);
+    const char **capp = calloc(2 * cols, sizeof *capp);
+    int rc = img && hm && tiles && cap && capp ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
+    if (!rc) {
+        wrap_view(&r->refs[0].frames[0], &img[0]);
+        tiles[0] = &img[0];
+        snprintf(cap[0], sizeof cap[0], "%s  %.1f ms", r->refs[0].spec, r->refs[0].frame_ms);
+        capp[0] = cap[0];
+        snprintf(cap[cols], sizeof cap[cols], "(ground truth)");
+        capp[cols] = cap[cols];
+    }
+    for (int i = 0; i < r->nentries && !rc; i++) {
+        const cmp_entry *e = &r->entries[i];
+        wrap_view(&e->first, &img[1 + i]);
+        tiles[1 + i] = &img[1 + i];
+        caption(r, e, cap[1 + i], sizeof cap[0]);
+        capp[1 + i] = cap[1 + i];
+        rc = normal_heatmap(r, e, &hm[1 + i]);
+        tiles[cols + 1 + i] = &hm[1 + i];
+        snprintf(cap[cols + 1 + i], sizeof cap[0], "IoU %.3f, depth %+.2f r", e->metrics[0].mask_iou, e->metrics[0].depth_bias_r);
+        capp[cols + 1 + i] = cap[cols + 1 + i];
+    }
+    fs_rgba_image out = {0};
+    char title[1200];
+    const char *src = r->scene.synth.shape ? "synthetic scene" : r->scene.source;
+    const char *slash = strrchr(src, '/');
+    snprintf(title, sizeof title, "%s, %dx%d, r = %g", slash ? slash + 1 : src, r->scene.camera.width,
+             r->scene.camera.height, r->scene.radius);
+    fs_panel_spec spec = {2, cols, tiles, capp, NULL, NULL, title};
+    if (!rc) rc = fs_panel_compose(&spec, &out);
+    if (!rc) rc = write_rgba_png(r, "panel.png", &out);
+    fs_rgba_free(&out);
+    for (int i = 0; hm && i < cols; i++) fs_rgba_free(&hm[i]);
+    free(img); free(hm); free(tiles); free(cap); free(capp);
+    return rc;
+}
+
+static void md_num(FILE *f, double v, const char *fmt)
+{
+    fputs(" | ", f);
+    if (isnan(v)) fputs("—", f);
+    else if (isinf(v)) fputs("∞", f);
+    else fprintf(f, fmt, v);
+}
+
+int cmp_write_report(const cmp_run *r)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, "report.md", &cf);
+    if (rc) return rc;
+    FILE *f = cf.f;
+    fprintf(f, "# fluidsurf compare\n\nReproduce with:\n\n    %s\n\n", r->command);
+    fprintf(f, "![panel](panel.png)\n\n");
+    for (int k = 0; k < r->nrefs; k++) {
+        fprintf(f, "## Against `%s`%s\n\n", r->refs[k].spec, r->nframes > 1 ? " (mean over frames)" : "");
+        fputs("| method | variant | IoU | depth bias (r) | depth RMSE (r) | depth p95 (r) | normal mean (deg) | normal p95 (deg) "
+              "| interior normal (deg) | PSNR (dB) | SSIM | frame (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n", f);
+        for (int i = 0; i < r->nentries; i++) {
+            const cmp_entry *e = &r->entries[i];
+            int nf = e->imported ? 1 : r->nframes;
+            double acc[10] = {0};
+            for (int fr = 0; fr < nf; fr++) {
+                const fs_metrics *m = &e->metrics[k * r->nframes + fr];
+                const double v[] = {m->mask_iou, m->depth_bias_r, m->depth_rmse_r, m->depth_p95_r, m->normal_mean_deg,
+                                    m->normal_p95_deg, m->interior_normal_mean_deg, m->psnr_db, m->ssim, e->frame_ms[fr]};
+                for (int j = 0; j < 10; j++) acc[j] += v[j] / nf;
+            }
+            fprintf(f, "| %s | %s", e->name, e->variant[0] ? e->variant : "—");
+            const char *fmt[] = {"%.4f", "%+.3f", "%.3f", "%.3f", "%.2f", "%.2f", "%.2f", "%.2f", "%.4f", "%.1f"};
+            for (int j = 0; j < 10; j++) md_num(f, acc[j], fmt[j]);
+            fputs(" |\n", f);
+        }
+        fputc('\n', f);
+    }
+    fprintf(f, "Depth errors are in multiples of r = %g: the bias is the mean signed difference (method - reference) over "
+               "pixels both cover, RMSE and p95 measure the error around that bias. Normal angles are over pixels both "
+               "cover; \"interior\" keeps pixels at least 3 px from either silhouette. PSNR and SSIM (Wang et al. 2004) "
+               "are on sRGB luminance over the union of the coverage masks. Frame times are medians of %d runs after a "
+               "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",
+            r->scene.radius, r->repeat, r->normal_scale_deg, r->depth_scale_r);
+    fputs("## Renderers\n\n", f);
+    for (int i = 0; i < r->nentries; i++) fprintf(f, "- %s: %s\n", r->entries[i].label, r->entries[i].renderer);
+    fputs("\nOn OSMesa (llvmpipe) the OpenGL stages run on the same CPU cores as the C code: these timings say nothing "
+          "about GPU speed.\n\n## Provenance\n\n", f);
+    for (int i = 0; i < r->prov.n; i++) fprintf(f, "- `%s`: %s\n", r->prov.name[i], r->prov.value[i]);
+    return cmp_close(&cf);
+}

@@ -1,0 +1,77 @@
+#include "sweep.h"
+#include "fs_error.h"
+#include "method_params.h"
+#include <stdio.h>
+#include <string.h>
+
+int fs_sweep_add(fs_sweep *sweeps, int *nsweeps, const char *spec)
+{
+    const char *dot = strchr(spec, '.'), *eq = strchr(spec, '=');
+    if (!dot || !eq || dot > eq || dot == spec || eq == dot + 1 || !eq[1])
+        return fs_fail(FS_ERR_INPUT, "--set %s: expected METHOD.PARAM=V1,V2,...", spec);
+    if (*nsweeps == FS_MAX_SWEEPS) return fs_fail(FS_ERR_INPUT, "--set %s: too many sweeps", spec);
+    char mname[64], pname[64];
+    snprintf(mname, sizeof mname, "%.*s", (int)(dot - spec), spec);
+    snprintf(pname, sizeof pname, "%.*s", (int)(eq - dot - 1), dot + 1);
+    fs_sweep *sw = &sweeps[*nsweeps];
+    memset(sw, 0, sizeof *sw);
+    if (!(sw->m = fs_method_find(mname)))
+        return fs_fail(FS_ERR_INPUT, "--set %s: unknown method '%s' (see 'fluidsurf methods')", spec, mname);
+    if ((sw->param = fs_method_param_index(sw->m, pname)) < 0)
+        return fs_fail(FS_ERR_INPUT, "--set %s: %s has no parameter '%s'", spec, mname, pname);
+    for (int i = 0; i < *nsweeps; i++)
+        if (sweeps[i].m == sw->m && sweeps[i].param == sw->param)
+            return fs_fail(FS_ERR_INPUT, "--set %s: %s.%s is swept twice", spec, mname, pname);
+    for (const char *v = eq + 1; *v;) {
+        const char *comma = strchr(v, ',');
+        int len = comma ? (int)(comma - v) : (int)strlen(v);
+        if (sw->nvalues == FS_MAX_SWEEP_VALUES) return fs_fail(FS_ERR_INPUT, "--set %s: too many values", spec);
+        if (len <= 0 || len >= (int)sizeof sw->values[0]) return fs_fail(FS_ERR_INPUT, "--set %s: empty or long value", spec);
+        snprintf(sw->values[sw->nvalues], sizeof sw->values[0], "%.*s", len, v);
+        double parsed;
+        char what[160];
+        snprintf(what, sizeof what, "--set %s.%s", mname, pname);
+        int rc = fs_param_parse(&sw->m->params[sw->param], sw->values[sw->nvalues], &parsed, what);
+        if (rc) return rc;
+        sw->nvalues++;
+        v += len + (comma ? 1 : 0);
+        if (comma && !*v) return fs_fail(FS_ERR_INPUT, "--set %s: trailing comma", spec);
+    }
+    (*nsweeps)++;
+    return FS_OK;
+}
+
+int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *sweeps, int nsweeps, fs_variant *out, int max)
+{
+    int mine[FS_MAX_SWEEPS], n = 0, total = 1;
+    for (int i = 0; i < nsweeps; i++)
+        if (sweeps[i].m == m) { mine[n++] = i; total *= sweeps[i].nvalues; }
+    if (total > max) return -fs_fail(FS_ERR_INPUT, "%s: %d variants, at most %d", m->name, total, max);
+    double base[FS_MAX_PARAMS];
+    int rc = fs_method_params_resolve(m, s, base);
+    if (rc) return -rc;
+    for (int v = 0; v < total; v++) {
+        fs_variant *o = &out[v];
+        memset(o, 0, sizeof *o);
+        o->m = m;
+        memcpy(o->params, base, sizeof base);
+        snprintf(o->label, sizeof o->label, "%s", m->name);
+        int rest = v, lab = (int)strlen(o->label), var = 0;
+        /* the first sweep varies slowest, so a 2-parameter grid reads row by row */
+        int idx[FS_MAX_SWEEPS];
+        for (int k = n - 1; k >= 0; k--) {
+            idx[k] = rest % sweeps[mine[k]].nvalues;
+            rest /= sweeps[mine[k]].nvalues;
+        }
+        for (int k = 0; k < n; k++) {
+            const fs_sweep *sw = &sweeps[mine[k]];
+            const fs_param_def *def = &m->params[sw->param];
+            fs_param_parse(def, sw->values[idx[k]], &o->params[sw->param], def->name);
+            lab += snprintf(o->label + lab, sizeof o->label - lab, "_%s=%s", def->name, sw->values[idx[k]]);
+            var += snprintf(o->variant + var, sizeof o->variant - var, "%s%s=%s", k ? ";" : "", def->name, sw->values[idx[k]]);
+            if (k < 2) { o->sweep_index[k] = mine[k]; o->value_index[k] = idx[k]; }
+        }
+        o->nswept = n;
+    }
+    return total;
+}

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# fluidsurf compare and diff end to end on small scenes: every file with the
+# documented columns, sweeps, imports, sequences, diff exit codes, bad arguments.
+set -u
+BIN=$1 SRC=$2 T=$3
+rm -rf "$T"; mkdir -p "$T"
+fails=0 n=0
+check() { n=$((n + 1)); if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
+box=$SRC/experiments/scenes/box.json
+HEADER='method,variant,reference,frame,mask_iou,depth_bias_r,depth_rmse_r,depth_p95_r,normal_mean_deg,normal_p95_deg,interior_normal_mean_deg,psnr_db,ssim,frame_ms'
+size() { iinfo "$1" 2>/dev/null | sed -n 's/.* : *\([0-9]*\) x *\([0-9]*\),.*/\1 \2/p'; }
+col() { awk -F, -v c="$1" -v m="$2" -v r="$3" '!/^#/ && $1 == m && $3 == r {print $c; exit}' "$4"; }
+
+# 1. two methods, two references
+"$BIN" compare "$box" --methods spheres,reference --reference reference --reference analytic -W 64 -H 64 --repeat 2 -q -o "$T/a" 2> "$T/a.err"; rc=$?
+check '[ $rc -eq 0 ]' "compare runs"
+for f in spheres.png spheres.exr reference.png reference.exr analytic.png diff_spheres.png diff_reference.png metrics.csv timings.csv panel.png report.md; do
+  check '[ -s "$T/a/$f" ]' "writes $f"
+done
+check 'grep -v "^#" "$T/a/metrics.csv" | head -1 | grep -q "^$HEADER"' "metrics.csv columns in order"
+check '[ "$(grep -vc "^#" "$T/a/metrics.csv")" -eq 5 ]' "metrics.csv has 2 methods x 2 references"
+check 'grep -q "^# .*commit=.*gl_renderer=" "$T/a/metrics.csv"' "metrics.csv provenance line"
+check '[ "$(col 5 reference reference "$T/a/metrics.csv")" = 1 ] && [ "$(col 9 reference reference "$T/a/metrics.csv")" = 0 ] && [ "$(col 12 reference reference "$T/a/metrics.csv")" = inf ]' "reference against itself: IoU 1, normal 0, PSNR inf"
+check 'awk -F, "!/^#/ && \$1==\"spheres\" && \$3==\"reference\" {exit !(\$9 > 5)}" "$T/a/metrics.csv"' "spheres differ from the reference"
+check 'grep -v "^#" "$T/a/timings.csv" | head -1 | grep -qx "method,variant,stage,ms_median,ms_min,ms_max,runs,renderer"' "timings.csv columns"
+check 'grep -q "^spheres,,splat,.*,2,.*llvmpipe" "$T/a/timings.csv" && grep -q "^reference,,march,.*,2,CPU" "$T/a/timings.csv"' "timings name stages, runs and renderer"
+read -r pw ph <<< "$(size "$T/a/panel.png")"
+check '[ "${pw:-0}" -ge $((3 * 64)) ] && [ "${pw:-0}" -le $((3 * 64 + 3 * 120)) ] && [ "${ph:-0}" -ge $((2 * 64)) ] && [ "${ph:-0}" -le $((2 * 64 + 160)) ]' "panel is 3 columns x 2 rows of 64 px tiles (${pw}x${ph})"
+check 'grep -q "fluidsurf compare" "$T/a/report.md" && grep -q "| spheres |" "$T/a/report.md" && grep -q "fluidsurf:commit" "$T/a/report.md"' "report has the command, the table and the provenance"
+
+# 2. a two-parameter sweep
+"$BIN" compare "$box" --methods spheres --set spheres.radius_scale=0.8,1.2 --set spheres.thickness=on,off -W 48 -H 48 --repeat 1 -q -o "$T/sweep" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ]' "two-parameter sweep runs"
+check '[ "$(grep -vc "^#" "$T/sweep/metrics.csv")" -eq 5 ]' "sweep gives 4 rows"
+check 'grep -q "^spheres,radius_scale=1.2;thickness=off,reference," "$T/sweep/metrics.csv"' "variant column p=v;q=w"
+check '[ -s "$T/sweep/spheres_radius_scale=0.8_thickness=on.png" ]' "variant label in file names"
+read -r sw sh <<< "$(size "$T/sweep/panel.png")"
+check '[ "${sh:-0}" -ge $((2 * 48)) ] && [ "${sh:-0}" -le $((2 * 48 + 150)) ] && [ "${sw:-0}" -ge $((4 * 48)) ]' "sweep panel is a 2-row grid (${sw}x${sh})"
+
+# 3. --import of a written EXR gives zero error against itself
+"$BIN" compare "$box" --methods spheres --import mine="$T/a/reference.exr" -W 64 -H 64 --repeat 1 -q -o "$T/imp" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ]' "import runs"
+check '[ "$(col 5 mine reference "$T/imp/metrics.csv")" = 1 ] && [ "$(col 9 mine reference "$T/imp/metrics.csv")" = 0 ] && [ "$(col 6 mine reference "$T/imp/metrics.csv")" = 0 ]' "imported reference: zero error"
+
+# 4. a sequence: per-frame rows and temporal.csv
+printf '{"particles": {"synthetic": "slab", "size": [12, 4, 12], "first": 0, "last": 2}, "radius": 0.025}' > "$T/seq.json"
+"$BIN" compare "$T/seq.json" --methods spheres -W 40 -H 40 --repeat 1 -q -o "$T/seq" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ]' "sequence runs"
+check '[ "$(grep -vc "^#" "$T/seq/metrics.csv")" -eq 4 ] && grep -q "^spheres,,reference,2," "$T/seq/metrics.csv"' "per-frame rows"
+check 'grep -v "^#" "$T/seq/temporal.csv" | head -1 | grep -qx "method,variant,frames,normal_change_deg,reference_normal_change_deg" && grep -q "^spheres,,3,[0-9.]*,[0-9.]*$" "$T/seq/temporal.csv"' "temporal.csv with the reference's own change"
+check '[ -s "$T/seq/spheres_f0002.png" ]' "per-frame images"
+
+# 5. diff exit codes
+"$BIN" diff "$T/a/reference.exr" "$T/a/reference.exr" --fail-iou 0.99 --fail-normal-deg 0.1 --fail-depth-r 0.01 > "$T/d1" 2>&1; rc=$?
+check '[ $rc -eq 0 ] && grep -q "^mask_iou 1$" "$T/d1"' "diff of equal outputs exits 0"
+"$BIN" diff "$T/a/spheres.exr" "$T/a/reference.exr" --fail-normal-deg 5 > "$T/d2" 2>&1; rc=$?
+check '[ $rc -eq 3 ] && grep -q "^FAIL normal" "$T/d2"' "diff beyond a threshold exits 3"
+"$BIN" diff "$T/a/spheres.exr" "$T/a/reference.exr" > "$T/d3" 2>&1; rc=$?
+check '[ $rc -eq 0 ]' "diff without thresholds exits 0"
+
+# 6. bad arguments: exit 2, one line, no output folder made
+bad() {
+  local name=$1 word=$2; shift 2
+  rm -rf "$T/bad"
+  "$BIN" "$@" > /dev/null 2> "$T/bad.err"
+  local rc=$?
+  check "[ $rc -eq 2 ] && [ \$(wc -l < '$T/bad.err') -eq 1 ] && grep -q '^fluidsurf: ' '$T/bad.err' && grep -qF -- '$word' '$T/bad.err'" "$name: $(cat "$T/bad.err")"
+}
+oiiotool --create 16x16 3 -o "$T/rgb_only.exr" 2>/dev/null
+bad "unknown method" nosuch compare "$box" --methods spheres,nosuch -o "$T/bad"
+bad "unknown parameter" nope compare "$box" --methods spheres --set spheres.nope=1,2 -o "$T/bad"
+bad "bad value" radius_scale compare "$box" --methods spheres --set spheres.radius_scale=0.5,abc -o "$T/bad"
+bad "bad reference" "--reference" compare "$box" --methods spheres --reference bogus -o "$T/bad"
+bad "analytic needs synthetic" analytic compare "$SRC/experiments/scenes/dam_break.json" --methods spheres --reference analytic -o "$T/bad"
+bad "EXR without the channels" "no channel" compare "$box" --methods spheres --import x="$T/rgb_only.exr" -o "$T/bad"
+bad "import of the wrong size" "64x64" compare "$box" --methods spheres -W 32 -H 32 --import x="$T/a/reference.exr" -o "$T/bad"
+bad "unwritable output folder" "$T/a/metrics.csv" compare "$box" --methods spheres -o "$T/a/metrics.csv/sub"
+bad "diff of a non-fluidsurf EXR" "no channel" diff "$T/rgb_only.exr" "$T/a/reference.exr"
+bad "diff of one file" "two EXR" diff "$T/a/reference.exr"
+check '[ ! -e "$T/bad" ]' "no output folder left by bad input"
+
+echo "$((n - fails)) passed, $fails failed"
+[ $fails -eq 0 ]

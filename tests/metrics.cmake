@@ -1,0 +1,2 @@
+# Area "metrics": IoU, depth/normal errors, interior mask, PSNR and SSIM on constructed images.
+fs_add_test(test_metrics test_metrics.c)
