@@ -275,41 +275,52 @@ static int write_grid_panel(const cmp_run *r)
     return rc;
 }
 
+/* The entry that is the first reference itself (same method and parameters), or -1. */
+static int entry_of_ref0(const cmp_run *r)
+{
+    const cmp_ref *ref = &r->refs[0];
+    for (int i = 0; i < r->nentries && !ref->analytic; i++)
+        if (r->entries[i].v.m == ref->v.m && !memcmp(r->entries[i].v.params, ref->v.params, sizeof ref->v.params)) return i;
+    return -1;
+}
+
 int cmp_write_panel(const cmp_run *r)
 {
     if (is_grid(r)) return write_grid_panel(r);
-    /* columns: the first reference, then every entry; row 2: normal-error heatmaps */
-    int cols = 1 + r->nentries;
+    /* columns: the first reference (unless it is among the entries), then every
+     * entry; row 2: normal-error heatmaps against it */
+    int self = entry_of_ref0(r), gt = self < 0, cols = gt + r->nentries;
     fs_rgba_image *img = calloc(cols, sizeof *img), *hm = calloc(cols, sizeof *hm);
     const fs_rgba_image **tiles = calloc(2 * cols, sizeof *tiles);
     char (*cap)[256] = calloc(2 * cols, sizeof *cap);
     const char **capp = calloc(2 * cols, sizeof *capp);
     int rc = img && hm && tiles && cap && capp ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
-    if (!rc) {
+    if (!rc && gt) {
         wrap_view(&r->refs[0].frames[0], &img[0]);
         tiles[0] = &img[0];
-        snprintf(cap[0], sizeof cap[0], "%s  %.1f ms", r->refs[0].spec, r->refs[0].frame_ms);
+        snprintf(cap[0], sizeof cap[0], "%s (ground truth)  %.1f ms", r->refs[0].spec, r->refs[0].frame_ms);
         capp[0] = cap[0];
-        snprintf(cap[cols], sizeof cap[cols], "(ground truth)");
-        capp[cols] = cap[cols];
     }
     for (int i = 0; i < r->nentries && !rc; i++) {
         const cmp_entry *e = &r->entries[i];
-        wrap_view(&e->first, &img[1 + i]);
-        tiles[1 + i] = &img[1 + i];
-        caption(r, e, cap[1 + i], sizeof cap[0]);
-        capp[1 + i] = cap[1 + i];
-        rc = normal_heatmap(r, e, &hm[1 + i]);
-        tiles[cols + 1 + i] = &hm[1 + i];
-        snprintf(cap[cols + 1 + i], sizeof cap[0], "IoU %.3f, depth %+.2f r", e->metrics[0].mask_iou, e->metrics[0].depth_bias_r);
-        capp[cols + 1 + i] = cap[cols + 1 + i];
+        int c = gt + i;
+        wrap_view(&e->first, &img[c]);
+        tiles[c] = &img[c];
+        if (i == self) snprintf(cap[c], sizeof cap[0], "%s (ground truth)  %.1f ms", e->label, e->frame_ms[0]);
+        else caption(r, e, cap[c], sizeof cap[0]);
+        capp[c] = cap[c];
+        if (i == self) continue; /* its error is zero by construction: leave the cell empty */
+        rc = normal_heatmap(r, e, &hm[c]);
+        tiles[cols + c] = &hm[c];
+        snprintf(cap[cols + c], sizeof cap[0], "IoU %.3f, depth bias %+.2f r", e->metrics[0].mask_iou, e->metrics[0].depth_bias_r);
+        capp[cols + c] = cap[cols + c];
     }
     fs_rgba_image out = {0};
-    char title[1200];
+    char title[1400];
     const char *src = r->scene.synth.shape ? "synthetic scene" : r->scene.source;
     const char *slash = strrchr(src, '/');
-    snprintf(title, sizeof title, "%s, %dx%d, r = %g", slash ? slash + 1 : src, r->scene.camera.width,
-             r->scene.camera.height, r->scene.radius);
+    snprintf(title, sizeof title, "%s, %dx%d, r = %g; normal error against %s", slash ? slash + 1 : src,
+             r->scene.camera.width, r->scene.camera.height, r->scene.radius, r->refs[0].spec);
     fs_panel_spec spec = {2, cols, tiles, capp, NULL, NULL, title};
     if (!rc) rc = fs_panel_compose(&spec, &out);
     if (!rc) rc = write_rgba_png(r, "panel.png", &out);

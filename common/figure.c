@@ -217,7 +217,7 @@ fail:
 typedef struct panel_geom {
     int font, line, title_font, title_line, pad, out_w, out_h;
     int grid_x, title_y, header_y, row_header_w;
-    int *col_x, *col_w, *row_y, *row_h; /* one allocation */
+    int *col_x, *col_w, *col_mid, *row_y, *row_h; /* one allocation */
 } panel_geom;
 
 static const char *nth(const char *const *list, int i) { return list && list[i] ? list[i] : ""; }
@@ -245,9 +245,10 @@ static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
     g->title_font = g->font * 4 / 3;
     g->pad = g->font / 2 > 4 ? g->font / 2 : 4;
     if ((rc = line_height(g->font, &g->line)) || (rc = line_height(g->title_font, &g->title_line))) return rc;
-    int *mem = calloc((size_t)2 * (s->rows + s->cols), sizeof(int));
+    int *mem = calloc((size_t)2 * s->rows + 3 * s->cols, sizeof(int));
     if (!mem) return fs_fail(FS_ERR_RUNTIME, "panel: out of memory");
-    g->col_x = mem, g->col_w = mem + s->cols, g->row_y = mem + 2 * s->cols, g->row_h = g->row_y + s->rows;
+    g->col_x = mem, g->col_w = mem + s->cols, g->col_mid = mem + 2 * s->cols;
+    g->row_y = mem + 3 * s->cols, g->row_h = g->row_y + s->rows;
 
     /* Column width: widest tile, caption or header of the column; row height: tallest tile. */
     for (int k = 0; k < n; k++) {
@@ -273,6 +274,14 @@ static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
     for (int c = 0; c < s->cols; c++) {
         g->col_x[c] = x;
         x += g->col_w[c] + g->pad;
+        /* Labels centre on the narrowest tile: over an image and its heatmap (wider
+         * by the colour bar) they then centre on both pictures. */
+        int narrowest = 0;
+        for (int r = 0; r < s->rows; r++) {
+            const fs_rgba_image *t = s->tiles[r * s->cols + c];
+            if (t && (!narrowest || t->w < narrowest)) narrowest = t->w;
+        }
+        g->col_mid[c] = g->col_x[c] + (narrowest ? narrowest : g->col_w[c]) / 2;
     }
     int y = g->pad, title_w = 0;
     g->title_y = y;
@@ -295,12 +304,13 @@ fail:
     return rc;
 }
 
-/* Top-left corner of cell k's tile (or of the cell when the tile is NULL). */
+/* Top-left corner of cell k's tile (or of the cell when the tile is NULL): left
+ * in its column, so an image and a heatmap of it line up; centred in its row. */
 static void tile_origin(const fs_panel_spec *s, const panel_geom *g, int k, int *x, int *y)
 {
     int r = k / s->cols, c = k % s->cols;
     const fs_rgba_image *t = s->tiles[k];
-    *x = g->col_x[c] + (t ? (g->col_w[c] - t->w) / 2 : 0);
+    *x = g->col_x[c];
     *y = g->row_y[r] + (t ? (g->row_h[r] - t->h) / 2 : 0);
 }
 
@@ -320,14 +330,14 @@ int fs_panel_layout(const fs_panel_spec *spec, int *out_w, int *out_h, int *tile
     return FS_OK;
 }
 
-/* Draws text horizontally centred on cx (kept inside the image). */
-static int draw_centred(fs_rgba_image *im, int cx, int y, const char *text, int font)
+/* Draws text horizontally centred on cx, kept inside [x0, x1). */
+static int draw_centred(fs_rgba_image *im, int cx, int x0, int x1, int y, const char *text, int font)
 {
     int w, h, rc = fs_text_size(text, font, &w, &h);
     if (rc || !*text) return rc;
     int x = cx - w / 2;
-    if (x + w > im->w) x = im->w - w;
-    if (x < 0) x = 0;
+    if (x + w > x1) x = x1 - w;
+    if (x < x0) x = x0;
     return fs_draw_text(im, x, y, text, font, TEXT_RGB);
 }
 
@@ -343,10 +353,11 @@ int fs_panel_compose(const fs_panel_spec *spec, fs_rgba_image *out)
         int grid_w = g.col_x[spec->cols - 1] + g.col_w[spec->cols - 1] - g.grid_x, tw;
         if ((rc = text_w(spec->title, g.title_font, &tw))) goto done;
         int cx = tw > grid_w ? g.out_w / 2 : g.grid_x + grid_w / 2;
-        if ((rc = draw_centred(out, cx, g.title_y, spec->title, g.title_font))) goto done;
+        if ((rc = draw_centred(out, cx, 0, g.out_w, g.title_y, spec->title, g.title_font))) goto done;
     }
     for (int c = 0; spec->col_headers && c < spec->cols; c++)
-        if ((rc = draw_centred(out, g.col_x[c] + g.col_w[c] / 2, g.header_y, nth(spec->col_headers, c), g.font)))
+        if ((rc = draw_centred(out, g.col_mid[c], g.col_x[c], g.col_x[c] + g.col_w[c], g.header_y,
+                               nth(spec->col_headers, c), g.font)))
             goto done;
     for (int r = 0; spec->row_headers && r < spec->rows; r++) {
         int w, h;
@@ -361,7 +372,9 @@ int fs_panel_compose(const fs_panel_spec *spec, fs_rgba_image *out)
         if (spec->tiles[k]) composite_over(out, spec->tiles[k], x, y);
         if (spec->captions) {
             int cy = g.row_y[r] + g.row_h[r] + g.pad / 2;
-            if ((rc = draw_centred(out, g.col_x[c] + g.col_w[c] / 2, cy, nth(spec->captions, k), g.font))) goto done;
+            if ((rc = draw_centred(out, g.col_mid[c], g.col_x[c], g.col_x[c] + g.col_w[c], cy,
+                                   nth(spec->captions, k), g.font)))
+                goto done;
         }
     }
 done:

@@ -48,7 +48,9 @@ typedef struct fs_panel_spec {
  * f = max(11, tallest tile / 24) px, line height L (fs_text_size of any one-line
  * text at f), pad p = max(4, f/2), title font f*4/3 with line height Lt:
  *   column width  = max(tile widths, caption widths, header width) of the column
- *   row height    = tallest tile of the row; a tile is centred in its cell
+ *   row height    = tallest tile of the row; a tile sits at its cell's left edge
+ *                   (an image above its heatmap lines up), centred vertically;
+ *                   captions and headers centre on the column's narrowest tile
  *   width  = p + [widest row header + p] + sum(column widths + p), at least title width + 2p
  *   height = p + [Lt + p] + [L + p/2] + sum(row height + [p/2 + L] + p)
  * ([...] only when there is a title, column headers, row headers or captions;

@@ -1,14 +1,11 @@
 #!/usr/bin/env bash
-# The main job: sets up, builds, and renders the bundled dam break with every
-# method into out/demo/ (PNG for viewing, EXR with the G-buffer and provenance).
+# The main job: sets up, builds, and compares every registered method on the
+# bundled SPlisHSPlasH dam break (24,389 particles) against the exact reference.
+# Writes results/demo/: panel.png, report.md, metrics.csv, timings.csv, one
+# PNG + EXR (G-buffer, provenance) per method, diff_*.png heatmaps.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh build
-mkdir -p out/demo
-for m in spheres reference; do
-  echo "== $m"
-  ./build/fluidsurf render experiments/scenes/dam_break.json --method "$m" --timings -o "out/demo/dam_break_$m.png"
-  ./build/fluidsurf render experiments/scenes/dam_break.json --method "$m" -o "out/demo/dam_break_$m.exr"
-done
-echo "images in out/demo/"
+./build/fluidsurf compare experiments/scenes/dam_break.json -o results/demo "$@"
+echo "see results/demo/panel.png and results/demo/report.md"

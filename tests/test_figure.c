@@ -263,10 +263,13 @@ static void test_panel_look(void)
     fs_rgba_image out;
     CHECK(fs_panel_compose(&spec, &out) == FS_OK, "%s", fs_error_message());
     if (out.pix) {
-        /* Columns are as wide as their heatmaps; image tiles are centred above them. */
+        /* Columns are as wide as their heatmaps; an image lines up with its heatmap's data. */
         int ow, oh, tx[6], ty[6];
         fs_panel_layout(&spec, &ow, &oh, tx, ty);
-        CHECK(tx[0] > tx[3] && tx[0] + T < tx[3] + hm[0].w, "image tile centred over its heatmap");
+        CHECK(tx[1] - tx[0] >= hm[0].w && tx[2] - tx[1] >= hm[1].w, "columns as wide as the heatmaps");
+        CHECK(tx[0] == tx[3] && tx[1] == tx[4], "image tiles line up with their heatmaps");
+        CHECK(same_rgb(px(&out, tx[0] + T - 1, ty[0] + 2), im[0].pix) && is_white(px(&out, tx[0] + T, ty[0] + 2)),
+              "image tile ends at its width");
         CHECK(same_rgb(px(&out, tx[3], ty[3]), hm[0].pix), "heatmap tile placed");
         write_png("figure_panel.png", &out);
     }
