@@ -280,7 +280,9 @@ static int entry_of_ref0(const cmp_run *r)
 {
     const cmp_ref *ref = &r->refs[0];
     for (int i = 0; i < r->nentries && !ref->analytic; i++)
-        if (r->entries[i].v.m == ref->v.m && !memcmp(r->entries[i].v.params, ref->v.params, sizeof ref->v.params)) return i;
+        if (r->entries[i].v.m == ref->v.m &&
+            !memcmp(r->entries[i].v.params, ref->v.params, ref->v.m->nparams * sizeof ref->v.params[0]))
+            return i;
     return -1;
 }
 
@@ -303,7 +305,8 @@ int cmp_write_panel(const cmp_run *r)
     }
     for (int i = 0; i < r->nentries && !rc; i++) {
         const cmp_entry *e = &r->entries[i];
-        int c = gt + i;
+        /* the ground truth always takes the first column */
+        int c = gt ? 1 + i : i == self ? 0 : i < self ? i + 1 : i;
         wrap_view(&e->first, &img[c]);
         tiles[c] = &img[c];
         if (i == self) snprintf(cap[c], sizeof cap[0], "%s (ground truth)  %.1f ms", e->label, e->frame_ms[0]);

@@ -47,7 +47,7 @@ int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *swe
     for (int i = 0; i < nsweeps; i++)
         if (sweeps[i].m == m) { mine[n++] = i; total *= sweeps[i].nvalues; }
     if (total > max) return -fs_fail(FS_ERR_INPUT, "%s: %d variants, at most %d", m->name, total, max);
-    double base[FS_MAX_PARAMS];
+    double base[FS_MAX_PARAMS] = {0};
     int rc = fs_method_params_resolve(m, s, base);
     if (rc) return -rc;
     for (int v = 0; v < total; v++) {
