@@ -18,12 +18,15 @@ void fs_grid_free(fs_grid *g)
 
 /* Bounding box of the positions; fails on a NaN/Inf position (it would make
  * floorf() undefined when cast to int). */
+/* Below this many particles a parallel loop costs more (thread wake-up) than it saves. */
+#define FS_GRID_PARALLEL_MIN 100000
+
 static int positions_box(const fs_particles *p, float lo[3], float hi[3])
 {
     float x0 = INFINITY, y0 = INFINITY, z0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY, z1 = -INFINITY;
     long bad = -1;
     long n = (long)p->n;
-#pragma omp parallel for reduction(min : x0, y0, z0) reduction(max : x1, y1, z1, bad)
+#pragma omp parallel for if (n > FS_GRID_PARALLEL_MIN) reduction(min : x0, y0, z0) reduction(max : x1, y1, z1, bad)
     for (long i = 0; i < n; i++) {
         float x = p->x[i], y = p->y[i], z = p->z[i];
         if (!isfinite(x) || !isfinite(y) || !isfinite(z)) { if (i > bad) bad = i; continue; }
@@ -75,7 +78,7 @@ int fs_grid_build(fs_grid *g, const fs_particles *p, float cell)
         return fs_fail(FS_ERR_RUNTIME, "grid: out of memory for %zu particles", n);
     }
     long nl = (long)n;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (n > FS_GRID_PARALLEL_MIN) schedule(static)
     for (long i = 0; i < nl; i++) {
         int ci = fs_grid_clampi(fs_grid_coord(g, 0, p->x[i]), g->dim[0] - 1);
         int cj = fs_grid_clampi(fs_grid_coord(g, 1, p->y[i]), g->dim[1] - 1);
@@ -90,7 +93,7 @@ int fs_grid_build(fs_grid *g, const fs_particles *p, float cell)
     memmove(g->start + 1, g->start, g->ncells * sizeof *g->start);
     g->start[0] = 0;
     free(cid);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (n > FS_GRID_PARALLEL_MIN) schedule(static)
     for (long s = 0; s < nl; s++) {
         uint32_t i = g->index[s];
         float *q = g->pos4 + 4 * s;
