@@ -1,3 +1,4 @@
+#define _GNU_SOURCE /* dl_iterate_phdr */
 #include "gl_context.h"
 #include "fs_error.h"
 
@@ -10,6 +11,7 @@ int fs_gl_check_core45(char *renderer, int rsize, char *version, int vsize);
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <dlfcn.h>
+#include <link.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +47,46 @@ static int create_osmesa(fs_gl_context *c)
     if (!c->extra) { OSMesaDestroyContext(ctx); return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory"); }
     c->handle = ctx;
     return FS_OK;
+}
+
+/* ---- driver libraries ----
+ * libEGL and libGL (loaded by GLFW) load vendor libraries and Mesa's DRI driver
+ * (swrast_dri.so, with its own LLVM JIT) at run time, and unload them again on
+ * eglTerminate / glfwTerminate. Once loaded they stay for the life of the
+ * process: drivers are not reliably unloadable, a second context need not load
+ * them again, and LeakSanitizer can then name the library a driver leak comes
+ * from (tests/lsan.supp) instead of "<unknown module>". */
+typedef struct name_list {
+    char **names;
+    size_t n, cap;
+} name_list;
+
+static int collect_name(struct dl_phdr_info *info, size_t size, void *data)
+{
+    (void)size;
+    name_list *l = data;
+    if (!info->dlpi_name || !info->dlpi_name[0]) return 0; /* the executable */
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        char **grown = realloc(l->names, cap * sizeof *grown);
+        if (!grown) return 1;
+        l->names = grown;
+        l->cap = cap;
+    }
+    if ((l->names[l->n] = strdup(info->dlpi_name)) != NULL) l->n++;
+    return 0;
+}
+
+static void pin_loaded_libraries(void)
+{
+    name_list l = {0};
+    dl_iterate_phdr(collect_name, &l); /* no dlopen while it holds the loader lock */
+    for (size_t i = 0; i < l.n; i++) {
+        void *h = dlopen(l.names[i], RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+        if (h) dlclose(h); /* drops our reference, the no-delete mark stays */
+        free(l.names[i]);
+    }
+    free(l.names);
 }
 
 /* ---- EGL, loaded with dlopen so the binary never links libEGL/libGL ---- */
@@ -109,8 +151,10 @@ static int create_egl(fs_gl_context *c)
     c->handle = ctx;
     c->extra = e;
     egl_users++;
+    pin_loaded_libraries();
     return FS_OK;
 fail:
+    pin_loaded_libraries();
     if (e->dpy && e->Terminate && !egl_users) e->Terminate(e->dpy);
     dlclose(e->lib);
     free(e);
@@ -130,6 +174,7 @@ static int create_glfw(fs_gl_context *c)
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     GLFWwindow *w = glfwCreateWindow(c->width, c->height, "fluidsurf", NULL, NULL);
+    pin_loaded_libraries();
     if (!w) {
         if (!glfw_users) glfwTerminate();
         return fs_fail(FS_ERR_RUNTIME, "OpenGL: GLFW cannot create a 4.5 core window");
@@ -142,11 +187,12 @@ static int create_glfw(fs_gl_context *c)
 /* ---- switching ----
  * OSMesa, GLX (libGLX_mesa, loaded by GLFW) and EGL (libEGL_mesa) all dispatch
  * GL calls through one per-thread slot in Mesa's shared libglapi. Unbinding a
- * GLX or EGL context (glfwCreateWindow does it on return, glfwDestroyWindow
- * does it for the window current in GLFW) empties that slot even while OSMesa
- * believes its context is current: every later GL call is then a silent no-op.
- * So the context bound last is released before another one is bound or
- * created, and a context is unbound at destruction only if it is the bound one.
+ * GLX context (glfwCreateWindow does it on return, glfwDestroyWindow does it
+ * for the window current in GLFW) empties that slot even while OSMesa believes
+ * its context is current: every later GL call is then a silent no-op (measured
+ * on Mesa 22.3; EGL did not do it there, but is treated alike). So the context
+ * bound last is released before another one is bound or created, and a context
+ * is unbound at destruction only if it is the bound one.
  * A copy, so the caller may move its struct; per thread, as GL binding is. */
 static _Thread_local fs_gl_context bound;
 

@@ -149,7 +149,7 @@ unsigned fs_program_build(const char *const *stages, const char *defines)
     GLuint prog = glCreateProgram();
     GLuint sh[8];
     int nsh = 0;
-    char log[4096];
+    char log[4096] = "";
     srcmap map = {0};
     for (int i = 0; stages[i] && nsh < 8; i++) {
         GLenum type = stage_type(stages[i]);
