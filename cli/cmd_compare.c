@@ -194,7 +194,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_
             fprintf(stderr, "compare: variant %d/%d %s, frame %d/%d, elapsed %.1f s, remaining ~%.0f s\n", index + 1,
                     total, e->label, f + 1, r->nframes, el, done > 0 ? el / done - el : 0.0);
         }
-        rc = fs_gbuffer_alloc(&cur.g, r->scene.camera.width, r->scene.camera.height, 0);
+        rc = fs_gbuffer_alloc(&cur.g, r->scene.camera.width, r->scene.camera.height, fs_method_wants_color(m, &frames_p[f]));
         if (!rc && !(cur.rgba = malloc((size_t)cur.g.w * cur.g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
         if (!rc) rc = m->upload(self, &frames_p[f], &grids[f]);
         double times[CMP_MAX_RUNS];

@@ -109,7 +109,7 @@ int cmd_render(int argc, char **argv)
     t0 = fs_now_ms();
     if ((rc = m->upload(self, &p, &grid))) goto done;
     fs_stages_add(&st, "upload", fs_now_ms() - t0);
-    if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, 0))) goto done;
+    if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, fs_method_wants_color(m, &p)))) goto done;
     if ((rc = m->render(self, &scene.camera, &g, &st))) goto done;
     rc = FS_ERR_RUNTIME;
     if (!(rgba = malloc((size_t)g.w * g.h * 4 * sizeof(float)))) { fs_fail(rc, "out of memory"); goto done; }

@@ -24,6 +24,7 @@ typedef struct fs_method {
     const char *description; /* one line */
     const char *paper;       /* "" for our own */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
+    int writes_color;        /* 1: fills out->color when the particles carry colour */
     const fs_param_def *params;
     int nparams;
     /* Returns NULL on failure with fs_fail() set. */
@@ -38,6 +39,8 @@ typedef struct fs_method {
 const fs_method *fs_method_find(const char *name);
 int fs_method_count(void);
 const fs_method *fs_method_at(int i);
+/* 1 when the G-buffer for m on particles p needs a colour layer. */
+int fs_method_wants_color(const fs_method *m, const fs_particles *p);
 /* Index of a parameter in m->params, or -1. */
 int fs_method_param_index(const fs_method *m, const char *name);
 

@@ -4,10 +4,12 @@
 
 extern const fs_method fs_method_spheres;
 extern const fs_method fs_method_reference;
+extern const fs_method fs_method_raycast_pca;
 
 static const fs_method *const methods[] = {
     &fs_method_spheres,
     &fs_method_reference,
+    &fs_method_raycast_pca,
 };
 
 int fs_method_count(void) { return (int)(sizeof methods / sizeof *methods); }
@@ -26,3 +28,5 @@ int fs_method_param_index(const fs_method *m, const char *name)
         if (!strcmp(m->params[i].name, name)) return i;
     return -1;
 }
+
+int fs_method_wants_color(const fs_method *m, const fs_particles *p) { return m->writes_color && p->color != NULL; }

@@ -37,6 +37,13 @@ printf '{"particles": {"file": "seq/frame_%%04d.vtk", "first": 1, "last": 2}, "c
 iinfo -v "$T/seq2.exr" 2>/dev/null | grep -q 'fluidsurf:frame: "2"' || fail "frame 2 not recorded in the provenance"
 ! cmp -s "$T/seq1.exr" "$T/seq2.exr" || fail "frames 1 and 2 rendered identically"
 "$BIN" render "$T/seq.json" --method spheres --frame 3 -q -o "$T/seq3.exr" 2>/dev/null; [ $? -eq 2 ] || fail "a missing frame is not exit 2"
+# per-particle colour reaches the G-buffer of a method that tracks it (raycast_pca), not of one that does not
+awk 'BEGIN { print "x,y,z,r,g,b"; for (i = 0; i < 12; i++) for (j = 0; j < 6; j++) for (k = 0; k < 6; k++)
+  printf "%g,%g,%g,%d,0,%d\n", i * 0.05, j * 0.05, k * 0.05, (i < 6), (i >= 6) }' > "$T/two_blocks.csv"
+"$BIN" render "$T/two_blocks.csv" --method raycast_pca --radius 0.025 -W 48 -H 48 -q -o "$T/colour.exr" || fail "render coloured particles"
+iinfo -v "$T/colour.exr" 2>/dev/null | grep -q "color.R" || fail "coloured particles: no colour layer in the EXR"
+"$BIN" render "$T/two_blocks.csv" --method spheres --radius 0.025 -W 48 -H 48 -q -o "$T/nocolour.exr" || fail "render coloured particles with spheres"
+! iinfo -v "$T/nocolour.exr" 2>/dev/null | grep -q "color.R" || fail "spheres does not track colour, yet the EXR has a colour layer"
 for c in render info convert methods; do "$BIN" $c --help | grep -q usage || fail "$c --help"; done
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -1,0 +1,297 @@
+/* raycast_pca: Xiao, Zhang & Yang, I3D 2017. Spheres splatted with depth
+ * replacement give each pixel its ray entry (3.1); a compute pass marches the
+ * SPH density iso-surface from there (3.2); a second computes the basic, PCA
+ * and blended normals (3.3) and the colour average; a bilateral filter smooths
+ * the normal map; thickness is additive sphere splatting (3.4). See README.md. */
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_grid.h"
+#include "gl_target.h"
+#include "method.h"
+#include "raycast_pca/pca_normal.h"
+#include "shader.h"
+#include <stdlib.h>
+#include <string.h>
+
+static const fs_param_def params[] = {
+    {"splat_radius", FS_PARAM_FLOAT, 1.0, 0.1, 4.0, NULL, "radius of the entry (and thickness) spheres, multiples of r"},
+    {"step", FS_PARAM_FLOAT, 0.5, 0.01, 4.0, NULL, "ray-march step, multiples of r"},
+    {"max_steps", FS_PARAM_INT, 512, 1, 1e6, NULL, "most density samples per ray before it stops without a hit"},
+    {"refine", FS_PARAM_INT, 12, 0, 40, NULL, "bisection iterations refining a crossing"},
+    {"step_back", FS_PARAM_FLOAT, 8.0, 0.0, 1000.0, NULL, "how far an entry inside the fluid steps back, multiples of r"},
+    {"normals", FS_PARAM_ENUM, RPCA_NORMALS_BLEND, 0, 2, "basic|pca|blend", "normal estimate (3.3)"},
+    {"pca_radius", FS_PARAM_FLOAT, 4.0, 0.5, 40.0, NULL, "R of eqs. 2-4 (spiky gradient and PCA), multiples of r"},
+    {"min_neighbors", FS_PARAM_INT, 10, 3, 1e6, NULL, "fewer particles within R: use the basic normal"},
+    {"blend_weight", FS_PARAM_ENUM, 0, 0, 1, "adaptive|fixed", "w of eq. 5: eq. 6 (adaptive) or the constant w"},
+    {"w", FS_PARAM_FLOAT, 0.5, 0.0, 1.0, NULL, "blend weight when blend_weight=fixed"},
+    {"blend_d", FS_PARAM_FLOAT, 10.0, 0.0, 1000.0, NULL, "d of eq. 6"},
+    {"blend_k", FS_PARAM_FLOAT, 0.998, -1.0, 1.0, NULL, "k of eq. 6"},
+    {"normal_filter", FS_PARAM_BOOL, 1, 0, 1, NULL, "bilateral Gaussian filter of the normal map (on/off)"},
+    {"filter_sigma", FS_PARAM_FLOAT, 1.0, 0.01, 20.0, NULL, "spatial sigma of the filter, multiples of r at the pixel's depth"},
+    {"filter_sigma_n", FS_PARAM_FLOAT, 0.3, 0.01, 4.0, NULL, "range sigma of the filter on |n_p - n_q|"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive sphere-splatting thickness pass (on/off)"},
+};
+enum {
+    P_SPLAT_RADIUS, P_STEP, P_MAX_STEPS, P_REFINE, P_STEP_BACK, P_NORMALS, P_PCA_RADIUS, P_MIN_NEIGHBORS,
+    P_BLEND_WEIGHT, P_W, P_BLEND_D, P_BLEND_K, P_FILTER, P_FILTER_SIGMA, P_FILTER_SIGMA_N, P_THICKNESS, P_COUNT
+};
+#define FILTER_MAX_RADIUS 12 /* pixels: bounds the filter's cost at close range */
+#define FILTER_DEPTH_GATE 2.0f /* multiples of r */
+
+typedef struct rpca {
+    fs_field f;
+    double v[P_COUNT];
+    unsigned prog_splat, prog_thick, prog_march, prog_normals, prog_filter, vao;
+    unsigned tex_hit, tex_raw; /* world hit point; unfiltered view normal */
+    int tex_w, tex_h;
+    fs_grid own;        /* built when the caller's grid is missing or too fine */
+    int has_own, use_color;
+    size_t n;
+    fs_gl_grid gg;
+    fs_gl_target target;
+} rpca;
+
+static void free_textures(rpca *s)
+{
+    if (s->tex_hit) glDeleteTextures(1, &s->tex_hit);
+    if (s->tex_raw) glDeleteTextures(1, &s->tex_raw);
+    s->tex_hit = s->tex_raw = 0;
+    fs_gl_target_destroy(&s->target);
+}
+
+static void destroy(void *self)
+{
+    rpca *s = self;
+    if (!s) return;
+    unsigned progs[] = {s->prog_splat, s->prog_thick, s->prog_march, s->prog_normals, s->prog_filter};
+    for (int i = 0; i < 5; i++)
+        if (progs[i]) glDeleteProgram(progs[i]);
+    if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    free_textures(s);
+    fs_gl_grid_free(&s->gg);
+    if (s->has_own) fs_grid_free(&s->own);
+    free(s);
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    const fs_field *f = &setup->field;
+    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
+        fs_fail(FS_ERR_INPUT, "raycast_pca: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume,
+                f->iso);
+        return NULL;
+    }
+    rpca *s = calloc(1, sizeof *s);
+    if (!s) { fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory"); return NULL; }
+    s->f = *f;
+    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
+    const char *march[] = {"raycast_pca/march.comp.glsl", NULL};
+    const char *normals[] = {"raycast_pca/normals.comp.glsl", NULL};
+    const char *filter[] = {"raycast_pca/filter.comp.glsl", NULL};
+    if (!(s->prog_splat = fs_program_build(spr, NULL)) || !(s->prog_thick = fs_program_build(spr, "MODE_THICKNESS 1")) ||
+        !(s->prog_march = fs_program_build(march, NULL)) || !(s->prog_normals = fs_program_build(normals, NULL)) ||
+        !(s->prog_filter = fs_program_build(filter, NULL))) {
+        destroy(s);
+        return NULL;
+    }
+    glCreateVertexArrays(1, &s->vao);
+    return s;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    rpca *s = self;
+    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
+    if (!g || !(g->cell >= s->f.H) || g->n != p->n) {
+        /* The march needs cells of at least H (one ring of cells holds every
+         * particle that reaches a point); build one when not given. */
+        int rc = fs_grid_build(&s->own, p, s->f.H);
+        if (rc) return rc;
+        s->has_own = 1;
+        g = &s->own;
+    }
+    int rc = fs_gl_grid_upload(&s->gg, g);
+    if (rc) return rc;
+    s->n = p->n;
+    s->use_color = p->color != NULL;
+    if (s->use_color) {
+        float *c = malloc((p->n ? p->n : 1) * 4 * sizeof *c);
+        if (!c) return fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory for %zu colours", p->n);
+        for (size_t i = 0; i < p->n; i++) {
+            memcpy(c + 4 * i, p->color + 3 * i, 3 * sizeof *c);
+            c[4 * i + 3] = 1;
+        }
+        rc = fs_gl_grid_upload_attr(&s->gg, g, c);
+        free(c);
+    }
+    return rc;
+}
+
+static void camera_uniforms(unsigned prog, const fs_camera *cam)
+{
+    float view[16], proj[16], rot[9];
+    fs_camera_view_matrix(cam, view);
+    fs_camera_proj_matrix(cam, proj);
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++) rot[3 * c + r] = view[4 * c + r];
+    glUseProgram(prog);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
+    glUniformMatrix3fv(glGetUniformLocation(prog, "u_view_rot"), 1, GL_FALSE, rot);
+    glUniform3f(glGetUniformLocation(prog, "u_eye"), cam->eye[0], cam->eye[1], cam->eye[2]);
+    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
+}
+
+static void draw_spheres(const rpca *s)
+{
+    glBindVertexArray(s->vao);
+    for (int b = 0; b < s->gg.nchunks; b++) {
+        size_t cnt = s->n - b * s->gg.chunk < s->gg.chunk ? s->n - b * s->gg.chunk : s->gg.chunk;
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->gg.pos[b]);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
+    }
+}
+
+static int ensure_targets(rpca *s, int w, int h)
+{
+    if (s->target.w == w && s->target.h == h && s->tex_hit) return FS_OK;
+    free_textures(s);
+    int rc = fs_gl_target_create(&s->target, w, h);
+    if (rc) return rc;
+    glCreateTextures(GL_TEXTURE_2D, 1, &s->tex_hit);
+    glTextureStorage2D(s->tex_hit, 1, GL_RGBA32F, w, h);
+    glCreateTextures(GL_TEXTURE_2D, 1, &s->tex_raw);
+    glTextureStorage2D(s->tex_raw, 1, GL_RGBA32F, w, h);
+    return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate %dx%d images", w, h);
+}
+
+static void dispatch(const fs_camera *cam)
+{
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
+{
+    rpca *s = self;
+    if (!s->gg.start) return fs_fail(FS_ERR_RUNTIME, "raycast_pca: render before upload");
+    int rc = ensure_targets(s, cam->width, cam->height);
+    if (rc) return rc;
+    const fs_field *f = &s->f;
+    float r = f->r, splat_r = (float)s->v[P_SPLAT_RADIUS] * r;
+    float proj[16];
+    fs_camera_proj_matrix(cam, proj);
+
+    glFinish();
+    double t0 = fs_now_ms();
+    /* 3.1 ray entry: nearest sphere per pixel, hardware depth test. */
+    fs_gl_target_clear(&s->target);
+    glViewport(0, 0, cam->width, cam->height);
+    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    camera_uniforms(s->prog_splat, cam);
+    glUniform1f(glGetUniformLocation(s->prog_splat, "u_radius"), splat_r);
+    draw_spheres(s);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glFinish();
+    double t1 = fs_now_ms();
+    fs_stages_add(t, "splat", t1 - t0);
+
+    /* 3.2 iso-surface by narrow-band ray casting. */
+    unsigned P = s->prog_march;
+    fs_gl_grid_bind(&s->gg, P);
+    camera_uniforms(P, cam);
+    glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
+    glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
+    glUniform1f(glGetUniformLocation(P, "u_V"), f->volume);
+    glUniform1f(glGetUniformLocation(P, "u_iso"), f->iso);
+    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->v[P_STEP] * r);
+    glUniform1f(glGetUniformLocation(P, "u_step_back"), (float)s->v[P_STEP_BACK] * r);
+    glUniform1i(glGetUniformLocation(P, "u_max_steps"), (int)s->v[P_MAX_STEPS]);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->v[P_REFINE]);
+    glBindImageTexture(0, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, s->tex_hit, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch(cam);
+    glFinish();
+    double t2 = fs_now_ms();
+    fs_stages_add(t, "march", t2 - t1);
+
+    /* 3.3 normals (and colour, eye depth). */
+    P = s->prog_normals;
+    fs_gl_grid_bind(&s->gg, P);
+    camera_uniforms(P, cam);
+    glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
+    glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
+    glUniform1f(glGetUniformLocation(P, "u_R"), (float)s->v[P_PCA_RADIUS] * r);
+    glUniform1i(glGetUniformLocation(P, "u_mode"), (int)s->v[P_NORMALS]);
+    glUniform1i(glGetUniformLocation(P, "u_min_neighbors"), (int)s->v[P_MIN_NEIGHBORS]);
+    glUniform1i(glGetUniformLocation(P, "u_fixed_weight"), (int)s->v[P_BLEND_WEIGHT]);
+    glUniform1f(glGetUniformLocation(P, "u_w"), (float)s->v[P_W]);
+    glUniform1f(glGetUniformLocation(P, "u_blend_d"), (float)s->v[P_BLEND_D]);
+    glUniform1f(glGetUniformLocation(P, "u_blend_k"), (float)s->v[P_BLEND_K]);
+    glUniform1i(glGetUniformLocation(P, "u_use_color"), s->use_color);
+    glBindImageTexture(0, s->tex_hit, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(2, s->tex_raw, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, s->target.tex[FS_TARGET_COLOR], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch(cam);
+    glFinish();
+    double t3 = fs_now_ms();
+    fs_stages_add(t, "normals", t3 - t2);
+
+    /* Bilateral Gaussian filter of the normal map (a copy when off). */
+    P = s->prog_filter;
+    glUseProgram(P);
+    glUniform1i(glGetUniformLocation(P, "u_enable"), s->v[P_FILTER] != 0);
+    glUniform1f(glGetUniformLocation(P, "u_focal_px"), proj[5] * 0.5f * (float)cam->height);
+    glUniform1f(glGetUniformLocation(P, "u_sigma"), (float)s->v[P_FILTER_SIGMA] * r);
+    glUniform1f(glGetUniformLocation(P, "u_sigma_n"), (float)s->v[P_FILTER_SIGMA_N]);
+    glUniform1f(glGetUniformLocation(P, "u_depth_gate"), FILTER_DEPTH_GATE * r);
+    glUniform1i(glGetUniformLocation(P, "u_max_radius"), FILTER_MAX_RADIUS);
+    glBindImageTexture(0, s->tex_raw, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(2, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatch(cam);
+    glFinish();
+    double t4 = fs_now_ms();
+    fs_stages_add(t, "filter", t4 - t3);
+
+    /* 3.4 thickness: additive sphere splatting (chord lengths). */
+    if (s->v[P_THICKNESS] != 0) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        camera_uniforms(s->prog_thick, cam);
+        glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
+        draw_spheres(s);
+        glDisable(GL_BLEND);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glFinish();
+        fs_stages_add(t, "thickness", fs_now_ms() - t4);
+    }
+    double t5 = fs_now_ms();
+    rc = fs_gl_target_read(&s->target, out);
+    fs_stages_add(t, "readback", fs_now_ms() - t5);
+    return rc;
+}
+
+const fs_method fs_method_raycast_pca = {
+    .name = "raycast_pca",
+    .description = "splatted entry, narrow-band ray casting of the SPH iso-surface, PCA/SPH-gradient blended normals",
+    .paper = "xiao2017",
+    .needs_gl = 1,
+    .writes_color = 1,
+    .params = params,
+    .nparams = (int)(sizeof params / sizeof *params),
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+};
