@@ -2,7 +2,11 @@
  * References). Per pixel the ray walks the neighbour grid cell by cell (3D-DDA);
  * empty cells are skipped, inside a non-empty cell the ray advances by steps
  * proven not to cross the iso-surface, a sign change is bisected to 1e-4 r and
- * the normal is the analytic -grad phi. See README.md for why the steps are safe. */
+ * the normal is the analytic -grad phi. See README.md for why the steps are safe.
+ * field=anisotropic: Yu & Turk's kernel W(|A_j^-1 (x - c_j)|, H) / det A_j with
+ * the centres c_j and stretches A_j of common/anisotropy.c. */
+#include "anisotropy.h"
+#include "eigen3.h"
 #include "fs_error.h"
 #include "method.h"
 #include <math.h>
@@ -15,8 +19,15 @@ static const fs_param_def params[] = {
      "smallest march step, multiples of r; crossing intervals shorter than this can be missed"},
     {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "march past the first hit and sum every inside interval (on/off)"},
     {"max_layers", FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
+    {"field", FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
+    {"aniso_radius", FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "anisotropic: WPCA radius, multiples of r"},
+    {"kappa", FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "anisotropic: largest/smallest eigenvalue limit"},
+    {"n_eps", FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "anisotropic: at or below this many neighbours: isotropic"},
+    {"aniso_scale", FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "anisotropic: stretch scale"},
+    {"aniso_norm", FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume", "anisotropic: stretch normalisation"},
+    {"lambda", FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "anisotropic: Laplacian smoothing of centres"},
 };
-enum { P_STEP_MIN, P_THICKNESS, P_MAX_LAYERS };
+enum { P_STEP_MIN, P_THICKNESS, P_MAX_LAYERS, P_FIELD, P_ARAD, P_KAPPA, P_NEPS, P_ASCALE, P_NORM, P_LAMBDA, P_COUNT };
 
 typedef struct reference {
     fs_field f;
@@ -26,12 +37,18 @@ typedef struct reference {
     uint32_t *count27;   /* particles in the 27 cells around each cell */
     uint32_t max27;
     float lip_unit;      /* V max|W'|: the cell's Lipschitz bound is lip_unit * count27 */
+    int aniso;
+    fs_aniso_params ap;
+    float reach;         /* largest distance at which a particle's kernel is nonzero: H (times the largest axis) */
+    fs_grid own;         /* anisotropic: grid of the kernel centres, cell >= reach */
+    float *inv;          /* anisotropic: A^-1 per sorted slot of own (9 floats) */
+    float *wscale;       /* anisotropic: 1 / det A per sorted slot */
 } reference;
 
 /* A particle near the current cell's stretch of the ray, relative to the
  * stretch's start point o: the ray reaches its foot at local t = a, b is the
  * squared distance from the ray line, rel = p - o. */
-typedef struct near_particle { float a, b, rel[3]; } near_particle;
+typedef struct near_particle { float a, b, k, ws, rel[3]; uint32_t slot; } near_particle;
 
 typedef struct stretch {
     const reference *R;
@@ -52,6 +69,9 @@ static void destroy(void *self)
     reference *R = self;
     if (!R) return;
     free(R->count27);
+    free(R->inv);
+    free(R->wscale);
+    fs_grid_free(&R->own);
     free(R);
 }
 
@@ -65,8 +85,18 @@ static void *create(const fs_method_setup *setup)
     reference *R = calloc(1, sizeof *R);
     if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
     R->f = *f;
-    double v[3];
-    for (int i = 0; i < 3; i++) v[i] = setup->params ? setup->params[i] : params[i].def;
+    double v[P_COUNT];
+    for (int i = 0; i < P_COUNT; i++) v[i] = setup->params ? setup->params[i] : params[i].def;
+    R->aniso = v[P_FIELD] != 0;
+    fs_aniso_defaults(&R->ap, f->kernel, f->r);
+    R->ap.radius = (float)v[P_ARAD] * f->r;
+    R->ap.kappa = (float)v[P_KAPPA];
+    R->ap.n_eps = (int)v[P_NEPS];
+    R->ap.scale = (float)v[P_ASCALE];
+    R->ap.per_particle = (int)v[P_NORM];
+    R->ap.lambda = (float)v[P_LAMBDA];
+    R->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, R->ap.radius, 2 * f->r);
+    R->reach = f->H;
     R->step_min = (float)v[P_STEP_MIN] * f->r;
     R->thickness = v[P_THICKNESS] != 0;
     R->max_layers = (int)v[P_MAX_LAYERS];
@@ -74,12 +104,82 @@ static void *create(const fs_method_setup *setup)
     return R;
 }
 
+/* field=anisotropic: the kernel centres and stretches of common/anisotropy.c,
+ * a grid of the centres with cells of at least H times the largest axis (so
+ * the 27-cell argument of upload still holds), A^-1 and 1/det A per slot, and
+ * the Lipschitz unit V max|W'| max_j (1 / (det A_j a_min,j)): the gradient of
+ * W(|A^-1 y|)/det A is W'(|u|) A^-1 u / (|u| det A), at most max|W'| / (det A a_min). */
+static int upload_aniso(reference *R, const fs_particles *p, const fs_grid *g)
+{
+    size_t n = p->n;
+    float *A = malloc((n ? n : 1) * 9 * sizeof *A);
+    fs_particles c;
+    int rc = A ? fs_particles_alloc(&c, n, 0) : fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu particles", n);
+    if (rc) { free(A); return rc; }
+    float *cen = malloc((n ? n : 1) * 3 * sizeof *cen);
+    if (!cen) { free(A); fs_particles_free(&c); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
+    rc = fs_aniso_compute(p, g, &R->ap, cen, A, NULL);
+    float amax = 1, lip = 0;
+    float *inv = malloc((n ? n : 1) * 9 * sizeof *inv), *ws = malloc((n ? n : 1) * sizeof *ws);
+    if (!rc && (!inv || !ws)) rc = fs_fail(FS_ERR_RUNTIME, "reference: out of memory");
+    for (size_t i = 0; !rc && i < n; i++) {
+        c.x[i] = cen[3 * i];
+        c.y[i] = cen[3 * i + 1];
+        c.z[i] = cen[3 * i + 2];
+        double a[9], ev[3], V[9];
+        for (int k = 0; k < 9; k++) a[k] = A[9 * i + k];
+        fs_eigen3_sym(a, ev, V);
+        if (!(ev[0] > 0)) { rc = fs_fail(FS_ERR_RUNTIME, "reference: particle %zu has a degenerate stretch", i); break; }
+        for (int r = 0; r < 3; r++)
+            for (int q = 0; q < 3; q++) {
+                double v = 0;
+                for (int k = 0; k < 3; k++) v += V[3 * k + r] * V[3 * k + q] / ev[k];
+                inv[9 * i + 3 * r + q] = (float)v;
+            }
+        ws[i] = (float)(1.0 / (ev[0] * ev[1] * ev[2]));
+        if (ev[2] > amax) amax = (float)ev[2];
+        if (ws[i] / ev[0] > lip) lip = (float)(ws[i] / ev[0]);
+    }
+    free(A);
+    free(cen);
+    fs_grid_free(&R->own);
+    if (!rc) {
+        fs_particles_bounds(&c);
+        R->reach = R->f.H * amax * 1.0001f; /* a little margin for float rounding of the metric */
+        rc = fs_grid_build(&R->own, &c, R->reach);
+    }
+    fs_particles_free(&c);
+    free(R->inv);
+    free(R->wscale);
+    R->inv = R->wscale = NULL;
+    if (rc) { free(inv); free(ws); return rc; }
+    /* To sorted slot order. */
+    R->inv = malloc((n ? n : 1) * 9 * sizeof *R->inv);
+    R->wscale = malloc((n ? n : 1) * sizeof *R->wscale);
+    if (!R->inv || !R->wscale) { free(inv); free(ws); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
+    for (size_t sl = 0; sl < n; sl++) {
+        uint32_t o = R->own.index[sl];
+        memcpy(R->inv + 9 * sl, inv + 9 * (size_t)o, 9 * sizeof *inv);
+        R->wscale[sl] = ws[o];
+    }
+    free(inv);
+    free(ws);
+    R->lip_unit = R->f.volume * fs_kernel_max_dw(R->f.kernel, R->f.H) * (lip > 0 ? lip : 1);
+    return FS_OK;
+}
+
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     reference *R = self;
+    if (R->aniso) {
+        if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
+        int rc = upload_aniso(R, p, g);
+        if (rc) return rc;
+        g = &R->own;
+    }
     /* With cell >= H every particle within H of a point of cell c lies in the
      * 27 cells around c: that is what makes the per-cell bound valid. */
-    if (!(g->cell >= R->f.H))
+    if (!(g->cell >= R->reach))
         return fs_fail(FS_ERR_INPUT, "reference: grid cell %g is smaller than the kernel support H = %g", g->cell, R->f.H);
     if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
     free(R->count27);
@@ -113,8 +213,8 @@ static float phi_at(const stretch *S, float t)
     const fs_field *f = &S->R->f;
     float H2 = f->H * f->H, sum = 0;
     for (int j = 0; j < S->n; j++) {
-        float u = t - S->np[j].a, d2 = S->np[j].b + u * u;
-        if (d2 < H2) sum += fs_kernel_w(f->kernel, sqrtf(d2), f->H);
+        float u = t - S->np[j].a, d2 = S->np[j].b + S->np[j].k * (u * u);
+        if (d2 < H2) sum += S->np[j].ws * fs_kernel_w(f->kernel, sqrtf(d2), f->H);
     }
     return sum * f->volume;
 }
@@ -130,8 +230,8 @@ static float phi_bound(const stretch *S, float t, float s, int upper)
         float u = S->np[j].a - t, e; /* foot relative to t */
         if (upper) e = u < 0 ? u : (u > s ? u - s : 0);
         else e = u > 0.5f * s ? u : u - s; /* the farther end */
-        float d2 = S->np[j].b + e * e;
-        if (d2 < H2) sum += fs_kernel_w(f->kernel, sqrtf(d2), f->H);
+        float d2 = S->np[j].b + S->np[j].k * (e * e);
+        if (d2 < H2) sum += S->np[j].ws * fs_kernel_w(f->kernel, sqrtf(d2), f->H);
     }
     return sum * f->volume;
 }
@@ -144,6 +244,18 @@ static void grad_at(const stretch *S, float t, float gr[3])
     gr[0] = gr[1] = gr[2] = 0;
     for (int j = 0; j < S->n; j++) {
         float x[3] = {t * S->d[0] - S->np[j].rel[0], t * S->d[1] - S->np[j].rel[1], t * S->d[2] - S->np[j].rel[2]};
+        const float *M = S->R->inv ? S->R->inv + 9 * (size_t)S->np[j].slot : NULL;
+        if (M) { /* u = A^-1 x; the gradient is W'(|u|)/|u| A^-1 u / det A (A symmetric) */
+            float u[3], g2[3];
+            for (int a = 0; a < 3; a++) u[a] = M[3 * a] * x[0] + M[3 * a + 1] * x[1] + M[3 * a + 2] * x[2];
+            for (int a = 0; a < 3; a++) g2[a] = M[3 * a] * u[0] + M[3 * a + 1] * u[1] + M[3 * a + 2] * u[2];
+            memcpy(x, g2, sizeof x);
+            float d2u = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+            if (d2u >= H2 || d2u <= 0) continue;
+            float d = sqrtf(d2u), w = S->np[j].ws * fs_kernel_dw(f->kernel, d, f->H) / d;
+            for (int a = 0; a < 3; a++) gr[a] += w * x[a];
+            continue;
+        }
         float d2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
         if (d2 >= H2 || d2 <= 0) continue;
         float d = sqrtf(d2), w = fs_kernel_dw(f->kernel, d, f->H) / d;
@@ -158,7 +270,7 @@ static void grad_at(const stretch *S, float t, float gr[3])
 static int gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_particle *out)
 {
     const fs_grid *g = R->g;
-    float H = R->f.H, H2 = H * H;
+    float H = R->reach, H2 = R->f.H * R->f.H;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         float e = o[a] + len * d[a], x0 = o[a] < e ? o[a] : e, x1 = o[a] < e ? e : o[a];
@@ -176,14 +288,32 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
             for (uint32_t s = g->start[row + lo[0]]; s < g->start[row + hi[0] + 1]; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
                 float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
-                float a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
-                float b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
+                float a, b, k = 1, ws = 1;
+                if (R->inv) {
+                    /* Metric |A^-1 (o + t d - q)|^2 = k (t - a)^2 + b: the same form as the isotropic one. */
+                    const float *M = R->inv + 9 * (size_t)s;
+                    float md[3], mr[3];
+                    for (int x = 0; x < 3; x++) {
+                        md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
+                        mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
+                    }
+                    k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
+                    a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
+                    b = mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a;
+                    ws = R->wscale[s];
+                } else {
+                    a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
+                    b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
+                }
                 float e = a < 0 ? a : (a > len ? a - len : 0); /* foot outside the stretch */
                 b = b > 0 ? b : 0;
-                if (b + e * e >= H2) continue;
+                if (b + k * (e * e) >= H2) continue;
                 near_particle *p = &out[n++];
                 p->a = a;
                 p->b = b;
+                p->k = k;
+                p->ws = ws;
+                p->slot = s;
                 memcpy(p->rel, rel, sizeof rel);
             }
         }

@@ -1,0 +1,313 @@
+/* aniso_ssf: Xu et al. 2022. Screen-space fluid rendering with WPCA-anisotropic
+ * ellipsoid point sprites (4.2-4.3; plain spheres when anisotropy is off), one
+ * of four depth filters (Gaussian, bilateral, curvature flow, narrow-range),
+ * normals from the filtered depth, thickness by additive splatting. README.md
+ * maps the paper's parameters onto fluidsurf's units. */
+#include "aniso_ssf/aniso_gl.h"
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_grid.h"
+#include "gl_target.h"
+#include "method.h"
+#include "shader.h"
+#include <stdlib.h>
+#include <string.h>
+
+enum { F_NONE, F_GAUSSIAN, F_BILATERAL, F_CURVATURE, F_NARROW };
+static const fs_param_def params[] = {
+    {"anisotropy", FS_PARAM_BOOL, 1, 0, 1, NULL, "WPCA ellipsoid sprites (on) or spheres of radius r (off)"},
+    {"filter", FS_PARAM_ENUM, F_NARROW, 0, 4, "none|gaussian|bilateral|curvature|narrow", "depth filter"},
+    {"iterations", FS_PARAM_INT, 0, 0, 1000, NULL, "filter iterations; 0: the paper's (2, curvature flow 80)"},
+    {"sigma", FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL, "spatial Gaussian sigma of every filter kernel, multiples of r"},
+    {"sigma_depth", FS_PARAM_FLOAT, 1.0, 0.01, 100.0, NULL, "bilateral range sigma on depth, multiples of r"},
+    {"range", FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL,
+     "narrow-range threshold and curvature-flow discontinuity, multiples of r"},
+    {"max_radius_px", FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
+    {"aniso_radius", FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "WPCA neighbourhood radius R, multiples of r"},
+    {"kappa", FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "largest/smallest eigenvalue limit"},
+    {"n_eps", FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "at or below this many neighbours: isotropic"},
+    {"aniso_scale", FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "stretch = scale sigma_k / sigma_bulk (paper s)"},
+    {"aniso_norm", FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume",
+     "stretch normalisation: global s (paper) or determinant 1 per particle"},
+    {"lambda", FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "Laplacian smoothing of kernel centres (Yu & Turk)"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
+};
+enum { P_ANISO, P_FILTER, P_ITER, P_SIGMA, P_SIGMA_Z, P_RANGE, P_MAXRAD, P_ARAD, P_KAPPA, P_NEPS, P_ASCALE, P_NORM, P_LAMBDA,
+       P_THICK, P_COUNT };
+
+typedef struct assf {
+    fs_field f;
+    double v[P_COUNT];
+    fs_aniso_params ap;
+    unsigned prog_sph, prog_sph_thick, prog_ell, prog_ell_thick, vao;
+    unsigned prog_gauss, prog_bilat, prog_curv, prog_narrow, prog_normals;
+    unsigned tex[2]; /* ping-pong depth */
+    fs_grid own;
+    int has_own;
+    size_t n;
+    fs_gl_grid gg;
+    aniso_gl an;
+    fs_gl_target target;
+} assf;
+
+static void free_textures(assf *s)
+{
+    if (s->tex[0]) glDeleteTextures(2, s->tex);
+    s->tex[0] = s->tex[1] = 0;
+    fs_gl_target_destroy(&s->target);
+}
+
+static void destroy(void *self)
+{
+    assf *s = self;
+    if (!s) return;
+    unsigned progs[] = {s->prog_sph, s->prog_sph_thick, s->prog_ell, s->prog_ell_thick, s->prog_gauss,
+                        s->prog_bilat, s->prog_curv, s->prog_narrow, s->prog_normals};
+    for (size_t i = 0; i < sizeof progs / sizeof *progs; i++)
+        if (progs[i]) glDeleteProgram(progs[i]);
+    if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    free_textures(s);
+    aniso_gl_free(&s->an);
+    fs_gl_grid_free(&s->gg);
+    if (s->has_own) fs_grid_free(&s->own);
+    free(s);
+}
+
+static unsigned comp(const char *name)
+{
+    const char *st[] = {name, NULL};
+    return fs_program_build(st, NULL);
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    const fs_field *f = &setup->field;
+    if (!(f->r > 0) || !(f->H > 0)) {
+        fs_fail(FS_ERR_INPUT, "aniso_ssf: r %g and H %g must be positive", f->r, f->H);
+        return NULL;
+    }
+    assf *s = calloc(1, sizeof *s);
+    if (!s) { fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory"); return NULL; }
+    s->f = *f;
+    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    fs_aniso_defaults(&s->ap, f->kernel, f->r);
+    s->ap.radius = (float)s->v[P_ARAD] * f->r;
+    s->ap.kappa = (float)s->v[P_KAPPA];
+    s->ap.n_eps = (int)s->v[P_NEPS];
+    s->ap.scale = (float)s->v[P_ASCALE];
+    s->ap.lambda = (float)s->v[P_LAMBDA];
+    s->ap.per_particle = (int)s->v[P_NORM];
+    s->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, s->ap.radius, 2 * f->r);
+    const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
+    const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
+    if (!(s->prog_sph = fs_program_build(sph, NULL)) || !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||
+        !(s->prog_ell = fs_program_build(ell, NULL)) || !(s->prog_ell_thick = fs_program_build(ell, "MODE_THICKNESS 1")) ||
+        !(s->prog_gauss = comp("aniso_ssf/gaussian.comp.glsl")) ||
+        !(s->prog_bilat = comp("aniso_ssf/bilateral.comp.glsl")) ||
+        !(s->prog_curv = comp("aniso_ssf/curvature.comp.glsl")) ||
+        !(s->prog_narrow = comp("aniso_ssf/narrow.comp.glsl")) ||
+        !(s->prog_normals = comp("aniso_ssf/normals.comp.glsl")) || aniso_gl_init(&s->an) != FS_OK) {
+        destroy(s);
+        return NULL;
+    }
+    glCreateVertexArrays(1, &s->vao);
+    return s;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    assf *s = self;
+    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
+    if (!g || g->n != p->n || !(g->cell >= s->f.H)) {
+        int rc = fs_grid_build(&s->own, p, s->f.H);
+        if (rc) return rc;
+        s->has_own = 1;
+        g = &s->own;
+    }
+    s->n = p->n;
+    return fs_gl_grid_upload(&s->gg, g);
+}
+
+static void camera_uniforms(unsigned prog, const fs_camera *cam, float radius)
+{
+    float view[16], proj[16];
+    fs_camera_view_matrix(cam, view);
+    fs_camera_proj_matrix(cam, proj);
+    glUseProgram(prog);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
+    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
+    glUniform1f(glGetUniformLocation(prog, "u_radius"), radius);
+    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
+}
+
+/* Spheres read the grid's position chunks, ellipsoids the anisotropy buffers. */
+static void draw_sprites(const assf *s, int aniso)
+{
+    glBindVertexArray(s->vao);
+    int nb = aniso ? s->an.nbufs : s->gg.nchunks;
+    for (int b = 0; b < nb; b++) {
+        size_t cnt = aniso ? s->an.counts[b] : (s->n - b * s->gg.chunk < s->gg.chunk ? s->n - b * s->gg.chunk : s->gg.chunk);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, aniso ? s->an.bufs[b] : s->gg.pos[b]);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
+    }
+}
+
+static int ensure_targets(assf *s, int w, int h)
+{
+    if (s->target.w == w && s->target.h == h && s->tex[0]) return FS_OK;
+    free_textures(s);
+    int rc = fs_gl_target_create(&s->target, w, h);
+    if (rc) return rc;
+    glCreateTextures(GL_TEXTURE_2D, 2, s->tex);
+    for (int i = 0; i < 2; i++) glTextureStorage2D(s->tex[i], 1, GL_R32F, w, h);
+    return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate %dx%d images", w, h);
+}
+
+/* One filter pass src -> dst with the shared kernel-size uniforms. */
+static void pass(const assf *s, unsigned prog, unsigned src, unsigned dst, const fs_camera *cam, float focal_px)
+{
+    glUseProgram(prog);
+    glUniform1f(glGetUniformLocation(prog, "u_focal_px"), focal_px);
+    glUniform1f(glGetUniformLocation(prog, "u_sigma"), (float)s->v[P_SIGMA] * s->f.r);
+    glUniform1i(glGetUniformLocation(prog, "u_max_radius"), (int)s->v[P_MAXRAD]);
+    glBindImageTexture(0, src, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, dst, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+/* Runs the chosen filter; returns the texture holding the filtered depth. */
+static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
+{
+    int filter = (int)s->v[P_FILTER], iters = (int)s->v[P_ITER];
+    if (iters == 0) iters = filter == F_CURVATURE ? 80 : 2;
+    unsigned cur = s->target.tex[FS_TARGET_DEPTH];
+    if (filter == F_NONE) return cur;
+    int k = 0; /* next ping-pong texture */
+#define STEP(prog) do { pass(s, prog, cur, s->tex[k], cam, focal_px); cur = s->tex[k]; k ^= 1; } while (0)
+    float range = (float)s->v[P_RANGE] * s->f.r;
+    for (int it = 0; it < iters; it++) {
+        switch (filter) {
+        case F_GAUSSIAN:
+            glUseProgram(s->prog_gauss);
+            glUniform1i(glGetUniformLocation(s->prog_gauss, "u_axis"), 0);
+            STEP(s->prog_gauss);
+            glUseProgram(s->prog_gauss);
+            glUniform1i(glGetUniformLocation(s->prog_gauss, "u_axis"), 1);
+            STEP(s->prog_gauss);
+            break;
+        case F_BILATERAL:
+            glUseProgram(s->prog_bilat);
+            glUniform1f(glGetUniformLocation(s->prog_bilat, "u_sigma_z"), (float)s->v[P_SIGMA_Z] * s->f.r);
+            STEP(s->prog_bilat);
+            break;
+        case F_CURVATURE:
+            glUseProgram(s->prog_curv);
+            glUniform1f(glGetUniformLocation(s->prog_curv, "u_range"), range);
+            glUniform1f(glGetUniformLocation(s->prog_curv, "u_dt_scale"), 1.0f);
+            STEP(s->prog_curv);
+            break;
+        default: /* narrow-range: 1D passes each iteration */
+            glUseProgram(s->prog_narrow);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_range"), range);
+            glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 0);
+            STEP(s->prog_narrow);
+            glUseProgram(s->prog_narrow);
+            glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 1);
+            STEP(s->prog_narrow);
+        }
+    }
+    if (filter == F_NARROW) { /* then one 2D pass */
+        glUseProgram(s->prog_narrow);
+        glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 2);
+        STEP(s->prog_narrow);
+    }
+#undef STEP
+    return cur;
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
+{
+    assf *s = self;
+    if (!s->gg.start) return fs_fail(FS_ERR_RUNTIME, "aniso_ssf: render before upload");
+    int rc = ensure_targets(s, cam->width, cam->height);
+    if (rc) return rc;
+    int aniso = s->v[P_ANISO] != 0;
+    float proj[16], r = s->f.r;
+    fs_camera_proj_matrix(cam, proj);
+    float focal_px = proj[5] * 0.5f * (float)cam->height;
+
+    glFinish();
+    double t0 = fs_now_ms();
+    if (aniso) {
+        rc = aniso_gl_run(&s->an, &s->gg, s->n, &s->ap);
+        if (rc) return rc;
+        glFinish();
+    }
+    double t1 = fs_now_ms();
+    if (aniso) fs_stages_add(t, "anisotropy", t1 - t0);
+
+    fs_gl_target_clear(&s->target);
+    glViewport(0, 0, cam->width, cam->height);
+    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    camera_uniforms(aniso ? s->prog_ell : s->prog_sph, cam, r);
+    draw_sprites(s, aniso);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glFinish();
+    double t2 = fs_now_ms();
+    fs_stages_add(t, "splat", t2 - t1);
+
+    unsigned depth = run_filter(s, cam, focal_px);
+    glFinish();
+    double t3 = fs_now_ms();
+    fs_stages_add(t, "filter", t3 - t2);
+
+    unsigned P = s->prog_normals;
+    glUseProgram(P);
+    glUniformMatrix4fv(glGetUniformLocation(P, "u_proj"), 1, GL_FALSE, proj);
+    glUniform1i(glGetUniformLocation(P, "u_write_depth"), depth != s->target.tex[FS_TARGET_DEPTH]);
+    glBindImageTexture(0, depth, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(2, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glFinish();
+    double t4 = fs_now_ms();
+    fs_stages_add(t, "normals", t4 - t3);
+
+    if (s->v[P_THICK] != 0) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
+        draw_sprites(s, aniso);
+        glDisable(GL_BLEND);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glFinish();
+        fs_stages_add(t, "thickness", fs_now_ms() - t4);
+    }
+    double t5 = fs_now_ms();
+    rc = fs_gl_target_read(&s->target, out);
+    fs_stages_add(t, "readback", fs_now_ms() - t5);
+    return rc;
+}
+
+const fs_method fs_method_aniso_ssf = {
+    .name = "aniso_ssf",
+    .description = "screen-space fluid: WPCA ellipsoid (or sphere) sprites, Gaussian/bilateral/curvature/narrow-range "
+                   "depth filter, normals from depth",
+    .paper = "xu2022",
+    .needs_gl = 1,
+    .params = params,
+    .nparams = (int)(sizeof params / sizeof *params),
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+};

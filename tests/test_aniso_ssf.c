@@ -1,0 +1,289 @@
+/* aniso_ssf on the OSMesa context: (a) the GLSL anisotropy equals the C one;
+ * (b) ellipsoid sprite depth equals an exact CPU ray-ellipsoid intersection;
+ * (c) every filter runs, changes the depth and keeps the coverage; (d) normals
+ * from depth on a plane; (e) the anisotropic reference renders. */
+#include "aniso_ssf/aniso_gl.h"
+#include "eigen3.h"
+#include "fs_error.h"
+#include "fs_test.h"
+#include "gl_context.h"
+#include "method.h"
+#include "metrics.h"
+#include "synthetic.h"
+#include <stdlib.h>
+#include <string.h>
+
+static const float R_ = 0.025f;
+
+static void param_values(const fs_method *m, double *v, const char *const *sets)
+{
+    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
+    for (; sets && *sets; sets++) {
+        char name[64];
+        const char *eq = strchr(*sets, '=');
+        snprintf(name, sizeof name, "%.*s", (int)(eq - *sets), *sets);
+        int i = fs_method_param_index(m, name);
+        CHECK(i >= 0 && fs_param_parse(&m->params[i], eq + 1, &v[i], name) == FS_OK, "bad test parameter %s", *sets);
+    }
+}
+
+static int render(const char *name, const char *const *sets, const fs_particles *p, fs_field f, const fs_camera *cam,
+                  fs_gbuffer *out, fs_stages *st)
+{
+    const fs_method *m = fs_method_find(name);
+    if (!m) return fs_fail(FS_ERR_RUNTIME, "%s is not registered", name);
+    double v[FS_MAX_PARAMS];
+    param_values(m, v, sets);
+    fs_method_setup setup = {f, v};
+    fs_grid g;
+    int rc = fs_grid_build(&g, p, f.H);
+    void *self = rc ? NULL : m->create(&setup);
+    if (!rc && !self) rc = FS_ERR_RUNTIME;
+    if (!rc) rc = m->upload(self, p, &g);
+    fs_stages local = {0};
+    if (!rc) rc = m->render(self, cam, out, st ? st : &local);
+    if (self) m->destroy(self);
+    fs_grid_free(&g);
+    return rc;
+}
+
+static fs_field field(void) { return (fs_field){R_, 8 * R_ * R_ * R_, FS_KERNEL_CUBIC, 4 * R_, 0.6f}; }
+
+/* A flat square patch of n x n particles in the plane z = 0 (spacing 2r). */
+static void patch(fs_particles *p, int n)
+{
+    fs_particles_alloc(p, (size_t)n * n, 0);
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            p->x[j * n + i] = (i - (n - 1) / 2.0f) * 2 * R_;
+            p->y[j * n + i] = (j - (n - 1) / 2.0f) * 2 * R_;
+        }
+    fs_particles_bounds(p);
+}
+
+static void c_vs_glsl(void)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    s.synth.shape = FS_SYNTH_BOX;
+    s.synth.size[0] = s.synth.size[1] = s.synth.size[2] = 10;
+    s.synth.seed = 9;
+    fs_particles p;
+    CHECK(fs_synthetic_generate(&s, 0, &p) == FS_OK, "box: %s", fs_error_message());
+    fs_grid g;
+    fs_grid_build(&g, &p, 4 * R_);
+    fs_aniso_params ap;
+    fs_aniso_defaults(&ap, FS_KERNEL_CUBIC, R_);
+    ap.lambda = 0.5f;
+    fs_gl_grid gg = {0};
+    aniso_gl an;
+    CHECK(aniso_gl_init(&an) == FS_OK, "init: %s", fs_error_message());
+    CHECK(fs_gl_grid_upload(&gg, &g) == FS_OK && aniso_gl_run(&an, &gg, p.n, &ap) == FS_OK, "run: %s",
+          fs_error_message());
+    double emax = 0, cmax = 0;
+    int nbad = 0;
+    for (size_t sl = 0; sl < p.n; sl++) {
+        float cg[3], Ag[9], cc[3], Ac[9];
+        int ng;
+        aniso_gl_read(&an, sl, cg, Ag, &ng);
+        uint32_t i = g.index[sl];
+        float x[3] = {p.x[i], p.y[i], p.z[i]};
+        int nc = fs_aniso_point(&g, x, &ap, cc, Ac);
+        nbad += nc != ng;
+        for (int k = 0; k < 9; k++) emax = fmax(emax, fabs(Ag[k] - Ac[k]));
+        for (int k = 0; k < 3; k++) cmax = fmax(cmax, fabs(cg[k] - cc[k]) / R_);
+    }
+    printf("(a) C vs GLSL on %zu particles: max |A| diff %.2e, max centre diff %.2e r, count mismatches %d\n", p.n, emax,
+           cmax, nbad);
+    CHECK(emax < 2e-3, "stretch matrices differ by %g", emax);
+    CHECK(cmax < 1e-4, "centres differ by %g r", cmax);
+    CHECK(nbad <= (int)p.n / 100, "%d neighbour counts differ", nbad);
+    aniso_gl_free(&an);
+    fs_gl_grid_free(&gg);
+    fs_grid_free(&g);
+    fs_particles_free(&p);
+}
+
+/* Nearest hit distance of the ray o + t d with the ellipsoid c + A (r u), |u| <= 1, or INFINITY. */
+static double ray_ellipsoid(const float o[3], const float d[3], const float c[3], const float A[9])
+{
+    double a[9], ev[3], V[9], inv[9];
+    for (int k = 0; k < 9; k++) a[k] = A[k];
+    fs_eigen3_sym(a, ev, V);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            inv[3 * i + j] = 0;
+            for (int k = 0; k < 3; k++) inv[3 * i + j] += V[3 * k + i] * V[3 * k + j] / (ev[k] * R_);
+        }
+    double q[3], pp[3];
+    for (int i = 0; i < 3; i++) {
+        q[i] = pp[i] = 0;
+        for (int j = 0; j < 3; j++) { q[i] += inv[3 * i + j] * d[j]; pp[i] += inv[3 * i + j] * (o[j] - c[j]); }
+    }
+    double qq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2], qp = q[0] * pp[0] + q[1] * pp[1] + q[2] * pp[2];
+    double h = qp * qp - qq * (pp[0] * pp[0] + pp[1] * pp[1] + pp[2] * pp[2] - 1);
+    return h < 0 ? INFINITY : (-qp - sqrt(h)) / qq;
+}
+
+static void sprite_depth(void)
+{
+    fs_particles p;
+    patch(&p, 9);
+    fs_camera cam = {{0.1f, -0.15f, 0.6f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 96, 96, 0.05f, 5.0f};
+    fs_gbuffer gb;
+    fs_gbuffer_alloc(&gb, 96, 96, 0);
+    const char *sets[] = {"filter=none", "thickness=off", NULL};
+    CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
+    fs_grid g;
+    fs_grid_build(&g, &p, 4 * R_);
+    fs_aniso_params ap;
+    fs_aniso_defaults(&ap, FS_KERNEL_CUBIC, R_);
+    float *c = malloc(p.n * 3 * sizeof *c), *A = malloc(p.n * 9 * sizeof *A);
+    fs_aniso_compute(&p, &g, &ap, c, A, NULL);
+    double s0 = 0;
+    for (size_t i = 0; i < p.n; i++) s0 += A[9 * i + 8];
+    float rt[3], up[3], fwd[3];
+    fs_camera_basis(&cam, rt, up, fwd);
+    int both = 0, only = 0;
+    double emax = 0;
+    for (int y = 0; y < 96; y++)
+        for (int x = 0; x < 96; x++) {
+            float d[3];
+            fs_camera_ray(&cam, x + 0.5f, y + 0.5f, d);
+            double t = INFINITY;
+            for (size_t i = 0; i < p.n; i++) t = fmin(t, ray_ellipsoid(cam.eye, d, c + 3 * i, A + 9 * i));
+            size_t id = (size_t)y * 96 + x;
+            int cpu = isfinite(t), gpu = gb.coverage[id] > 0;
+            if (cpu != gpu) { only++; continue; }
+            if (!cpu) continue;
+            both++;
+            emax = fmax(emax, fabs(t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]) - gb.depth[id]) / R_);
+        }
+    printf("(b) ellipsoid sprites vs CPU ray-ellipsoid: %d px both, %d px one only, max depth diff %.2e r, "
+           "mean z-stretch %.3f\n", both, only, emax, s0 / p.n);
+    CHECK(s0 / p.n < 0.7, "the patch's particles are not flattened (mean z stretch %g)", s0 / p.n);
+    CHECK(both > 1000, "only %d pixels", both);
+    CHECK(only <= both / 100, "%d pixels covered by one side only", only);
+    CHECK(emax < 0.01, "depth differs by %g r", emax);
+    free(c);
+    free(A);
+    fs_grid_free(&g);
+    fs_gbuffer_free(&gb);
+    fs_particles_free(&p);
+}
+
+static void filters(void)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    s.synth.shape = FS_SYNTH_SLAB;
+    s.synth.size[0] = s.synth.size[2] = 24;
+    s.synth.seed = 4;
+    fs_particles p;
+    CHECK(fs_synthetic_generate(&s, 0, &p) == FS_OK, "slab: %s", fs_error_message());
+    fs_camera cam = {{0, 30 * R_, 40 * R_}, {0, 6 * R_, 0}, {0, 1, 0}, 40.0f, 128, 128, 0.05f, 10.0f};
+    const char *names[] = {"none", "gaussian", "bilateral", "curvature", "narrow"};
+    fs_gbuffer gb[5];
+    for (int k = 0; k < 5; k++) {
+        char set[64];
+        snprintf(set, sizeof set, "filter=%s", names[k]);
+        const char *sets[] = {set, NULL};
+        fs_stages st = {0};
+        fs_gbuffer_alloc(&gb[k], 128, 128, 0);
+        CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
+        const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback"};
+        for (int w = 0; w < 6; w++) {
+            int found = 0;
+            for (int i = 0; i < st.n; i++) found |= !strcmp(st.name[i], want[w]);
+            CHECK(found, "%s: stage %s not reported", names[k], want[w]);
+        }
+    }
+    for (int k = 1; k < 5; k++) {
+        int cov_diff = 0, bad = 0, n = 0;
+        double change = 0;
+        for (int i = 0; i < 128 * 128; i++) {
+            cov_diff += gb[k].coverage[i] != gb[0].coverage[i];
+            if (!gb[k].coverage[i]) continue;
+            bad += !(isfinite(gb[k].depth[i]) && gb[k].depth[i] > 0);
+            if (gb[0].coverage[i]) { change += fabs(gb[k].depth[i] - gb[0].depth[i]); n++; }
+        }
+        change = n ? change / n / R_ : 0;
+        printf("(c) %s: mean |depth change| %.3f r, coverage changed at %d px, bad depths %d\n", names[k], change, cov_diff,
+               bad);
+        CHECK(change > 0.01, "%s does not change the depth (%g r)", names[k], change);
+        CHECK(cov_diff == 0, "%s changes the coverage at %d px (holes)", names[k], cov_diff);
+        CHECK(bad == 0, "%s leaves %d non-finite or non-positive depths", names[k], bad);
+    }
+    for (int k = 0; k < 5; k++) fs_gbuffer_free(&gb[k]);
+    fs_particles_free(&p);
+}
+
+static void plane_normals(void)
+{
+    fs_particles p;
+    patch(&p, 17);
+    fs_camera cam = {{0.1f, -0.2f, 0.8f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 128, 128, 0.05f, 5.0f};
+    fs_gbuffer gb;
+    fs_gbuffer_alloc(&gb, 128, 128, 0);
+    const char *sets[] = {"filter=none", "kappa=50", NULL};
+    CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
+    float nz[3] = {0, 0, 1}, nv[3];
+    fs_camera_to_view_dir(&cam, nz, nv);
+    unsigned char *in = malloc(128 * 128);
+    fs_interior_mask(&gb, &gb, 3, in);
+    double sum = 0;
+    int n = 0;
+    for (int i = 0; i < 128 * 128; i++) {
+        if (!in[i]) continue;
+        const float *m = gb.normal + 3 * i;
+        sum += acos(fmin(1.0, fabs(m[0] * nv[0] + m[1] * nv[1] + m[2] * nv[2]))) * 180 / FS_PI;
+        n++;
+    }
+    printf("(d) normals from depth on a plane of flat ellipsoids: mean %.3f deg over %d interior px\n", sum / n, n);
+    CHECK(n > 2000, "only %d interior pixels", n);
+    CHECK(sum / n < 1.5, "mean normal error %g deg on a plane", sum / n);
+    free(in);
+    fs_gbuffer_free(&gb);
+    fs_particles_free(&p);
+}
+
+static void aniso_reference(void)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    s.synth.shape = FS_SYNTH_BOX;
+    s.synth.size[0] = s.synth.size[1] = s.synth.size[2] = 10;
+    s.synth.seed = 2;
+    fs_particles p;
+    CHECK(fs_synthetic_generate(&s, 0, &p) == FS_OK, "box: %s", fs_error_message());
+    fs_camera cam = {{0.5f, 0.6f, 0.7f}, {0, 5 * R_, 0}, {0, 1, 0}, 40.0f, 64, 64, 0.05f, 10.0f};
+    fs_gbuffer iso, ani;
+    fs_gbuffer_alloc(&iso, 64, 64, 0);
+    fs_gbuffer_alloc(&ani, 64, 64, 0);
+    const char *sets[] = {"field=anisotropic", NULL};
+    CHECK(render("reference", NULL, &p, field(), &cam, &iso, NULL) == FS_OK, "iso: %s", fs_error_message());
+    CHECK(render("reference", sets, &p, field(), &cam, &ani, NULL) == FS_OK, "aniso: %s", fs_error_message());
+    fs_metrics mt;
+    fs_metrics_compute(&ani, NULL, &iso, NULL, R_, &mt);
+    printf("(e) anisotropic vs isotropic reference: IoU %.4f, depth bias %.3f r, normal mean %.2f deg, %zu px\n",
+           mt.mask_iou, mt.depth_bias_r, mt.normal_mean_deg, mt.n_both);
+    CHECK(mt.n_both > 500, "anisotropic reference covers %zu px", mt.n_both);
+    CHECK(mt.mask_iou > 0.85, "IoU %g against the isotropic surface", mt.mask_iou);
+    CHECK(fabs(mt.depth_bias_r) > 0.02 || mt.normal_mean_deg > 0.5, "the anisotropic field changes nothing");
+    fs_gbuffer_free(&iso);
+    fs_gbuffer_free(&ani);
+    fs_particles_free(&p);
+}
+
+int main(void)
+{
+    fs_gl_context ctx;
+    if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    c_vs_glsl();
+    sprite_depth();
+    filters();
+    plane_normals();
+    aniso_reference();
+    fs_gl_context_destroy(&ctx);
+    TEST_DONE();
+}
