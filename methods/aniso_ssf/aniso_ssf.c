@@ -7,6 +7,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_grid.h"
+#include "gl_sprites.h"
 #include "gl_target.h"
 #include "method.h"
 #include "shader.h"
@@ -128,28 +129,17 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     return fs_gl_grid_upload(&s->gg, g);
 }
 
+/* Camera uniforms plus the splat radius. */
 static void camera_uniforms(unsigned prog, const fs_camera *cam, float radius)
 {
-    float view[16], proj[16];
-    fs_camera_view_matrix(cam, view);
-    fs_camera_proj_matrix(cam, proj);
-    glUseProgram(prog);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
+    fs_gl_camera_uniforms(prog, cam);
     glUniform1f(glGetUniformLocation(prog, "u_radius"), radius);
-    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
 }
 
-/* Spheres read the grid's position chunks, ellipsoids the anisotropy buffers. */
 static void draw_sprites(const assf *s, int aniso)
 {
-    glBindVertexArray(s->vao);
-    int nb = aniso ? s->an.nbufs : s->gg.nchunks;
-    for (int b = 0; b < nb; b++) {
-        size_t cnt = aniso ? s->an.counts[b] : (s->n - b * s->gg.chunk < s->gg.chunk ? s->n - b * s->gg.chunk : s->gg.chunk);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, aniso ? s->an.bufs[b] : s->gg.pos[b]);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
-    }
+    if (aniso) fs_gl_draw_sprites(s->vao, s->an.bufs, s->an.nbufs, s->an.chunk, s->n);
+    else fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n);
 }
 
 static int ensure_targets(assf *s, int w, int h)

@@ -6,6 +6,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_grid.h"
+#include "gl_sprites.h"
 #include "gl_target.h"
 #include "method.h"
 #include "raycast_pca/pca_normal.h"
@@ -128,30 +129,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     return rc;
 }
 
-static void camera_uniforms(unsigned prog, const fs_camera *cam)
-{
-    float view[16], proj[16], rot[9];
-    fs_camera_view_matrix(cam, view);
-    fs_camera_proj_matrix(cam, proj);
-    for (int c = 0; c < 3; c++)
-        for (int r = 0; r < 3; r++) rot[3 * c + r] = view[4 * c + r];
-    glUseProgram(prog);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
-    glUniformMatrix3fv(glGetUniformLocation(prog, "u_view_rot"), 1, GL_FALSE, rot);
-    glUniform3f(glGetUniformLocation(prog, "u_eye"), cam->eye[0], cam->eye[1], cam->eye[2]);
-    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
-}
-
-static void draw_spheres(const rpca *s)
-{
-    glBindVertexArray(s->vao);
-    for (int b = 0; b < s->gg.nchunks; b++) {
-        size_t cnt = s->n - b * s->gg.chunk < s->gg.chunk ? s->n - b * s->gg.chunk : s->gg.chunk;
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->gg.pos[b]);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
-    }
-}
+static void draw_spheres(const rpca *s) { fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n); }
 
 static int ensure_targets(rpca *s, int w, int h)
 {
@@ -193,7 +171,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    camera_uniforms(s->prog_splat, cam);
+    fs_gl_camera_uniforms(s->prog_splat, cam);
     glUniform1f(glGetUniformLocation(s->prog_splat, "u_radius"), splat_r);
     draw_spheres(s);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -205,7 +183,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     /* 3.2 iso-surface by narrow-band ray casting. */
     unsigned P = s->prog_march;
     fs_gl_grid_bind(&s->gg, P);
-    camera_uniforms(P, cam);
+    fs_gl_camera_uniforms(P, cam);
     glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
     glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
     glUniform1f(glGetUniformLocation(P, "u_V"), f->volume);
@@ -225,7 +203,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     /* 3.3 normals (and colour, eye depth). */
     P = s->prog_normals;
     fs_gl_grid_bind(&s->gg, P);
-    camera_uniforms(P, cam);
+    fs_gl_camera_uniforms(P, cam);
     glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
     glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
     glUniform1f(glGetUniformLocation(P, "u_R"), (float)s->v[P_PCA_RADIUS] * r);
@@ -268,7 +246,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
-        camera_uniforms(s->prog_thick, cam);
+        fs_gl_camera_uniforms(s->prog_thick, cam);
         glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
         draw_spheres(s);
         glDisable(GL_BLEND);

@@ -3,6 +3,7 @@
  * Thickness is the sum of the view ray's chords through all spheres. */
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_sprites.h"
 #include "gl_target.h"
 #include "method.h"
 #include "shader.h"
@@ -22,7 +23,7 @@ typedef struct spheres {
     int thickness;
     unsigned prog_surface, prog_thickness, vao;
     unsigned bufs[MAX_CHUNKS];
-    size_t counts[MAX_CHUNKS];
+    size_t chunk, n; /* particles per buffer, in all */
     int nbufs;
     fs_gl_target target;
 } spheres;
@@ -72,30 +73,18 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     free(v);
     if (nb < 0) return -nb;
     s->nbufs = nb;
-    for (int b = 0; b < nb; b++) s->counts[b] = p->n - b * chunk < chunk ? p->n - b * chunk : chunk;
+    s->chunk = chunk;
+    s->n = p->n;
     return FS_OK;
 }
 
 static void set_uniforms(unsigned prog, const fs_camera *cam, float radius)
 {
-    float view[16], proj[16];
-    fs_camera_view_matrix(cam, view);
-    fs_camera_proj_matrix(cam, proj);
-    glUseProgram(prog);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_view"), 1, GL_FALSE, view);
-    glUniformMatrix4fv(glGetUniformLocation(prog, "u_proj"), 1, GL_FALSE, proj);
+    fs_gl_camera_uniforms(prog, cam);
     glUniform1f(glGetUniformLocation(prog, "u_radius"), radius);
-    glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
 }
 
-static void draw(const spheres *s)
-{
-    glBindVertexArray(s->vao);
-    for (int b = 0; b < s->nbufs; b++) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->bufs[b]);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)s->counts[b]);
-    }
-}
+static void draw(const spheres *s) { fs_gl_draw_sprites(s->vao, s->bufs, s->nbufs, s->chunk, s->n); }
 
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
