@@ -53,6 +53,32 @@ void fs_gl_target_clear(fs_gl_target *t)
     glClearNamedFramebufferfv(t->fbo_thickness, GL_COLOR, 0, zero);
 }
 
+void fs_gl_target_begin_surface(const fs_gl_target *t)
+{
+    glViewport(0, 0, t->w, t->h);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo_surface);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void fs_gl_target_begin_thickness(const fs_gl_target *t)
+{
+    glViewport(0, 0, t->w, t->h);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo_thickness);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+}
+
+void fs_gl_target_end_pass(void)
+{
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 static void read_flipped(unsigned tex, int comps, int w, int h, float *dst)
 {
     size_t row = (size_t)w * comps;

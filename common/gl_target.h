@@ -23,6 +23,13 @@ int fs_gl_target_create(fs_gl_target *t, int w, int h);
 void fs_gl_target_destroy(fs_gl_target *t);
 /* Clears everything: depth 1, eye depth 0, normal 0, thickness 0, colour 0. */
 void fs_gl_target_clear(fs_gl_target *t);
+/* Binds the surface framebuffer for a depth-tested splat pass (viewport set,
+ * depth test LESS with writes, no blending). */
+void fs_gl_target_begin_surface(const fs_gl_target *t);
+/* Binds the thickness framebuffer for an additive pass (no depth test, ONE+ONE). */
+void fs_gl_target_begin_thickness(const fs_gl_target *t);
+/* Back to the default framebuffer, blending off. */
+void fs_gl_target_end_pass(void);
 /* Reads the targets into g (flipping rows: GL is bottom-up), sets coverage from
  * the normal's w and depth = INFINITY where uncovered. */
 int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g);

@@ -238,15 +238,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (aniso) fs_stages_add(t, "anisotropy", t1 - t0);
 
     fs_gl_target_clear(&s->target);
-    glViewport(0, 0, cam->width, cam->height);
-    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    fs_gl_target_begin_surface(&s->target);
     camera_uniforms(aniso ? s->prog_ell : s->prog_sph, cam, r);
     draw_sprites(s, aniso);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    fs_gl_target_end_pass();
     glDisable(GL_DEPTH_TEST);
     glFinish();
     double t2 = fs_now_ms();
@@ -271,14 +266,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_stages_add(t, "normals", t4 - t3);
 
     if (s->v[P_THICK] != 0) {
-        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
+        fs_gl_target_begin_thickness(&s->target);
         camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
         draw_sprites(s, aniso);
-        glDisable(GL_BLEND);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        fs_gl_target_end_pass();
         glFinish();
         fs_stages_add(t, "thickness", fs_now_ms() - t4);
     }

@@ -165,12 +165,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     double t0 = fs_now_ms();
     /* 3.1 ray entry: nearest sphere per pixel, hardware depth test. */
     fs_gl_target_clear(&s->target);
-    glViewport(0, 0, cam->width, cam->height);
-    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    fs_gl_target_begin_surface(&s->target);
     fs_gl_camera_uniforms(s->prog_splat, cam);
     glUniform1f(glGetUniformLocation(s->prog_splat, "u_radius"), splat_r);
     draw_spheres(s);
@@ -242,15 +237,11 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 
     /* 3.4 thickness: additive sphere splatting (chord lengths). */
     if (s->v[P_THICKNESS] != 0) {
-        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
+        fs_gl_target_begin_thickness(&s->target);
         fs_gl_camera_uniforms(s->prog_thick, cam);
         glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
         draw_spheres(s);
-        glDisable(GL_BLEND);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        fs_gl_target_end_pass();
         glFinish();
         fs_stages_add(t, "thickness", fs_now_ms() - t4);
     }

@@ -97,30 +97,20 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glFinish();
     double t0 = fs_now_ms();
     fs_gl_target_clear(&s->target);
-    glViewport(0, 0, cam->width, cam->height);
-    glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_surface);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    fs_gl_target_begin_surface(&s->target);
     set_uniforms(s->prog_surface, cam, s->radius);
     draw(s);
     glFinish();
     double t1 = fs_now_ms();
     fs_stages_add(t, "splat", t1 - t0);
     if (s->thickness) {
-        glBindFramebuffer(GL_FRAMEBUFFER, s->target.fbo_thickness);
-        glDisable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
+        fs_gl_target_begin_thickness(&s->target);
         set_uniforms(s->prog_thickness, cam, s->radius);
         draw(s);
-        glDisable(GL_BLEND);
         glFinish();
         fs_stages_add(t, "thickness", fs_now_ms() - t1);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    fs_gl_target_end_pass();
     double t2 = fs_now_ms();
     int rc = fs_gl_target_read(&s->target, out);
     fs_stages_add(t, "readback", fs_now_ms() - t2);
