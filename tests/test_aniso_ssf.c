@@ -8,44 +8,13 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "test_render.h"
 #include "metrics.h"
 #include "synthetic.h"
 #include <stdlib.h>
 #include <string.h>
 
 static const float R_ = 0.025f;
-
-static void param_values(const fs_method *m, double *v, const char *const *sets)
-{
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    for (; sets && *sets; sets++) {
-        char name[64];
-        const char *eq = strchr(*sets, '=');
-        snprintf(name, sizeof name, "%.*s", (int)(eq - *sets), *sets);
-        int i = fs_method_param_index(m, name);
-        CHECK(i >= 0 && fs_param_parse(&m->params[i], eq + 1, &v[i], name) == FS_OK, "bad test parameter %s", *sets);
-    }
-}
-
-static int render(const char *name, const char *const *sets, const fs_particles *p, fs_field f, const fs_camera *cam,
-                  fs_gbuffer *out, fs_stages *st)
-{
-    const fs_method *m = fs_method_find(name);
-    if (!m) return fs_fail(FS_ERR_RUNTIME, "%s is not registered", name);
-    double v[FS_MAX_PARAMS];
-    param_values(m, v, sets);
-    fs_method_setup setup = {f, v};
-    fs_grid g;
-    int rc = fs_grid_build(&g, p, f.H);
-    void *self = rc ? NULL : m->create(&setup);
-    if (!rc && !self) rc = FS_ERR_RUNTIME;
-    if (!rc) rc = m->upload(self, p, &g);
-    fs_stages local = {0};
-    if (!rc) rc = m->render(self, cam, out, st ? st : &local);
-    if (self) m->destroy(self);
-    fs_grid_free(&g);
-    return rc;
-}
 
 static fs_field field(void) { return (fs_field){R_, 8 * R_ * R_ * R_, FS_KERNEL_CUBIC, 4 * R_, 0.6f}; }
 
@@ -133,7 +102,7 @@ static void sprite_depth(void)
     fs_gbuffer gb;
     fs_gbuffer_alloc(&gb, 96, 96, 0);
     const char *sets[] = {"filter=none", "thickness=off", NULL};
-    CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
+    CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
     fs_grid g;
     fs_grid_build(&g, &p, 4 * R_);
     fs_aniso_params ap;
@@ -190,7 +159,7 @@ static void filters(void)
         const char *sets[] = {set, NULL};
         fs_stages st = {0};
         fs_gbuffer_alloc(&gb[k], 128, 128, 0);
-        CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
+        CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
         const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback"};
         for (int w = 0; w < 6; w++) {
             int found = 0;
@@ -226,7 +195,7 @@ static void plane_normals(void)
     fs_gbuffer gb;
     fs_gbuffer_alloc(&gb, 128, 128, 0);
     const char *sets[] = {"filter=none", "kappa=50", NULL};
-    CHECK(render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
+    CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
     float nz[3] = {0, 0, 1}, nv[3];
     fs_camera_to_view_dir(&cam, nz, nv);
     unsigned char *in = malloc(128 * 128);
@@ -261,8 +230,8 @@ static void aniso_reference(void)
     fs_gbuffer_alloc(&iso, 64, 64, 0);
     fs_gbuffer_alloc(&ani, 64, 64, 0);
     const char *sets[] = {"field=anisotropic", NULL};
-    CHECK(render("reference", NULL, &p, field(), &cam, &iso, NULL) == FS_OK, "iso: %s", fs_error_message());
-    CHECK(render("reference", sets, &p, field(), &cam, &ani, NULL) == FS_OK, "aniso: %s", fs_error_message());
+    CHECK(fs_test_render("reference", NULL, &p, field(), &cam, &iso, NULL) == FS_OK, "iso: %s", fs_error_message());
+    CHECK(fs_test_render("reference", sets, &p, field(), &cam, &ani, NULL) == FS_OK, "aniso: %s", fs_error_message());
     fs_metrics mt;
     fs_metrics_compute(&ani, NULL, &iso, NULL, R_, &mt);
     printf("(e) anisotropic vs isotropic reference: IoU %.4f, depth bias %.3f r, normal mean %.2f deg, %zu px\n",

@@ -6,44 +6,12 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "test_render.h"
 #include "metrics.h"
 #include "particle_io.h"
 #include "synthetic.h"
 #include <stdlib.h>
 #include <string.h>
-
-/* Default parameters of m with "name=value" overrides. */
-static void param_values(const fs_method *m, double *v, const char *const *sets)
-{
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    for (; sets && *sets; sets++) {
-        char name[64];
-        const char *eq = strchr(*sets, '=');
-        snprintf(name, sizeof name, "%.*s", (int)(eq - *sets), *sets);
-        int i = fs_method_param_index(m, name);
-        CHECK(i >= 0 && fs_param_parse(&m->params[i], eq + 1, &v[i], name) == FS_OK, "bad test parameter %s", *sets);
-    }
-}
-
-static int render(const char *name, const char *const *sets, const fs_particles *p, fs_field f, const fs_camera *cam,
-                  fs_gbuffer *out, fs_stages *st)
-{
-    const fs_method *m = fs_method_find(name);
-    if (!m) return fs_fail(FS_ERR_RUNTIME, "%s is not registered", name);
-    double v[FS_MAX_PARAMS];
-    param_values(m, v, sets);
-    fs_method_setup setup = {f, v};
-    fs_grid g;
-    int rc = fs_grid_build(&g, p, f.H);
-    void *self = rc ? NULL : m->create(&setup);
-    if (!rc && !self) rc = FS_ERR_RUNTIME;
-    if (!rc) rc = m->upload(self, p, &g);
-    fs_stages local = {0};
-    if (!rc) rc = m->render(self, cam, out, st ? st : &local);
-    if (self) m->destroy(self);
-    fs_grid_free(&g);
-    return rc;
-}
 
 /* (a) The 6,859-particle SPlisHSPlasH dam break: the issue's bar (IoU >= 0.97,
  * depth p95 <= 0.1 r against the reference with the same field). */
@@ -65,8 +33,8 @@ static void against_reference(void)
     fs_gbuffer_alloc(&a, 128, 128, 0);
     fs_gbuffer_alloc(&b, 128, 128, 0);
     fs_stages st = {0};
-    CHECK(render("raycast_pca", NULL, &p, f, &s.camera, &a, &st) == FS_OK, "raycast_pca: %s", fs_error_message());
-    CHECK(render("reference", NULL, &p, f, &s.camera, &b, NULL) == FS_OK, "reference: %s", fs_error_message());
+    CHECK(fs_test_render("raycast_pca", NULL, &p, f, &s.camera, &a, &st) == FS_OK, "raycast_pca: %s", fs_error_message());
+    CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &b, NULL) == FS_OK, "reference: %s", fs_error_message());
     fs_metrics mt;
     CHECK(fs_metrics_compute(&a, NULL, &b, NULL, f.r, &mt) == FS_OK, "metrics: %s", fs_error_message());
     printf("(a) dam break 6859 at 128^2 vs reference: IoU %.4f, depth bias %.4f r, p95 %.4f r, normal mean %.2f deg "
@@ -142,7 +110,7 @@ static void normal_switches(void)
     const char *const *sets[4] = {basic, pca, blend, filt};
     for (int k = 0; k < 4; k++) {
         fs_gbuffer_alloc(&g[k], 128, 128, 0);
-        CHECK(render("raycast_pca", sets[k], &p, f, &cam, &g[k], NULL) == FS_OK, "render %d: %s", k, fs_error_message());
+        CHECK(fs_test_render("raycast_pca", sets[k], &p, f, &cam, &g[k], NULL) == FS_OK, "render %d: %s", k, fs_error_message());
     }
     unsigned char *in = malloc(128 * 128);
     fs_interior_mask(&g[0], &ana, 3, in);
@@ -189,7 +157,7 @@ static void colour_tracking(void)
     fs_camera cam = {{0, 8 * r, 60 * r}, {0, 8 * r, 0}, {0, 1, 0}, 40.0f, 128, 64, 0.1f, 10.0f};
     fs_gbuffer g;
     fs_gbuffer_alloc(&g, 128, 64, 1);
-    CHECK(render("raycast_pca", NULL, &p, f, &cam, &g, NULL) == FS_OK, "render: %s", fs_error_message());
+    CHECK(fs_test_render("raycast_pca", NULL, &p, f, &cam, &g, NULL) == FS_OK, "render: %s", fs_error_message());
     float rt[3], up[3], fwd[3];
     fs_camera_basis(&cam, rt, up, fwd);
     int red = 0, blue = 0, wrong = 0, mixed = 0;
