@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The two doubts in methods/aniso_ssf/README.md, measured (shipped defaults otherwise):
+#  1. narrow-range depth bias: the jittered slab against `analytic`, seen obliquely
+#     (experiments/scenes/slab.json) and from nearly straight above
+#     (experiments/xu2022/slab_topdown.json), filters none / gaussian / narrow, anisotropy on;
+#     if the bias toward the camera comes from the one-sided range test on sloped depth,
+#     it vanishes head-on.
+#  2. curvature-flow time step and iteration count: the box against `analytic` with
+#     80 (the paper's) and 320 iterations, at 256^2, 512^2 and 1024^2: the step is a
+#     fixed diffusion per pixel, so at a higher resolution the same 80 iterations smooth
+#     less in world units.
+# Writes results/xu2022/doubts_narrow_bias.csv and doubts_curvature.csv.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BIN=${BIN:-./build-xu/fluidsurf}
+OUT=results/xu2022
+TMP=out/xu2022/doubts
+mkdir -p "$OUT" "$TMP"
+[ -x "$BIN" ] || { echo "doubts.sh: $BIN missing" >&2; exit 2; }
+pick() { awk -F, -v tag="$1" '!/^#/ && $1 == "aniso_ssf" {print tag "," $2 "," $5 "," $6 "," $7 "," $11}' "$2"; }
+
+csv=$OUT/doubts_narrow_bias.csv
+echo "view,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
+for spec in oblique:experiments/scenes/slab.json topdown:experiments/xu2022/slab_topdown.json; do
+  IFS=: read -r view scene <<< "$spec"
+  "$BIN" compare "$scene" --methods aniso_ssf --set aniso_ssf.filter=none,gaussian,narrow --reference analytic \
+      -W 512 -H 512 --repeat 1 -q -o "$TMP/narrow_$view" 2> "$TMP/narrow_$view.log"
+  pick "$view" "$TMP/narrow_$view/metrics.csv" >> "$csv.new"
+done
+mv "$csv.new" "$csv"; column -t -s, "$csv"
+
+csv=$OUT/doubts_curvature.csv
+echo "size,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
+for size in 256 512 1024; do
+  "$BIN" compare experiments/scenes/box.json --methods aniso_ssf --set aniso_ssf.filter=curvature \
+      --set aniso_ssf.iterations=80,320 --set aniso_ssf.anisotropy=off,on --reference analytic \
+      -W $size -H $size --repeat 1 -q -o "$TMP/curv_$size" 2> "$TMP/curv_$size.log"
+  pick "$size" "$TMP/curv_$size/metrics.csv" >> "$csv.new"
+done
+mv "$csv.new" "$csv"; column -t -s, "$csv"
