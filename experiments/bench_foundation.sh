@@ -20,7 +20,7 @@ JSON
 dam=experiments/scenes/dam_break.json
 box=out/bench/box1m.json
 
-median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+source experiments/lib.sh # median
 
 # bench LABEL SCENE METHOD SIZE: runs the render RUNS times, collects each stage's
 # median and the peak resident memory (max over runs).

@@ -16,7 +16,7 @@ TMP=out/xiao2017/fig10
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "fig10.sh: $BIN missing" >&2; exit 2; }
 STAGES=" splat march normals filter thickness readback "
-median() { sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+source experiments/lib.sh # median
 
 csv=$OUT/fig10.csv
 {

@@ -32,7 +32,7 @@ box_100k:97336:experiments/scenes/box_100k.json
 box_300k:300763:experiments/scenes/box_300k.json
 box_1m:1000000:experiments/scenes/box_1m.json"
 STAGES_RPCA="splat march normals filter thickness readback"
-median() { sort -g | awk '{a[NR]=$1} END {if (NR == 0) print ""; else print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+source experiments/lib.sh # median
 
 csv=$OUT/table1.csv
 {

@@ -25,7 +25,7 @@ box_100k:97336:experiments/scenes/box_100k.json
 box_300k:300763:experiments/scenes/box_300k.json
 box_1m:1000000:experiments/scenes/box_1m.json"
 STAGES="anisotropy splat filter normals thickness readback"
-median() { sort -g | awk '{a[NR]=$1} END {if (NR == 0) print ""; else print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+source experiments/lib.sh # median
 head_lines() {
   echo "# xu2022 Fig. 9 analogue (aniso_ssf, shipped defaults except filter/anisotropy); commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo -dirty); $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores; ${SIZE}x${SIZE}"

@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/view_ray.glsl"
 // Exact ray-ellipsoid intersection per fragment (the ray taken to the unit
 // sphere's parameter space). MODE_DEPTH: eye depth and view normal of the
 // front hit, depth replaced. MODE_THICKNESS: the chord length, added by the blender.
@@ -15,8 +16,7 @@ layout(location = 1) out vec4 o_normal;
 
 void main()
 {
-    vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
-    vec3 dir = normalize(vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0));
+    vec3 dir = fs_view_ray(gl_FragCoord.xy, u_viewport, u_proj);
     // Ray t = tc + s around the point nearest the centre, so the quadratic has small coefficients.
     float tc = dot(dir, v_center);
     vec3 q = v_inv * dir, p = v_inv * (dir * tc - v_center);

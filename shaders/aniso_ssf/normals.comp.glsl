@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/view_ray.glsl"
 // Normals from the filtered eye depth by finite differences: view-space
 // positions of the pixel and its four neighbours; along each axis the one-sided
 // difference with the smaller depth change is used (so a depth discontinuity
@@ -12,8 +13,7 @@ uniform int u_write_depth;
 
 vec3 view_pos(ivec2 q, float z, ivec2 size)
 {
-    vec2 ndc = (vec2(q) + 0.5) / vec2(size) * 2.0 - 1.0;
-    return vec3(ndc.x / u_proj[0][0] * z, ndc.y / u_proj[1][1] * z, -z);
+    return fs_view_dir_unnormalized(vec2(q) + 0.5, vec2(size), u_proj) * z;
 }
 float depth_at(ivec2 q, ivec2 size)
 {

@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/view_ray.glsl"
 // Exact ray-sphere intersection per fragment; depth replaced by the hit.
 // MODE_DEPTH: eye depth + view normal (depth-tested). MODE_THICKNESS: the chord
 // length of the view ray through the sphere, added up by the blender.
@@ -15,8 +16,7 @@ layout(location = 1) out vec4 o_normal;
 
 void main()
 {
-    vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
-    vec3 dir = normalize(vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0));
+    vec3 dir = fs_view_ray(gl_FragCoord.xy, u_viewport, u_proj);
     float b = dot(dir, v_center);
     float h = b * b - dot(v_center, v_center) + u_radius * u_radius;
     if (h < 0.0) discard;

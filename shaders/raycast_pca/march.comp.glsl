@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/view_ray.glsl"
 // xiao2017 3.2: per pixel, march the view ray from the splatted entry depth
 // through phi (the scene's kernel, support H, iso) until the iso value. An entry
 // already inside steps back; a layer passed without a crossing is marched on
@@ -51,8 +52,7 @@ void main()
     ivec2 size = imageSize(u_splat);
     if (any(greaterThanEqual(px, size))) return;
     if (imageLoad(u_splat, px).w < 0.5) { imageStore(u_hit, px, vec4(0.0)); return; } // no entry: no ray
-    vec2 ndc = (vec2(px) + 0.5) / vec2(size) * 2.0 - 1.0;
-    vec3 dv = normalize(vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0));
+    vec3 dv = fs_view_ray(vec2(px) + 0.5, vec2(size), u_proj);
     vec3 d = transpose(u_view_rot) * dv;
     float t0 = imageLoad(u_entry, px).x / -dv.z;
     // Far limit: where the ray leaves the grid (phi is zero beyond).
