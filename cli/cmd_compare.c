@@ -120,7 +120,7 @@ static int render_refs(cmp_run *r, fs_particles *frames_p, const fs_grid *grids)
         ref->frames = calloc(r->nframes, sizeof *ref->frames);
         if (!ref->frames) return fs_fail(FS_ERR_RUNTIME, "out of memory");
         void *self = NULL;
-        fs_method_setup setup = {fs_scene_field(&r->scene), ref->v.params};
+        fs_method_setup setup = {fs_scene_field(&r->scene), ref->v.params, &r->scene};
         if (!ref->analytic && !(self = ref->v.m->create(&setup))) return FS_ERR_RUNTIME;
         for (int f = 0; f < r->nframes; f++) {
             cmp_view *v = &ref->frames[f];
@@ -175,7 +175,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_
                      int index, int total, double t_start)
 {
     const fs_method *m = e->v.m;
-    fs_method_setup setup = {fs_scene_field(&r->scene), e->v.params};
+    fs_method_setup setup = {fs_scene_field(&r->scene), e->v.params, &r->scene};
     void *self = m->create(&setup);
     if (!self) return FS_ERR_RUNTIME;
     snprintf(e->renderer, sizeof e->renderer, "%s", m->needs_gl ? ctx->renderer : "CPU");

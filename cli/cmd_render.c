@@ -19,13 +19,17 @@ static const char help[] =
     "  --frame N            frame of a sequence scene (default: its first)\n"
     "  --gl osmesa|egl      OpenGL context (default osmesa, or FLUIDSURF_GL)\n"
     "  --timings            print per-stage times and the renderer they ran on\n"
+    "  --appearance A       shared (default): the harness's shading, the same for every\n"
+    "                       method; own: the method's own (surfels: reflection, refraction\n"
+    "                       and caustics as its paper renders them)\n"
     "  -q                   no notes on stderr\n"
-    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage and the provenance.\n";
+    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage (+ own.R/G/B/A caustics\n"
+    "for a method with its own appearance) and the provenance.\n";
 
 int cmd_render(int argc, char **argv)
 {
     const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL;
-    int w = 0, h = 0, frame = -1, timings = 0, quiet = 0, rc;
+    int w = 0, h = 0, frame = -1, timings = 0, quiet = 0, own_look = 0, rc;
     float radius = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     static fs_scene scene;
@@ -53,6 +57,12 @@ int cmd_render(int argc, char **argv)
             i++;
         }
         else if (!strcmp(a, "--timings")) timings = 1;
+        else if (!strcmp(a, "--appearance") && v) {
+            if (strcmp(v, "shared") && strcmp(v, "own"))
+                return cli_usage("render", "--appearance %s: expected shared or own", v);
+            own_look = !strcmp(v, "own");
+            i++;
+        }
         else if (!strcmp(a, "-q")) quiet = 1;
         else if (a[0] == '-' && a[1]) return cli_usage("render", "unknown or incomplete option '%s'", a);
         else if (!input) input = a;
@@ -63,6 +73,8 @@ int cmd_render(int argc, char **argv)
     const fs_method *m = fs_method_find(mname);
     if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
     if ((rc = fs_check_render_path(out))) return cli_error(rc);
+    if (own_look && !m->writes_own)
+        return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", mname);
     if (cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
 
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
@@ -93,7 +105,7 @@ int cmd_render(int argc, char **argv)
     else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
     int radius_note = !scene.path[0] && !(radius > 0) && !(p.radius > 0) && !quiet;
     fs_scene_frame_particles(&scene, &p);
-    fs_method_setup setup = {fs_scene_field(&scene), params};
+    fs_method_setup setup = {fs_scene_field(&scene), params, &scene};
 
     fs_grid grid = {0};
     fs_gl_context ctx = {0};
@@ -110,11 +122,13 @@ int cmd_render(int argc, char **argv)
     if ((rc = m->upload(self, &p, &grid))) goto done;
     fs_stages_add(&st, "upload", fs_now_ms() - t0);
     if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, fs_method_wants_color(m, &p)))) goto done;
+    if (m->writes_own && (rc = fs_gbuffer_alloc_own(&g))) goto done;
     if ((rc = m->render(self, &scene.camera, &g, &st))) goto done;
     rc = FS_ERR_RUNTIME;
     if (!(rgba = malloc((size_t)g.w * g.h * 4 * sizeof(float)))) { fs_fail(rc, "out of memory"); goto done; }
     t0 = fs_now_ms();
-    fs_shade(&scene, &scene.camera, &g, fs_scene_floor(&scene, &p), rgba);
+    if (own_look) memcpy(rgba, g.own, (size_t)g.w * g.h * 4 * sizeof(float));
+    else fs_shade(&scene, &scene.camera, &g, fs_scene_floor(&scene, &p), rgba);
     fs_stages_add(&st, "shade", fs_now_ms() - t0);
     fs_provenance prov;
     fs_provenance_init(&prov, &scene, m->needs_gl ? ctx.renderer : NULL, m->needs_gl ? ctx.version : NULL);

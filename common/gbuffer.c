@@ -23,6 +23,15 @@ int fs_gbuffer_alloc(fs_gbuffer *g, int w, int h, int with_color)
     return FS_OK;
 }
 
+int fs_gbuffer_alloc_own(fs_gbuffer *g)
+{
+    size_t n = (size_t)g->w * g->h;
+    if (!g->own) g->own = calloc(4 * n, sizeof(float));
+    if (!g->caustics) g->caustics = calloc(n, sizeof(float));
+    if (!g->own || !g->caustics) return fs_fail(FS_ERR_RUNTIME, "out of memory for a %dx%d G-buffer", g->w, g->h);
+    return FS_OK;
+}
+
 void fs_gbuffer_clear(fs_gbuffer *g)
 {
     size_t n = (size_t)g->w * g->h;
@@ -31,6 +40,8 @@ void fs_gbuffer_clear(fs_gbuffer *g)
     memset(g->thickness, 0, n * sizeof(float));
     memset(g->coverage, 0, n * sizeof(float));
     if (g->color) memset(g->color, 0, 4 * n * sizeof(float));
+    if (g->own) memset(g->own, 0, 4 * n * sizeof(float));
+    if (g->caustics) memset(g->caustics, 0, n * sizeof(float));
 }
 
 void fs_gbuffer_free(fs_gbuffer *g)
@@ -40,5 +51,7 @@ void fs_gbuffer_free(fs_gbuffer *g)
     free(g->thickness);
     free(g->coverage);
     free(g->color);
+    free(g->own);
+    free(g->caustics);
     memset(g, 0, sizeof *g);
 }

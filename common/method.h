@@ -14,9 +14,13 @@ extern "C" {
 #endif
 
 /* What every method sees of the scene. */
+struct fs_scene;
 typedef struct fs_method_setup {
     fs_field field;         /* r, V, kernel, H, iso */
     const double *params;   /* values in the order of the method's param table */
+    /* Light, material, floor and up axis, for methods with their own appearance
+     * (writes_own); NULL means fs_scene_defaults(). */
+    const struct fs_scene *scene;
 } fs_method_setup;
 
 typedef struct fs_method {
@@ -25,6 +29,7 @@ typedef struct fs_method {
     const char *paper;       /* "" for our own */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
     int writes_color;        /* 1: fills out->color when the particles carry colour */
+    int writes_own;          /* 1: fills out->own and out->caustics when they are allocated */
     const fs_param_def *params;
     int nparams;
     /* Returns NULL on failure with fs_fail() set. */

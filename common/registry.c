@@ -6,12 +6,14 @@ extern const fs_method fs_method_spheres;
 extern const fs_method fs_method_reference;
 extern const fs_method fs_method_raycast_pca;
 extern const fs_method fs_method_aniso_ssf;
+extern const fs_method fs_method_surfels;
 
 static const fs_method *const methods[] = {
     &fs_method_spheres,
     &fs_method_reference,
     &fs_method_raycast_pca,
     &fs_method_aniso_ssf,
+    &fs_method_surfels,
 };
 
 int fs_method_count(void) { return (int)(sizeof methods / sizeof *methods); }

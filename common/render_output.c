@@ -27,9 +27,18 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
         fs_image img = {g->w, g->h, 4, names, (float *)rgba};
         return fs_write_png(path, &img);
     }
-    static const char *names[] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z", "thickness",
-                                  "coverage", "color.R", "color.G", "color.B", "color.A"};
-    int nch = g->color ? 14 : 10;
+    const char *names[19] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z", "thickness", "coverage"};
+    int nch = 10, col = -1, own = -1;
+    if (g->color) {
+        static const char *cn[] = {"color.R", "color.G", "color.B", "color.A"};
+        col = nch;
+        for (int k = 0; k < 4; k++) names[nch++] = cn[k];
+    }
+    if (g->own) {
+        static const char *on[] = {"own.R", "own.G", "own.B", "own.A", "caustics"};
+        own = nch;
+        for (int k = 0; k < 5; k++) names[nch++] = on[k];
+    }
     float *pix = malloc(n * nch * sizeof(float));
     if (!pix) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
     for (size_t i = 0; i < n; i++) {
@@ -39,7 +48,11 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
         memcpy(o + 5, g->normal + 3 * i, 3 * sizeof(float));
         o[8] = g->thickness[i];
         o[9] = g->coverage[i];
-        if (g->color) memcpy(o + 10, g->color + 4 * i, 4 * sizeof(float));
+        if (col >= 0) memcpy(o + col, g->color + 4 * i, 4 * sizeof(float));
+        if (own >= 0) {
+            memcpy(o + own, g->own + 4 * i, 4 * sizeof(float));
+            o[own + 4] = g->caustics[i];
+        }
     }
     fs_image img = {g->w, g->h, nch, names, pix};
     rc = fs_write_exr(path, &img, prov->attr, prov->n);

@@ -9,7 +9,8 @@ extern "C" {
 #endif
 
 /* EXR channel names: R G B A depth normal.X normal.Y normal.Z thickness coverage
- * (+ color.R color.G color.B color.A when the method wrote colour). */
+ * (+ color.R color.G color.B color.A when the method wrote colour; + own.R own.G
+ * own.B own.A caustics when it wrote its own appearance). */
 int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, const fs_provenance *prov);
 /* Reads an EXR written by fs_write_render (or any EXR with the same channel
  * names: R G B A depth normal.X normal.Y normal.Z coverage; thickness and

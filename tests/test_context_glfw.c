@@ -45,7 +45,7 @@ static int render_block(fs_gbuffer *g)
     const fs_method *m = fs_method_find("spheres");
     if (!m) return fs_fail(FS_ERR_RUNTIME, "spheres is not registered");
     double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&scene), params};
+    fs_method_setup setup = {fs_scene_field(&scene), params, NULL};
     fs_gbuffer_alloc(g, SIZE, SIZE, 0);
     void *self = m->create(&setup);
     if (!self) return FS_ERR_RUNTIME;

@@ -30,7 +30,7 @@ static int render(const fs_scene *s, const fs_camera *cam, const double *params,
     fs_particles p;
     int rc = fs_synthetic_generate(s, 0, &p);
     if (rc) return rc;
-    fs_method_setup setup = {fs_scene_field(s), params};
+    fs_method_setup setup = {fs_scene_field(s), params, NULL};
     fs_grid g;
     rc = fs_grid_build(&g, &p, setup.field.H);
     void *self = rc ? NULL : m->create(&setup);
@@ -247,7 +247,7 @@ static void against_brute_force(void)
     fs_camera_frame_box(&cam, p.bmin, p.bmax, 1);
     fs_camera_fit_clip(&cam, p.bmin, p.bmax);
     const fs_method *m = fs_method_find("reference");
-    fs_method_setup setup = {f, NULL};
+    fs_method_setup setup = {f, NULL, NULL};
     fs_grid g;
     fs_grid_build(&g, &p, f.H);
     void *self = m->create(&setup);
@@ -304,7 +304,7 @@ static void refusals(void)
     fs_scene s = scene(FS_SYNTH_BOX, 0.1f, 1);
     fs_particles p;
     fs_synthetic_generate(&s, 0, &p);
-    fs_method_setup setup = {fs_scene_field(&s), NULL};
+    fs_method_setup setup = {fs_scene_field(&s), NULL, NULL};
     fs_grid g;
     fs_grid_build(&g, &p, 0.5f * setup.field.H);
     void *self = m->create(&setup);

@@ -23,7 +23,7 @@ int main(void)
     const fs_method *m = fs_method_find("reference");
     double params[FS_MAX_PARAMS];
     CHECK(fs_method_params_resolve(m, &s, params) == FS_OK, "params");
-    fs_method_setup setup = {fs_scene_field(&s), params};
+    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
     fs_grid g;
     fs_gbuffer gb;
     fs_stages st = {0};

@@ -27,7 +27,7 @@ int fs_test_render(const char *method, const char *const *sets, const fs_particl
     double v[FS_MAX_PARAMS];
     int rc = param_values(m, v, sets);
     if (rc) return rc;
-    fs_method_setup setup = {f, v};
+    fs_method_setup setup = {f, v, NULL};
     fs_grid g;
     rc = fs_grid_build(&g, p, f.H);
     void *self = rc ? NULL : m->create(&setup);

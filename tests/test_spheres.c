@@ -25,7 +25,7 @@ static void test_single_sphere(const fs_method *m)
     fs_particles_bounds(&p);
     fs_field f = {r, 8 * r * r * r, FS_KERNEL_CUBIC, 4 * r, 0.6f};
     double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {f, params};
+    fs_method_setup setup = {f, params, NULL};
     void *self = m->create(&setup);
     CHECK(self != NULL, "create: %s", fs_error_message());
     if (!self) return;
@@ -95,7 +95,7 @@ static void test_golden(const fs_method *m)
     s.camera.width = s.camera.height = 128;
     fs_scene_finish_camera(&s, p.bmin, p.bmax);
     double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&s), params};
+    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
     void *self = m->create(&setup);
     fs_gbuffer g;
     fs_gbuffer_alloc(&g, 128, 128, 0);

@@ -1,0 +1,207 @@
+/* surfels: Iwasaki, Dobashi, Yoshimoto & Nishita 2006. Per frame: the density
+ * grid by slice splatting (section 4, common/slice_splat.c), surfels on its
+ * iso-surface (4.2, surfel_extract.c), caustics through illumination volumes
+ * (5.1-5.2, caustics.c), then three-pass surfel splatting with reflection,
+ * refraction and the caustics (5.3, surfel_gl.c). See README.md. */
+#include "caustics.h"
+#include "density_grid.h"
+#include "frame_source.h"
+#include "fs_error.h"
+#include "gl.h"
+#include "method.h"
+#include "scene.h"
+#include "surfel_extract.h"
+#include "surfel_gl.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const fs_param_def params[] = {
+    {"grid_res", FS_PARAM_INT, 256, 8, 1024, NULL, "density grid points along the longest axis of the particles' box (paper: 256)"},
+    {"grid_build", FS_PARAM_ENUM, 0, 0, 1, "splat|exact", "density grid: slice splatting on GL (the paper) or the exact CPU sum"},
+    {"clusters", FS_PARAM_INT, 16, 1, 4096, NULL, "N_c, height clusters of particles for the slice splatting"},
+    {"radius_scale", FS_PARAM_FLOAT, 1.0, 0.1, 8.0, NULL, "surfel radius R in grid spacings"},
+    {"gap", FS_PARAM_FLOAT, 0.75, 0.0, 4.0, NULL, "gap filling: a cell whose crossings spread wider than this (grid spacings) gets a surfel at their centre; 0 = off"},
+    {"epsilon", FS_PARAM_FLOAT, 0.5, 0.0, 16.0, NULL, "visibility-pass depth offset epsilon, multiples of r"},
+    {"gauss", FS_PARAM_FLOAT, 2.0, 0.0, 20.0, NULL, "surfel blending weight g(t) = exp(-gauss t^2), t = distance / R"},
+    {"caustics", FS_PARAM_BOOL, 1, 0, 1, NULL, "caustics from illumination volumes (on/off)"},
+    {"caustic_screen", FS_PARAM_INT, 128, 8, 2048, NULL, "virtual screen pixels per side for the illumination volumes (paper: 128)"},
+    {"caustic_map", FS_PARAM_INT, 256, 8, 4096, NULL, "sample plane texels per side"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading by a march through the grid (on/off)"},
+};
+enum { P_GRID_RES, P_GRID_BUILD, P_CLUSTERS, P_RADIUS, P_GAP, P_EPS, P_GAUSS, P_CAUSTICS, P_SCREEN, P_MAP, P_THICK, P_COUNT };
+
+typedef struct surfels {
+    fs_field f;
+    double v[P_COUNT];
+    fs_scene scene;
+    const fs_particles *p;
+    const fs_grid *ng;
+    fs_grid own;
+    int has_own;
+    fs_density_grid dg;
+    fs_slice_splat *splat;
+    fs_caustics *caustics;
+    fs_surfel_set set;
+    size_t gap_added;
+    surfel_gl gl;
+    int gl_ready;
+} surfels;
+
+static void destroy(void *self)
+{
+    surfels *s = self;
+    if (!s) return;
+    if (s->splat) fs_slice_splat_destroy(s->splat);
+    if (s->caustics) fs_caustics_destroy(s->caustics);
+    if (s->gl_ready) surfel_gl_destroy(&s->gl);
+    if (s->has_own) fs_grid_free(&s->own);
+    fs_density_grid_free(&s->dg);
+    fs_surfel_set_free(&s->set);
+    free(s);
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    const fs_field *f = &setup->field;
+    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
+        fs_fail(FS_ERR_INPUT, "surfels: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume, f->iso);
+        return NULL;
+    }
+    surfels *s = calloc(1, sizeof *s);
+    if (!s) { fs_fail(FS_ERR_RUNTIME, "surfels: out of memory"); return NULL; }
+    s->f = *f;
+    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    if (setup->scene) s->scene = *setup->scene;
+    else fs_scene_defaults(&s->scene);
+    if (surfel_gl_create(&s->gl)) { destroy(s); return NULL; }
+    s->gl_ready = 1;
+    if (!(s->splat = fs_slice_splat_create()) || !(s->caustics = fs_caustics_create())) { destroy(s); return NULL; }
+    return s;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    surfels *s = self;
+    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
+    if (!g || !(g->cell >= s->f.H) || g->n != p->n) {
+        int rc = fs_grid_build(&s->own, p, s->f.H);
+        if (rc) return rc;
+        s->has_own = 1;
+        g = &s->own;
+    }
+    s->p = p;
+    s->ng = g;
+    return FS_OK;
+}
+
+/* The density grid and its surfels: view-independent, rebuilt every frame. */
+static int build_surface(surfels *s, fs_stages *t)
+{
+    const fs_particles *p = s->p;
+    fs_density_grid_free(&s->dg);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->v[P_GRID_RES]);
+    if (rc) return rc;
+    glFinish();
+    double t0 = fs_now_ms();
+    if (s->v[P_GRID_BUILD] == 0)
+        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, (int)s->v[P_CLUSTERS]);
+    else
+        rc = fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
+    if (rc) return rc;
+    double t1 = fs_now_ms();
+    fs_stages_add(t, "density_grid", t1 - t0);
+    fs_surfel_extract_opts eo = {s->f.iso, (float)s->v[P_RADIUS], (float)s->v[P_GAP]};
+    if ((rc = fs_surfels_extract(&s->dg, &eo, &s->set, &s->gap_added))) return rc;
+    if ((rc = surfel_gl_upload(&s->gl, &s->set))) return rc;
+    if (s->v[P_THICK] != 0 && (rc = surfel_gl_upload_grid(&s->gl, &s->dg))) return rc;
+    glFinish();
+    fs_stages_add(t, "extract", fs_now_ms() - t1);
+    return FS_OK;
+}
+
+/* The look: the scene's light and material; the caustics when on. */
+static int build_look(surfels *s, surfel_look *l, fs_stages *t)
+{
+    const fs_scene *sc = &s->scene;
+    int up = sc->up_axis, a = (up + 1) % 3, b = (up + 2) % 3;
+    memset(l, 0, sizeof *l);
+    memcpy(l->light_dir, sc->light_dir, sizeof l->light_dir);
+    float ln = sqrtf(l->light_dir[0] * l->light_dir[0] + l->light_dir[1] * l->light_dir[1] + l->light_dir[2] * l->light_dir[2]);
+    for (int i = 0; i < 3; i++) l->light_dir[i] = ln > 0 ? l->light_dir[i] / ln : (i == up);
+    memcpy(l->light_color, sc->light_color, sizeof l->light_color);
+    l->ambient = sc->ambient;
+    l->ior = sc->ior;
+    memcpy(l->extinction, sc->absorption, sizeof l->extinction);
+    memcpy(l->tint, sc->material_color, sizeof l->tint);
+    l->up_axis = up;
+    l->checker = sc->background == FS_BACKGROUND_CHECKER;
+    l->floor_h = fs_scene_floor(sc, s->p);
+    l->check = sc->radius > 0 ? 8.0f * sc->radius : 1.0f;
+    if (s->v[P_CAUSTICS] == 0 || !l->checker) return FS_OK;
+    /* Sample plane 0 is the floor; the maps span the grid's horizontal extent
+     * grown by the sideways reach of refracted light down to the floor. */
+    const fs_density_grid *g = &s->dg;
+    float top = g->origin[up] + (g->dim[up] - 1) * g->spacing;
+    float reach = (top - l->floor_h) * 0.5f;
+    fs_caustics_setup cs;
+    memset(&cs, 0, sizeof cs);
+    cs.up_axis = up;
+    memcpy(cs.light_dir, l->light_dir, sizeof cs.light_dir);
+    memcpy(cs.light_color, l->light_color, sizeof cs.light_color);
+    cs.ior = l->ior;
+    memcpy(cs.extinction, l->extinction, sizeof cs.extinction);
+    cs.rect_min[0] = g->origin[a] - reach;
+    cs.rect_min[1] = g->origin[b] - reach;
+    cs.rect_max[0] = g->origin[a] + (g->dim[a] - 1) * g->spacing + reach;
+    cs.rect_max[1] = g->origin[b] + (g->dim[b] - 1) * g->spacing + reach;
+    cs.top = top + g->spacing;
+    cs.screen_res = (int)s->v[P_SCREEN];
+    cs.plane_res = (int)s->v[P_MAP];
+    cs.nplanes = 1;
+    cs.plane_height[0] = l->floor_h;
+    glFinish();
+    double t0 = fs_now_ms();
+    int rc = fs_caustics_run(s->caustics, &cs, s->gl.buf, s->gl.n);
+    if (rc) return rc;
+    glFinish();
+    fs_stages_add(t, "caustics", fs_now_ms() - t0);
+    l->caustic_tex = fs_caustics_texture(s->caustics);
+    memcpy(l->rect_min, cs.rect_min, sizeof l->rect_min);
+    memcpy(l->rect_max, cs.rect_max, sizeof l->rect_max);
+    return FS_OK;
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
+{
+    surfels *s = self;
+    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: render before upload");
+    int rc = build_surface(s, t);
+    surfel_look look;
+    if (!rc) rc = build_look(s, &look, t);
+    if (rc) return rc;
+    surfel_draw_opts o = {
+        .epsilon = (float)s->v[P_EPS] * s->f.r,
+        .gauss = (float)s->v[P_GAUSS],
+        .thickness = s->v[P_THICK] != 0,
+        .step = s->dg.spacing,
+        .iso = s->f.iso,
+        .grid_spacing = s->dg.spacing,
+    };
+    memcpy(o.grid_origin, s->dg.origin, sizeof o.grid_origin);
+    return surfel_gl_render(&s->gl, cam, &look, &o, out, t);
+}
+
+const fs_method fs_method_surfels = {
+    .name = "surfels",
+    .description = "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
+    .paper = "iwasaki2006",
+    .needs_gl = 1,
+    .writes_own = 1,
+    .params = params,
+    .nparams = sizeof params / sizeof *params,
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+};
