@@ -31,6 +31,7 @@ static const char help[] =
     "  --depth-scale R        heatmap scale of the depth error, in r (default: from the data)\n"
     "  -W N, -H N             image size; --radius R; --gl osmesa|egl; -q quiet\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
+    "<label>_own.png for a method with its own appearance (surfels),\n"
     "report.md (and temporal.csv for a sequence).\n";
 
 static void free_view(cmp_view *v) { fs_gbuffer_free(&v->g); free(v->rgba); v->rgba = NULL; }
@@ -166,7 +167,12 @@ static int write_view(const cmp_run *r, const char *label, int frame, const cmp_
         int rc = fs_write_render(path, &v->g, v->rgba, prov);
         if (rc) return rc;
     }
-    return FS_OK;
+    if (!v->g.own) return FS_OK;
+    /* the method's own appearance beside the shared shading */
+    if (r->sequence) snprintf(name, sizeof name, "%s_own_f%04d.png", label, frame);
+    else snprintf(name, sizeof name, "%s_own.png", label);
+    cmp_path(r, name, path, sizeof path);
+    return fs_write_render(path, &v->g, v->g.own, prov);
 }
 
 /* Runs one method variant on every frame: upload, a warm-up render, `repeat`
@@ -195,6 +201,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_
                     total, e->label, f + 1, r->nframes, el, done > 0 ? el / done - el : 0.0);
         }
         rc = fs_gbuffer_alloc(&cur.g, r->scene.camera.width, r->scene.camera.height, fs_method_wants_color(m, &frames_p[f]));
+        if (!rc && m->writes_own) rc = fs_gbuffer_alloc_own(&cur.g);
         if (!rc && !(cur.rgba = malloc((size_t)cur.g.w * cur.g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
         if (!rc) rc = m->upload(self, &frames_p[f], &grids[f]);
         double times[CMP_MAX_RUNS];

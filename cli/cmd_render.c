@@ -19,6 +19,8 @@ static const char help[] =
     "  --frame N            frame of a sequence scene (default: its first)\n"
     "  --gl osmesa|egl      OpenGL context (default osmesa, or FLUIDSURF_GL)\n"
     "  --timings            print per-stage times and the renderer they ran on\n"
+    "  --export FILE        write the method's intermediate surface too (repeatable;\n"
+    "                       surfels: .vdb density grid, .ply surfels); -o is then optional\n"
     "  --appearance A       shared (default): the harness's shading, the same for every\n"
     "                       method; own: the method's own (surfels: reflection, refraction\n"
     "                       and caustics as its paper renders them)\n"
@@ -33,8 +35,8 @@ int cmd_render(int argc, char **argv)
     float radius = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     static fs_scene scene;
-    const char *sets[FS_MAX_SETS];
-    int nsets = 0;
+    const char *sets[FS_MAX_SETS], *exports[4];
+    int nsets = 0, nexports = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
@@ -57,6 +59,11 @@ int cmd_render(int argc, char **argv)
             i++;
         }
         else if (!strcmp(a, "--timings")) timings = 1;
+        else if (!strcmp(a, "--export") && v) {
+            if (nexports == 4) return cli_usage("render", "too many --export");
+            exports[nexports++] = v;
+            i++;
+        }
         else if (!strcmp(a, "--appearance") && v) {
             if (strcmp(v, "shared") && strcmp(v, "own"))
                 return cli_usage("render", "--appearance %s: expected shared or own", v);
@@ -69,13 +76,16 @@ int cmd_render(int argc, char **argv)
         else return cli_usage("render", "more than one input ('%s' and '%s')", input, a);
     }
     if (!input) return cli_usage("render", "no scene or particle file given");
-    if (!out) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
+    if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);
     if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
-    if ((rc = fs_check_render_path(out))) return cli_error(rc);
+    if (out && (rc = fs_check_render_path(out))) return cli_error(rc);
+    if (nexports && !m->export_file) return cli_usage("render", "--export: method '%s' exports nothing", mname);
+    for (int i = 0; i < nexports; i++)
+        if (cli_same_file(input, exports[i])) return cli_usage("render", "%s: export would overwrite the input", exports[i]);
     if (own_look && !m->writes_own)
         return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", mname);
-    if (cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
+    if (out && cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
 
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
@@ -121,6 +131,9 @@ int cmd_render(int argc, char **argv)
     t0 = fs_now_ms();
     if ((rc = m->upload(self, &p, &grid))) goto done;
     fs_stages_add(&st, "upload", fs_now_ms() - t0);
+    for (int i = 0; i < nexports; i++)
+        if ((rc = m->export_file(self, exports[i]))) goto done;
+    if (!out) goto done;
     if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, fs_method_wants_color(m, &p)))) goto done;
     if (m->writes_own && (rc = fs_gbuffer_alloc_own(&g))) goto done;
     if ((rc = m->render(self, &scene.camera, &g, &st))) goto done;

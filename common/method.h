@@ -39,6 +39,10 @@ typedef struct fs_method {
     /* Renders one view into out (already sized to the camera); adds stage times. */
     int (*render)(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t);
     void (*destroy)(void *self);
+    /* Optional (NULL when none): after upload, writes the method's intermediate
+     * surface to path, its kind chosen by the extension (surfels: .vdb density
+     * grid, .ply surfels). FS_ERR_INPUT for an extension it does not write. */
+    int (*export_file)(void *self, const char *path);
 } fs_method;
 
 const fs_method *fs_method_find(const char *name);

@@ -12,6 +12,7 @@
 #include "scene.h"
 #include "surfel_extract.h"
 #include "surfel_gl.h"
+#include "surfel_ply.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -192,6 +193,24 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return surfel_gl_render(&s->gl, cam, &look, &o, out, t);
 }
 
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && !strcmp(s + n - k, suffix);
+}
+
+static int export_file(void *self, const char *path)
+{
+    surfels *s = self;
+    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: export before upload");
+    int vdb = ends_with(path, ".vdb"), ply = ends_with(path, ".ply");
+    if (!vdb && !ply) return fs_fail(FS_ERR_INPUT, "%s: surfels exports .vdb (density grid) or .ply (surfels)", path);
+    fs_stages t = {0};
+    int rc = build_surface(s, &t);
+    if (rc) return rc;
+    return vdb ? fs_density_grid_write_vdb(&s->dg, path, "density") : fs_surfels_write_ply(&s->set, path);
+}
+
 const fs_method fs_method_surfels = {
     .name = "surfels",
     .description = "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
@@ -204,4 +223,5 @@ const fs_method fs_method_surfels = {
     .upload = upload,
     .render = render,
     .destroy = destroy,
+    .export_file = export_file,
 };
