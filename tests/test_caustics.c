@@ -289,6 +289,49 @@ static void test_bump(fs_caustics *c)
     fs_surfel_set_free(&set);
 }
 
+/* (f) past the focus: ripples y = 1 + A (cos kx + cos kz), wavelength 0.5,
+ * A = 0.03 (crest focal length ~0.85 per axis) fold the light map above the
+ * floor into the network of caustic lines seen on pool floors; the folds and
+ * the near-degenerate triangles along them must keep the flux and stay finite. */
+static void test_fold(fs_caustics *c)
+{
+    fs_caustics_setup s;
+    setup_defaults(&s, 1.5f);
+    s.plane_res = 256;
+    s.screen_res = 256;
+    s.plane_height[0] = 0.0f;
+    const float A = 0.03f, k = 2 * (float)M_PI / 0.5f, h = 0.01f;
+    fs_surfel_set set = {0};
+    int m = (int)lroundf(2.6f / h);
+    for (int j = 0; j <= m; j++)
+        for (int i = 0; i <= m; i++) {
+            float x = -1.3f + i * h, z = -1.3f + j * h;
+            float p[3] = {x, 1.0f + A * (cosf(k * x) + cosf(k * z)), z};
+            float nn[3] = {A * k * sinf(k * x), 1, A * k * sinf(k * z)};
+            float l = sqrtf(nn[0] * nn[0] + 1 + nn[2] * nn[2]);
+            for (int q = 0; q < 3; q++) nn[q] /= l;
+            fs_surfel_push(&set, p, nn, 1.2f * h / nn[1]);
+        }
+    unsigned buf = upload(&set);
+    CHECK(fs_caustics_run(c, &s, buf, set.n) == FS_OK, "run: %s", fs_error_message());
+    size_t n = (size_t)s.plane_res * s.plane_res;
+    double mx = 0;
+    int bad = 0;
+    for (size_t i = 0; i < n; i++) {
+        const float *mp = fs_caustics_maps(c) + 4 * i;
+        bad += !isfinite(mp[0]) || !isfinite(mp[1]) || !isfinite(mp[2]) || mp[1] < 0;
+        mx = fmax(mx, mp[1]);
+    }
+    double ratio = fs_caustics_flux_plane(c, 0) / fs_caustics_flux_in(c);
+    printf("(f) ripples past the focus: max %.3f x T(0), flux ratio %.6f, %d non-finite or negative texels\n",
+           mx / fs_caustics_transmittance(1, IOR), ratio, bad);
+    CHECK(bad == 0, "%d bad texels", bad);
+    CHECK(fabs(ratio - 1) < 1e-3, "flux ratio past the focus %g", ratio);
+    write_png(c, &s, 0, 1.0 / mx, "caustics_ripples_floor.png");
+    glDeleteBuffers(1, &buf);
+    fs_surfel_set_free(&set);
+}
+
 /* (e) oblique light in the a-z plane: the lit patch shifts by -tan(theta_t)
  * per unit of depth along z; interior irradiance cos(theta_i) T(theta_i). */
 static void test_oblique(fs_caustics *c)
@@ -395,6 +438,7 @@ int main(void)
     if (c) {
         test_flat(c);
         test_bump(c);
+        test_fold(c);
         test_oblique(c);
         test_layers(c);
         test_bad(c);
