@@ -91,7 +91,7 @@ static void exact_vs_brute(const fs_particles *p, float cell_mult, const char *w
         vmax = fmax(vmax, sum);
         emax = fmax(emax, fabs(v - sum));
     }
-    printf("(a) %s, cell %.1f H: exact vs brute force at 400 points (%d non-zero, max %.3f): max |diff| %.2e\n", what,
+    printf("(a) %s, cell %.2f H: exact vs brute force at 400 points (%d non-zero, max %.3f): max |diff| %.2e\n", what,
            cell_mult, nonzero, vmax, emax);
     CHECK(nonzero > 40, "%s: only %d of the sampled points are non-zero", what, nonzero);
     CHECK(emax < 2e-6, "%s: exact grid differs from brute force by %g", what, emax);
@@ -201,6 +201,7 @@ static void vdb_roundtrip(const fs_density_grid *g)
     printf("(c) VDB round trip: %zu active of %zu points, read box %dx%dx%d, %d mismatches\n", active,
            fs_density_grid_points(g), r.dim[0], r.dim[1], r.dim[2], bad);
     CHECK(bad == 0, "%d values differ after the round trip", bad);
+    fs_density_grid_free(&r);
     CHECK(fs_density_grid_read_vdb(&r, path, "nope") == FS_ERR_INPUT && strstr(fs_error_message(), "nope"),
           "missing grid name: %s", fs_error_message());
     CHECK(r.data == NULL, "failed read leaves an empty grid");
