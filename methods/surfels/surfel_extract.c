@@ -82,6 +82,10 @@ static const int CELL_EDGES[12][4] = {
 static int fill_gap(const fs_density_grid *g, const int c[3], const fs_surfel_extract_opts *o, float radius,
                     fs_surfel_set *out, size_t *added)
 {
+    int above = 0;
+    for (int corner = 0; corner < 8; corner++)
+        above += at(g, c[0] + (corner & 1), c[1] + ((corner >> 1) & 1), c[2] + ((corner >> 2) & 1)) >= o->iso;
+    if (above == 0 || above == 8) return FS_OK; /* no crossing: most cells */
     float pts[12][3], nrm[3], ctr[3] = {0, 0, 0};
     int m = 0;
     for (int e = 0; e < 12; e++) {
