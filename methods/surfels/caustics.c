@@ -28,14 +28,14 @@ struct fs_caustics {
     unsigned tri_buf;
     size_t tri_buf_bytes;
     /* CPU work arrays */
-    double *vtx;        /* per screen pixel: s[3], t[3], E[3] (L cos T), d, valid */
+    double *vtx;        /* per screen pixel (VTX): s[3], refracted t[3], cos(theta_i) T, depth d, valid */
     float *tris;        /* plane triangles, TRI_VEC4 vec4 each */
     size_t tris_cap;    /* in triangles */
     size_t ntri;
     double flux_in, flux_plane[FS_CAUSTICS_MAX_PLANES];
     float eps_radii, max_jump_px;
 };
-#define VTX 11
+#define VTX 9
 
 fs_caustics *fs_caustics_create(void)
 {
@@ -328,7 +328,7 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
         for (int i = 0; i < res; i++) {
             const float *px = c->screen + 4 * ((size_t)j * res + i);
             double *v = c->vtx + VTX * ((size_t)j * res + i);
-            v[10] = 0;
+            v[8] = 0;
             if (!(px[3] >= 0.0f) || !isfinite(px[0] + px[1] + px[2] + px[3])) continue;
             double P[3];
             P[ax] = s->rect_min[0] + (i + 0.5) * pa;
@@ -344,9 +344,8 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
             }
             double tr = fresnel_t(ci, ct, s->ior);
             v[6] = ci * tr; /* times L_i per channel */
-            v[7] = v[8] = 0;
-            v[9] = d;
-            v[10] = 1;
+            v[7] = d;
+            v[8] = 1;
         }
 
     /* 3. illumination volumes: water triangles, cut by each plane */
@@ -366,8 +365,8 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
             const uint32_t tri[2][3] = {{q[0], q[1], q[2]}, {q[3], q[1], q[2]}};
             for (int h = 0; h < 2; h++) {
                 const double *v0 = c->vtx + VTX * tri[h][0], *v1 = c->vtx + VTX * tri[h][1], *v2 = c->vtx + VTX * tri[h][2];
-                if (!v0[10] || !v1[10] || !v2[10]) continue;
-                double dmin = fmin(v0[9], fmin(v1[9], v2[9])), dmax = fmax(v0[9], fmax(v1[9], v2[9]));
+                if (!v0[8] || !v1[8] || !v2[8]) continue;
+                double dmin = fmin(v0[7], fmin(v1[7], v2[7])), dmax = fmax(v0[7], fmax(v1[7], v2[7]));
                 if (dmax - dmin > jump) continue; /* straddles a depth discontinuity */
                 double e1[3], e2[3], cr[3];
                 for (int k = 0; k < 3; k++) { e1[k] = v1[k] - v0[k]; e2[k] = v2[k] - v0[k]; }
