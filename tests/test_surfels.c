@@ -165,6 +165,26 @@ static void own_appearance_and_exports(void)
     CHECK(caustic_water > water / 4, "only %zu of %zu water pixels see lit floor", caustic_water, water);
     CHECK(sky > 0 && sky_caustic == 0, "%zu of %zu sky pixels carry caustics", sky_caustic, sky);
 
+    /* the object under the water changes the own image, never the G-buffer */
+    v[fs_method_param_index(m, "object")] = 0;
+    void *plain = m->create(&setup);
+    fs_gbuffer h;
+    fs_gbuffer_alloc(&h, 128, 128, 0);
+    fs_gbuffer_alloc_own(&h);
+    CHECK(plain && m->upload(plain, &p, &grid) == FS_OK && m->render(plain, &s.camera, &h, &st) == FS_OK,
+          "render without object: %s", fs_error_message());
+    size_t changed = 0, gdiff = 0;
+    for (int i = 0; i < 128 * 128; i++) {
+        float d = fabsf(g.own[4 * i] - h.own[4 * i]) + fabsf(g.own[4 * i + 2] - h.own[4 * i + 2]);
+        changed += d > 0.02f;
+        gdiff += g.coverage[i] != h.coverage[i] || (g.coverage[i] > 0 && g.depth[i] != h.depth[i]);
+    }
+    printf("(c) object box vs none: %zu own pixels change, %zu G-buffer pixels\n", changed, gdiff);
+    CHECK(changed > 20, "the object shows in only %zu pixels", changed);
+    CHECK(gdiff == 0, "the object changed %zu G-buffer pixels", gdiff);
+    if (plain) m->destroy(plain);
+    fs_gbuffer_free(&h);
+
     const char *ply = FS_TEST_OUT "/surfels_export.ply", *vdb = FS_TEST_OUT "/surfels_export.vdb";
     unlink(ply);
     unlink(vdb);

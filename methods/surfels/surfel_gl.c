@@ -144,6 +144,10 @@ static void look_uniforms(unsigned prog, const fs_camera *cam, const surfel_look
     glUniform2f(glGetUniformLocation(prog, "u_rect_max"), l->rect_max[0], l->rect_max[1]);
     glUniform1i(glGetUniformLocation(prog, "u_caustic_maps"), 1);
     if (l->caustic_tex) glBindTextureUnit(1, l->caustic_tex);
+    glUniform1i(glGetUniformLocation(prog, "u_nslices"), l->slice_tex ? l->nslices : 0);
+    glUniform1fv(glGetUniformLocation(prog, "u_slice_h"), 9, l->slice_h);
+    glUniform1i(glGetUniformLocation(prog, "u_object_slices"), 3);
+    if (l->slice_tex) glBindTextureUnit(3, l->slice_tex);
 }
 
 static void draw_surfels(const surfel_gl *s)

@@ -9,6 +9,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "method.h"
+#include "object_slices.h"
 #include "scene.h"
 #include "surfel_extract.h"
 #include "surfel_gl.h"
@@ -29,8 +30,18 @@ static const fs_param_def params[] = {
     {"caustic_screen", FS_PARAM_INT, 128, 8, 2048, NULL, "virtual screen pixels per side for the illumination volumes (paper: 128)"},
     {"caustic_map", FS_PARAM_INT, 256, 8, 4096, NULL, "sample plane texels per side"},
     {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading by a march through the grid (on/off)"},
+    {"object", FS_PARAM_ENUM, 1, 0, 1, "none|box", "an opaque box under the water, seen by refraction mapping of sliced object images (own appearance only)"},
+    {"object_slices", FS_PARAM_INT, 3, 1, OBJECT_MAX_SLICES, NULL, "slabs (sample planes - 1) the object is sliced into"},
 };
-enum { P_GRID_RES, P_GRID_BUILD, P_CLUSTERS, P_RADIUS, P_GAP, P_EPS, P_GAUSS, P_CAUSTICS, P_SCREEN, P_MAP, P_THICK, P_COUNT };
+enum {
+    P_GRID_RES, P_GRID_BUILD, P_CLUSTERS, P_RADIUS, P_GAP, P_EPS, P_GAUSS, P_CAUSTICS, P_SCREEN, P_MAP, P_THICK, P_OBJECT,
+    P_SLICES, P_COUNT
+};
+/* The box: centred under the particles' horizontal box, three tenths of its smaller
+ * side wide, as tall as the particles' mean height above the floor (about half
+ * the water's depth), terracotta so it stands out from the floor. */
+#define OBJECT_WIDTH 0.3f
+static const float OBJECT_ALBEDO[3] = {0.70f, 0.32f, 0.16f};
 
 typedef struct surfels {
     fs_field f;
@@ -47,6 +58,9 @@ typedef struct surfels {
     size_t gap_added;
     surfel_gl gl;
     int gl_ready;
+    unsigned slice_tex;
+    int slice_res, slice_n;
+    float *slices; /* CPU slice images */
 } surfels;
 
 static void destroy(void *self)
@@ -56,6 +70,8 @@ static void destroy(void *self)
     if (s->splat) fs_slice_splat_destroy(s->splat);
     if (s->caustics) fs_caustics_destroy(s->caustics);
     if (s->gl_ready) surfel_gl_destroy(&s->gl);
+    if (s->slice_tex) glDeleteTextures(1, &s->slice_tex);
+    free(s->slices);
     if (s->has_own) fs_grid_free(&s->own);
     fs_density_grid_free(&s->dg);
     fs_surfel_set_free(&s->set);
@@ -122,6 +138,55 @@ static int build_surface(surfels *s, fs_stages *t)
 }
 
 /* The look: the scene's light and material; the caustics when on. */
+/* The box under the water (OBJECT_WIDTH, OBJECT_ALBEDO above). */
+static object_box place_object(const fs_particles *p, int up, float floor_h)
+{
+    int a = (up + 1) % 3, b = (up + 2) % 3;
+    const float *h = up == 0 ? p->x : (up == 1 ? p->y : p->z);
+    double mean = 0;
+    for (size_t i = 0; i < p->n; i++) mean += h[i];
+    mean = p->n ? mean / p->n : floor_h;
+    object_box box;
+    float side = OBJECT_WIDTH * fminf(p->bmax[a] - p->bmin[a], p->bmax[b] - p->bmin[b]);
+    box.center[0] = 0.5f * (p->bmin[a] + p->bmax[a]);
+    box.center[1] = 0.5f * (p->bmin[b] + p->bmax[b]);
+    box.half[0] = box.half[1] = 0.5f * side;
+    box.bottom = floor_h;
+    box.top = floor_h + fmaxf((float)mean - floor_h, 0.0f);
+    memcpy(box.albedo, OBJECT_ALBEDO, sizeof box.albedo);
+    return box;
+}
+
+/* Sliced object images into a texture array (replaced when its size changes). */
+static int upload_slices(surfels *s, const object_box *box, const fs_caustics_setup *cs, const float *maps,
+                         const surfel_look *l)
+{
+    int res = cs->plane_res, n = cs->nplanes - 1;
+    if (s->slice_res != res || s->slice_n != n) {
+        if (s->slice_tex) glDeleteTextures(1, &s->slice_tex);
+        free(s->slices);
+        s->slices = malloc((size_t)res * res * 4 * n * sizeof(float));
+        if (!s->slices) return fs_fail(FS_ERR_RUNTIME, "surfels: out of memory for the object slices");
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &s->slice_tex);
+        glTextureStorage3D(s->slice_tex, 1, GL_RGBA32F, res, res, n);
+        glTextureParameteri(s->slice_tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(s->slice_tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(s->slice_tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(s->slice_tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        s->slice_res = res;
+        s->slice_n = n;
+    }
+    float direct[3];
+    for (int c = 0; c < 3; c++) direct[c] = fmaxf(l->light_dir[l->up_axis], 0.0f) * l->light_color[c];
+    object_slices_build(box, n, cs->plane_height, cs->rect_min, cs->rect_max, res, maps, n, l->ambient, direct,
+                        s->slices);
+    glTextureSubImage3D(s->slice_tex, 0, 0, 0, 0, res, res, n, GL_RGBA, GL_FLOAT, s->slices);
+    return FS_OK;
+}
+
+/* The look: the scene's light and material; the caustics on the sample planes
+ * (the floor, and with the object the planes slicing it up to its top); the
+ * sliced object images. */
 static int build_look(surfels *s, surfel_look *l, fs_stages *t)
 {
     const fs_scene *sc = &s->scene;
@@ -139,9 +204,9 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     l->checker = sc->background == FS_BACKGROUND_CHECKER;
     l->floor_h = fs_scene_floor(sc, s->p);
     l->check = sc->radius > 0 ? 8.0f * sc->radius : 1.0f;
-    if (s->v[P_CAUSTICS] == 0 || !l->checker) return FS_OK;
-    /* Sample plane 0 is the floor; the maps span the grid's horizontal extent
-     * grown by the sideways reach of refracted light down to the floor. */
+    if (!l->checker) return FS_OK; /* no floor: nothing under the water */
+    /* The maps span the grid's horizontal extent grown by the sideways reach
+     * of refracted light down to the floor. */
     const fs_density_grid *g = &s->dg;
     float top = g->origin[up] + (g->dim[up] - 1) * g->spacing;
     float reach = (top - l->floor_h) * 0.5f;
@@ -161,15 +226,37 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     cs.plane_res = (int)s->v[P_MAP];
     cs.nplanes = 1;
     cs.plane_height[0] = l->floor_h;
-    glFinish();
-    double t0 = fs_now_ms();
-    int rc = fs_caustics_run(s->caustics, &cs, s->gl.buf, s->gl.n);
-    if (rc) return rc;
-    glFinish();
-    fs_stages_add(t, "caustics", fs_now_ms() - t0);
-    l->caustic_tex = fs_caustics_texture(s->caustics);
     memcpy(l->rect_min, cs.rect_min, sizeof l->rect_min);
     memcpy(l->rect_max, cs.rect_max, sizeof l->rect_max);
+    object_box box;
+    int object = s->v[P_OBJECT] != 0;
+    if (object) {
+        box = place_object(s->p, up, l->floor_h);
+        object = box.top > box.bottom;
+    }
+    if (object) { /* sample planes evenly from the floor to the box's top */
+        int n = (int)s->v[P_SLICES];
+        cs.nplanes = n + 1;
+        for (int k = 0; k <= n; k++) cs.plane_height[k] = box.bottom + (box.top - box.bottom) * k / n;
+        l->nslices = n;
+        memcpy(l->slice_h, cs.plane_height, (size_t)(n + 1) * sizeof(float));
+    }
+    const float *maps = NULL;
+    if (s->v[P_CAUSTICS] != 0) {
+        glFinish();
+        double t0 = fs_now_ms();
+        int rc = fs_caustics_run(s->caustics, &cs, s->gl.buf, s->gl.n);
+        if (rc) return rc;
+        glFinish();
+        fs_stages_add(t, "caustics", fs_now_ms() - t0);
+        l->caustic_tex = fs_caustics_texture(s->caustics);
+        maps = fs_caustics_maps(s->caustics);
+    }
+    if (object) {
+        int rc = upload_slices(s, &box, &cs, maps, l);
+        if (rc) return rc;
+        l->slice_tex = s->slice_tex;
+    }
     return FS_OK;
 }
 

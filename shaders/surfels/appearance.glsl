@@ -20,6 +20,11 @@ uniform sampler2DArray u_caustic_maps;
 uniform int u_has_caustics;
 uniform vec2 u_rect_min;    // horizontal extent of the caustic maps (axes up+1, up+2)
 uniform vec2 u_rect_max;
+// The object under the water as sliced object images (methods/surfels/object_slices.h):
+// slice k holds what of it lies between heights u_slice_h[k] and u_slice_h[k + 1].
+uniform sampler2DArray u_object_slices;
+uniform int u_nslices;          // 0: no object
+uniform float u_slice_h[9];
 
 const vec3 SKY_HORIZON = vec3(0.78, 0.84, 0.90);
 const vec3 SKY_ZENITH = vec3(0.16, 0.34, 0.70);
@@ -76,6 +81,17 @@ vec3 scene_behind(vec3 o, vec3 d, float travelled, out float caustic, out float 
     vec3 s = sky(d);
     float height = o[u_up] - u_floor;
     if (u_checker == 0 || height <= 0.0 || d[u_up] >= 0.0) return s;
+    // Refraction mapping of the sliced object images: from the top slab down,
+    // the ray's point where it enters each slab (or its start, inside one).
+    for (int k = u_nslices - 1; k >= 0; k--) {
+        float top = min(u_slice_h[k + 1], o[u_up]);
+        if (top <= u_slice_h[k]) continue;
+        float t = (o[u_up] - top) / -d[u_up];
+        vec2 uv = (horizontal(o + t * d) - u_rect_min) / (u_rect_max - u_rect_min);
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) continue;
+        vec4 obj = textureLod(u_object_slices, vec3(uv, float(k)), 0.0);
+        if (obj.a > 0.5) { path = t; return obj.rgb / obj.a; }
+    }
     float t = height / -d[u_up];
     path = t;
     vec3 q = o + t * d;
