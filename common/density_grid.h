@@ -3,7 +3,9 @@
  *   fs_density_grid_exact        exact CPU sum through the neighbour grid (verification)
  *   fs_slice_splat_*             iwasaki2006 section 4: particles clustered by height,
  *                                four grid planes per RGBA32F pass, disks as point sprites
- *   (inacio2010's single-pass layered splatting comes with volume_raycast)
+ *   fs_layered_splat_*           inacio2010 IV-A: one pass, each particle one point, a
+ *                                geometry shader routing its disks to the layers of an
+ *                                R32F 3D texture (gl_Layer); the grid stays on the GL side
  * Layout: grid point (i,j,k) is at origin + spacing*(i,j,k); data index
  * (k*dim[1] + j)*dim[0] + i (x fastest), the same as fs_grid's cells. */
 #ifndef FS_DENSITY_GRID_H
@@ -60,6 +62,28 @@ int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles
                        int up_axis, int clusters);
 /* Disks drawn in the last run (one per particle per 4-plane pass it was drawn in). */
 size_t fs_slice_splat_disks(const fs_slice_splat *s);
+
+/* inacio2010 single-pass layered splatting on the current GL 4.5 context. The
+ * grid lives in an R32F 3D texture of shape->dim texels, texel (i,j,k) holding
+ * grid point (i,j,k) (shape->data is not used). Each particle is drawn once as
+ * a point; a geometry shader emits its disk on every z layer within H, with
+ * gl_Layer, and additive blending sums V W(d, H) of the field's kernel. */
+typedef struct fs_layered_splat fs_layered_splat;
+fs_layered_splat *fs_layered_splat_create(void); /* NULL with fs_fail set */
+void fs_layered_splat_destroy(fs_layered_splat *s);
+/* Overwrites tex3d (from fs_density_texture_create(shape)) with phi. */
+int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, const fs_particles *p, const fs_field *f,
+                         unsigned tex3d);
+/* Points drawn in the last run: particles x draws (more than one draw only when a
+ * particle reaches more layers than one geometry-shader draw can emit). */
+size_t fs_layered_splat_points(const fs_layered_splat *s);
+
+/* The grid as a GL texture: an R32F 3D texture of shape->dim texels (linear
+ * filtering, clamp to edge); 0 with fs_fail set. Delete with glDeleteTextures. */
+unsigned fs_density_texture_create(const fs_density_grid *shape);
+/* g->data -> texture, and back (g initialised, of the texture's shape). */
+int fs_density_texture_upload(unsigned tex, const fs_density_grid *g);
+int fs_density_texture_read(unsigned tex, fs_density_grid *g);
 
 /* Writes g as an OpenVDB FloatGrid named `name` (voxel size = spacing, index
  * (0,0,0) at origin, background 0, points with phi > 0 active) through a
