@@ -7,6 +7,7 @@ extern const fs_method fs_method_reference;
 extern const fs_method fs_method_raycast_pca;
 extern const fs_method fs_method_aniso_ssf;
 extern const fs_method fs_method_surfels;
+extern const fs_method fs_method_volume_raycast;
 
 static const fs_method *const methods[] = {
     &fs_method_spheres,
@@ -14,6 +15,7 @@ static const fs_method *const methods[] = {
     &fs_method_raycast_pca,
     &fs_method_aniso_ssf,
     &fs_method_surfels,
+    &fs_method_volume_raycast,
 };
 
 int fs_method_count(void) { return (int)(sizeof methods / sizeof *methods); }

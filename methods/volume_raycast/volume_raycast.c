@@ -1,0 +1,381 @@
+/* volume_raycast: Inacio, Nobrega, Carvalho & von Wangenheim 2010. Per frame:
+ * the density volume as an R32F 3D texture (section IV-A: single-pass layered
+ * splatting, common/layered_splat.c; or, for comparison, iwasaki2006's slice
+ * splatting or the exact CPU grid, uploaded), then ray casting (IV-B): the front
+ * and back faces of the volume's bounding box rasterised into two float
+ * textures give each ray's entry and exit, and a compute pass marches between
+ * them (shaders/volume_raycast/march.comp.glsl) writing the G-buffer and the
+ * transfer-function image. See README.md. */
+#include "density_grid.h"
+#include "frame_source.h"
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_sprites.h"
+#include "gl_target.h"
+#include "method.h"
+#include "scene.h"
+#include "shader.h"
+#include "shading.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const fs_param_def params[] = {
+    {"grid_res", FS_PARAM_INT, 256, 8, 1024, NULL, "volume points along the longest axis of the particles' box + H (paper: 128^3 CPU path, 128x512x512 GPU path)"},
+    {"build", FS_PARAM_ENUM, 0, 0, 2, "layered|slice|exact", "volume generation: single-pass layered splatting (the paper), iwasaki2006 slice splatting, or the exact CPU grid"},
+    {"clusters", FS_PARAM_INT, 16, 1, 4096, NULL, "height clusters for build=slice"},
+    {"step", FS_PARAM_FLOAT, 0.5, 0.05, 4.0, NULL, "ray-march step, grid spacings"},
+    {"refine", FS_PARAM_INT, 8, 0, 30, NULL, "bisection steps refining the iso crossing"},
+    {"mode", FS_PARAM_ENUM, 0, 0, 1, "surface|translucent", "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
+    {"opacity", FS_PARAM_FLOAT, 0.08, 0.001, 1.0, NULL, "translucent: opacity per grid spacing from the iso value inwards (ramping up from iso/2)"},
+    {"termination", FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL, "translucent: early ray termination once the accumulated opacity reaches this"},
+    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
+};
+enum { P_RES, P_BUILD, P_CLUSTERS, P_STEP, P_REFINE, P_MODE, P_OPACITY, P_TERM, P_THICK, P_COUNT };
+enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT };
+
+typedef struct vr {
+    fs_field f;
+    double v[P_COUNT];
+    fs_scene scene;
+    const fs_particles *p;
+    const fs_grid *ng;
+    fs_grid own_ng;
+    int has_own_ng;
+    fs_density_grid dg; /* shape always; data filled by the CPU builds and by export */
+    fs_layered_splat *layered;
+    fs_slice_splat *slice;
+    unsigned tex3d;
+    int tex_dim[3];
+    unsigned prog_faces, prog_march, vao, box_buf;
+    unsigned face_fbo[2], face_tex[2], own_tex; /* front, back */
+    fs_gl_target target;
+    float *background; /* the scene's background for the own image, per size */
+    int bg_w, bg_h;
+} vr;
+
+static void destroy(void *self)
+{
+    vr *s = self;
+    if (!s) return;
+    fs_layered_splat_destroy(s->layered);
+    fs_slice_splat_destroy(s->slice);
+    if (s->tex3d) glDeleteTextures(1, &s->tex3d);
+    if (s->prog_faces) glDeleteProgram(s->prog_faces);
+    if (s->prog_march) glDeleteProgram(s->prog_march);
+    if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    if (s->box_buf) glDeleteBuffers(1, &s->box_buf);
+    for (int i = 0; i < 2; i++) {
+        if (s->face_fbo[i]) glDeleteFramebuffers(1, &s->face_fbo[i]);
+        if (s->face_tex[i]) glDeleteTextures(1, &s->face_tex[i]);
+    }
+    if (s->own_tex) glDeleteTextures(1, &s->own_tex);
+    fs_gl_target_destroy(&s->target);
+    if (s->has_own_ng) fs_grid_free(&s->own_ng);
+    fs_density_grid_free(&s->dg);
+    free(s->background);
+    free(s);
+}
+
+/* The 12 triangles of the unit cube, counter-clockwise seen from outside. */
+static void box_corners(float out[36 * 4])
+{
+    int n = 0;
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side < 2; side++) {
+            int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            /* (a, b, axis) is right-handed: a x b = +axis; reverse the order on the low side */
+            const int q[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+            const int tri[6] = {0, 1, 2, 0, 2, 3};
+            for (int k = 0; k < 6; k++) {
+                int c = side ? tri[k] : tri[5 - k];
+                float *v = out + 4 * n++;
+                v[axis] = (float)side;
+                v[a] = (float)q[c][0];
+                v[b] = (float)q[c][1];
+                v[3] = 1.0f;
+            }
+        }
+}
+
+static void *create(const fs_method_setup *setup)
+{
+    const fs_field *f = &setup->field;
+    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
+        fs_fail(FS_ERR_INPUT, "volume_raycast: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume,
+                f->iso);
+        return NULL;
+    }
+    vr *s = calloc(1, sizeof *s);
+    if (!s) { fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); return NULL; }
+    s->f = *f;
+    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    if (setup->scene) s->scene = *setup->scene;
+    else fs_scene_defaults(&s->scene);
+    const char *faces[] = {"volume_raycast/faces.vert.glsl", "volume_raycast/faces.frag.glsl", NULL};
+    const char *march[] = {"volume_raycast/march.comp.glsl", NULL};
+    if (!(s->prog_faces = fs_program_build(faces, NULL)) || !(s->prog_march = fs_program_build(march, NULL))) {
+        destroy(s);
+        return NULL;
+    }
+    int b = (int)s->v[P_BUILD];
+    if ((b == BUILD_LAYERED && !(s->layered = fs_layered_splat_create())) ||
+        (b == BUILD_SLICE && !(s->slice = fs_slice_splat_create()))) {
+        destroy(s);
+        return NULL;
+    }
+    float corners[36 * 4];
+    box_corners(corners);
+    glCreateBuffers(1, &s->box_buf);
+    glNamedBufferStorage(s->box_buf, sizeof corners, corners, 0);
+    glCreateVertexArrays(1, &s->vao);
+    return s;
+}
+
+static int upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    vr *s = self;
+    if (s->has_own_ng) { fs_grid_free(&s->own_ng); s->has_own_ng = 0; }
+    /* only the exact build walks the neighbour grid */
+    if (s->v[P_BUILD] == BUILD_EXACT && (!g || !(g->cell >= s->f.H) || g->n != p->n)) {
+        int rc = fs_grid_build(&s->own_ng, p, s->f.H);
+        if (rc) return rc;
+        s->has_own_ng = 1;
+        g = &s->own_ng;
+    }
+    s->p = p;
+    s->ng = g;
+    return FS_OK;
+}
+
+/* IV-A: the volume texture over the particles' box grown by H. */
+static int build_volume(vr *s, fs_stages *t)
+{
+    const fs_particles *p = s->p;
+    int b = (int)s->v[P_BUILD];
+    fs_density_grid_free(&s->dg);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->v[P_RES]);
+    if (rc) return rc;
+    if (!s->tex3d || memcmp(s->tex_dim, s->dg.dim, sizeof s->tex_dim)) {
+        if (s->tex3d) glDeleteTextures(1, &s->tex3d);
+        if (!(s->tex3d = fs_density_texture_create(&s->dg))) return FS_ERR_RUNTIME;
+        memcpy(s->tex_dim, s->dg.dim, sizeof s->tex_dim);
+    }
+    glFinish();
+    double t0 = fs_now_ms();
+    if (b == BUILD_LAYERED) {
+        rc = fs_layered_splat_run(s->layered, &s->dg, p, &s->f, s->tex3d);
+    } else {
+        /* the CPU-side builds end in main memory: the upload is part of their cost */
+        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, (int)s->v[P_CLUSTERS])
+                              : fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
+        if (!rc) rc = fs_density_texture_upload(s->tex3d, &s->dg);
+    }
+    if (rc) return rc;
+    glFinish();
+    if (t) fs_stages_add(t, "volume", fs_now_ms() - t0);
+    return FS_OK;
+}
+
+static unsigned make_tex(GLenum fmt, int w, int h)
+{
+    unsigned t = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &t);
+    glTextureStorage2D(t, 1, fmt, w, h);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+static int resize(vr *s, int w, int h)
+{
+    if (s->target.w == w && s->target.h == h) return FS_OK;
+    fs_gl_target_destroy(&s->target);
+    int rc = fs_gl_target_create(&s->target, w, h);
+    if (rc) return rc;
+    for (int i = 0; i < 2; i++) {
+        if (s->face_fbo[i]) glDeleteFramebuffers(1, &s->face_fbo[i]);
+        if (s->face_tex[i]) glDeleteTextures(1, &s->face_tex[i]);
+        s->face_tex[i] = make_tex(GL_RGBA32F, w, h);
+        glCreateFramebuffers(1, &s->face_fbo[i]);
+        glNamedFramebufferTexture(s->face_fbo[i], GL_COLOR_ATTACHMENT0, s->face_tex[i], 0);
+        if (glCheckNamedFramebufferStatus(s->face_fbo[i], GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            return fs_fail(FS_ERR_RUNTIME, "volume_raycast: RGBA32F framebuffer of %dx%d is incomplete", w, h);
+    }
+    if (s->own_tex) glDeleteTextures(1, &s->own_tex);
+    s->own_tex = make_tex(GL_RGBA32F, w, h);
+    return glGetError() == GL_NO_ERROR ? FS_OK
+                                       : fs_fail(FS_ERR_RUNTIME, "volume_raycast: cannot allocate %dx%d images", w, h);
+}
+
+/* IV-B, first half: front faces, then back faces, of the volume's box. The clip
+ * range is widened to hold the whole box (the scene's planes fit the particles
+ * only), so no ray loses its entry or exit to clipping. */
+static void draw_faces(vr *s, const fs_camera *cam, const float ext[3])
+{
+    fs_camera c = *cam;
+    const float *o = s->dg.origin;
+    float far = 0;
+    for (int k = 0; k < 8; k++) {
+        float d2 = 0;
+        for (int a = 0; a < 3; a++) {
+            float x = o[a] + ((k >> a) & 1) * ext[a] - cam->eye[a];
+            d2 += x * x;
+        }
+        far = fmaxf(far, sqrtf(d2));
+    }
+    c.zfar = fmaxf(c.zfar, 1.01f * far);
+    c.znear = fminf(c.znear, 0.01f * c.zfar);
+    fs_gl_camera_uniforms(s->prog_faces, &c);
+    glUniform3fv(glGetUniformLocation(s->prog_faces, "u_box_origin"), 1, o);
+    glUniform3fv(glGetUniformLocation(s->prog_faces, "u_box_extent"), 1, ext);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->box_buf);
+    glBindVertexArray(s->vao);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glEnable(GL_CULL_FACE);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 2; i++) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s->face_fbo[i]);
+        glViewport(0, 0, cam->width, cam->height);
+        glClearNamedFramebufferfv(s->face_fbo[i], GL_COLOR, 0, zero);
+        glCullFace(i == 0 ? GL_BACK : GL_FRONT); /* a convex box: one face per pixel either way */
+        glDrawArrays(GL_TRIANGLES, 0, 36);
+    }
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+static int want_own(const vr *s, const fs_gbuffer *out) { (void)s; return out->own != NULL; }
+
+static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
+{
+    unsigned P = s->prog_march;
+    const fs_scene *sc = &s->scene;
+    fs_gl_camera_uniforms(P, cam);
+    glUniform3fv(glGetUniformLocation(P, "u_box_origin"), 1, s->dg.origin);
+    glUniform3fv(glGetUniformLocation(P, "u_box_extent"), 1, ext);
+    glUniform3f(glGetUniformLocation(P, "u_grid_dim"), (float)s->dg.dim[0], (float)s->dg.dim[1], (float)s->dg.dim[2]);
+    glUniform1f(glGetUniformLocation(P, "u_spacing"), s->dg.spacing);
+    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->v[P_STEP] * s->dg.spacing);
+    glUniform1f(glGetUniformLocation(P, "u_iso"), s->f.iso);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->v[P_REFINE]);
+    glUniform1i(glGetUniformLocation(P, "u_thick"), s->v[P_THICK] != 0);
+    /* no own image wanted: the translucent compositing would only cost time */
+    glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->v[P_MODE] == 1);
+    glUniform1i(glGetUniformLocation(P, "u_own_on"), own);
+    glUniform1f(glGetUniformLocation(P, "u_opacity"), (float)s->v[P_OPACITY]);
+    glUniform1f(glGetUniformLocation(P, "u_term"), (float)s->v[P_TERM]);
+    glUniform3fv(glGetUniformLocation(P, "u_light_dir"), 1, sc->light_dir);
+    glUniform3fv(glGetUniformLocation(P, "u_light_color"), 1, sc->light_color);
+    glUniform3fv(glGetUniformLocation(P, "u_material"), 1, sc->material_color);
+    glUniform1f(glGetUniformLocation(P, "u_ambient"), sc->ambient);
+    glUniform1i(glGetUniformLocation(P, "u_grid"), 0);
+    glBindTextureUnit(0, s->tex3d);
+    glBindImageTexture(0, s->face_tex[0], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, s->face_tex[1], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(3, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(4, s->target.tex[FS_TARGET_THICKNESS], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(5, s->own_tex, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+/* The own image: the premultiplied transfer-function colour over the scene's
+ * background (the shared shading of an empty G-buffer: sky or checker floor). */
+static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
+{
+    int w = cam->width, h = cam->height;
+    size_t row = (size_t)w * 4, n = (size_t)w * h;
+    if (!s->background || s->bg_w != w || s->bg_h != h) {
+        free(s->background);
+        s->background = NULL;
+        fs_gbuffer empty;
+        int rc = fs_gbuffer_alloc(&empty, w, h, 0);
+        if (rc) return rc;
+        fs_gbuffer_clear(&empty);
+        s->background = malloc(n * 4 * sizeof(float));
+        if (!s->background) { fs_gbuffer_free(&empty); return fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); }
+        fs_shade(&s->scene, cam, &empty, fs_scene_floor(&s->scene, s->p), s->background);
+        fs_gbuffer_free(&empty);
+        s->bg_w = w;
+        s->bg_h = h;
+    }
+    float *tmp = malloc(n * 4 * sizeof(float));
+    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory reading back");
+    glGetTextureImage(s->own_tex, 0, GL_RGBA, GL_FLOAT, (GLsizei)(n * 4 * sizeof(float)), tmp);
+    for (int y = 0; y < h; y++) { /* GL rows are bottom-up */
+        const float *src = tmp + (size_t)(h - 1 - y) * row;
+        float *dst = out->own + (size_t)y * row;
+        const float *bg = s->background + (size_t)y * row;
+        for (int x = 0; x < w; x++) {
+            float a = src[4 * x + 3];
+            for (int c = 0; c < 3; c++) dst[4 * x + c] = src[4 * x + c] + (1.0f - a) * bg[4 * x + c];
+            dst[4 * x + 3] = 1.0f;
+        }
+    }
+    free(tmp);
+    if (out->caustics) memset(out->caustics, 0, n * sizeof(float));
+    return FS_OK;
+}
+
+static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
+{
+    vr *s = self;
+    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: render before upload");
+    int rc = build_volume(s, t);
+    if (!rc) rc = resize(s, cam->width, cam->height);
+    if (rc) return rc;
+    float ext[3];
+    for (int a = 0; a < 3; a++) ext[a] = (float)(s->dg.dim[a] - 1) * s->dg.spacing;
+    int own = want_own(s, out);
+    glFinish();
+    double t0 = fs_now_ms();
+    draw_faces(s, cam, ext);
+    glFinish();
+    double t1 = fs_now_ms();
+    fs_stages_add(t, "faces", t1 - t0);
+    march(s, cam, ext, own);
+    glFinish();
+    double t2 = fs_now_ms();
+    fs_stages_add(t, "march", t2 - t1);
+    rc = fs_gl_target_read(&s->target, out);
+    if (!rc && own) rc = read_own(s, cam, out);
+    fs_stages_add(t, "readback", fs_now_ms() - t2);
+    if (!rc && glGetError() != GL_NO_ERROR) rc = fs_fail(FS_ERR_RUNTIME, "volume_raycast: OpenGL error");
+    return rc;
+}
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && !strcmp(s + n - k, suffix);
+}
+
+/* .vdb: the volume, read back from its texture, as a FloatGrid "density". */
+static int export_file(void *self, const char *path)
+{
+    vr *s = self;
+    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
+    if (!ends_with(path, ".vdb")) return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
+    int rc = build_volume(s, NULL);
+    if (!rc) rc = fs_density_texture_read(s->tex3d, &s->dg);
+    return rc ? rc : fs_density_grid_write_vdb(&s->dg, path, "density");
+}
+
+const fs_method fs_method_volume_raycast = {
+    .name = "volume_raycast",
+    .description = "single-pass layered density volume (geometry shader), bounding-box ray casting, transfer functions",
+    .paper = "inacio2010",
+    .needs_gl = 1,
+    .writes_own = 1,
+    .params = params,
+    .nparams = sizeof params / sizeof *params,
+    .create = create,
+    .upload = upload,
+    .render = render,
+    .destroy = destroy,
+    .export_file = export_file,
+};
