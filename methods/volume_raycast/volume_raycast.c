@@ -27,11 +27,12 @@ static const fs_param_def params[] = {
     {"step", FS_PARAM_FLOAT, 0.5, 0.05, 4.0, NULL, "ray-march step, grid spacings"},
     {"refine", FS_PARAM_INT, 8, 0, 30, NULL, "bisection steps refining the iso crossing"},
     {"mode", FS_PARAM_ENUM, 0, 0, 1, "surface|translucent", "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
-    {"opacity", FS_PARAM_FLOAT, 0.08, 0.001, 1.0, NULL, "translucent: opacity per grid spacing from the iso value inwards (ramping up from iso/2)"},
+    {"opacity", FS_PARAM_FLOAT, 0.35, 0.0, 1.0, NULL, "translucent: opacity of the iso-surface at each crossing"},
+    {"absorption", FS_PARAM_FLOAT, 0.01, 0.0, 1.0, NULL, "translucent: opacity of the inside per grid spacing"},
     {"termination", FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL, "translucent: early ray termination once the accumulated opacity reaches this"},
     {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
 };
-enum { P_RES, P_BUILD, P_CLUSTERS, P_STEP, P_REFINE, P_MODE, P_OPACITY, P_TERM, P_THICK, P_COUNT };
+enum { P_RES, P_BUILD, P_CLUSTERS, P_STEP, P_REFINE, P_MODE, P_OPACITY, P_ABSORB, P_TERM, P_THICK, P_COUNT };
 enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT };
 
 typedef struct vr {
@@ -266,6 +267,7 @@ static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
     glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->v[P_MODE] == 1);
     glUniform1i(glGetUniformLocation(P, "u_own_on"), own);
     glUniform1f(glGetUniformLocation(P, "u_opacity"), (float)s->v[P_OPACITY]);
+    glUniform1f(glGetUniformLocation(P, "u_absorption"), (float)s->v[P_ABSORB]);
     glUniform1f(glGetUniformLocation(P, "u_term"), (float)s->v[P_TERM]);
     glUniform3fv(glGetUniformLocation(P, "u_light_dir"), 1, sc->light_dir);
     glUniform3fv(glGetUniformLocation(P, "u_light_color"), 1, sc->light_color);

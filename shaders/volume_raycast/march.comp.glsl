@@ -7,11 +7,12 @@
 //    differences of the texture (one grid spacing); thickness is the length of
 //    the samples with phi >= iso along the whole ray (the same march).
 //  Own image (transfer function): surface = the opaque iso-surface, shaded;
-//    translucent = front-to-back compositing of a transfer function that is
-//    transparent below iso/2, ramps up to u_opacity per grid spacing at the iso
-//    value and stays there inside, shaded by the gradient, with early ray
-//    termination once the accumulated opacity reaches u_term (Krueger &
-//    Westermann). Written premultiplied; the C side puts the background under it.
+//    translucent = front-to-back compositing: every iso crossing along the ray
+//    (front and back faces, inner surfaces) adds the shaded surface with
+//    opacity u_opacity, the inside absorbs u_absorption per grid spacing in the
+//    material's tint; early ray termination once the accumulated opacity
+//    reaches u_term (Krueger & Westermann). Written premultiplied; the C side
+//    puts the background under it.
 // The march ends early once nothing more is needed: the hit is found, no
 // thickness is wanted and (translucent) the opacity is saturated.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -30,7 +31,7 @@ uniform vec3 u_box_extent; // (dim - 1) * spacing
 uniform vec3 u_grid_dim;
 uniform float u_spacing, u_step, u_iso;
 uniform int u_refine, u_thick, u_translucent, u_own_on;
-uniform float u_opacity, u_term;
+uniform float u_opacity, u_absorption, u_term;
 uniform vec3 u_light_dir, u_light_color, u_material;
 uniform float u_ambient;
 
@@ -82,7 +83,9 @@ void main()
         t0 = max(t0, 0.0);
         int nsteps = int(ceil(max(t1 - t0, 0.0) / u_step));
         float step_sp = u_step / u_spacing; // step in grid spacings (opacity correction)
-        float t_prev = t0;
+        float t_prev = t0, p_prev = 0.0;
+        bool in_prev = false;
+        float a_in = 1.0 - pow(1.0 - u_absorption, step_sp); // interior opacity per step
         for (int i = 0; i <= nsteps; i++) {
             float t = min(t0 + float(i) * u_step, t1);
             vec3 x = u_eye + t * d;
@@ -102,14 +105,17 @@ void main()
                 }
             }
             if (u_translucent != 0 && acc.a < u_term) {
-                float a = u_opacity * smoothstep(0.5 * u_iso, u_iso, p);
-                if (a > 0.0) {
-                    float as = 1.0 - pow(1.0 - a, step_sp);
-                    acc += (1.0 - acc.a) * as * vec4(shade(normal_at(x, d), d), 1.0);
+                bool in_now = p >= u_iso;
+                if (in_now != in_prev) { // a surface between the last two samples: composite it
+                    float tc = mix(t_prev, t, clamp((u_iso - p_prev) / (p - p_prev), 0.0, 1.0));
+                    acc += (1.0 - acc.a) * u_opacity * vec4(shade(normal_at(u_eye + tc * d, d), d), 1.0);
                 }
+                if (in_now) acc += (1.0 - acc.a) * a_in * vec4(u_material * (0.5 + 0.5 * u_ambient), 1.0);
+                in_prev = in_now;
             }
             if (hit && u_thick == 0 && (u_translucent == 0 || acc.a >= u_term)) break;
             t_prev = t;
+            p_prev = p;
         }
     }
     if (hit) {
