@@ -24,8 +24,9 @@ void main()
     float dz = max(max(u_zrange.x - p.z, p.z - u_zrange.y), 0.0);
     float R2 = u_H * u_H - dz * dz;
     if (R2 <= 0.0) { gl_Position = vec4(2.0, 2.0, 2.0, 1.0); return; } // no plane within reach
-    // One grid step of margin: a grid point on the circle's rim is never lost to rounding.
-    float R = sqrt(R2) + u_spacing;
+    // A margin of 1/64 grid step against rasterisation rounding (llvmpipe snaps to
+    // 1/256 pixel); a grid point this close to the rim has W ~ 0 anyway.
+    float R = sqrt(R2) + u_spacing * (1.0 / 64.0);
     vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
     vec2 win = (p.xy + corner * R - u_origin) / u_spacing + 0.5; // window coordinates
     gl_Position = vec4(win / u_size * 2.0 - 1.0, 0.0, 1.0);
