@@ -1,0 +1,148 @@
+/* One SPH step on the CPU (C + OpenMP). Same order of work as the shaders in
+ * shaders/sph/: counting-sort grid over fluid and boundary particles, density
+ * and pressure per sorted slot, then forces and symplectic Euler per fluid slot.
+ * Mueller et al. 2003 terms:
+ *   rho_i = sum_j m_j W_poly6                      (boundary j: m_j = Psi_j)
+ *   a_p   = -sum_j m_j (p_i + p_j) / (2 rho_i rho_j) grad W_spiky
+ * Boundary particles j add their mass to rho_i (Akinci et al. 2012) and push
+ * with a pressure extrapolated from the fluid around them, hydrostatics
+ * included (Adami et al. 2012), at rho_j = rho0. Mirroring p_i instead (Akinci)
+ * lets the fluid push a free-surface particle (p_i clamped to 0) into a wall.
+ * A lone splash particle reads too little density for any pressure, so the
+ * boundary particles also repel closer than the rest spacing r0 = 2r
+ * (Lennard-Jones, Monaghan 1994): a = D ((r0/d)^12 - (r0/d)^4) x_ib / d^2,
+ * D = c^2 / 40 (= 5 g h_top at c = 10 sqrt(2 g h_top)); zero at rest.
+ *   a_v   = mu / rho_i sum_j m_j (v_j - v_i) / rho_j lap W_visc,  mu = nu rho0
+ * The box clamp at the end is a safety net only; every use is counted. */
+#include "fs_error.h"
+#include "kernels.h"
+#include "sph_internal.h"
+#include <math.h>
+#include <string.h>
+
+/* Below this many particles (boundary included) threads cost more than they
+ * save: a step is a few milliseconds and each loop ends in a barrier. */
+#define FS_SPH_PARALLEL_MIN 16384
+
+/* Calls BODY for every slot t of the cells around x within one support. */
+#define FOR_NEIGHBOUR_SLOTS(g, x, H, t, ...) do { \
+    int lo_[3], hi_[3]; \
+    for (int a_ = 0; a_ < 3; a_++) { \
+        lo_[a_] = fs_grid_clampi(fs_grid_coord(g, a_, (x)[a_] - (H)), (g)->dim[a_] - 1); \
+        hi_[a_] = fs_grid_clampi(fs_grid_coord(g, a_, (x)[a_] + (H)), (g)->dim[a_] - 1); \
+    } \
+    for (int k_ = lo_[2]; k_ <= hi_[2]; k_++) \
+        for (int j_ = lo_[1]; j_ <= hi_[1]; j_++) { \
+            size_t row_ = fs_grid_cell_id(g, 0, j_, k_); \
+            uint32_t s1_ = (g)->start[row_ + hi_[0] + 1]; \
+            for (uint32_t t = (g)->start[row_ + lo_[0]]; t < s1_; t++) { __VA_ARGS__ } \
+        } \
+} while (0)
+
+int fs_sph_cpu_step(fs_sph *s, float dt)
+{
+    fs_particles view = {0};
+    view.n = s->nb + s->nf;
+    view.x = s->x; view.y = s->y; view.z = s->z;
+    fs_grid_free(&s->g);
+    int rc = fs_grid_build(&s->g, &view, s->H);
+    if (rc) return rc;
+    const fs_grid *g = &s->g;
+    long n = (long)view.n;
+    uint32_t nb = (uint32_t)s->nb;
+    const float H = s->H, H2 = H * H, rho0 = s->prm.rho0;
+    const float cpoly = (float)(315.0 / (64.0 * FS_PI)) / (H2 * H2 * H2 * H2 * H);
+    const float cspiky = (float)(45.0 / FS_PI) / (H2 * H2 * H2); /* |grad| = c (H - d)^2, lap = c (H - d) */
+    const float mu = s->prm.nu * rho0;
+    const float r02 = 4 * s->prm.r * s->prm.r, D = s->prm.c * s->prm.c / 40;
+    float *vel4 = s->vel4, *rho = s->rho, *prs = s->prs;
+    const float *m = s->m;
+#pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN)
+    for (long t = 0; t < n; t++) {
+        uint32_t i = g->index[t];
+        vel4[4 * t] = s->vx[i]; vel4[4 * t + 1] = s->vy[i]; vel4[4 * t + 2] = s->vz[i]; vel4[4 * t + 3] = 0;
+    }
+#pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN)
+    for (long sl = 0; sl < n; sl++) {
+        if (g->index[sl] < nb) { rho[sl] = rho0; prs[sl] = 0; continue; }
+        const float *xi = g->pos4 + 4 * sl;
+        float sum = 0;
+        FOR_NEIGHBOUR_SLOTS(g, xi, H, t, {
+            const float *xj = g->pos4 + 4 * (size_t)t;
+            float dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2], d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 < H2) { float w = H2 - d2; sum += m[g->index[t]] * cpoly * w * w * w; }
+        });
+        rho[sl] = sum;
+        prs[sl] = fs_sph_pressure(s, sum);
+    }
+    /* Wall pressure p_b = (sum_f p_f W + sum_f rho_f g (y_f - y_b) W) / sum_f W. */
+    const float gy = s->prm.gravity;
+#pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN)
+    for (long sl = 0; sl < n; sl++) {
+        if (g->index[sl] >= nb) continue;
+        const float *xb = g->pos4 + 4 * sl;
+        float sw = 0, sp = 0;
+        FOR_NEIGHBOUR_SLOTS(g, xb, H, t, {
+            if (g->index[t] < nb) continue;
+            const float *xj = g->pos4 + 4 * (size_t)t;
+            float dx = xb[0] - xj[0], dy = xb[1] - xj[1], dz = xb[2] - xj[2], d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 < H2) {
+                float w = H2 - d2;
+                w = w * w * w;
+                sw += w;
+                sp += w * (prs[t] - rho[t] * gy * dy);
+            }
+        });
+        prs[sl] = sw > 0 && sp > 0 ? sp / sw : 0;
+    }
+    float vmax = 0;
+    long clamps = 0, bad = 0;
+    const float *lo = s->box_lo, *hi = s->box_hi;
+#pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN) reduction(max : vmax) reduction(+ : clamps, bad)
+    for (long sl = 0; sl < n; sl++) {
+        uint32_t i = g->index[sl];
+        if (i < nb) continue;
+        const float *xi = g->pos4 + 4 * sl, *vi = vel4 + 4 * sl;
+        float ri = rho[sl], pi = prs[sl];
+        float ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0; /* pressure, viscosity sums */
+        FOR_NEIGHBOUR_SLOTS(g, xi, H, t, {
+            const float *xj = g->pos4 + 4 * (size_t)t;
+            float dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2], d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 < H2 && d2 > 0) {
+                uint32_t j = g->index[t];
+                float d = sqrtf(d2), h = H - d;
+                float f = m[j] * (pi + prs[t]) / (2 * ri * rho[t]);
+                float gr = f * cspiky * h * h / d; /* -grad W points from j to i: push apart */
+                if (j < nb) {
+                    if (d2 < r02) { float q = r02 / d2, q2 = q * q, q6 = q2 * q2 * q2; gr += D * (q6 - q2) / d2; }
+                    ax += gr * dx; ay += gr * dy; az += gr * dz;
+                } else {
+                    ax += gr * dx; ay += gr * dy; az += gr * dz;
+                    const float *vj = vel4 + 4 * (size_t)t;
+                    float l = m[j] / rho[t] * cspiky * h;
+                    bx += l * (vj[0] - vi[0]); by += l * (vj[1] - vi[1]); bz += l * (vj[2] - vi[2]);
+                }
+            }
+        });
+        float k = mu / ri;
+        float v[3] = {vi[0] + dt * (ax + k * bx), vi[1] + dt * (ay + k * by - gy), vi[2] + dt * (az + k * bz)};
+        float x[3] = {xi[0] + dt * v[0], xi[1] + dt * v[1], xi[2] + dt * v[2]};
+        if (!isfinite(x[0] + x[1] + x[2] + v[0] + v[1] + v[2])) bad++;
+        else {
+            int clamped = 0;
+            for (int a = 0; a < 3; a++) {
+                if (x[a] < lo[a]) { x[a] = lo[a]; if (v[a] < 0) v[a] = 0; clamped = 1; }
+                if (x[a] > hi[a]) { x[a] = hi[a]; if (v[a] > 0) v[a] = 0; clamped = 1; }
+            }
+            clamps += clamped;
+            float sp = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if (sp > vmax) vmax = sp;
+        }
+        s->x[i] = x[0]; s->y[i] = x[1]; s->z[i] = x[2];
+        s->vx[i] = v[0]; s->vy[i] = v[1]; s->vz[i] = v[2];
+    }
+    s->st.v_max = vmax;
+    s->st.clamps += clamps;
+    s->st.nonfinite = bad;
+    return FS_OK;
+}
