@@ -11,6 +11,7 @@ static const struct { const char *name; int (*run)(int, char **); const char *wh
     {"info", cmd_info, "print a particle file's count, bounds, spacing and density"},
     {"convert", cmd_convert, "convert a particle file to another format"},
     {"methods", cmd_methods, "list the methods, their papers and parameters"},
+    {"simulate", cmd_simulate, "run the SPH simulator on a built-in scene; write a particle sequence"},
 };
 
 static int usage(FILE *f)

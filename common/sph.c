@@ -17,7 +17,7 @@ void fs_sph_params_default(fs_sph_params *p)
     p->support = 4.0f;
     p->rho0 = 1000.0f;
     p->eos = FS_SPH_TAIT;
-    p->nu = 0.01f;
+    p->nu = 0.05f;
     p->gravity = 9.81f;
     p->cfl = 0.2f;
 }
@@ -266,7 +266,13 @@ int fs_sph_measure_state(fs_sph *s, fs_sph_measure *m)
         fs_grid_query(&g, x, s->H, dvisit, &q);
         double e = q.rho / s->prm.rho0 - 1;
         err += e > 0 ? e : 0;
-        if (s->y[i] + s->H <= top[COLUMN(i)]) { aerr += fabs(e); ninner++; }
+        /* Interior: at least H below the surface of every column within H. */
+        int c = COLUMN(i), ci = c % cx, ck = c / cx, w = (int)ceilf(s->H / dx);
+        float lowest = INFINITY;
+        for (int kk = ck - w; kk <= ck + w; kk++)
+            for (int ii = ci - w; ii <= ci + w; ii++)
+                if (ii >= 0 && kk >= 0 && ii < cx && kk < cz) lowest = fminf(lowest, top[kk * cx + ii]);
+        if (s->y[i] + s->H <= lowest) { aerr += fabs(e); ninner++; }
     }
 #undef COLUMN
     m->density_err = err / nf;
