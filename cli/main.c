@@ -12,6 +12,7 @@ static const struct { const char *name; int (*run)(int, char **); const char *wh
     {"convert", cmd_convert, "convert a particle file to another format"},
     {"methods", cmd_methods, "list the methods, their papers and parameters"},
     {"simulate", cmd_simulate, "run the SPH simulator on a built-in scene; write a particle sequence"},
+    {"view", cmd_view, "interactive window: play a scene or run the simulator live, switch methods"},
 };
 
 static int usage(FILE *f)

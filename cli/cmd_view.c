@@ -1,0 +1,474 @@
+/* fluidsurf view: an interactive GLFW window that plays a scene's frames or
+ * runs the SPH simulator live, rendering each frame with the current method
+ * into a G-buffer (at a resolution scale of the window), shading it with the
+ * shared shading (or the method's own appearance) and drawing the image. All
+ * methods run in the window's own GL 4.5 core context. Input: view_input.c;
+ * scripted input for tests: view_script.c. */
+#include "cli.h"
+#include "frame_source.h"
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_context.h"
+#include "image_io.h"
+#include "method.h"
+#include "method_params.h"
+#include "shader.h"
+#include "shading.h"
+#include "sph.h"
+#include "view.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char help[] =
+    "usage: fluidsurf view SCENE.json|PARTICLES [options]\n"
+    "       fluidsurf view --simulate NAME [options]\n"
+    "  --simulate NAME      run the SPH simulator live, one --dt per displayed frame\n"
+    "                       (dam_break, double_dam_break, drop, spouts, pool)\n"
+    "  --particles N        simulator: about N fluid particles (default: the scene's)\n"
+    "  --gpu                simulator: the GPU path (compute shaders) instead of C + OpenMP\n"
+    "  --dt S               simulated seconds per displayed frame (default 1/60)\n"
+    "  --method NAME        method shown first (default: the first registered)\n"
+    "  --set M.P=V          set a method parameter (repeatable)\n"
+    "  -W N, -H N           window size (default: the scene's image size, else 800x600)\n"
+    "  --scale S            G-buffer size / window size, 1/16..2 (default 1)\n"
+    "  --radius R           particle radius r (default: the scene's, else the file's, else 0.025)\n"
+    "  --paused             start paused\n"
+    "  --frames N           quit after N displayed frames\n"
+    "  --script FILE        timed input, lines 'frame N ACTION ARGS':\n"
+    "                         key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
+    "                         scroll DY   screenshot PATH   quit\n"
+    "  --events TEXT        the same inline, actions separated by ';'\n"
+    "keys: 1-9 method (registry order), space play/pause, N or . one frame, S screenshot,\n"
+    "      +/- resolution scale, O own/shared appearance, R reset camera, Esc/Q quit;\n"
+    "      simulator: arrows, or shift (ctrl) + left drag, move the container\n"
+    "mouse: left drag orbit, right/middle drag pan, wheel zoom\n";
+
+typedef struct viewer {
+    fs_scene scene;
+    fs_view v;
+    view_script script;
+    fs_sph *sim;
+    double dt;               /* simulated time per frame */
+    int first, last, cur;    /* frames of a sequence scene */
+    fs_particles p;          /* current particles and their grid: the method holds them */
+    fs_grid grid;
+    int mi;                  /* index of the created method (-1 none) */
+    void *self;
+    double params[FS_MAX_PARAMS];
+    fs_gbuffer g;
+    int g_mi;                /* the method g was allocated for */
+    float *rgba;
+    fs_gl_context ctx;
+    unsigned prog, vao, tex;
+    int tw, th;
+    int shots, shot_failed;
+    double frame_ms;
+} viewer;
+
+/* ---- particles: the next frame of the sequence or of the simulator ---- */
+
+/* Moves the container by what the user asked for, at most 2r per frame (the
+ * walls are two particle layers: faster jumps would tunnel through fluid), in
+ * sub-frames of at most r/2 each. */
+static int sim_advance(viewer *w)
+{
+    float *d = w->v.box_move, r = fs_sph_get_params(w->sim)->r;
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), take = len > 2 * r ? 2 * r / len : 1;
+    float move[3] = {d[0] * take, d[1] * take, d[2] * take};
+    int k = (int)ceilf(len * take / (0.5f * r));
+    if (k < 1) k = 1;
+    for (int i = 0; i < 3; i++) {
+        d[i] -= move[i];
+        move[i] /= (float)k;
+    }
+    for (int i = 0; i < k; i++) {
+        if (len > 0) fs_sph_move_box(w->sim, move);
+        int rc = fs_sph_advance(w->sim, w->dt / k);
+        if (rc) return rc;
+    }
+    return FS_OK;
+}
+
+/* Loads (advance: the next) particles, builds their grid and uploads them to
+ * the method; the previous set is freed only after the new upload. */
+static int next_particles(viewer *w, int advance)
+{
+    fs_particles np = {0};
+    fs_grid ng = {0};
+    int rc;
+    if (w->sim) {
+        if (advance && (rc = sim_advance(w))) return rc;
+        rc = fs_sph_get(w->sim, &np);
+    } else {
+        if (advance && w->first == w->last && !w->scene.synth.shape) return FS_OK; /* one still frame */
+        if (advance) w->cur = w->cur < w->last ? w->cur + 1 : w->first;
+        rc = fs_scene_load_frame(&w->scene, w->cur, &np);
+    }
+    if (!rc && np.n) rc = fs_grid_build(&ng, &np, fs_scene_field(&w->scene).H);
+    if (!rc && np.n && w->self) rc = fs_method_at(w->mi)->upload(w->self, &np, &ng);
+    if (rc) {
+        fs_grid_free(&ng);
+        fs_particles_free(&np);
+        return rc;
+    }
+    fs_grid_free(&w->grid);
+    fs_particles_free(&w->p);
+    w->p = np;
+    w->grid = ng;
+    return FS_OK;
+}
+
+/* Creates the method the user picked (when it changed) and uploads the particles. */
+static int use_method(viewer *w)
+{
+    if (w->self && w->mi == w->v.method) return FS_OK;
+    const fs_method *m = fs_method_at(w->v.method);
+    int rc = fs_method_params_resolve(m, &w->scene, w->params);
+    if (rc) return rc;
+    if (w->self) fs_method_at(w->mi)->destroy(w->self);
+    w->self = NULL;
+    fs_method_setup setup = {fs_scene_field(&w->scene), w->params, &w->scene};
+    if (!(w->self = m->create(&setup))) return FS_ERR_RUNTIME;
+    w->mi = w->v.method;
+    return w->p.n ? m->upload(w->self, &w->p, &w->grid) : FS_OK;
+}
+
+/* ---- drawing ---- */
+
+static int present_init(viewer *w)
+{
+    const char *stages[] = {"view/present.vert.glsl", "view/present.frag.glsl", NULL};
+    if (!(w->prog = fs_program_build(stages, NULL))) return FS_ERR_RUNTIME;
+    glCreateVertexArrays(1, &w->vao);
+    return FS_OK;
+}
+
+/* Draws the linear image rgba (gw x gh) over the whole fw x fh window. */
+static void present(viewer *w, int gw, int gh, int fw, int fh)
+{
+    if (w->tw != gw || w->th != gh) {
+        if (w->tex) glDeleteTextures(1, &w->tex);
+        glCreateTextures(GL_TEXTURE_2D, 1, &w->tex);
+        glTextureStorage2D(w->tex, 1, GL_RGBA32F, gw, gh);
+        glTextureParameteri(w->tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(w->tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(w->tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(w->tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        w->tw = gw;
+        w->th = gh;
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(w->tex, 0, 0, 0, gw, gh, GL_RGBA, GL_FLOAT, w->rgba);
+    /* methods leave their own state behind: reset what the draw depends on */
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fw, fh);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glUseProgram(w->prog);
+    glBindTextureUnit(0, w->tex);
+    glBindVertexArray(w->vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+/* Renders the current particles with the current method at the window size
+ * times the scale, shades and draws them. */
+static int render_frame(viewer *w, int fw, int fh)
+{
+    const fs_method *m = fs_method_at(w->mi);
+    int gw = (int)lroundf(fw * w->v.scale), gh = (int)lroundf(fh * w->v.scale), rc;
+    if (gw < 1) gw = 1;
+    if (gh < 1) gh = 1;
+    if (w->g.w != gw || w->g.h != gh || w->g_mi != w->mi) {
+        fs_gbuffer_free(&w->g);
+        free(w->rgba);
+        w->rgba = malloc((size_t)gw * gh * 4 * sizeof(float));
+        if (!w->rgba) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+        if ((rc = fs_gbuffer_alloc(&w->g, gw, gh, fs_method_wants_color(m, &w->p)))) return rc;
+        if (m->writes_own && (rc = fs_gbuffer_alloc_own(&w->g))) return rc;
+        w->g_mi = w->mi;
+    }
+    fs_camera cam = w->scene.camera;
+    cam.width = gw;
+    cam.height = gh;
+    fs_orbit_apply(&w->v.orbit, &cam);
+    float lo[3], hi[3], floor_y = 0, H = fs_scene_field(&w->scene).H;
+    for (int k = 0; k < 3; k++) {
+        lo[k] = w->p.n ? w->p.bmin[k] - H : 0;
+        hi[k] = w->p.n ? w->p.bmax[k] + H : 0;
+    }
+    if (w->sim) { /* the container too, so clip planes do not jump as fluid splashes */
+        float blo[3], bhi[3];
+        fs_sph_box(w->sim, blo, bhi);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = w->p.n ? fminf(lo[k], blo[k]) : blo[k];
+            hi[k] = w->p.n ? fmaxf(hi[k], bhi[k]) : bhi[k];
+        }
+        floor_y = blo[w->scene.up_axis];
+    }
+    fs_camera_fit_clip(&cam, lo, hi);
+    fs_gbuffer_clear(&w->g);
+    fs_stages st = {0};
+    if (w->p.n && (rc = m->render(w->self, &cam, &w->g, &st))) return rc;
+    if (w->p.n) floor_y = fs_scene_floor(&w->scene, &w->p);
+    if (w->v.own && m->writes_own && w->p.n) memcpy(w->rgba, w->g.own, (size_t)gw * gh * 4 * sizeof(float));
+    else fs_shade(&w->scene, &cam, &w->g, floor_y, w->rgba);
+    present(w, gw, gh, fw, fh);
+    return FS_OK;
+}
+
+/* Saves the window's back buffer (what the next swap shows) as a PNG. */
+static int screenshot(viewer *w, int fw, int fh)
+{
+    char name[1100];
+    if (w->v.shot_path[0]) snprintf(name, sizeof name, "%s", w->v.shot_path);
+    else /* a numbered name that does not overwrite an earlier one */
+        do snprintf(name, sizeof name, "fluidsurf_view_%03d.png", ++w->shots);
+        while (access(name, F_OK) == 0);
+    unsigned char *pix = malloc((size_t)fw * fh * 3), *row = malloc((size_t)fw * 3);
+    if (!pix || !row) {
+        free(pix);
+        free(row);
+        return fs_fail(FS_ERR_RUNTIME, "out of memory");
+    }
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, fw, fh, GL_RGB, GL_UNSIGNED_BYTE, pix);
+    for (int y = 0; y < fh / 2; y++) { /* GL rows run bottom to top */
+        memcpy(row, pix + (size_t)y * fw * 3, (size_t)fw * 3);
+        memcpy(pix + (size_t)y * fw * 3, pix + (size_t)(fh - 1 - y) * fw * 3, (size_t)fw * 3);
+        memcpy(pix + (size_t)(fh - 1 - y) * fw * 3, row, (size_t)fw * 3);
+    }
+    int rc = fs_write_png8(name, pix, fw, fh, 3);
+    free(pix);
+    free(row);
+    if (!rc) fprintf(stderr, "fluidsurf: screenshot %s (%dx%d)\n", name, fw, fh);
+    return rc;
+}
+
+static void set_title(viewer *w, int frame, int fw, int fh)
+{
+    const fs_method *m = fs_method_at(w->mi);
+    char where[160], title[600];
+    if (w->sim)
+        snprintf(where, sizeof where, "t = %.3f s, %zu particles%s", fs_sph_get_stats(w->sim)->t, fs_sph_count(w->sim),
+                 w->v.playing ? "" : ", paused");
+    else
+        snprintf(where, sizeof where, "frame %d [%d..%d]%s", w->cur, w->first, w->last, w->v.playing ? "" : ", paused");
+    snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %.1f ms | %s | scale %.2f (%dx%d) | %s | #%d", m->name,
+             w->v.own && m->writes_own ? "own" : "shared", w->frame_ms, w->ctx.renderer, w->v.scale,
+             (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame);
+    glfwSetWindowTitle(w->ctx.handle, title);
+}
+
+/* ---- GLFW callbacks: straight into the handlers the scripts call ---- */
+
+static fs_view *view_of(GLFWwindow *win) { return glfwGetWindowUserPointer(win); }
+static void on_key(GLFWwindow *win, int key, int scancode, int action, int mods)
+{
+    (void)scancode;
+    if (action != GLFW_RELEASE) view_key(view_of(win), key, mods);
+}
+static void on_button(GLFWwindow *win, int button, int action, int mods)
+{
+    double x, y;
+    glfwGetCursorPos(win, &x, &y);
+    view_button(view_of(win), button, action == GLFW_PRESS, mods, x, y);
+}
+static void on_cursor(GLFWwindow *win, double x, double y) { view_cursor(view_of(win), x, y); }
+static void on_scroll(GLFWwindow *win, double dx, double dy)
+{
+    (void)dx;
+    view_scroll(view_of(win), dy);
+}
+
+static int run(viewer *w, int max_frames, int scripted)
+{
+    GLFWwindow *win = w->ctx.handle;
+    glfwSetWindowUserPointer(win, &w->v);
+    glfwSetKeyCallback(win, on_key);
+    glfwSetMouseButtonCallback(win, on_button);
+    glfwSetCursorPosCallback(win, on_cursor);
+    glfwSetScrollCallback(win, on_scroll);
+    glfwSwapInterval(scripted ? 0 : 1);
+    int rc = present_init(w);
+    for (int frame = 0; !rc; frame++) {
+        glfwPollEvents();
+        view_script_apply(&w->script, &w->v, frame);
+        if (w->v.quit || glfwWindowShouldClose(win) || (max_frames && frame >= max_frames)) break;
+        double t0 = fs_now_ms();
+        if (frame > 0 && (w->v.playing || w->v.step)) {
+            w->v.step = 0;
+            if ((rc = next_particles(w, 1))) break;
+        }
+        if ((rc = use_method(w))) break;
+        int fw, fh, ww, wh;
+        glfwGetFramebufferSize(win, &fw, &fh);
+        glfwGetWindowSize(win, &ww, &wh);
+        w->v.view_h = wh;
+        if ((rc = render_frame(w, fw, fh))) break;
+        if (w->v.shot) {
+            w->v.shot = 0;
+            if (screenshot(w, fw, fh)) { /* the viewer goes on; the exit status tells */
+                cli_error(FS_ERR_RUNTIME);
+                w->shot_failed = 1;
+            }
+        }
+        glfwSwapBuffers(win);
+        w->frame_ms = fs_now_ms() - t0;
+        set_title(w, frame, fw, fh);
+    }
+    return rc ? rc : w->shot_failed ? FS_ERR_RUNTIME : FS_OK;
+}
+
+/* Reads a whole text file (the script) into *out (malloc'd). */
+static int read_text(const char *path, char **out)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open the script", path);
+    char *buf = NULL;
+    size_t n = 0, cap = 0, got;
+    do {
+        if (n + 4096 + 1 > cap) {
+            char *nb = realloc(buf, cap = 2 * cap + 8192);
+            if (!nb) { free(buf); fclose(f); return fs_fail(FS_ERR_RUNTIME, "out of memory"); }
+            buf = nb;
+        }
+        got = fread(buf + n, 1, 4096, f);
+        n += got;
+    } while (got == 4096);
+    fclose(f);
+    buf[n] = 0;
+    *out = buf;
+    return FS_OK;
+}
+
+int cmd_view(int argc, char **argv)
+{
+    const char *input = NULL, *simulate = NULL, *mname = NULL, *script = NULL, *events = NULL;
+    int W = 0, H = 0, gpu = 0, paused = 0, max_frames = 0, particles = 0, rc;
+    float scale = 1, radius = 0, dt = 1.0f / 60;
+    const char *sets[FS_MAX_SETS];
+    int nsets = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
+        else if (!strcmp(a, "--simulate") && v) { simulate = v; i++; }
+        else if (!strcmp(a, "--particles")) { if ((rc = cli_int("view", a, v, 1, 100000000, &particles))) return rc; i++; }
+        else if (!strcmp(a, "--gpu")) gpu = 1;
+        else if (!strcmp(a, "--dt")) { if ((rc = cli_float("view", a, v, 1e-6, 1, &dt))) return rc; i++; }
+        else if (!strcmp(a, "--method") && v) { mname = v; i++; }
+        else if (!strcmp(a, "--set") && v) {
+            if (nsets == FS_MAX_SETS) return cli_usage("view", "too many --set");
+            sets[nsets++] = v;
+            i++;
+        }
+        else if (!strcmp(a, "-W")) { if ((rc = cli_int("view", a, v, 16, 8192, &W))) return rc; i++; }
+        else if (!strcmp(a, "-H")) { if ((rc = cli_int("view", a, v, 16, 8192, &H))) return rc; i++; }
+        else if (!strcmp(a, "--scale")) { if ((rc = cli_float("view", a, v, 1.0 / 16, 2, &scale))) return rc; i++; }
+        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("view", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
+        else if (!strcmp(a, "--paused")) paused = 1;
+        else if (!strcmp(a, "--frames")) { if ((rc = cli_int("view", a, v, 1, 100000000, &max_frames))) return rc; i++; }
+        else if (!strcmp(a, "--script") && v) { script = v; i++; }
+        else if (!strcmp(a, "--events") && v) { events = v; i++; }
+        else if (a[0] == '-' && a[1]) return cli_usage("view", "unknown or incomplete option '%s'", a);
+        else if (!input) input = a;
+        else return cli_usage("view", "more than one input ('%s' and '%s')", input, a);
+    }
+    if (!input == !simulate) return cli_usage("view", "give a scene or particle file, or --simulate NAME (not both)");
+    if (script && events) return cli_usage("view", "--script and --events: give one");
+    if (!simulate && (gpu || particles)) return cli_usage("view", "--gpu and --particles apply to --simulate only");
+    int mi = 0;
+    if (mname) {
+        for (mi = 0; mi < fs_method_count() && strcmp(fs_method_at(mi)->name, mname); mi++) {}
+        if (mi == fs_method_count()) return cli_usage("view", "unknown method '%s' (see 'fluidsurf methods')", mname);
+    }
+
+    /* everything the user typed is checked before a window opens */
+    static viewer w;
+    memset(&w, 0, sizeof w);
+    w.mi = w.g_mi = -1;
+    w.dt = dt;
+    if (simulate) fs_scene_defaults(&w.scene);
+    else if ((rc = cli_scene_from_arg(&w.scene, input))) return cli_error(rc);
+    for (int i = 0; i < nsets; i++)
+        if ((rc = fs_scene_add_set(&w.scene, sets[i]))) return cli_error(rc);
+    for (int i = 0; i < fs_method_count(); i++) /* a bad --set fails now, not on a key press */
+        if ((rc = fs_method_params_resolve(fs_method_at(i), &w.scene, w.params))) return cli_error(rc);
+    if (script || events) {
+        char *text = NULL;
+        if (script && (rc = read_text(script, &text))) return cli_error(rc);
+        if (!script && !(text = strdup(events))) return cli_error(fs_fail(FS_ERR_RUNTIME, "out of memory"));
+        rc = view_script_parse(&w.script, text, script ? script : "--events");
+        free(text);
+        if (rc) return cli_error(rc);
+    }
+    if (simulate) {
+        int known = 0;
+        for (int i = 0; fs_sph_scene_names[i]; i++) known |= !strcmp(fs_sph_scene_names[i], simulate);
+        if (!known) { view_script_free(&w.script); return cli_usage("view", "--simulate %s: unknown scene", simulate); }
+    } else {
+        fs_scene_frames(&w.scene, &w.first, &w.last);
+        w.cur = w.first;
+        if ((rc = next_particles(&w, 0))) { view_script_free(&w.script); return cli_error(rc); }
+        if (radius > 0) w.scene.radius = radius;
+        else if (!w.scene.path[0] && w.p.radius > 0) w.scene.radius = w.p.radius;
+        fs_scene_frame_particles(&w.scene, &w.p);
+        if (radius > 0 || (!w.scene.path[0] && w.p.radius > 0)) { /* the grid's cell follows H */
+            fs_grid_free(&w.grid);
+            if ((rc = fs_grid_build(&w.grid, &w.p, fs_scene_field(&w.scene).H))) goto done;
+        }
+    }
+    int win_w = W ? W : simulate ? 800 : w.scene.camera.width, win_h = H ? H : simulate ? 600 : w.scene.camera.height;
+    if ((rc = fs_gl_context_create(&w.ctx, FS_CTX_GLFW, win_w, win_h))) goto done;
+    if (simulate) { /* the GPU path needs the context: the simulator starts after the window */
+        fs_sph_params prm;
+        fs_sph_params_default(&prm);
+        if (radius > 0) prm.r = radius;
+        if ((rc = fs_sph_create(&w.sim, simulate, (size_t)particles, &prm, gpu))) goto done;
+        w.scene.radius = prm.r;
+        float lo[3], hi[3];
+        fs_sph_box(w.sim, lo, hi);
+        w.scene.camera.width = win_w;
+        w.scene.camera.height = win_h;
+        fs_scene_finish_camera(&w.scene, lo, hi);
+        if ((rc = next_particles(&w, 0))) goto done;
+        w.v.can_move_box = 1;
+        w.v.box_step = 0.05f * (hi[0] - lo[0]);
+    }
+    fs_orbit_from_camera(&w.v.orbit, &w.scene.camera, w.scene.up_axis);
+    w.v.home = w.v.orbit;
+    w.v.nmethods = fs_method_count() < 9 ? fs_method_count() : 9;
+    w.v.method = mi;
+    w.v.scale = scale;
+    w.v.playing = !paused;
+    fprintf(stderr, "fluidsurf: view: %s on %s (%s); %s\n", simulate ? simulate : input, w.ctx.renderer,
+            simulate ? (gpu ? "GPU simulation" : "CPU simulation") : "playing the scene",
+            "keys: 1-9 method, space play, N step, S screenshot, +/- scale, O appearance, Esc quit");
+    rc = run(&w, max_frames, script || events);
+done:
+    if (rc) cli_error(rc);
+    if (w.self) fs_method_at(w.mi)->destroy(w.self);
+    fs_sph_destroy(w.sim);
+    if (w.ctx.handle) {
+        if (w.tex) glDeleteTextures(1, &w.tex);
+        if (w.vao) glDeleteVertexArrays(1, &w.vao);
+        if (w.prog) glDeleteProgram(w.prog);
+    }
+    fs_gl_context_destroy(&w.ctx);
+    fs_gbuffer_free(&w.g);
+    free(w.rgba);
+    fs_grid_free(&w.grid);
+    fs_particles_free(&w.p);
+    view_script_free(&w.script);
+    return rc;
+}
