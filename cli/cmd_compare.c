@@ -31,7 +31,7 @@ static const char help[] =
     "  --depth-scale R        heatmap scale of the depth error, in r (default: from the data)\n"
     "  -W N, -H N             image size; --radius R; --gl osmesa|egl; -q quiet\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
-    "<label>_own.png for a method with its own appearance (surfels),\n"
+    "<label>_own.png for a method with its own appearance (surfels, volume_raycast),\n"
     "report.md (and temporal.csv for a sequence).\n";
 
 static void free_view(cmp_view *v) { fs_gbuffer_free(&v->g); free(v->rgba); v->rgba = NULL; }

@@ -6,8 +6,13 @@
 #  2. Stage times (Tables I/II analogue, rendering side only) on synthetic boxes
 #     of 1024, 2048, 4096, 8192 particles and 46^3 = 97,336: volume generation
 #     layered vs slice vs exact, ray casting (faces + march; with and without the
-#     thickness march) vs `spheres`, at SIZE^2, grid GRID; medians of RUNS timed
-#     runs after a warm-up (fluidsurf compare --repeat).
+#     thickness march) vs `spheres`, at SIZE^2; medians of RUNS timed runs after
+#     a warm-up (fluidsurf compare --repeat). The grid spacing is the same for
+#     every count, SPACING_R x r (default 0.5 r, about the dam break's spacing at
+#     256): the paper keeps its volume resolution and kernel fixed while the
+#     particle count grows in the same container, so the cost per particle is
+#     fixed too. (A fixed 256 points across boxes of growing size would instead
+#     give the 1k box 50 layers per particle and the 97k box 16.)
 # Writes results/inacio2010/volume_raycast_{bar.csv,times.csv,*.png}. Every time
 # names its renderer (llvmpipe here: CPU cores, not a GPU).
 set -euo pipefail
@@ -16,16 +21,43 @@ BIN=${BIN:-./build/fluidsurf}
 SIZE=${SIZE:-512}
 RUNS=${RUNS:-3}
 GRID=${GRID:-256}
+SPACING_R=${SPACING_R:-0.5}
 R=results/inacio2010
 mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# 1. the bar
+# One row per particle count from times.csv: the volume stage of the three builds
+# (thickness off runs), the layered/slice ratio, ray casting (faces + march) with
+# and without the thickness march, and spheres (splat; splat + thickness).
+summarize() {
+  awk -F, '!/^#/ && $1 != "particles" {
+      n = $1; if (!(n in seen)) { seen[n] = 1; order[++k] = n; res[n] = $2 }
+      key = n SUBSEP $3 SUBSEP $4 SUBSEP $5; t[key] = $6; r = $7; for (i = 8; i <= NF; i++) r = r "," $i }
+    function g(n, m, v, st) { return t[n SUBSEP m SUBSEP v SUBSEP st] + 0 }
+    END {
+      print "# medians (ms) from volume_raycast_times.csv; renderer " r "; grid_res = points along the longest axis"
+      print "particles,grid_res,volume_layered,volume_slice,volume_exact,slice_over_layered,raycast_no_thickness,raycast_with_thickness,spheres_splat,spheres_splat_thickness,volume_raycast_total_no_thickness,spheres_total_no_thickness"
+      for (i = 1; i <= k; i++) {
+        n = order[i]; v = "build=layered;thickness=off"; w = "build=layered;thickness=on"
+        vl = g(n, "volume_raycast", v, "volume"); vs = g(n, "volume_raycast", "build=slice;thickness=off", "volume")
+        ve = g(n, "volume_raycast", "build=exact;thickness=off", "volume")
+        rc0 = g(n, "volume_raycast", v, "faces") + g(n, "volume_raycast", v, "march")
+        rc1 = g(n, "volume_raycast", w, "faces") + g(n, "volume_raycast", w, "march")
+        sp0 = g(n, "spheres", "thickness=off", "splat")
+        sp1 = sp0 + g(n, "spheres", "thickness=on", "thickness")
+        printf "%s,%s,%.1f,%.1f,%.1f,%.2f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f\n", n, res[n], vl, vs, ve, vs / vl, rc0, rc1, sp0, sp1,
+          g(n, "volume_raycast", v, "total"), g(n, "spheres", "thickness=off", "total")
+      }
+    }' "$1"
+}
+
+# 1. the bar (SKIP_BAR=1 leaves its files as they are)
+if [ "${SKIP_BAR:-0}" != 1 ]; then
 "$BIN" compare experiments/scenes/dam_break.json --methods volume_raycast \
   --set volume_raycast.grid_res="$GRID" --set volume_raycast.mode=surface,translucent \
   -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/dam"
-{ echo "# volume_raycast vs reference, experiments/scenes/dam_break.json (24,389 particles), ${SIZE}x${SIZE}, grid $GRID; fluidsurf compare metrics.csv"
+{ echo "# volume_raycast vs reference, experiments/scenes/dam_break.json (24389 particles), ${SIZE}x${SIZE}, grid $GRID; fluidsurf compare metrics.csv"
   grep -v '^#' "$tmp/dam/metrics.csv"; } > "$R/volume_raycast_bar.csv"
 cp "$tmp/dam/volume_raycast_mode=surface.png" "$R/volume_raycast_dam_shared.png"
 cp "$tmp/dam/volume_raycast_mode=surface_own.png" "$R/volume_raycast_dam_own_surface.png"
@@ -33,14 +65,17 @@ cp "$tmp/dam/volume_raycast_mode=translucent_own.png" "$R/volume_raycast_dam_own
 cp "$tmp/dam/reference.png" "$R/volume_raycast_dam_reference.png"
 cp "$tmp/dam/panel.png" "$R/volume_raycast_dam_panel.png"
 cp "$tmp/dam/diff_volume_raycast_mode=surface.png" "$R/volume_raycast_dam_diff.png"
+fi
 
 # 2. stage times on synthetic boxes
 csv=$R/volume_raycast_times.csv
-echo "# volume_raycast (grid $GRID, step 0.5 spacing) and spheres at ${SIZE}x${SIZE} on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); medians of $RUNS runs after a warm-up; stages from fluidsurf compare timings.csv" > "$csv.new"
-echo "particles,method,variant,stage,ms_median,renderer" >> "$csv.new"
+echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres at ${SIZE}x${SIZE} on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); medians of $RUNS runs after a warm-up; stages from fluidsurf compare timings.csv" > "$csv.new"
+echo "particles,grid_res,method,variant,stage,ms_median,renderer" >> "$csv.new"
 for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
   IFS=, read -r a b c <<< "$size"
   n=$((a * b * c))
+  # points along the longest axis: centres span (a - 1) 2r, the grid adds H = 4r each side
+  res=$(awk -v a="$a" -v s="$SPACING_R" 'BEGIN { e = (a - 1) * 2 + 8; r = e / s; print (r == int(r) ? r : int(r) + 1) + 1 }')
   cat > "$tmp/box_$n.json" <<JSON
 {
   "description": "synthetic box of $a x $b x $c = $n particles",
@@ -52,15 +87,16 @@ for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
 }
 JSON
   "$BIN" compare "$tmp/box_$n.json" --methods volume_raycast,spheres \
-    --set volume_raycast.grid_res="$GRID" --set volume_raycast.build=layered,slice,exact \
+    --set volume_raycast.grid_res="$res" --set volume_raycast.build=layered,slice,exact \
     --set volume_raycast.thickness=on,off --set spheres.thickness=on,off \
     -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/box_$n"
   # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,renderer
-  awk -F, -v n="$n" '!/^#/ && $1 != "method" && $1 != "reference" {
+  awk -F, -v n="$n" -v g="$res" '!/^#/ && $1 != "method" && $1 != "reference" {
       r = $8; for (i = 9; i <= NF; i++) r = r "," $i;
-      print n "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/box_$n/timings.csv" >> "$csv.new"
+      print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/box_$n/timings.csv" >> "$csv.new"
   [ "$n" = 8192 ] && cp "$tmp/box_$n/panel.png" "$R/volume_raycast_box_8192_panel.png"
 done
 mv "$csv.new" "$csv"
+summarize "$csv" > "$R/volume_raycast_summary.csv"
 column -t -s, "$R/volume_raycast_bar.csv" | cut -c1-200
-column -t -s, "$csv"
+column -t -s, "$R/volume_raycast_summary.csv"
