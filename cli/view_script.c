@@ -95,7 +95,8 @@ int view_script_parse(view_script *s, const char *text, const char *what)
     memset(s, 0, sizeof *s);
     char *buf = strdup(text);
     if (!buf) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-    int rc = FS_OK, line = 1, cap = 0;
+    /* positions: lines of a file; actions of a one-line --events text */
+    int rc = FS_OK, line = 1, cap = 0, by_action = !strchr(text, '\n');
     for (char *p = buf; *p && !rc;) {
         size_t len = strcspn(p, ";\n");
         int newline = p[len] == '\n', end = !p[len];
@@ -117,7 +118,7 @@ int view_script_parse(view_script *s, const char *text, const char *what)
             }
             if (!(rc = parse_action(&s->act[s->n], w, n, what, line))) s->n++;
         }
-        line += newline;
+        line += newline || by_action;
         p += len + !end;
     }
     free(buf);
