@@ -14,7 +14,9 @@
 static const char help[] =
     "usage: fluidsurf simulate SCENE --frames N -o OUT_%04d.bgeo|.vtk|.ply|.vdb [options]\n"
     "SPH after Mueller et al. 2003 (inacio2010 section III). SCENE: dam_break, double_dam_break,\n"
-    "drop, spouts (four coloured spouts filling a pool), pool (water at rest).\n"
+    "drop, spouts (four coloured spouts filling a pool), pool (water at rest), or a JSON file\n"
+    "{\"box\": [x, y, z], \"fluid\": [{\"min\": [..], \"max\": [..], \"color\": 0},\n"
+    "{\"centre\": [..], \"radius\": R, \"color\": 1}]} in metres (colour ids 0..4).\n"
     "Writes frames 0..N, frame f being the state at t = f / fps (frame 0: the start).\n"
     "  --frames N           frames to simulate (default 60)\n"
     "  -o PATTERN           printf pattern of the frame files, one %d (e.g. out_%04d.bgeo)\n"

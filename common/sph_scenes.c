@@ -6,7 +6,9 @@
 #include "fs_error.h"
 #include "kernels.h"
 #include "sph_internal.h"
+#include <cjson/cJSON.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,7 +24,7 @@ typedef struct scene_def {
     const char *name;
     float box[3];        /* container size at scale 1 */
     int nreg;
-    region reg[2];
+    region reg[8];
     int nspouts;
     float fill;          /* spouts: fraction of the particles in the initial pool */
     size_t default_n;
@@ -77,12 +79,96 @@ int fs_sph_alloc(fs_sph *s, size_t nb, size_t cap)
     return FS_OK;
 }
 
+/* Reads `n` positive (or any, when !positive) numbers of a JSON array. */
+static int json_vec(const cJSON *a, int n, float *out, int positive)
+{
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) != n) return 0;
+    for (int i = 0; i < n; i++) {
+        const cJSON *v = cJSON_GetArrayItem(a, i);
+        if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble) || (positive && !(v->valuedouble > 0))) return 0;
+        out[i] = (float)v->valuedouble;
+    }
+    return 1;
+}
+
+/* A scene file: {"box": [x, y, z], "fluid": [{"min": [..], "max": [..], "color": 0},
+ * {"centre": [..], "radius": R, "color": 1}, ...]} in metres; particles 0 means
+ * the lattice at that size, otherwise the whole scene is scaled like the built-ins. */
+static int json_scene(const char *path, scene_def *d, float r)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
+    char *text = malloc(1 << 20);
+    size_t len = text ? fread(text, 1, (1 << 20) - 1, f) : 0;
+    fclose(f);
+    if (!text) return fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
+    text[len] = 0;
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    if (!root || !cJSON_IsObject(root)) { cJSON_Delete(root); return fs_fail(FS_ERR_INPUT, "%s: malformed JSON", path); }
+    memset(d, 0, sizeof *d);
+    d->name = path;
+    d->fill = 1;
+    int rc = FS_OK;
+    const cJSON *it;
+    cJSON_ArrayForEach(it, root) {
+        if (!strcmp(it->string, "box")) {
+            if (!json_vec(it, 3, d->box, 1)) { rc = fs_fail(FS_ERR_INPUT, "%s: box: expected [x, y, z] > 0", path); break; }
+        } else if (!strcmp(it->string, "fluid") && cJSON_IsArray(it)) {
+            const cJSON *g;
+            cJSON_ArrayForEach(g, it) {
+                if (d->nreg == 8) { rc = fs_fail(FS_ERR_INPUT, "%s: fluid: at most 8 regions", path); break; }
+                region *q = &d->reg[d->nreg++];
+                const cJSON *mn = cJSON_GetObjectItem(g, "min"), *mx = cJSON_GetObjectItem(g, "max"),
+                            *c = cJSON_GetObjectItem(g, "centre"), *rad = cJSON_GetObjectItem(g, "radius"),
+                            *col = cJSON_GetObjectItem(g, "color");
+                int ok = mn ? json_vec(mn, 3, q->lo, 0) && json_vec(mx, 3, q->hi, 0) && !c && !rad
+                            : json_vec(c, 3, q->c, 0) && cJSON_IsNumber(rad) && rad->valuedouble > 0 && !mx;
+                for (int a = 0; ok && mn && a < 3; a++) ok = q->lo[a] < q->hi[a];
+                if (rad) q->rad = (float)rad->valuedouble;
+                if (col) {
+                    ok = ok && cJSON_IsNumber(col) && col->valuedouble >= 0 && col->valuedouble <= 4 &&
+                         col->valuedouble == (int)col->valuedouble;
+                    q->phase = ok ? (int)col->valuedouble : 0;
+                    if (q->phase + 1 > d->ncolors) d->ncolors = q->phase + 1;
+                }
+                if (!ok) {
+                    rc = fs_fail(FS_ERR_INPUT, "%s: fluid region %d: expected {\"min\", \"max\"} (min < max) or "
+                                 "{\"centre\", \"radius\" > 0}, optional \"color\" 0..4", path, d->nreg - 1);
+                    break;
+                }
+            }
+            if (rc) break;
+        } else {
+            rc = fs_fail(FS_ERR_INPUT, "%s: unknown or malformed key '%s' (box, fluid)", path, it->string);
+            break;
+        }
+    }
+    cJSON_Delete(root);
+    if (rc) return rc;
+    if (!(d->box[0] > 0) || !d->nreg) return fs_fail(FS_ERR_INPUT, "%s: needs \"box\" and \"fluid\"", path);
+    double vol = 0;
+    for (int i = 0; i < d->nreg; i++) vol += region_volume(&d->reg[i]);
+    double dx = 2.0 * r;
+    d->default_n = (size_t)fmax(64, vol / (dx * dx * dx));
+    if (d->ncolors < 1) d->ncolors = 1;
+    return FS_OK;
+}
+
 int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
 {
     const scene_def *d = NULL;
-    for (size_t i = 0; i < sizeof scenes / sizeof *scenes; i++)
+    scene_def js;
+    size_t len = strlen(name);
+    if (len > 5 && !strcmp(name + len - 5, ".json")) {
+        int rc = json_scene(name, &js, s->prm.r);
+        if (rc) return rc;
+        d = &js;
+    }
+    for (size_t i = 0; !d && i < sizeof scenes / sizeof *scenes; i++)
         if (!strcmp(scenes[i].name, name)) d = &scenes[i];
-    if (!d) return fs_fail(FS_ERR_INPUT, "%s: unknown scene (dam_break, double_dam_break, drop, spouts, pool)", name);
+    if (!d)
+        return fs_fail(FS_ERR_INPUT, "%s: unknown scene (dam_break, double_dam_break, drop, spouts, pool, or a .json)", name);
     if (!particles) particles = d->default_n;
     float r = s->prm.r, dx = 2 * r;
     /* Scale so that the fluid volume at rest holds `particles` lattice sites. */
@@ -109,6 +195,7 @@ int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
                 for (int g = 0; g < d->nreg; g++)
                     if (in_region(&d->reg[g], sc, p)) { nfluid++; break; }
             }
+    if (!nfluid) return fs_fail(FS_ERR_INPUT, "%s: no fluid inside the box", name);
     size_t cap = nfluid;
     if (d->nspouts) cap = nfluid + (size_t)((double)particles * (1 - d->fill));
     int rc = fs_sph_alloc(s, nb, cap);

@@ -35,6 +35,15 @@ expect_bad no_pattern "%d" dam_break --frames 2 -o "$T/o_.bgeo"
 expect_bad bad_format "format" dam_break -o "$T/o_%04d.xyz"
 expect_bad missing_dir "$T/nodir" dam_break -o "$T/nodir/o_%04d.vtk"
 expect_bad unknown_option "--bogus" dam_break --bogus $o
+echo '{"box": [1, 1, 0.5], "fluid": [{"min": [0, 0, 0]}]}' > "$T/bad_region.json"
+echo '{"box": [1, 1, 0.5], "fluids": []}' > "$T/bad_key.json"
+echo '{"box": [1, 1, 0.5], "fluid": [{"min": [2, 2, 2], "max": [3, 3, 3]}]}' > "$T/outside.json"
+echo '{"box": [1, 1, 0.5], ' > "$T/malformed.json"
+expect_bad json_bad_region "fluid region 0" "$T/bad_region.json" $o
+expect_bad json_unknown_key "fluids" "$T/bad_key.json" $o
+expect_bad json_fluid_outside "no fluid inside the box" "$T/outside.json" $o
+expect_bad json_malformed "malformed JSON" "$T/malformed.json" $o
+expect_bad json_missing "cannot read" "$T/missing.json" $o
 
 # A short run on each path: frames 0..2 readable, with the count the stats report.
 for path in cpu gpu; do
@@ -49,6 +58,13 @@ for path in cpu gpu; do
   fi
   echo "ok   run_$path: $n particles in frame 2, colours and phases written"
 done
+# A JSON scene: a block and a coloured ball.
+echo '{"box": [1, 1, 0.5], "fluid": [{"min": [0, 0, 0], "max": [0.4, 0.6, 0.5]}, {"centre": [0.7, 0.7, 0.25], "radius": 0.15, "color": 1}]}' > "$T/ok.json"
+if "$BIN" simulate "$T/ok.json" --frames 1 -q -o "$T/j_%d.bgeo" && "$BIN" info "$T/j_1.bgeo" | grep -q phase; then
+  echo "ok   json_scene"
+else
+  echo "FAIL json_scene"; fails=$((fails + 1))
+fi
 "$BIN" simulate --help | grep -q "usage: fluidsurf simulate" || { echo "FAIL help"; fails=$((fails + 1)); }
 echo "$fails failure(s)"
 [ $fails -eq 0 ]
