@@ -54,6 +54,7 @@ typedef struct viewer {
     view_script script;
     fs_sph *sim;
     double dt;               /* simulated time per frame */
+    float box_speed;         /* of the container now (m/s) */
     int first, last, cur;    /* frames of a sequence scene */
     fs_particles p;          /* current particles and their grid: the method holds them */
     fs_grid grid;
@@ -66,32 +67,28 @@ typedef struct viewer {
     fs_gl_context ctx;
     unsigned prog, vao, tex;
     int tw, th;
+    unsigned box_prog, depth_tex; /* the simulator's container overlay */
+    int dtw, dth;
     int shots, shot_failed;
     double frame_ms;
 } viewer;
 
 /* ---- particles: the next frame of the sequence or of the simulator ---- */
 
-/* Moves the container by what the user asked for, at most 2r per frame (the
- * walls are two particle layers: faster jumps would tunnel through fluid), in
- * sub-frames of at most r/2 each. */
+/* Advances one frame while the container moves towards where the user asked,
+ * smoothly: at most 60 r/s (1.5 m/s at r = 0.025), speeding up and slowing
+ * down at 400 r/s^2 (1 g). A wall started or stopped at once throws water up
+ * at several times its speed (the impulsive-wall jet). */
 static int sim_advance(viewer *w)
 {
-    float *d = w->v.box_move, r = fs_sph_get_params(w->sim)->r;
-    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), take = len > 2 * r ? 2 * r / len : 1;
-    float move[3] = {d[0] * take, d[1] * take, d[2] * take};
-    int k = (int)ceilf(len * take / (0.5f * r));
-    if (k < 1) k = 1;
-    for (int i = 0; i < 3; i++) {
-        d[i] -= move[i];
-        move[i] /= (float)k;
-    }
-    for (int i = 0; i < k; i++) {
-        if (len > 0) fs_sph_move_box(w->sim, move);
-        int rc = fs_sph_advance(w->sim, w->dt / k);
-        if (rc) return rc;
-    }
-    return FS_OK;
+    float *d = w->v.box_move, r = fs_sph_get_params(w->sim)->r, dt = (float)w->dt;
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    float v = fminf(fminf(w->box_speed + 400 * r * dt, 60 * r), sqrtf(2 * 400 * r * len));
+    w->box_speed = len > 0 ? v : 0;
+    if (!(len > 0)) return fs_sph_advance(w->sim, w->dt);
+    float take = fminf(1.0f, v * dt / len), move[3] = {d[0] * take, d[1] * take, d[2] * take};
+    for (int i = 0; i < 3; i++) d[i] -= move[i];
+    return fs_sph_move_box(w->sim, move, w->dt);
 }
 
 /* Loads (advance: the next) particles, builds their grid and uploads them to
@@ -144,24 +141,56 @@ static int present_init(viewer *w)
 {
     const char *stages[] = {"view/present.vert.glsl", "view/present.frag.glsl", NULL};
     if (!(w->prog = fs_program_build(stages, NULL))) return FS_ERR_RUNTIME;
+    const char *box[] = {"view/box.vert.glsl", "view/box.frag.glsl", NULL};
+    if (w->sim && !(w->box_prog = fs_program_build(box, NULL))) return FS_ERR_RUNTIME;
     glCreateVertexArrays(1, &w->vao);
     return FS_OK;
+}
+
+/* A texture of size gw x gh (recreated when the size changes). */
+static void sized_texture(unsigned *tex, int *tw, int *th, int gw, int gh, unsigned format, int filter)
+{
+    if (*tex && *tw == gw && *th == gh) return;
+    if (*tex) glDeleteTextures(1, tex);
+    glCreateTextures(GL_TEXTURE_2D, 1, tex);
+    glTextureStorage2D(*tex, 1, format, gw, gh);
+    glTextureParameteri(*tex, GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(*tex, GL_TEXTURE_MAG_FILTER, filter);
+    glTextureParameteri(*tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(*tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    *tw = gw;
+    *th = gh;
+}
+
+/* Draws the container's edges over the image, dimmed where the fluid's
+ * G-buffer depth is nearer, so the user sees what a box drag moves. */
+static void draw_box(viewer *w, const fs_camera *cam, int fw, int fh)
+{
+    int gw = w->g.w, gh = w->g.h;
+    sized_texture(&w->depth_tex, &w->dtw, &w->dth, gw, gh, GL_R32F, GL_NEAREST); /* no filtering across inf */
+    glTextureSubImage2D(w->depth_tex, 0, 0, 0, gw, gh, GL_RED, GL_FLOAT, w->g.depth);
+    float lo[3], hi[3], view[16], proj[16];
+    fs_sph_box(w->sim, lo, hi);
+    fs_camera_view_matrix(cam, view);
+    fs_camera_proj_matrix(cam, proj);
+    unsigned p = w->box_prog;
+    glUseProgram(p);
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_view"), 1, GL_FALSE, view);
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_proj"), 1, GL_FALSE, proj);
+    glUniform3f(glGetUniformLocation(p, "u_lo"), lo[0], lo[1], lo[2]);
+    glUniform3f(glGetUniformLocation(p, "u_hi"), hi[0], hi[1], hi[2]);
+    glUniform2f(glGetUniformLocation(p, "u_window"), (float)fw, (float)fh);
+    glBindTextureUnit(0, w->depth_tex);
+    glBindVertexArray(w->vao);
+    glDrawArrays(GL_LINES, 0, 24);
+    glBindVertexArray(0);
+    glUseProgram(0);
 }
 
 /* Draws the linear image rgba (gw x gh) over the whole fw x fh window. */
 static void present(viewer *w, int gw, int gh, int fw, int fh)
 {
-    if (w->tw != gw || w->th != gh) {
-        if (w->tex) glDeleteTextures(1, &w->tex);
-        glCreateTextures(GL_TEXTURE_2D, 1, &w->tex);
-        glTextureStorage2D(w->tex, 1, GL_RGBA32F, gw, gh);
-        glTextureParameteri(w->tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(w->tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(w->tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(w->tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        w->tw = gw;
-        w->th = gh;
-    }
+    sized_texture(&w->tex, &w->tw, &w->th, gw, gh, GL_RGBA32F, GL_LINEAR);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTextureSubImage2D(w->tex, 0, 0, 0, gw, gh, GL_RGBA, GL_FLOAT, w->rgba);
     /* methods leave their own state behind: reset what the draw depends on */
@@ -223,6 +252,7 @@ static int render_frame(viewer *w, int fw, int fh)
     if (w->v.own && m->writes_own && w->p.n) memcpy(w->rgba, w->g.own, (size_t)gw * gh * 4 * sizeof(float));
     else fs_shade(&w->scene, &cam, &w->g, floor_y, w->rgba);
     present(w, gw, gh, fw, fh);
+    if (w->sim) draw_box(w, &cam, fw, fh);
     return FS_OK;
 }
 
@@ -463,6 +493,8 @@ done:
         if (w.tex) glDeleteTextures(1, &w.tex);
         if (w.vao) glDeleteVertexArrays(1, &w.vao);
         if (w.prog) glDeleteProgram(w.prog);
+        if (w.box_prog) glDeleteProgram(w.box_prog);
+        if (w.depth_tex) glDeleteTextures(1, &w.depth_tex);
     }
     fs_gl_context_destroy(&w.ctx);
     fs_gbuffer_free(&w.g);

@@ -65,7 +65,7 @@ int fs_sph_get(fs_sph *s, fs_particles *p);
 const fs_sph_stats *fs_sph_get_stats(const fs_sph *s);
 const fs_sph_params *fs_sph_get_params(const fs_sph *s);
 void fs_sph_box(const fs_sph *s, float lo[3], float hi[3]);
-int fs_sph_move_box(fs_sph *s, const float delta[3]); /* translates the walls (sph_move.c) */
+int fs_sph_move_box(fs_sph *s, const float delta[3], double frame_dt); /* advances frame_dt while the walls move by delta (0: jump; sph_move.c) */
 size_t fs_sph_count(const fs_sph *s);           /* active fluid particles */
 size_t fs_sph_boundary_count(const fs_sph *s);
 float fs_sph_mass(const fs_sph *s);              /* fluid particle mass */
