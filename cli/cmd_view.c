@@ -39,6 +39,7 @@ static const char help[] =
     "  --radius R           particle radius r (default: the scene's, else the file's, else 0.025)\n"
     "  --paused             start paused\n"
     "  --frames N           quit after N displayed frames\n"
+    "  -v                   print the title bar (method, ms, renderer, scale, frame) each frame\n"
     "  --script FILE        timed input, lines 'frame N ACTION ARGS':\n"
     "                         key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
     "                         scroll DY   screenshot PATH   quit\n"
@@ -70,6 +71,7 @@ typedef struct viewer {
     unsigned box_prog, depth_tex; /* the simulator's container overlay */
     int dtw, dth;
     int shots, shot_failed;
+    int verbose;             /* print each title on stderr */
     double frame_ms;
 } viewer;
 
@@ -298,6 +300,7 @@ static void set_title(viewer *w, int frame, int fw, int fh)
              w->v.own && m->writes_own ? "own" : "shared", w->frame_ms, w->ctx.renderer, w->v.scale,
              (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame);
     glfwSetWindowTitle(w->ctx.handle, title);
+    if (w->verbose) fprintf(stderr, "%s\n", title);
 }
 
 /* ---- GLFW callbacks: straight into the handlers the scripts call ---- */
@@ -385,7 +388,7 @@ static int read_text(const char *path, char **out)
 int cmd_view(int argc, char **argv)
 {
     const char *input = NULL, *simulate = NULL, *mname = NULL, *script = NULL, *events = NULL;
-    int W = 0, H = 0, gpu = 0, paused = 0, max_frames = 0, particles = 0, rc;
+    int W = 0, H = 0, gpu = 0, paused = 0, verbose = 0, max_frames = 0, particles = 0, rc;
     float scale = 1, radius = 0, dt = 1.0f / 60;
     const char *sets[FS_MAX_SETS];
     int nsets = 0;
@@ -407,6 +410,7 @@ int cmd_view(int argc, char **argv)
         else if (!strcmp(a, "--scale")) { if ((rc = cli_float("view", a, v, 1.0 / 16, 2, &scale))) return rc; i++; }
         else if (!strcmp(a, "--radius")) { if ((rc = cli_float("view", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
         else if (!strcmp(a, "--paused")) paused = 1;
+        else if (!strcmp(a, "-v")) verbose = 1;
         else if (!strcmp(a, "--frames")) { if ((rc = cli_int("view", a, v, 1, 100000000, &max_frames))) return rc; i++; }
         else if (!strcmp(a, "--script") && v) { script = v; i++; }
         else if (!strcmp(a, "--events") && v) { events = v; i++; }
@@ -428,6 +432,7 @@ int cmd_view(int argc, char **argv)
     memset(&w, 0, sizeof w);
     w.mi = w.g_mi = -1;
     w.dt = dt;
+    w.verbose = verbose;
     if (simulate) fs_scene_defaults(&w.scene);
     else if ((rc = cli_scene_from_arg(&w.scene, input))) return cli_error(rc);
     for (int i = 0; i < nsets; i++)

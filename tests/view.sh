@@ -44,9 +44,12 @@ frame 8 key 5; frame 8 key o       # surfels, own appearance
 frame 9 screenshot e.png
 frame 10 quit
 S
-"$BIN" view "$scene" -W 160 -H 120 --script script.txt 2> scene.err || fail "scene run: $(cat scene.err)"
+"$BIN" view "$scene" -W 160 -H 120 -v --script script.txt 2> scene.err || fail "scene run: $(cat scene.err)"
 for f in a b c d e; do shot_ok $f.png || fail "$f.png: missing, not 160x120, uniform or without water"; done
 grep -q '^fluidsurf: screenshot a.png (160x120)' scene.err || fail "the screenshot is not named on stderr"
+grep -q '^fluidsurf view | spheres (shared) | [0-9.]* ms | .* | scale 1.00 (160x120) | frame 0 ' scene.err ||
+  fail "title bar: $(grep -m1 '^fluidsurf view' scene.err)"
+grep -q '^fluidsurf view | surfels (own) | .* | scale 0.80 (128x96) | ' scene.err || fail "title bar after keys 5, o and minus"
 differ a.png b.png || fail "orbiting did not change the image"
 differ b.png c.png || fail "switching to reference did not change the image"
 differ c.png d.png || fail "pan, zoom and scale did not change the image"
@@ -57,10 +60,12 @@ differ d.png e.png || fail "surfels' own appearance did not change the image"
 ev="frame 1 screenshot p1.png; frame 3 screenshot p2.png; frame 4 key space; frame 9 screenshot s.png; frame 10 quit"
 drag="frame 5 drag 80 60 140 60 shift"
 sim=(view --simulate dam_break --particles 2000 -W 160 -H 120 --paused)
-"$BIN" "${sim[@]}" --events "$ev; $drag" 2> sim.err || fail "simulator run: $(cat sim.err)"
+"$BIN" "${sim[@]}" -v --events "$ev; $drag" 2> sim.err || fail "simulator run: $(cat sim.err)"
 mv s.png s_drag.png
 "$BIN" "${sim[@]}" --events "$ev" 2> sim2.err || fail "simulator run without drag: $(cat sim2.err)"
 for f in p1 p2 s s_drag; do shot_ok $f.png || fail "$f.png: missing, not 160x120, uniform or without water"; done
+grep -q '| t = 0.000 s, 2[0-9]* particles, paused | #3$' sim.err || fail "simulator title bar: $(grep -m4 '^fluidsurf view' sim.err | tail -1)"
+grep -q '| t = 0.100 s, 2[0-9]* particles | #9$' sim.err || fail "simulated time in the title: $(grep '#9$' sim.err)"
 same p1.png p2.png || fail "paused, the simulation still moved"
 differ p1.png s.png || fail "playing, the simulation did not move"
 differ s.png s_drag.png || fail "dragging the container changed nothing"
