@@ -72,6 +72,7 @@ typedef struct viewer {
     int dtw, dth;
     int shots, shot_failed;
     int verbose;             /* print each title on stderr */
+    unsigned gen;            /* particle sets loaded so far */
     double frame_ms;
 } viewer;
 
@@ -119,6 +120,7 @@ static int next_particles(viewer *w, int advance)
     fs_particles_free(&w->p);
     w->p = np;
     w->grid = ng;
+    w->gen++;
     return FS_OK;
 }
 
@@ -317,6 +319,7 @@ static void on_button(GLFWwindow *win, int button, int action, int mods)
     glfwGetCursorPos(win, &x, &y);
     view_button(view_of(win), button, action == GLFW_PRESS, mods, x, y);
 }
+static void on_refresh(GLFWwindow *win) { view_of(win)->redraw++; }
 static void on_cursor(GLFWwindow *win, double x, double y) { view_cursor(view_of(win), x, y); }
 static void on_scroll(GLFWwindow *win, double dx, double dy)
 {
@@ -332,8 +335,11 @@ static int run(viewer *w, int max_frames, int scripted)
     glfwSetMouseButtonCallback(win, on_button);
     glfwSetCursorPosCallback(win, on_cursor);
     glfwSetScrollCallback(win, on_scroll);
+    glfwSetWindowRefreshCallback(win, on_refresh);
     glfwSwapInterval(scripted ? 0 : 1);
     int rc = present_init(w);
+    struct { fs_orbit orbit; int method, own, fw, fh, redraw; float scale; unsigned gen; } drawn, now;
+    memset(&drawn, 0, sizeof drawn); /* memset: the struct is compared bytewise */
     for (int frame = 0; !rc; frame++) {
         glfwPollEvents();
         view_script_apply(&w->script, &w->v, frame);
@@ -348,6 +354,17 @@ static int run(viewer *w, int max_frames, int scripted)
         glfwGetFramebufferSize(win, &fw, &fh);
         glfwGetWindowSize(win, &ww, &wh);
         w->v.view_h = wh;
+        /* nothing changed (a still frame, or paused, and no input): wait for
+         * input instead of rendering the same image again with a slow method */
+        memset(&now, 0, sizeof now);
+        now.orbit = w->v.orbit, now.method = w->v.method, now.own = w->v.own, now.fw = fw, now.fh = fh;
+        now.redraw = w->v.redraw, now.scale = w->v.scale, now.gen = w->gen;
+        if (frame > 0 && !scripted && !w->v.shot && !memcmp(&now, &drawn, sizeof now)) {
+            glfwWaitEventsTimeout(0.1);
+            frame--;
+            continue;
+        }
+        drawn = now;
         if ((rc = render_frame(w, fw, fh))) break;
         if (w->v.shot) {
             w->v.shot = 0;
@@ -489,7 +506,7 @@ int cmd_view(int argc, char **argv)
     fprintf(stderr, "fluidsurf: view: %s on %s (%s); %s\n", simulate ? simulate : input, w.ctx.renderer,
             simulate ? (gpu ? "GPU simulation" : "CPU simulation") : "playing the scene",
             "keys: 1-9 method, space play, N step, S screenshot, +/- scale, O appearance, Esc quit");
-    rc = run(&w, max_frames, script || events);
+    rc = run(&w, max_frames, script || events || max_frames); /* scripted runs never idle */
 done:
     if (rc) cli_error(rc);
     if (w.self) fs_method_at(w.mi)->destroy(w.self);

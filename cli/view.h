@@ -16,6 +16,7 @@ typedef struct fs_view {
     float scale;           /* G-buffer size / window size */
     int playing, step;     /* step: advance one frame while paused */
     int quit;
+    int redraw;            /* counts window exposures: draw again */
     int shot;              /* save a screenshot after the next frame */
     char shot_path[1024];  /* "" : a numbered name in the working folder */
     int drag;              /* VIEW_DRAG_* while a button is held */
