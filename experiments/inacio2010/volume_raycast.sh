@@ -5,9 +5,10 @@
 #     both transfer functions (the G-buffer is the same; the own images differ).
 #  2. Stage times (Tables I/II analogue, rendering side only) on synthetic boxes
 #     of 1024, 2048, 4096, 8192 particles and 46^3 = 97,336: volume generation
-#     layered vs slice vs exact, ray casting (faces + march; with and without the
-#     thickness march) vs `spheres`, at SIZE^2; medians of RUNS timed runs after
-#     a warm-up (fluidsurf compare --repeat). The grid spacing is the same for
+#     layered vs slice vs exact (medians of VRUNS runs, default 5, at 64^2: the
+#     volume does not depend on the image), ray casting with the layered volume
+#     (faces + march; with and without the thickness march) vs `spheres`, at
+#     SIZE^2 (medians of RUNS); each after a warm-up (fluidsurf compare --repeat). The grid spacing is the same for
 #     every count, SPACING_R x r (default 0.5 r, about the dam break's spacing at
 #     256): the paper keeps its volume resolution and kernel fixed while the
 #     particle count grows in the same container, so the cost per particle is
@@ -20,6 +21,7 @@ cd "$(dirname "$0")/../.."
 BIN=${BIN:-./build/fluidsurf}
 SIZE=${SIZE:-512}
 RUNS=${RUNS:-3}
+VRUNS=${VRUNS:-5}
 GRID=${GRID:-256}
 SPACING_R=${SPACING_R:-0.5}
 R=results/inacio2010
@@ -28,26 +30,26 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # One row per particle count from times.csv: the volume stage of the three builds
-# (thickness off runs), the layered/slice ratio, ray casting (faces + march) with
-# and without the thickness march, and spheres (splat; splat + thickness).
+# (from the small-image runs), the slice/layered time ratio, ray casting (faces +
+# march) with and without the thickness march, spheres (splat; splat + thickness),
+# and the frame totals without thickness.
 summarize() {
   awk -F, '!/^#/ && $1 != "particles" {
       n = $1; if (!(n in seen)) { seen[n] = 1; order[++k] = n; res[n] = $2 }
-      key = n SUBSEP $3 SUBSEP $4 SUBSEP $5; t[key] = $6; r = $7; for (i = 8; i <= NF; i++) r = r "," $i }
+      t[n SUBSEP $3 SUBSEP $4 SUBSEP $5] = $6; r = $7; for (i = 8; i <= NF; i++) r = r "," $i }
     function g(n, m, v, st) { return t[n SUBSEP m SUBSEP v SUBSEP st] + 0 }
     END {
       print "# medians (ms) from volume_raycast_times.csv; renderer " r "; grid_res = points along the longest axis"
       print "particles,grid_res,volume_layered,volume_slice,volume_exact,slice_over_layered,raycast_no_thickness,raycast_with_thickness,spheres_splat,spheres_splat_thickness,volume_raycast_total_no_thickness,spheres_total_no_thickness"
       for (i = 1; i <= k; i++) {
-        n = order[i]; v = "build=layered;thickness=off"; w = "build=layered;thickness=on"
-        vl = g(n, "volume_raycast", v, "volume"); vs = g(n, "volume_raycast", "build=slice;thickness=off", "volume")
-        ve = g(n, "volume_raycast", "build=exact;thickness=off", "volume")
-        rc0 = g(n, "volume_raycast", v, "faces") + g(n, "volume_raycast", v, "march")
-        rc1 = g(n, "volume_raycast", w, "faces") + g(n, "volume_raycast", w, "march")
+        n = order[i]; m = "volume_raycast"
+        vl = g(n, m, "build=layered", "volume"); vs = g(n, m, "build=slice", "volume"); ve = g(n, m, "build=exact", "volume")
+        rc0 = g(n, m, "thickness=off", "faces") + g(n, m, "thickness=off", "march")
+        rc1 = g(n, m, "thickness=on", "faces") + g(n, m, "thickness=on", "march")
         sp0 = g(n, "spheres", "thickness=off", "splat")
         sp1 = sp0 + g(n, "spheres", "thickness=on", "thickness")
         printf "%s,%s,%.1f,%.1f,%.1f,%.2f,%.1f,%.1f,%.1f,%.1f,%.1f,%.1f\n", n, res[n], vl, vs, ve, vs / vl, rc0, rc1, sp0, sp1,
-          g(n, "volume_raycast", v, "total"), g(n, "spheres", "thickness=off", "total")
+          g(n, m, "thickness=off", "total"), g(n, "spheres", "thickness=off", "total")
       }
     }' "$1"
 }
@@ -69,7 +71,7 @@ fi
 
 # 2. stage times on synthetic boxes
 csv=$R/volume_raycast_times.csv
-echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres at ${SIZE}x${SIZE} on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); medians of $RUNS runs after a warm-up; stages from fluidsurf compare timings.csv" > "$csv.new"
+echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); volume stage: medians of $VRUNS runs at 64x64 (variants build=...), the rest medians of $RUNS runs at ${SIZE}x${SIZE} (variants thickness=...), each after a warm-up; stages from fluidsurf compare timings.csv; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)" > "$csv.new"
 echo "particles,grid_res,method,variant,stage,ms_median,renderer" >> "$csv.new"
 for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
   IFS=, read -r a b c <<< "$size"
@@ -86,14 +88,21 @@ for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
   "camera": {"width": $SIZE, "height": $SIZE}
 }
 JSON
+  # volume generation alone (its time does not depend on the image): 64x64, VRUNS runs
+  "$BIN" compare "$tmp/box_$n.json" --methods volume_raycast \
+    --set volume_raycast.grid_res="$res" --set volume_raycast.build=layered,slice,exact --set volume_raycast.thickness=off \
+    -W 64 -H 64 --repeat "$VRUNS" -q -o "$tmp/vol_$n"
+  # ray casting (layered volume) against spheres at SIZE^2
   "$BIN" compare "$tmp/box_$n.json" --methods volume_raycast,spheres \
-    --set volume_raycast.grid_res="$res" --set volume_raycast.build=layered,slice,exact \
-    --set volume_raycast.thickness=on,off --set spheres.thickness=on,off \
+    --set volume_raycast.grid_res="$res" --set volume_raycast.thickness=on,off --set spheres.thickness=on,off \
     -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/box_$n"
   # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,renderer
-  awk -F, -v n="$n" -v g="$res" '!/^#/ && $1 != "method" && $1 != "reference" {
-      r = $8; for (i = 9; i <= NF; i++) r = r "," $i;
-      print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/box_$n/timings.csv" >> "$csv.new"
+  for d in vol_$n box_$n; do
+    awk -F, -v n="$n" -v g="$res" -v d="$d" '!/^#/ && $1 != "method" && $1 != "reference" {
+        if (d ~ /^vol/) { if ($3 != "volume") next; sub(/;thickness=off/, "", $2) }
+        r = $8; for (i = 9; i <= NF; i++) r = r "," $i;
+        print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/$d/timings.csv" >> "$csv.new"
+  done
   [ "$n" = 8192 ] && cp "$tmp/box_$n/panel.png" "$R/volume_raycast_box_8192_panel.png"
 done
 mv "$csv.new" "$csv"
