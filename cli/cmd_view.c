@@ -73,7 +73,7 @@ typedef struct viewer {
     int shots, shot_failed;
     int verbose;             /* print each title on stderr */
     unsigned gen;            /* particle sets loaded so far */
-    double frame_ms;
+    double frame_ms, sim_ms; /* whole frame; the simulator's share */
 } viewer;
 
 /* ---- particles: the next frame of the sequence or of the simulator ---- */
@@ -102,7 +102,9 @@ static int next_particles(viewer *w, int advance)
     fs_grid ng = {0};
     int rc;
     if (w->sim) {
+        double t0 = fs_now_ms();
         if (advance && (rc = sim_advance(w))) return rc;
+        w->sim_ms = advance ? fs_now_ms() - t0 : 0;
         rc = fs_sph_get(w->sim, &np);
     } else {
         if (advance && w->first == w->last && !w->scene.synth.shape) return FS_OK; /* one still frame */
@@ -292,14 +294,16 @@ static int screenshot(viewer *w, int fw, int fh)
 static void set_title(viewer *w, int frame, int fw, int fh)
 {
     const fs_method *m = fs_method_at(w->mi);
-    char where[160], title[600];
+    char where[160], title[600], ms[64];
+    if (w->sim) snprintf(ms, sizeof ms, "%.1f ms (simulation %.1f)", w->frame_ms, w->sim_ms);
+    else snprintf(ms, sizeof ms, "%.1f ms", w->frame_ms);
     if (w->sim)
         snprintf(where, sizeof where, "t = %.3f s, %zu particles%s", fs_sph_get_stats(w->sim)->t, fs_sph_count(w->sim),
                  w->v.playing ? "" : ", paused");
     else
         snprintf(where, sizeof where, "frame %d [%d..%d]%s", w->cur, w->first, w->last, w->v.playing ? "" : ", paused");
-    snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %.1f ms | %s | scale %.2f (%dx%d) | %s | #%d", m->name,
-             w->v.own && m->writes_own ? "own" : "shared", w->frame_ms, w->ctx.renderer, w->v.scale,
+    snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %s | %s | scale %.2f (%dx%d) | %s | #%d", m->name,
+             w->v.own && m->writes_own ? "own" : "shared", ms, w->ctx.renderer, w->v.scale,
              (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame);
     glfwSetWindowTitle(w->ctx.handle, title);
     if (w->verbose) fprintf(stderr, "%s\n", title);
