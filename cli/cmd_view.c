@@ -107,7 +107,7 @@ static int next_particles(viewer *w, int advance)
         w->sim_ms = advance ? fs_now_ms() - t0 : 0;
         rc = fs_sph_get(w->sim, &np);
     } else {
-        if (advance && w->first == w->last && !w->scene.synth.shape) return FS_OK; /* one still frame */
+        if (advance && w->first == w->last) return FS_OK; /* one still frame */
         if (advance) w->cur = w->cur < w->last ? w->cur + 1 : w->first;
         rc = fs_scene_load_frame(&w->scene, w->cur, &np);
     }
@@ -349,6 +349,7 @@ static int run(viewer *w, int max_frames, int scripted)
         view_script_apply(&w->script, &w->v, frame);
         if (w->v.quit || glfwWindowShouldClose(win) || (max_frames && frame >= max_frames)) break;
         double t0 = fs_now_ms();
+        w->sim_ms = 0;
         if (frame > 0 && (w->v.playing || w->v.step)) {
             w->v.step = 0;
             if ((rc = next_particles(w, 1))) break;
