@@ -248,10 +248,20 @@ int fs_sph_measure_state(fs_sph *s, fs_sph_measure *m)
         int c = COLUMN(i);
         if (s->y[i] > top[c]) top[c] = s->y[i];
     }
-    double depth = 0;
-    for (int c = 0; c < cx * cz; c++)
-        if (top[c] > -INFINITY) depth += top[c] + s->prm.r - s->box_lo[1];
-    m->depth = depth / ((double)cx * cz);
+    /* Depth: where the horizontally averaged particle count, in layers of 2r
+     * from the floor, falls to half a full rest-lattice layer (cx * cz).
+     * On the rest lattice this is the top centres + r. The mean of per-column
+     * top particles instead reads a disordered surface up to 6% low: a 2r
+     * column misses the top layer about a third of the time. */
+    int nl = (int)ceilf((s->box_hi[1] - s->box_lo[1]) / dx) + 1;
+    double *layer = calloc((size_t)nl + 1, sizeof *layer);
+    if (!layer) { free(top); return fs_fail(FS_ERR_RUNTIME, "sph: out of memory"); }
+    for (size_t i = o; i < o + nf; i++) layer[fs_grid_clampi((int)((s->y[i] - s->box_lo[1]) / dx), nl - 1)] += 1.0 / ((double)cx * cz);
+    int k = nl - 1;
+    while (k > 0 && layer[k] < 0.5) k--;
+    double fk = layer[k], f1 = layer[k + 1];
+    m->depth = fk < 0.5 ? NAN : (k + 0.5) * dx + dx * (fk - 0.5) / (fk - f1); /* NAN: no full layer yet */
+    free(layer);
     m->depth_expected = (double)nf * dx * dx * dx / ((double)(s->box_hi[0] - s->box_lo[0]) * (s->box_hi[2] - s->box_lo[2]));
     fs_particles view = {0};
     view.n = nb + nf;

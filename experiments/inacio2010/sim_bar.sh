@@ -6,7 +6,7 @@
 # Writes results/inacio2010/sim_bar.csv and the per-frame records
 # sim_bar_<path>_frames.csv. On OSMesa the GPU path runs on the CPU cores too
 # (llvmpipe): the renderer is in every row.
-# Usage: experiments/inacio2010/sim_bar.sh [BIN]   (FRAMES, PARTICLES override)
+# Usage: experiments/inacio2010/sim_bar.sh [BIN]   (FRAMES, PARTICLES, PARALLEL=1 override)
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 BIN=${1:-build/fluidsurf}
@@ -18,12 +18,23 @@ csv=$OUT/sim_bar.csv
 tmp=$(mktemp)
 echo "# fluidsurf simulate dam_break --particles $PARTICLES --eos tait --frames $FRAMES; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)" > "$tmp"
 echo "path,renderer,particles,boundary,frames,t_end,steps,wall_s,ms_per_step,steps_per_s,exit,nonfinite,outside_max,clamps,violations,dt_min,dt_max,density_err,density_abs_err,depth,depth_expected,depth_rel_err,kinetic,pass" >> "$tmp"
+# PARALLEL=1 runs the two paths at the same time (each then shares the cores).
+sim() { # PATH
+  local start=$(date +%s.%N)
+  "$BIN" simulate dam_break --particles "$PARTICLES" --eos tait --frames "$FRAMES" --$1 -q \
+    --stats "$OUT/sim_bar_$1_frames.csv"
+  echo $? "$(echo "$(date +%s.%N) - $start" | bc -l)" > "$tmp.$1"
+}
+if [ "${PARALLEL:-0}" = 1 ]; then
+  sed -i '1s/$/; cpu and gpu paths ran concurrently/' "$tmp"
+  sim cpu & sim gpu & wait
+else
+  sim cpu; sim gpu
+fi
 for path in cpu gpu; do
   frames=$OUT/sim_bar_${path}_frames.csv
-  start=$(date +%s.%N)
-  "$BIN" simulate dam_break --particles "$PARTICLES" --eos tait --frames "$FRAMES" --$path -q --stats "$frames"
-  rc=$?
-  wall=$(echo "$(date +%s.%N) - $start" | bc -l)
+  read rc wall < "$tmp.$path"
+  rm -f "$tmp.$path"
   awk -F, -v path=$path -v rc=$rc -v wall=$wall -v frames=$FRAMES '
     /^# / { if (match($0, /renderer [^;]*/)) renderer = substr($0, RSTART + 9, RLENGTH - 9);
             if (match($0, /\+ [0-9]+ boundary/)) nb = substr($0, RSTART + 2, RLENGTH - 11); next }
