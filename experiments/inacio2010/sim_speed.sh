@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Simulation speed, CPU path against GPU path (inacio2010 Tables I/II "Fluid
+# Simulation" column): dam break with Tait at several particle counts, FRAMES
+# frames of 1/60 s each, paths run one after the other. Reports ms per step and
+# steps per second (step time only: no output, the per-frame measure excluded)
+# with the renderer. On OSMesa the GPU path runs on llvmpipe, i.e. on the same
+# CPU cores: this compares two implementations, not a CPU with a GPU.
+# Writes results/inacio2010/sim_speed.csv.
+# Usage: experiments/inacio2010/sim_speed.sh [BIN]   (COUNTS, FRAMES override)
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+BIN=${1:-build/fluidsurf}
+COUNTS=${COUNTS:-"1024 2048 4096 8192 32768"}
+FRAMES=${FRAMES:-10}
+OUT=results/inacio2010
+mkdir -p "$OUT"
+T=$(mktemp -d)
+tmp=$T/speed.csv
+echo "# fluidsurf simulate dam_break --eos tait --frames $FRAMES; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)" > "$tmp"
+echo "particles_requested,particles,boundary,path,renderer,threads,steps,step_ms_total,ms_per_step,steps_per_s,sim_s_per_wall_s" >> "$tmp"
+for n in $COUNTS; do
+  for path in cpu gpu; do
+    "$BIN" simulate dam_break --particles "$n" --frames "$FRAMES" --$path -q --stats "$T/s.csv" || continue
+    awk -F, -v req=$n -v path=$path '
+      /^# / { if (match($0, /renderer [^;]*/)) renderer = substr($0, RSTART + 9, RLENGTH - 9);
+              if (match($0, /threads [0-9]+/)) th = substr($0, RSTART + 8, RLENGTH - 8);
+              if (match($0, / [0-9]+ fluid \+ [0-9]+ boundary/)) { split(substr($0, RSTART + 1, RLENGTH - 1), w, " "); n = w[1]; nb = w[4] } next }
+      $1 == "frame" || $1 == 0 { next }
+      { steps += $4; ms += $17; t = $2 }
+      END { printf "%s,%s,%s,%s,\"%s\",%s,%d,%.1f,%.3f,%.1f,%.4f\n", req, n, nb, path, renderer, th, steps, ms, ms / steps,
+            1000 * steps / ms, t / (ms / 1000) }' "$T/s.csv" >> "$tmp"
+  done
+done
+mv "$tmp" "$OUT/sim_speed.csv"
+rm -rf "$T"
+column -s, -t < "$OUT/sim_speed.csv"
