@@ -171,6 +171,7 @@ int cmd_simulate(int argc, char **argv)
                     st->t, fs_sph_count(s), st->steps - steps0, st->dt_min, st->dt_max, st->bound_min,
                     st->violations, st->v_max, st->clamps, m.outside, m.density_err, m.density_abs_err, m.depth,
                     m.depth_expected, m.kinetic, st->step_ms - step_ms0, frame_ms);
+            fflush(csv); /* long runs can be watched (in the hidden temporary file) */
         }
         steps0 = st->steps;
         step_ms0 = st->step_ms;
