@@ -32,6 +32,7 @@ one_line_exit2() { # command...: exit 2, exactly one "fluidsurf: " line on stder
 cat > script.txt << 'S'
 # frame N action
 frame 1 screenshot a.png
+frame 0 key s                      # numbered name in the working folder
 frame 2 drag 80 60 120 70          # orbit
 frame 3 screenshot b.png
 frame 4 key 2                      # reference
@@ -47,6 +48,8 @@ S
 "$BIN" view "$scene" -W 160 -H 120 -v --script script.txt 2> scene.err || fail "scene run: $(cat scene.err)"
 for f in a b c d e; do shot_ok $f.png || fail "$f.png: missing, not 160x120, uniform or without water"; done
 grep -q '^fluidsurf: screenshot a.png (160x120)' scene.err || fail "the screenshot is not named on stderr"
+grep -q '^fluidsurf: screenshot fluidsurf_view_001.png (160x120)' scene.err && cmp -s a.png fluidsurf_view_001.png ||
+  fail "key S: no numbered screenshot equal to the scripted one of the next (same) frame"
 grep -q '^fluidsurf view | spheres (shared) | [0-9.]* ms | .* | scale 1.00 (160x120) | frame 0 ' scene.err ||
   fail "title bar: $(grep -m1 '^fluidsurf view' scene.err)"
 grep -q '^fluidsurf view | surfels (own) | .* | scale 0.80 (128x96) | ' scene.err || fail "title bar after keys 5, o and minus"
