@@ -254,7 +254,7 @@ static int render_frame(viewer *w, int fw, int fh)
     fs_gbuffer_clear(&w->g);
     fs_stages st = {0};
     if (w->p.n && (rc = m->render(w->self, &cam, &w->g, &st))) return rc;
-    if (w->p.n) floor_y = fs_scene_floor(&w->scene, &w->p);
+    if (w->p.n && !w->sim) floor_y = fs_scene_floor(&w->scene, &w->p); /* the simulator's: the box floor */
     if (w->v.own && m->writes_own && w->p.n) memcpy(w->rgba, w->g.own, (size_t)gw * gh * 4 * sizeof(float));
     else fs_shade(&w->scene, &cam, &w->g, floor_y, w->rgba);
     present(w, gw, gh, fw, fh);
