@@ -34,7 +34,7 @@ static int load_dam(fs_particles *p, fs_scene *s, fs_field *f)
 }
 
 /* Layered grid (read back) vs the exact CPU grid of the same shape. */
-static double layered_vs_exact(const fs_particles *p, const fs_field *f, int res, double *ms)
+static double layered_vs_exact(const fs_particles *p, const fs_field *f, int res, double *ms, size_t *points)
 {
     fs_density_grid a, b;
     double err = INFINITY;
@@ -56,6 +56,7 @@ static double layered_vs_exact(const fs_particles *p, const fs_field *f, int res
         CHECK(fs_density_texture_read(tex, &a) == FS_OK, "read back: %s", fs_error_message());
         CHECK(fs_density_grid_exact(&b, p, &ng, f) == FS_OK, "exact: %s", fs_error_message());
         err = fs_density_grid_rel_l2(&a, &b);
+        *points = fs_layered_splat_points(ls);
         printf("  %zu particles, %dx%dx%d grid, %zu points drawn (%.0f ms): rel L2 %.3g\n", p->n, a.dim[0], a.dim[1],
                a.dim[2], fs_layered_splat_points(ls), *ms, err);
     }
@@ -74,26 +75,28 @@ static void layered_grid(void)
     fs_field f;
     if (load_dam(&p, &s, &f)) return;
     double ms;
+    size_t pts = 0;
     printf("(a) layered vs exact grid\n");
-    double e = layered_vs_exact(&p, &f, 128, &ms);
+    double e = layered_vs_exact(&p, &f, 128, &ms, &pts);
     CHECK(e < 1e-5, "dam break, cubic: rel L2 %g", e);
     f.kernel = FS_KERNEL_POLY6; /* the paper's kernel */
-    e = layered_vs_exact(&p, &f, 96, &ms);
+    e = layered_vs_exact(&p, &f, 96, &ms, &pts);
     CHECK(e < 1e-5, "dam break, poly6: rel L2 %g", e);
     fs_particles_free(&p);
-    /* three particles on a fine grid: each reaches ~300 layers, more than one
+    /* three particles on a fine grid: each reaches ~260 layers, more than one
      * draw covers, so the draw repeats with a layer offset */
     fs_particles q;
     CHECK(fs_particles_alloc(&q, 3, 0) == FS_OK, "alloc");
     for (int i = 0; i < 3; i++) {
-        q.x[i] = 0.01f * i;
-        q.y[i] = 0.02f * (i == 1);
-        q.z[i] = -0.01f * i;
+        q.x[i] = 0.001f * i;
+        q.y[i] = 0.002f * (i == 1);
+        q.z[i] = -0.001f * i;
     }
     fs_particles_bounds(&q);
     f.kernel = FS_KERNEL_CUBIC;
-    e = layered_vs_exact(&q, &f, 300, &ms);
+    e = layered_vs_exact(&q, &f, 262, &ms, &pts);
     CHECK(e < 1e-5, "fine grid: rel L2 %g", e);
+    CHECK(pts == 2 * q.n, "fine grid: %zu points drawn, want two draws of %zu", pts, q.n);
     fs_particles_free(&q);
 }
 
