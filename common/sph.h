@@ -1,7 +1,9 @@
 /* SPH fluid simulator after Mueller et al. 2003, as inacio2010 section III uses
  * it: poly6 density, spiky pressure gradient, viscosity-kernel Laplacian,
  * gravity; ideal-gas (the paper) or Tait equation of state. Solid walls are
- * two layers of static boundary particles (Akinci et al. 2012). Neighbours come
+ * two layers of static boundary particles: mass in the density (Akinci et al.
+ * 2012), extrapolated wall pressure (Adami et al. 2012), Lennard-Jones repulsion
+ * inside the rest spacing (Monaghan 1994); see sph_cpu.c. Neighbours come
  * from the common counting-sort grid (grid.h), rebuilt every step. Two paths
  * run the same algorithm: C + OpenMP (sph_cpu.c) and GL compute shaders on the
  * current context (sph_gpu.c, shaders/sph/). Units: metres, seconds, kg; up +y.
