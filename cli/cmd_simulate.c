@@ -150,6 +150,7 @@ int cmd_simulate(int argc, char **argv)
     double t_start = fs_now_ms();
     long steps0 = 0;
     double step_ms0 = 0;
+    int warned = 0;
     for (int f = 0; f <= o.frames && !rc; f++) {
         double t0 = fs_now_ms();
         if (f > 0) rc = fs_sph_advance(s, 1.0 / o.fps);
@@ -173,11 +174,16 @@ int cmd_simulate(int argc, char **argv)
                     m.depth_expected, m.kinetic, st->step_ms - step_ms0, frame_ms);
             fflush(csv); /* long runs can be watched (in the hidden temporary file) */
         }
+        if (!o.quiet && st->violations && !warned) { /* the fixed step broke the bound: say so once */
+            fprintf(stderr, "note: fixed step %g s exceeds the CFL/viscosity bound (down to %.3g s) from frame %d on\n",
+                    P->fixed_dt, st->bound_min, f);
+            warned = 1;
+        }
         steps0 = st->steps;
         step_ms0 = st->step_ms;
         if (!o.quiet && (f == o.frames || f % 10 == 0 || rc))
-            fprintf(stderr, "frame %d/%d  t = %.3f s  %ld steps  v_max %.2f m/s  clamps %ld  %.1f s\n", f, o.frames,
-                    st->t, st->steps, st->v_max, st->clamps, (fs_now_ms() - t_start) / 1000);
+            fprintf(stderr, "frame %d/%d  t = %.3f s  %ld steps (%ld beyond the bound)  v_max %.2f m/s  clamps %ld  %.1f s\n",
+                    f, o.frames, st->t, st->steps, st->violations, st->v_max, st->clamps, (fs_now_ms() - t_start) / 1000);
     }
     if (csv) {
         int bad = fclose(csv) != 0;
