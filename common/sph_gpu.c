@@ -18,7 +18,7 @@ enum { B_POS, B_VEL, B_CELL, B_COUNT, B_START, B_BLOCK, B_SIDX, B_SPOS, B_SVEL, 
 
 typedef struct fs_sph_gpu {
     unsigned prog[P_N], buf[B_N];
-    float origin[3];
+    float origin[3], origin0[3], box0[3]; /* the grid follows the box (fs_sph_move_box) */
     int dim[3];
     unsigned ncells, nblocks;
 } fs_sph_gpu;
@@ -99,6 +99,8 @@ int fs_sph_gpu_init(fs_sph *s)
         G->dim[a] = (int)(floor(((double)hi[a] - G->origin[a]) / s->H) + 2);
         cells *= G->dim[a];
     }
+    memcpy(G->origin0, G->origin, sizeof G->origin);
+    memcpy(G->box0, s->box_lo, sizeof G->box0);
     G->ncells = (unsigned)cells;
     G->nblocks = (G->ncells + SPH_BLOCK - 1) / SPH_BLOCK;
     glCreateBuffers(B_N, G->buf);
@@ -133,6 +135,7 @@ int fs_sph_gpu_step(fs_sph *s, float dt)
 {
     fs_sph_gpu *G = s->gpu;
     unsigned n = (unsigned)(s->nb + s->nf);
+    for (int a = 0; a < 3; a++) G->origin[a] = G->origin0[a] + (s->box_lo[a] - G->box0[a]);
     for (int b = 0; b < B_N; b++) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, (GLuint)b, G->buf[b]);
     unsigned zero = 0;
     glClearNamedBufferData(G->buf[B_COUNT], GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
