@@ -1,0 +1,204 @@
+/* inacio_tables: the per-frame stage times of inacio2010's Tables I and II on the
+ * SPH dam break, simulator and renderers in one GL context (as in the paper's
+ * prototype and in `fluidsurf view --simulate`).
+ *
+ *   inacio_tables PARTICLES cpu|gpu [SETTLE [FRAMES [SIZE [GRID [LIMIT_S]]]]]
+ *
+ * Creates the dam break with about PARTICLES fluid particles (Tait, r = 0.025,
+ * the simulator's defaults) on the CPU path (C + OpenMP) or the GPU path
+ * (compute shaders on the context), advances SETTLE frames of 1/60 s untimed
+ * (default 6; the first is timed against LIMIT_S, default 60 s: a cell whose first
+ * frame takes longer prints one "skipped" row and stops), renders one untimed
+ * warm-up image with each method (shader compilation), then FRAMES timed frames
+ * (default 3). Per timed frame:
+ *   simulation  fs_sph_advance(1/60 s) (adaptive steps; glFinish on the GPU path)
+ *   fetch       fs_sph_get: the state into host arrays (GPU path: a read-back)
+ *   Table I, volume_raycast (build=layered, grid_res GRID (default 128),
+ *            thickness=off: rays stop at the surface): volume, faces, march,
+ *            readback (G-buffer to the host), shade (the shared shading, C)
+ *   Table II, spheres (thickness=off: opaque spheres): upload (particles into
+ *            the GL buffers), splat, readback, shade
+ * SIZE x SIZE pixels (default 512); the camera frames the container.
+ * Prints CSV rows without a header:
+ *   particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms
+ * table is "sim" (simulation, fetch), "I" or "II". With INACIO_TABLES_PNG=PREFIX
+ * in the environment, the last frame's shaded images are written to
+ * PREFIX_volume_raycast.png and PREFIX_spheres.png (to check what was timed). */
+#include "fs_error.h"
+#include "gl.h"
+#include "gl_context.h"
+#include "image_io.h"
+#include "method.h"
+#include "method_params.h"
+#include "scene.h"
+#include "shading.h"
+#include "sph.h"
+#include "timing.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct renderer {
+    const fs_method *m;
+    void *self;
+    double params[FS_MAX_PARAMS];
+    fs_gbuffer g;
+} renderer;
+
+static const char *row_head; /* the leading columns, filled once */
+static char head[1024];
+
+static void row(int frame, double t, long steps, const char *table, const char *stage, double ms)
+{
+    printf("%s,%d,%.4f,%ld,%s,%s,%.3f\n", row_head, frame, t, steps, table, stage, ms);
+}
+
+static int die(const char *what)
+{
+    fprintf(stderr, "inacio_tables: %s: %s\n", what, fs_error_message());
+    return 1;
+}
+
+/* Renders p with r (upload, render, shade), adding the stages to st (NULL: untimed). */
+static int render_with(renderer *r, fs_sph *sim, const fs_scene *sc, const fs_camera *cam, const fs_particles *p,
+                       float *rgba, fs_stages *st, int time_upload)
+{
+    fs_stages dummy = {0};
+    if (!st) st = &dummy;
+    glFinish();
+    double t0 = fs_now_ms();
+    int rc = r->m->upload(r->self, p, NULL);
+    glFinish();
+    if (rc) return rc;
+    if (time_upload) fs_stages_add(st, "upload", fs_now_ms() - t0);
+    fs_gbuffer_clear(&r->g);
+    if ((rc = r->m->render(r->self, cam, &r->g, st))) return rc;
+    float lo[3], hi[3];
+    fs_sph_box(sim, lo, hi);
+    t0 = fs_now_ms();
+    fs_shade(sc, cam, &r->g, lo[sc->up_axis], rgba);
+    fs_stages_add(st, "shade", fs_now_ms() - t0);
+    return FS_OK;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || (strcmp(argv[2], "cpu") && strcmp(argv[2], "gpu"))) {
+        fprintf(stderr, "usage: inacio_tables PARTICLES cpu|gpu [SETTLE [FRAMES [SIZE [GRID [LIMIT_S]]]]]\n");
+        return 2;
+    }
+    long want = atol(argv[1]);
+    int gpu = !strcmp(argv[2], "gpu");
+    int settle = argc > 3 ? atoi(argv[3]) : 6, frames = argc > 4 ? atoi(argv[4]) : 3;
+    int size = argc > 5 ? atoi(argv[5]) : 512, grid = argc > 6 ? atoi(argv[6]) : 128;
+    double limit_s = argc > 7 ? atof(argv[7]) : 60;
+    if (want < 64 || settle < 1 || frames < 1 || size < 8 || grid < 8) {
+        fprintf(stderr, "inacio_tables: bad arguments\n");
+        return 2;
+    }
+    const double dt = 1.0 / 60;
+
+    fs_gl_context ctx;
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
+    fs_sph_params prm;
+    fs_sph_params_default(&prm);
+    fs_sph *sim = NULL;
+    if (fs_sph_create(&sim, "dam_break", (size_t)want, &prm, gpu)) return die("simulator");
+    snprintf(head, sizeof head, "%ld,%zu,%zu,%s,\"%s\",\"%s\"", want, fs_sph_count(sim), fs_sph_boundary_count(sim),
+             gpu ? "gpu" : "cpu", gpu ? ctx.renderer : "CPU (C + OpenMP)", ctx.renderer);
+    row_head = head;
+
+    /* the scene: fluidsurf's defaults (shared shading), r of the simulator, the container framed */
+    static fs_scene sc;
+    fs_scene_defaults(&sc);
+    sc.radius = prm.r;
+    char set[160];
+    snprintf(set, sizeof set, "volume_raycast.grid_res=%d", grid);
+    if (fs_scene_add_set(&sc, set) || fs_scene_add_set(&sc, "volume_raycast.build=layered") ||
+        fs_scene_add_set(&sc, "volume_raycast.thickness=off") || fs_scene_add_set(&sc, "spheres.thickness=off"))
+        return die("scene");
+    float lo[3], hi[3];
+    fs_sph_box(sim, lo, hi);
+    sc.camera.width = size;
+    sc.camera.height = size;
+    fs_scene_finish_camera(&sc, lo, hi);
+    fs_camera cam = sc.camera;
+
+    renderer rr[2];
+    memset(rr, 0, sizeof rr);
+    rr[0].m = fs_method_find("volume_raycast");
+    rr[1].m = fs_method_find("spheres");
+    const char *table[2] = {"I", "II"};
+    fs_method_setup setup[2];
+    for (int k = 0; k < 2; k++) {
+        if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %d not registered\n", k); return 1; }
+        if (fs_method_params_resolve(rr[k].m, &sc, rr[k].params)) return die("parameters");
+        setup[k] = (fs_method_setup){fs_scene_field(&sc), rr[k].params, &sc};
+        if (!(rr[k].self = rr[k].m->create(&setup[k]))) return die(rr[k].m->name);
+        if (fs_gbuffer_alloc(&rr[k].g, size, size, 0)) return die("G-buffer");
+    }
+    float *rgba = malloc((size_t)size * size * 4 * sizeof(float));
+    if (!rgba) { fprintf(stderr, "inacio_tables: out of memory\n"); return 1; }
+
+    /* settle: untimed frames; the first checked against the limit */
+    for (int f = 1; f <= settle; f++) {
+        double t0 = fs_now_ms();
+        if (fs_sph_advance(sim, dt)) return die("advance");
+        if (gpu) glFinish();
+        double ms = fs_now_ms() - t0;
+        fprintf(stderr, "inacio_tables: %ld %s: settle frame %d/%d: %.0f ms\n", want, argv[2], f, settle, ms);
+        if (f == 1 && ms > limit_s * 1000) {
+            row(f, fs_sph_get_stats(sim)->t, fs_sph_get_stats(sim)->steps, "sim", "skipped_first_frame_over_limit", ms);
+            return 0;
+        }
+    }
+    fs_particles p = {0};
+    if (fs_sph_get(sim, &p)) return die("get");
+    for (int k = 0; k < 2; k++) /* warm-up: shader compilation, first allocations */
+        if (render_with(&rr[k], sim, &sc, &cam, &p, rgba, NULL, 0)) return die(rr[k].m->name);
+    fflush(stdout);
+
+    for (int f = settle + 1; f <= settle + frames; f++) {
+        const fs_sph_stats *s0 = fs_sph_get_stats(sim);
+        long steps0 = s0->steps;
+        glFinish();
+        double t0 = fs_now_ms();
+        if (fs_sph_advance(sim, dt)) return die("advance");
+        if (gpu) glFinish();
+        double sim_ms = fs_now_ms() - t0;
+        const fs_sph_stats *s1 = fs_sph_get_stats(sim);
+        double t = s1->t;
+        long steps = s1->steps - steps0;
+        row(f, t, steps, "sim", "simulation", sim_ms);
+        /* the methods hold p until the next upload: the new set replaces it after both uploads */
+        fs_particles np = {0};
+        t0 = fs_now_ms();
+        if (fs_sph_get(sim, &np)) return die("get");
+        row(f, t, steps, "sim", "fetch", fs_now_ms() - t0);
+        for (int k = 0; k < 2; k++) {
+            fs_stages st = {0};
+            if (render_with(&rr[k], sim, &sc, &cam, &np, rgba, &st, k == 1)) return die(rr[k].m->name);
+            for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i]);
+            const char *prefix = getenv("INACIO_TABLES_PNG");
+            if (prefix && f == settle + frames) {
+                char path[1200];
+                snprintf(path, sizeof path, "%s_%s.png", prefix, rr[k].m->name);
+                const char *ch[4] = {"R", "G", "B", "A"};
+                fs_image im = {size, size, 4, ch, rgba};
+                if (fs_write_png(path, &im)) return die(path);
+            }
+        }
+        fs_particles_free(&p);
+        p = np;
+        fflush(stdout);
+    }
+    for (int k = 0; k < 2; k++) {
+        rr[k].m->destroy(rr[k].self);
+        fs_gbuffer_free(&rr[k].g);
+    }
+    fs_particles_free(&p);
+    free(rgba);
+    fs_sph_destroy(sim);
+    fs_gl_context_destroy(&ctx);
+    return 0;
+}
