@@ -17,6 +17,8 @@
 #   Table II (spheres, opaque, no thickness pass): rendering = particle upload +
 #     "splat" + "readback" + shading
 #   total = the sum of the stage medians (so the percentages add up to 100)
+#   volume_slice_ms (Table I rows): the volume stage with build=slice instead
+#     (iwasaki2006's multi-pass slice splatting + upload), same grid, same frames
 # Every row names the renderer: on OSMesa the GPU path and every GL stage run on
 # llvmpipe, i.e. on the same CPU cores as the C simulation.
 # Writes results/inacio2010/tables.csv and tables_frames.csv (every frame, every
@@ -82,23 +84,23 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
   END {
     print "# " prov
     print "# ms, medians over the timed frames; total = the sum of the stage medians; rendering: Table I readback + shading, Table II particle upload + splat + readback + shading"
-    print "table,particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frames,t_first,t_last,steps_per_frame,simulation_ms,fetch_ms,volume_ms,raycast_ms,rendering_ms,total_ms,simulation_pct,fetch_pct,volume_pct,raycast_pct,rendering_pct,note"
+    print "table,particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frames,t_first,t_last,steps_per_frame,simulation_ms,fetch_ms,volume_ms,raycast_ms,rendering_ms,total_ms,simulation_pct,fetch_pct,volume_pct,raycast_pct,rendering_pct,volume_slice_ms,note"
     for (tb = 1; tb <= 2; tb++) for (i = 1; i <= k; i++) {
       cell = order[i]; split(cell, c, SUBSEP); T = tb == 1 ? "I" : "II"
-      if (!(cell in nfr)) { line = sprintf("%s,%s,%s,%s,%s,%s,%s,0,,,,,,,,,,,,,,,%s", T, c[1], NP[cell], NB[cell], c[2], SR[cell], GR[cell], note[cell])
+      if (!(cell in nfr)) { line = sprintf("%s,%s,%s,%s,%s,%s,%s,0,,,,,,,,,,,,,,,,%s", T, c[1], NP[cell], NB[cell], c[2], SR[cell], GR[cell], note[cell])
                             gsub(/\001/, ",", line); print line; continue }
-      nf = split(FR[cell], F, " "); S = ""; FE = ""; V = ""; RC = ""; RE = ""
+      nf = split(FR[cell], F, " "); S = ""; FE = ""; V = ""; RC = ""; RE = ""; VS = ""
       for (j = 1; j <= nf; j++) { f = F[j]
         S = S " " x[cell, f, "sim", "simulation"]; FE = FE " " x[cell, f, "sim", "fetch"]
-        if (tb == 1) { V = V " " x[cell, f, "I", "volume"]; RC = RC " " (x[cell, f, "I", "faces"] + x[cell, f, "I", "march"])
+        if (tb == 1) { V = V " " x[cell, f, "I", "volume"]; VS = VS " " x[cell, f, "I_slice", "volume"]; RC = RC " " (x[cell, f, "I", "faces"] + x[cell, f, "I", "march"])
                        RE = RE " " (x[cell, f, "I", "readback"] + x[cell, f, "I", "shade"]) }
         else RE = RE " " (x[cell, f, "II", "upload"] + x[cell, f, "II", "splat"] + x[cell, f, "II", "readback"] + x[cell, f, "II", "shade"]) }
       s = median(S); fe = median(FE); v = median(V); rc = median(RC); re = median(RE); tot = s + fe + v + rc + re
-      line = sprintf("%s,%s,%s,%s,%s,%s,%s,%d,%s,%s,%s,%.1f,%.2f,%s,%s,%.1f,%.1f,%.1f,%.2f,%s,%s,%.1f,%s", T, c[1], NP[cell], NB[cell], c[2],
+      line = sprintf("%s,%s,%s,%s,%s,%s,%s,%d,%s,%s,%s,%.1f,%.2f,%s,%s,%.1f,%.1f,%.1f,%.2f,%s,%s,%.1f,%s,%s", T, c[1], NP[cell], NB[cell], c[2],
         SR[cell], GR[cell], nfr[cell], t1[cell], t2[cell], median(STEPS[cell]), s, fe,
         tb == 1 ? sprintf("%.1f", v) : "", tb == 1 ? sprintf("%.1f", rc) : "", re, tot,
         100 * s / tot, 100 * fe / tot, tb == 1 ? sprintf("%.1f", 100 * v / tot) : "", tb == 1 ? sprintf("%.1f", 100 * rc / tot) : "",
-        100 * re / tot, (cell in note) ? note[cell] : "")
+        100 * re / tot, tb == 1 ? sprintf("%.1f", median(VS)) : "", (cell in note) ? note[cell] : "")
       gsub(/\001/, ",", line); print line }
   }' "$frames" > "$OUT/tables.csv"
 
@@ -106,8 +108,8 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
 awk -F, '/^#/ || $1 == "table" { next }
   { line = $0; gsub(/"[^"]*"/, "R", line); split(line, a, ",")
     if (a[1] != last) { last = a[1]; print ""
-      if (a[1] == "I") { print "| particles (fluid) | path | simulation | fetch | volume | ray casting | rendering | total |"; print "|---|---|---|---|---|---|---|---|" }
+      if (a[1] == "I") { print "| particles (fluid) | path | simulation | fetch | volume | ray casting | rendering | total | volume, slice build |"; print "|---|---|---|---|---|---|---|---|---|" }
       else { print "| particles (fluid) | path | simulation | fetch | rendering (spheres) | total |"; print "|---|---|---|---|---|---|" } }
-    if (a[8] == 0) { printf "| %s | %s | %s |\n", a[3] != "" ? a[3] : a[2], a[5], a[23]; next }
-    if (a[1] == "I") printf "| %s | %s | %s (%s%%) | %s | %s (%s%%) | %s (%s%%) | %s (%s%%) | %s |\n", a[3], a[5], a[12], a[18], a[13], a[14], a[20], a[15], a[21], a[16], a[22], a[17]
+    if (a[8] == 0) { printf "| %s | %s | %s |\n", a[3] != "" ? a[3] : a[2], a[5], a[24]; next }
+    if (a[1] == "I") printf "| %s | %s | %s (%s%%) | %s | %s (%s%%) | %s (%s%%) | %s (%s%%) | %s | %s |\n", a[3], a[5], a[12], a[18], a[13], a[14], a[20], a[15], a[21], a[16], a[22], a[17], a[23]
     else printf "| %s | %s | %s (%s%%) | %s | %s (%s%%) | %s |\n", a[3], a[5], a[12], a[18], a[13], a[16], a[22], a[17] }' "$OUT/tables.csv"

@@ -18,6 +18,9 @@
  *            readback (G-buffer to the host), shade (the shared shading, C)
  *   Table II, spheres (thickness=off: opaque spheres): upload (particles into
  *            the GL buffers), splat, readback, shade
+ *   I_slice, volume_raycast with build=slice (iwasaki2006's multi-pass slice
+ *            splatting, then the upload into the 3D texture), for its volume stage
+ *            (the other stages as Table I)
  * SIZE x SIZE pixels (default 512); the camera frames the container.
  * Prints CSV rows without a header:
  *   particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms
@@ -124,15 +127,18 @@ int main(int argc, char **argv)
     fs_scene_finish_camera(&sc, lo, hi);
     fs_camera cam = sc.camera;
 
-    renderer rr[2];
+    enum { NR = 3 };
+    renderer rr[NR];
     memset(rr, 0, sizeof rr);
     rr[0].m = fs_method_find("volume_raycast");
     rr[1].m = fs_method_find("spheres");
-    const char *table[2] = {"I", "II"};
-    fs_method_setup setup[2];
-    for (int k = 0; k < 2; k++) {
+    rr[2].m = rr[0].m; /* build=slice, for its volume stage */
+    const char *table[NR] = {"I", "II", "I_slice"};
+    fs_method_setup setup[NR];
+    for (int k = 0; k < NR; k++) {
         if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %d not registered\n", k); return 1; }
         if (fs_method_params_resolve(rr[k].m, &sc, rr[k].params)) return die("parameters");
+        if (k == 2) rr[k].params[fs_method_param_index(rr[k].m, "build")] = 1; /* layered|slice|exact */
         setup[k] = (fs_method_setup){fs_scene_field(&sc), rr[k].params, &sc};
         if (!(rr[k].self = rr[k].m->create(&setup[k]))) return die(rr[k].m->name);
         if (fs_gbuffer_alloc(&rr[k].g, size, size, 0)) return die("G-buffer");
@@ -154,7 +160,7 @@ int main(int argc, char **argv)
     }
     fs_particles p = {0};
     if (fs_sph_get(sim, &p)) return die("get");
-    for (int k = 0; k < 2; k++) /* warm-up: shader compilation, first allocations */
+    for (int k = 0; k < NR; k++) /* warm-up: shader compilation, first allocations */
         if (render_with(&rr[k], sim, &sc, &cam, &p, rgba, NULL, 0)) return die(rr[k].m->name);
     fflush(stdout);
 
@@ -175,12 +181,12 @@ int main(int argc, char **argv)
         t0 = fs_now_ms();
         if (fs_sph_get(sim, &np)) return die("get");
         row(f, t, steps, "sim", "fetch", fs_now_ms() - t0);
-        for (int k = 0; k < 2; k++) {
+        for (int k = 0; k < NR; k++) {
             fs_stages st = {0};
             if (render_with(&rr[k], sim, &sc, &cam, &np, rgba, &st, k == 1)) return die(rr[k].m->name);
             for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i]);
             const char *prefix = getenv("INACIO_TABLES_PNG");
-            if (prefix && f == settle + frames) {
+            if (prefix && f == settle + frames && k < 2) {
                 char path[1200];
                 snprintf(path, sizeof path, "%s_%s.png", prefix, rr[k].m->name);
                 const char *ch[4] = {"R", "G", "B", "A"};
@@ -192,7 +198,7 @@ int main(int argc, char **argv)
         p = np;
         fflush(stdout);
     }
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < NR; k++) {
         rr[k].m->destroy(rr[k].self);
         fs_gbuffer_free(&rr[k].g);
     }
