@@ -12,6 +12,7 @@
 #         against the flat value for the longest path (l = 1.0) and for no
 #         extinction at all;
 #   zero:  floor pixels outside the water's shadow (an image corner).
+# The sunken box is left out (object=none): it would hide the floor the bars read.
 # Writes results/iwasaki2006/caustics.csv and the AOV images.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -22,7 +23,7 @@ mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for s in slab_sun_flat slab_sun sphere_sun; do
-  "$BIN" render "$E/$s.json" --method surfels -q -o "$tmp/$s.exr"
+  "$BIN" render "$E/$s.json" --method surfels --set surfels.object=none -q -o "$tmp/$s.exr"
   oiiotool "$tmp/$s.exr" --ch own.R,own.G,own.B -o "$R/caustics_${s}_own.png"
   oiiotool "$tmp/$s.exr" --ch caustics --mulc 0.7 --ch 0,0,0 -o "$R/caustics_${s}_aov.png"
 done
