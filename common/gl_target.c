@@ -133,3 +133,13 @@ int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *b
     if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
     return nb;
 }
+
+unsigned fs_gl_texture_2d(unsigned format, int w, int h)
+{
+    unsigned t = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &t);
+    glTextureStorage2D(t, 1, format, w, h);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}

@@ -34,6 +34,9 @@ void fs_gl_target_end_pass(void);
  * the normal's w and depth = INFINITY where uncovered. */
 int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g);
 
+/* A 2D texture of one level, nearest filtering (render targets, image load/store). */
+unsigned fs_gl_texture_2d(unsigned format, int w, int h);
+
 /* Uploads n vec4s as shader storage buffers of at most `chunk` elements each
  * (the 128 MiB SSBO limit, DESIGN.md); returns the number of buffers made,
  * or minus the error code (fs_fail set). */

@@ -129,3 +129,16 @@ void fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_vis
             }
         }
 }
+
+int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid *own, int *has_own,
+                const fs_grid **out)
+{
+    if (*has_own) { fs_grid_free(own); *has_own = 0; }
+    *out = given;
+    if (given && given->cell >= cell && given->n == p->n) return FS_OK;
+    int rc = fs_grid_build(own, p, cell);
+    if (rc) return rc;
+    *has_own = 1;
+    *out = own;
+    return FS_OK;
+}

@@ -30,6 +30,10 @@ typedef struct fs_grid {
 
 int fs_grid_build(fs_grid *g, const fs_particles *p, float cell);
 void fs_grid_free(fs_grid *g);
+/* *out = given when it was built on p with cells of at least `cell`; else a grid
+ * built into own (*has_own = 1; the caller frees it). Frees a previous own first. */
+int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid *own, int *has_own,
+                const fs_grid **out);
 
 static inline int fs_grid_clampi(int v, int hi) { return v < 0 ? 0 : (v > hi ? hi : v); }
 /* Cell coordinate of x along axis a, not clamped. */

@@ -9,6 +9,7 @@
 #include "test_render.h"
 #include "metrics.h"
 #include "particle_io.h"
+#include "scene.h"
 #include "synthetic.h"
 #include <stdlib.h>
 #include <string.h>
@@ -18,17 +19,11 @@
 static void against_reference(void)
 {
     fs_particles p;
-    int rc = fs_particles_read(&p, FS_TEST_DATA "/splashsurf/dam_break_frame_9_6859_particles.bgeo", NULL);
+    fs_scene s;
+    fs_field f;
+    int rc = fs_test_load_dam(&p, &s, &f);
     CHECK(rc == FS_OK, "read: %s", fs_error_message());
     if (rc) return;
-    fs_particles_bounds(&p);
-    fs_scene s;
-    fs_scene_defaults(&s);
-    s.radius = 0.025f;
-    s.volume_scale = 0.8f;
-    s.camera.width = s.camera.height = 128;
-    fs_scene_frame_particles(&s, &p);
-    fs_field f = fs_scene_field(&s);
     fs_gbuffer a, b;
     fs_gbuffer_alloc(&a, 128, 128, 0);
     fs_gbuffer_alloc(&b, 128, 128, 0);

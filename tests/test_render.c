@@ -1,5 +1,7 @@
 #include "test_render.h"
 #include "fs_error.h"
+#include "particle_io.h"
+#include "scene.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -38,4 +40,18 @@ int fs_test_render(const char *method, const char *const *sets, const fs_particl
     if (self) m->destroy(self);
     fs_grid_free(&g);
     return rc;
+}
+
+int fs_test_load_dam(fs_particles *p, fs_scene *s, fs_field *f)
+{
+    int rc = fs_particles_read(p, FS_TEST_DATA "/splashsurf/dam_break_frame_9_6859_particles.bgeo", NULL);
+    if (rc) return rc;
+    fs_particles_bounds(p);
+    fs_scene_defaults(s);
+    s->radius = 0.025f;
+    s->volume_scale = 0.8f;
+    s->camera.width = s->camera.height = 128;
+    fs_scene_frame_particles(s, p);
+    *f = fs_scene_field(s);
+    return FS_OK;
 }

@@ -8,4 +8,10 @@
 int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
                    const fs_camera *cam, fs_gbuffer *out, fs_stages *st);
 
+struct fs_scene;
+/* The 6,859-particle SPlisHSPlasH dam break (r 0.025, volume_scale 0.8) with a
+ * default scene framing it at 128x128 and its field. FS_OK or an error code
+ * (fs_fail set); p is empty on failure. */
+int fs_test_load_dam(fs_particles *p, struct fs_scene *s, fs_field *f);
+
 #endif

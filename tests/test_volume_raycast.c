@@ -20,17 +20,9 @@
 
 static int load_dam(fs_particles *p, fs_scene *s, fs_field *f)
 {
-    int rc = fs_particles_read(p, FS_TEST_DATA "/splashsurf/dam_break_frame_9_6859_particles.bgeo", NULL);
+    int rc = fs_test_load_dam(p, s, f);
     CHECK(rc == FS_OK, "read: %s", fs_error_message());
-    if (rc) return rc;
-    fs_particles_bounds(p);
-    fs_scene_defaults(s);
-    s->radius = 0.025f;
-    s->volume_scale = 0.8f;
-    s->camera.width = s->camera.height = 128;
-    fs_scene_frame_particles(s, p);
-    *f = fs_scene_field(s);
-    return FS_OK;
+    return rc;
 }
 
 /* Layered grid (read back) vs the exact CPU grid of the same shape. */

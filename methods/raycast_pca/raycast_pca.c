@@ -103,16 +103,11 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     rpca *s = self;
-    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
-    if (!g || !(g->cell >= s->f.H) || g->n != p->n) {
-        /* The march needs cells of at least H (one ring of cells holds every
-         * particle that reaches a point); build one when not given. */
-        int rc = fs_grid_build(&s->own, p, s->f.H);
-        if (rc) return rc;
-        s->has_own = 1;
-        g = &s->own;
-    }
-    int rc = fs_gl_grid_upload(&s->gg, g);
+    /* The march needs cells of at least H (one ring of cells holds every
+     * particle that reaches a point); build one when not given. */
+    int rc = fs_grid_fit(g, p, s->f.H, &s->own, &s->has_own, &g);
+    if (rc) return rc;
+    rc = fs_gl_grid_upload(&s->gg, g);
     if (rc) return rc;
     s->n = p->n;
     s->use_color = p->color != NULL;

@@ -96,16 +96,6 @@ void fs_caustics_destroy(fs_caustics *c)
 void fs_caustics_set_epsilon(fs_caustics *c, float radii) { c->eps_radii = radii; }
 void fs_caustics_set_max_jump(fs_caustics *c, float pixels) { c->max_jump_px = pixels; }
 
-static unsigned tex2d(GLenum fmt, int w, int h)
-{
-    unsigned t = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, fmt, w, h);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
-}
-
 static int ensure_screen(fs_caustics *c, int res)
 {
     if (c->screen_res == res) return FS_OK;
@@ -114,10 +104,10 @@ static int ensure_screen(fs_caustics *c, int res)
     c->screen = malloc(n * 4 * sizeof *c->screen);
     c->vtx = malloc(n * VTX * sizeof *c->vtx);
     if (!c->screen || !c->vtx) { free_screen(c); return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (screen %d^2)", res); }
-    c->screen_acc = tex2d(GL_RGBA32F, res, res);
-    c->screen_dacc = tex2d(GL_R32F, res, res);
-    c->screen_zbuf = tex2d(GL_DEPTH_COMPONENT32F, res, res);
-    c->screen_out = tex2d(GL_RGBA32F, res, res);
+    c->screen_acc = fs_gl_texture_2d(GL_RGBA32F, res, res);
+    c->screen_dacc = fs_gl_texture_2d(GL_R32F, res, res);
+    c->screen_zbuf = fs_gl_texture_2d(GL_DEPTH_COMPONENT32F, res, res);
+    c->screen_out = fs_gl_texture_2d(GL_RGBA32F, res, res);
     glCreateFramebuffers(1, &c->screen_fbo);
     glNamedFramebufferTexture(c->screen_fbo, GL_COLOR_ATTACHMENT0, c->screen_acc, 0);
     glNamedFramebufferTexture(c->screen_fbo, GL_COLOR_ATTACHMENT1, c->screen_dacc, 0);

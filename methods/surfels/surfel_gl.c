@@ -4,6 +4,7 @@
 #include "surfel_gl.h"
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_target.h"
 #include "gl_sprites.h"
 #include "shader.h"
 #include <math.h>
@@ -59,28 +60,10 @@ int surfel_gl_upload_grid(surfel_gl *s, const fs_density_grid *g)
 {
     if (!s->grid_tex || memcmp(s->grid_dim, g->dim, sizeof g->dim)) {
         if (s->grid_tex) glDeleteTextures(1, &s->grid_tex);
-        glCreateTextures(GL_TEXTURE_3D, 1, &s->grid_tex);
-        glTextureStorage3D(s->grid_tex, 1, GL_R32F, g->dim[0], g->dim[1], g->dim[2]);
-        glTextureParameteri(s->grid_tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(s->grid_tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(s->grid_tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(s->grid_tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(s->grid_tex, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+        if (!(s->grid_tex = fs_density_texture_create(g))) return FS_ERR_RUNTIME;
         memcpy(s->grid_dim, g->dim, sizeof g->dim);
     }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage3D(s->grid_tex, 0, 0, 0, 0, g->dim[0], g->dim[1], g->dim[2], GL_RED, GL_FLOAT, g->data);
-    return FS_OK;
-}
-
-static unsigned make_tex(GLenum fmt, int w, int h)
-{
-    unsigned t;
-    glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, fmt, w, h);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
+    return fs_density_texture_upload(s->grid_tex, g);
 }
 
 static int resize(surfel_gl *s, int w, int h)
@@ -94,9 +77,9 @@ static int resize(surfel_gl *s, int w, int h)
     if (s->own_tex) glDeleteTextures(1, &s->own_tex);
     int rc = fs_gl_target_create(&s->target, w, h);
     if (rc) return rc;
-    s->zbuf = make_tex(GL_DEPTH_COMPONENT32F, w, h);
-    for (int i = 0; i < 3; i++) s->acc[i] = make_tex(GL_RGBA32F, w, h);
-    s->own_tex = make_tex(GL_RGBA32F, w, h);
+    s->zbuf = fs_gl_texture_2d(GL_DEPTH_COMPONENT32F, w, h);
+    for (int i = 0; i < 3; i++) s->acc[i] = fs_gl_texture_2d(GL_RGBA32F, w, h);
+    s->own_tex = fs_gl_texture_2d(GL_RGBA32F, w, h);
     glCreateFramebuffers(1, &s->fbo);
     glNamedFramebufferTexture(s->fbo, GL_DEPTH_ATTACHMENT, s->zbuf, 0);
     GLenum bufs[3];

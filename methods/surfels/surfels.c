@@ -100,16 +100,9 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     surfels *s = self;
-    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
-    if (!g || !(g->cell >= s->f.H) || g->n != p->n) {
-        int rc = fs_grid_build(&s->own, p, s->f.H);
-        if (rc) return rc;
-        s->has_own = 1;
-        g = &s->own;
-    }
     s->p = p;
-    s->ng = g;
-    return FS_OK;
+    /* the exact build walks cells of at least H */
+    return fs_grid_fit(g, p, s->f.H, &s->own, &s->has_own, &s->ng);
 }
 
 /* The density grid and its surfels: view-independent, rebuilt every frame. */

@@ -136,17 +136,10 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     vr *s = self;
-    if (s->has_own_ng) { fs_grid_free(&s->own_ng); s->has_own_ng = 0; }
-    /* only the exact build walks the neighbour grid */
-    if (s->v[P_BUILD] == BUILD_EXACT && (!g || !(g->cell >= s->f.H) || g->n != p->n)) {
-        int rc = fs_grid_build(&s->own_ng, p, s->f.H);
-        if (rc) return rc;
-        s->has_own_ng = 1;
-        g = &s->own_ng;
-    }
     s->p = p;
     s->ng = g;
-    return FS_OK;
+    if (s->v[P_BUILD] != BUILD_EXACT) return FS_OK; /* only the exact build walks the neighbour grid */
+    return fs_grid_fit(g, p, s->f.H, &s->own_ng, &s->has_own_ng, &s->ng);
 }
 
 /* IV-A: the volume texture over the particles' box grown by H. */
@@ -178,16 +171,6 @@ static int build_volume(vr *s, fs_stages *t)
     return FS_OK;
 }
 
-static unsigned make_tex(GLenum fmt, int w, int h)
-{
-    unsigned t = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, fmt, w, h);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
-}
-
 static int resize(vr *s, int w, int h)
 {
     if (s->target.w == w && s->target.h == h) return FS_OK;
@@ -197,14 +180,14 @@ static int resize(vr *s, int w, int h)
     for (int i = 0; i < 2; i++) {
         if (s->face_fbo[i]) glDeleteFramebuffers(1, &s->face_fbo[i]);
         if (s->face_tex[i]) glDeleteTextures(1, &s->face_tex[i]);
-        s->face_tex[i] = make_tex(GL_RGBA32F, w, h);
+        s->face_tex[i] = fs_gl_texture_2d(GL_RGBA32F, w, h);
         glCreateFramebuffers(1, &s->face_fbo[i]);
         glNamedFramebufferTexture(s->face_fbo[i], GL_COLOR_ATTACHMENT0, s->face_tex[i], 0);
         if (glCheckNamedFramebufferStatus(s->face_fbo[i], GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             return fs_fail(FS_ERR_RUNTIME, "volume_raycast: RGBA32F framebuffer of %dx%d is incomplete", w, h);
     }
     if (s->own_tex) glDeleteTextures(1, &s->own_tex);
-    s->own_tex = make_tex(GL_RGBA32F, w, h);
+    s->own_tex = fs_gl_texture_2d(GL_RGBA32F, w, h);
     return glGetError() == GL_NO_ERROR ? FS_OK
                                        : fs_fail(FS_ERR_RUNTIME, "volume_raycast: cannot allocate %dx%d images", w, h);
 }
