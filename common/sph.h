@@ -76,8 +76,9 @@ float fs_sph_mass(const fs_sph *s);              /* fluid particle mass */
 typedef struct fs_sph_measure {
     double density_err;     /* mean max(rho, rho0)/rho0 - 1 over the fluid (compression) */
     double density_abs_err; /* mean |rho - rho0| / rho0 over interior particles (>= H below the surface) */
-    double depth;           /* height where the mean particle count per layer falls to half the rest
-                             * lattice's (NAN while no layer is half full, e.g. a dam break at t = 0) */
+    double depth;           /* mean over the floor (columns of 2r) of the free-surface height, where
+                             * the fluid fraction sum m/rho0 W falls to 1/2: the water's volume over the
+                             * floor area, waves or not (a dry column counts 0) */
     double depth_expected;  /* N (2r)^3 / floor area */
     size_t outside;         /* particle centres outside the box (or non-finite) */
     double kinetic;         /* mean kinetic energy per unit mass, 0.5 |v|^2 */

@@ -97,10 +97,17 @@ static void dam_break_short(void)
     float lo[3], hi[3];
     fs_sph_box(s, lo, hi);
     float bound0 = fs_sph_dt_bound(s); /* the largest: nothing moves yet */
+    fs_sph_measure m0, m;
+    CHECK(fs_sph_measure_state(s, &m0) == FS_OK, "measure");
     for (int f = 0; f < 24; f++) CHECK(fs_sph_advance(s, 1.0 / 60) == FS_OK, "advance: %s", fs_error_message());
     const fs_sph_stats *st = fs_sph_get_stats(s);
-    fs_sph_measure m;
     fs_sph_measure_state(s, &m);
+    /* The depth is the mean surface height over the floor: the water's volume
+     * over the floor area while the column stands and while it collapses. */
+    printf("dam break depth: %.4f at t = 0, %.4f at 0.4 s, volume / floor area %.4f\n", m0.depth, m.depth,
+           m.depth_expected);
+    CHECK(fabs(m0.depth / m0.depth_expected - 1) < 0.01, "depth at t = 0: %g vs %g", m0.depth, m0.depth_expected);
+    CHECK(fabs(m.depth / m.depth_expected - 1) < 0.02, "depth at 0.4 s: %g vs %g", m.depth, m.depth_expected);
     printf("dam break, %zu particles, box %.2f x %.2f x %.2f, t = %.2f s: %ld steps, dt %.2e..%.2e, smallest bound "
            "%.2e, v_max %.2f m/s, clamps %ld, outside %zu, violations %ld\n", fs_sph_count(s), hi[0], hi[1], hi[2],
            st->t, st->steps, st->dt_min, st->dt_max, st->bound_min, st->v_max, st->clamps, m.outside, st->violations);
