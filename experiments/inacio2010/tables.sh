@@ -24,7 +24,7 @@
 # Writes results/inacio2010/tables.csv and tables_frames.csv (every frame, every
 # stage); prints the tables as markdown.
 # Usage: experiments/inacio2010/tables.sh   (BIN=, TOOL=, COUNTS=, SETTLE=, FRAMES=,
-#        SIZE=, GRID=, LIMIT_S=, TIMEOUT_S= override)
+#        SIZE=, GRID=, LIMIT_S=, TIMEOUT_S=, KEEP_FRAMES= override)
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 TOOL=${TOOL:-build/experiments/inacio_tables}
@@ -56,6 +56,18 @@ for n in $COUNTS; do
     echo "tables: $n $path: rc $rc, $(( $(date +%s) - t0 )) s" >&2
   done
 done
+# KEEP_FRAMES=FILE (an earlier tables_frames.csv): its cells of counts not in
+# COUNTS are kept, after the new ones, with its provenance line (re-running some
+# counts, e.g. ones a loaded machine spoiled, without re-running all)
+if [ -n "${KEEP_FRAMES:-}" ]; then
+  cp "$KEEP_FRAMES" "$T/keep.csv"
+  kept=$(awk -F, -v c=" $COUNTS " '!/^#/ && $1 != "particles_requested" && index(c, " " $1 " ") == 0 { print $1 }' "$T/keep.csv" | sort -un | tr '\n' ' ')
+  grep '^#' "$T/keep.csv" | sed 's/^# /# earlier run: /' > "$T/merged.csv"
+  cat "$frames" >> "$T/merged.csv"
+  awk -F, -v c=" $COUNTS " '!/^#/ && $1 != "particles_requested" && index(c, " " $1 " ") == 0' "$T/keep.csv" >> "$T/merged.csv"
+  mv "$T/merged.csv" "$frames"
+  prov="$prov; the cells of counts ${kept% } are kept from the earlier run(s) in tables_frames.csv ($(grep '^#' "$T/keep.csv" | grep -o 'load before: [^;]*; [0-9T:-]*Z' | tr '\n' ' ' | sed 's/ $//'))"
+fi
 cp "$frames" "$OUT/tables_frames.csv"
 
 # per cell and table: the median of each stage over the frames (composite stages
@@ -102,7 +114,9 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
         100 * s / tot, 100 * fe / tot, tb == 1 ? sprintf("%.1f", 100 * v / tot) : "", tb == 1 ? sprintf("%.1f", 100 * rc / tot) : "",
         100 * re / tot, tb == 1 ? sprintf("%.1f", median(VS)) : "", (cell in note) ? note[cell] : "")
       gsub(/\001/, ",", line); print line }
-  }' "$frames" > "$OUT/tables.csv"
+  }' "$frames" > "$T/tables.csv"
+# rows by table, then particle count, then path
+{ grep -E '^(#|table,)' "$T/tables.csv"; grep -vE '^(#|table,)' "$T/tables.csv" | sort -t, -k1,1 -k2,2n -k5,5; } > "$OUT/tables.csv"
 
 # markdown, for the README
 awk -F, '/^#/ || $1 == "table" { next }
