@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -38,4 +39,10 @@ int fs_output_end(const char *final, const char *tmp, int ok)
         return fs_fail(FS_ERR_RUNTIME, "%s: cannot rename output: %s", final, strerror(e));
     }
     return FS_OK;
+}
+
+int fs_path_ends_with(const char *path, const char *suffix)
+{
+    size_t n = strlen(path), m = strlen(suffix);
+    return n >= m && strcasecmp(path + n - m, suffix) == 0;
 }

@@ -1,6 +1,7 @@
 /* Particle file dispatcher: picks the reader/writer from the extension or a
  * forced format name, and applies the checks every format shares. */
 #include "particle_io.h"
+#include "output_file.h"
 #include "fs_error.h"
 #include <ctype.h>
 #include <errno.h>
@@ -8,12 +9,6 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
-
-static int ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcasecmp(s + n - m, suffix) == 0;
-}
 
 const char *fs_format_from_path(const char *path)
 {
@@ -24,7 +19,7 @@ const char *fs_format_from_path(const char *path)
     };
     if (!path) return NULL;
     for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
-        if (ends_with(path, table[i].ext)) return table[i].format;
+        if (fs_path_ends_with(path, table[i].ext)) return table[i].format;
     return NULL;
 }
 

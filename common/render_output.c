@@ -1,19 +1,14 @@
 #include "render_output.h"
+#include "output_file.h"
 #include "fs_error.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
-static int ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && !strcasecmp(s + n - k, suffix);
-}
-
 int fs_check_render_path(const char *path)
 {
-    if (ends_with(path, ".png") || ends_with(path, ".exr")) return FS_OK;
+    if (fs_path_ends_with(path, ".png") || fs_path_ends_with(path, ".exr")) return FS_OK;
     return fs_fail(FS_ERR_INPUT, "%s: output must end in .png or .exr", path);
 }
 
@@ -22,7 +17,7 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
     int rc = fs_check_render_path(path);
     if (rc) return rc;
     size_t n = (size_t)g->w * g->h;
-    if (ends_with(path, ".png")) {
+    if (fs_path_ends_with(path, ".png")) {
         const char *names[4] = {"R", "G", "B", "A"};
         fs_image img = {g->w, g->h, 4, names, (float *)rgba};
         return fs_write_png(path, &img);

@@ -4,6 +4,7 @@
  * (5.1-5.2, caustics.c), then three-pass surfel splatting with reflection,
  * refraction and the caustics (5.3, surfel_gl.c). See README.md. */
 #include "caustics.h"
+#include "output_file.h"
 #include "density_grid.h"
 #include "frame_source.h"
 #include "fs_error.h"
@@ -273,17 +274,11 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return surfel_gl_render(&s->gl, cam, &look, &o, out, t);
 }
 
-static int ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && !strcmp(s + n - k, suffix);
-}
-
 static int export_file(void *self, const char *path)
 {
     surfels *s = self;
     if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: export before upload");
-    int vdb = ends_with(path, ".vdb"), ply = ends_with(path, ".ply");
+    int vdb = fs_path_ends_with(path, ".vdb"), ply = fs_path_ends_with(path, ".ply");
     if (!vdb && !ply) return fs_fail(FS_ERR_INPUT, "%s: surfels exports .vdb (density grid) or .ply (surfels)", path);
     fs_stages t = {0};
     int rc = build_surface(s, &t);

@@ -7,6 +7,7 @@
  * them (shaders/volume_raycast/march.comp.glsl) writing the G-buffer and the
  * transfer-function image. See README.md. */
 #include "density_grid.h"
+#include "output_file.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl.h"
@@ -331,18 +332,12 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return rc;
 }
 
-static int ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && !strcmp(s + n - k, suffix);
-}
-
 /* .vdb: the volume, read back from its texture, as a FloatGrid "density". */
 static int export_file(void *self, const char *path)
 {
     vr *s = self;
     if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
-    if (!ends_with(path, ".vdb")) return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
+    if (!fs_path_ends_with(path, ".vdb")) return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
     int rc = build_volume(s, NULL);
     if (!rc) rc = fs_density_texture_read(s->tex3d, &s->dg);
     return rc ? rc : fs_density_grid_write_vdb(&s->dg, path, "density");
