@@ -79,14 +79,16 @@ void fs_gl_target_end_pass(void)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-static void read_flipped(unsigned tex, int comps, int w, int h, float *dst)
+int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst)
 {
     size_t row = (size_t)w * comps;
     float *tmp = malloc(row * h * sizeof(float));
-    if (!tmp) return;
+    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "out of memory reading back a %dx%d image", w, h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(tex, 0, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, (GLsizei)(row * h * sizeof(float)), tmp);
     for (int y = 0; y < h; y++) memcpy(dst + row * y, tmp + row * (h - 1 - y), row * sizeof(float));
     free(tmp);
+    return FS_OK;
 }
 
 int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g)
@@ -94,11 +96,11 @@ int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g)
     size_t n = (size_t)t->w * t->h;
     float *nrm = malloc(4 * n * sizeof(float));
     if (!nrm) return fs_fail(FS_ERR_RUNTIME, "out of memory reading the G-buffer");
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    read_flipped(t->tex[FS_TARGET_DEPTH], 1, t->w, t->h, g->depth);
-    read_flipped(t->tex[FS_TARGET_NORMAL], 4, t->w, t->h, nrm);
-    read_flipped(t->tex[FS_TARGET_THICKNESS], 1, t->w, t->h, g->thickness);
-    if (g->color) read_flipped(t->tex[FS_TARGET_COLOR], 4, t->w, t->h, g->color);
+    int rc = fs_gl_read_texture(t->tex[FS_TARGET_DEPTH], 1, t->w, t->h, g->depth);
+    if (!rc) rc = fs_gl_read_texture(t->tex[FS_TARGET_NORMAL], 4, t->w, t->h, nrm);
+    if (!rc) rc = fs_gl_read_texture(t->tex[FS_TARGET_THICKNESS], 1, t->w, t->h, g->thickness);
+    if (!rc && g->color) rc = fs_gl_read_texture(t->tex[FS_TARGET_COLOR], 4, t->w, t->h, g->color);
+    if (rc) { free(nrm); return rc; }
     for (size_t i = 0; i < n; i++) {
         float cov = nrm[4 * i + 3] > 0.5f ? 1.0f : 0.0f;
         g->coverage[i] = cov;
@@ -141,5 +143,25 @@ unsigned fs_gl_texture_2d(unsigned format, int w, int h)
     glTextureStorage2D(t, 1, format, w, h);
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+int fs_gl_target_read_timed(const fs_gl_target *t, fs_gbuffer *g, fs_stages *st)
+{
+    double t0 = fs_now_ms();
+    int rc = fs_gl_target_read(t, g);
+    fs_stages_add(st, "readback", fs_now_ms() - t0);
+    return rc;
+}
+
+unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers)
+{
+    unsigned t = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+    glTextureStorage3D(t, 1, format, w, h, layers);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
 }

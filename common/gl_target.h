@@ -4,6 +4,7 @@
 #ifndef FS_GL_TARGET_H
 #define FS_GL_TARGET_H
 #include "gbuffer.h"
+#include "timing.h"
 #include <stddef.h>
 #ifdef __cplusplus
 extern "C" {
@@ -34,8 +35,14 @@ void fs_gl_target_end_pass(void);
  * the normal's w and depth = INFINITY where uncovered. */
 int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g);
 
+/* The same, timed as the stage "readback". */
+int fs_gl_target_read_timed(const fs_gl_target *t, fs_gbuffer *g, fs_stages *st);
+/* Reads a float texture (1 or 4 components) into dst, rows top to bottom. */
+int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst);
 /* A 2D texture of one level, nearest filtering (render targets, image load/store). */
 unsigned fs_gl_texture_2d(unsigned format, int w, int h);
+/* A 2D texture array of one level, linear filtering, clamped (maps sampled by position). */
+unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers);
 
 /* Uploads n vec4s as shader storage buffers of at most `chunk` elements each
  * (the 128 MiB SSBO limit, DESIGN.md); returns the number of buffers made,

@@ -66,6 +66,12 @@ render param_out_of_range "step_min" "$vtk" --set reference.step_min=-5
 render set_unknown_method "nomethod" "$vtk" --set nomethod.x=1
 expect_bad bad_output_ext "out.txt" render "$vtk" -o "$T/out.txt"
 render unknown_option "--frobnicate" "$vtk" --frobnicate
+render bad_appearance "--appearance frob" "$vtk" --method surfels --appearance frob
+render no_own_appearance "spheres" "$vtk" --method spheres --appearance own
+render export_unsupported "exports nothing" "$vtk" --method spheres --export "$T/out.vdb"
+expect_bad export_bad_ext "out.txt" render "$vtk" --method surfels -W 16 -H 16 --export "$T/out.txt"
+expect_bad export_missing_dir "nodir" render "$vtk" --method surfels -W 16 -H 16 --export "$T/nodir/out.vdb"
+render bad_object "cube" "$vtk" --method surfels --set surfels.object=cube
 expect_bad info_missing "missing.bgeo" info "$T/missing.bgeo"
 expect_bad convert_bad_target "out.xyz9" convert "$vtk" -o "$T/out.xyz9"
 expect_bad convert_onto_input "overwrite" convert "$T/nan.csv" -o "$T/nan.csv"

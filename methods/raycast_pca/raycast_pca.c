@@ -240,10 +240,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         glFinish();
         fs_stages_add(t, "thickness", fs_now_ms() - t4);
     }
-    double t5 = fs_now_ms();
-    rc = fs_gl_target_read(&s->target, out);
-    fs_stages_add(t, "readback", fs_now_ms() - t5);
-    return rc;
+    return fs_gl_target_read_timed(&s->target, out, t);
 }
 
 const fs_method fs_method_raycast_pca = {

@@ -111,10 +111,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         fs_stages_add(t, "thickness", fs_now_ms() - t1);
     }
     fs_gl_target_end_pass();
-    double t2 = fs_now_ms();
-    int rc = fs_gl_target_read(&s->target, out);
-    fs_stages_add(t, "readback", fs_now_ms() - t2);
-    return rc;
+    return fs_gl_target_read_timed(&s->target, out, t);
 }
 
 const fs_method fs_method_spheres = {

@@ -128,12 +128,7 @@ static int ensure_planes(fs_caustics *c, int res, int np)
     free_planes(c);
     c->maps = malloc((size_t)res * res * np * 4 * sizeof *c->maps);
     if (!c->maps) return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (%d planes of %d^2)", np, res);
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &c->plane_tex);
-    glTextureStorage3D(c->plane_tex, 1, GL_RGBA32F, res, res, np);
-    glTextureParameteri(c->plane_tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(c->plane_tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(c->plane_tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(c->plane_tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    c->plane_tex = fs_gl_texture_2d_array(GL_RGBA32F, res, res, np);
     glCreateFramebuffers(1, &c->plane_fbo);
     glNamedFramebufferTextureLayer(c->plane_fbo, GL_COLOR_ATTACHMENT0, c->plane_tex, 0, 0);
     c->plane_res = res;

@@ -140,18 +140,6 @@ static void draw_surfels(const surfel_gl *s)
     if (s->n) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)s->n);
 }
 
-/* Reads an RGBA32F texture bottom-up into rows top to bottom. */
-static int read_rgba(unsigned tex, int w, int h, float *out)
-{
-    size_t row = (size_t)w * 4;
-    float *tmp = malloc(row * h * sizeof(float));
-    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "surfels: out of memory reading back");
-    glGetTextureImage(tex, 0, GL_RGBA, GL_FLOAT, (GLsizei)(row * h * sizeof(float)), tmp);
-    for (int y = 0; y < h; y++) memcpy(out + (size_t)y * row, tmp + (size_t)(h - 1 - y) * row, row * sizeof(float));
-    free(tmp);
-    return FS_OK;
-}
-
 int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look, const surfel_draw_opts *o,
                      fs_gbuffer *out, fs_stages *t)
 {
@@ -232,7 +220,7 @@ int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look
     double t4 = fs_now_ms();
     rc = fs_gl_target_read(&s->target, out);
     if (!rc && out->own) {
-        rc = read_rgba(s->own_tex, w, h, out->own);
+        rc = fs_gl_read_texture(s->own_tex, 4, w, h, out->own);
         for (size_t i = 0, n = (size_t)w * h; !rc && i < n; i++) {
             out->caustics[i] = out->own[4 * i + 3];
             out->own[4 * i + 3] = 1.0f;

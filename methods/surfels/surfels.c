@@ -9,6 +9,7 @@
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_target.h"
 #include "method.h"
 #include "object_slices.h"
 #include "scene.h"
@@ -161,12 +162,7 @@ static int upload_slices(surfels *s, const object_box *box, const fs_caustics_se
         free(s->slices);
         s->slices = malloc((size_t)res * res * 4 * n * sizeof(float));
         if (!s->slices) return fs_fail(FS_ERR_RUNTIME, "surfels: out of memory for the object slices");
-        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &s->slice_tex);
-        glTextureStorage3D(s->slice_tex, 1, GL_RGBA32F, res, res, n);
-        glTextureParameteri(s->slice_tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(s->slice_tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(s->slice_tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(s->slice_tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        s->slice_tex = fs_gl_texture_2d_array(GL_RGBA32F, res, res, n);
         s->slice_res = res;
         s->slice_n = n;
     }

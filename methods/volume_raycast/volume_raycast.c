@@ -272,35 +272,30 @@ static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
 static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
 {
     int w = cam->width, h = cam->height;
-    size_t row = (size_t)w * 4, n = (size_t)w * h;
+    size_t n = (size_t)w * h;
     if (!s->background || s->bg_w != w || s->bg_h != h) {
         free(s->background);
-        s->background = NULL;
-        fs_gbuffer empty;
-        int rc = fs_gbuffer_alloc(&empty, w, h, 0);
-        if (rc) return rc;
-        fs_gbuffer_clear(&empty);
-        s->background = malloc(n * 4 * sizeof(float));
-        if (!s->background) { fs_gbuffer_free(&empty); return fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); }
-        fs_shade(&s->scene, cam, &empty, fs_scene_floor(&s->scene, s->p), s->background);
-        fs_gbuffer_free(&empty);
+        if (!(s->background = malloc(n * 4 * sizeof(float)))) {
+            s->bg_w = s->bg_h = 0;
+            return fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory");
+        }
         s->bg_w = w;
         s->bg_h = h;
     }
-    float *tmp = malloc(n * 4 * sizeof(float));
-    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory reading back");
-    glGetTextureImage(s->own_tex, 0, GL_RGBA, GL_FLOAT, (GLsizei)(n * 4 * sizeof(float)), tmp);
-    for (int y = 0; y < h; y++) { /* GL rows are bottom-up */
-        const float *src = tmp + (size_t)(h - 1 - y) * row;
-        float *dst = out->own + (size_t)y * row;
-        const float *bg = s->background + (size_t)y * row;
-        for (int x = 0; x < w; x++) {
-            float a = src[4 * x + 3];
-            for (int c = 0; c < 3; c++) dst[4 * x + c] = src[4 * x + c] + (1.0f - a) * bg[4 * x + c];
-            dst[4 * x + 3] = 1.0f;
-        }
+    /* shaded every frame: it follows the camera (the viewer orbits at a fixed size) */
+    fs_gbuffer empty;
+    int rc = fs_gbuffer_alloc(&empty, w, h, 0);
+    if (rc) return rc;
+    fs_shade(&s->scene, cam, &empty, fs_scene_floor(&s->scene, s->p), s->background);
+    fs_gbuffer_free(&empty);
+    rc = fs_gl_read_texture(s->own_tex, 4, w, h, out->own);
+    if (rc) return rc;
+    /* premultiplied over the background */
+    for (size_t i = 0; i < n; i++) {
+        float *o = out->own + 4 * i, a = o[3];
+        for (int c = 0; c < 3; c++) o[c] += (1.0f - a) * s->background[4 * i + c];
+        o[3] = 1.0f;
     }
-    free(tmp);
     if (out->caustics) memset(out->caustics, 0, n * sizeof(float));
     return FS_OK;
 }
