@@ -4,8 +4,8 @@ add_test(NAME cli_bad_input COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_inp
 add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
 set_tests_properties(cli_bad_input cli_render PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
 add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp")
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
