@@ -1,7 +1,8 @@
 /* aniso_ssf on the OSMesa context: (a) the GLSL anisotropy equals the C one;
  * (b) ellipsoid sprite depth equals an exact CPU ray-ellipsoid intersection;
  * (c) every filter runs, changes the depth and keeps the coverage; (d) normals
- * from depth on a plane; (e) the anisotropic reference renders. */
+ * from depth on a plane; (e) the anisotropic reference renders; (f) the
+ * narrow-range filter keeps both sides of a depth discontinuity apart. */
 #include "aniso_ssf/aniso_gl.h"
 #include "eigen3.h"
 #include "fs_error.h"
@@ -183,8 +184,101 @@ static void filters(void)
         CHECK(cov_diff == 0, "%s changes the coverage at %d px (holes)", names[k], cov_diff);
         CHECK(bad == 0, "%s leaves %d non-finite or non-positive depths", names[k], bad);
     }
+    /* Narrow-range on a continuous sloped surface: away from the silhouettes it
+     * must move the depth no more than the Gaussian does (its symmetric pairs and
+     * growing range keep a slope; dropping far samples would pull it forward). */
+    unsigned char *in = malloc(128 * 128);
+    fs_interior_mask(&gb[0], &gb[0], 12, in);
+    double dg = 0, dn = 0;
+    int m = 0;
+    for (int i = 0; i < 128 * 128; i++) {
+        if (!in[i]) continue;
+        dg += gb[1].depth[i] - gb[0].depth[i];
+        dn += gb[4].depth[i] - gb[0].depth[i];
+        m++;
+    }
+    dg /= m * R_;
+    dn /= m * R_;
+    printf("(c) sloped slab, %d px >= 12 px from a silhouette: mean depth change gaussian %+.3f r, narrow %+.3f r\n", m,
+           dg, dn);
+    CHECK(m > 1000, "only %d pixels away from the silhouettes", m);
+    CHECK(fabs(dn - dg) < 0.15, "narrow-range biases a sloped surface by %+.3f r against the Gaussian", dn - dg);
+    free(in);
     for (int k = 0; k < 5; k++) fs_gbuffer_free(&gb[k]);
     fs_particles_free(&p);
+}
+
+/* Mean signed depth change (in r, positive = away from the camera) over the
+ * pixels of one depth class (near: z < split) with a pixel of the other class
+ * within 4 px. */
+static double edge_change(const fs_gbuffer *a, const fs_gbuffer *b, float split, int near, int *count)
+{
+    double sum = 0;
+    int n = 0;
+    for (int y = 4; y < 124; y++)
+        for (int x = 4; x < 124; x++) {
+            int i = y * 128 + x;
+            if (!a->coverage[i] || (a->depth[i] < split) != near) continue;
+            int other = 0;
+            for (int dy = -4; dy <= 4 && !other; dy++)
+                for (int dx = -4; dx <= 4; dx++) {
+                    int j = i + dy * 128 + dx;
+                    if (a->coverage[j] && (a->depth[j] < split) != near) { other = 1; break; }
+                }
+            if (!other) continue;
+            sum += b->depth[i] - a->depth[i];
+            n++;
+        }
+    *count = n;
+    return n ? sum / n / R_ : 0;
+}
+
+/* (f) The narrow-range filter at a depth discontinuity: a strip of particles
+ * 20 r in front of a plane. The far plane beside the strip's silhouette is not
+ * pulled forward (the near samples are left out) and the strip's rim moves
+ * back by at most mu = r plus the smoothing of the sphere bumps (about 0.5 r,
+ * the far samples are clamped to z + mu); the Gaussian, with no range, smears
+ * one surface into the other, which shows the scene tests something. */
+static void narrow_discontinuity(void)
+{
+    fs_particles far, p;
+    patch(&far, 30);
+    fs_particles_alloc(&p, far.n + 8 * 30, 0);
+    memcpy(p.x, far.x, far.n * sizeof *p.x);
+    memcpy(p.y, far.y, far.n * sizeof *p.y);
+    for (int j = 0; j < 30; j++)
+        for (int i = 0; i < 8; i++) {
+            size_t k = far.n + (size_t)j * 8 + i;
+            p.x[k] = (i - 5) * 2 * R_;
+            p.y[k] = (j - 14.5f) * 2 * R_;
+            p.z[k] = 20 * R_;
+        }
+    fs_particles_bounds(&p);
+    fs_camera cam = {{0, 0, 3.0f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 128, 128, 0.05f, 10.0f};
+    const char *names[] = {"none", "gaussian", "narrow"};
+    fs_gbuffer gb[3];
+    for (int k = 0; k < 3; k++) {
+        char set[64];
+        snprintf(set, sizeof set, "filter=%s", names[k]);
+        const char *sets[] = {set, "anisotropy=off", NULL};
+        fs_gbuffer_alloc(&gb[k], 128, 128, 0);
+        CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], NULL) == FS_OK, "%s: %s", names[k],
+              fs_error_message());
+    }
+    float split = 3.0f - 10 * R_;
+    int nf, nn;
+    double g_far = edge_change(&gb[0], &gb[1], split, 0, &nf), g_near = edge_change(&gb[0], &gb[1], split, 1, &nn);
+    double n_far = edge_change(&gb[0], &gb[2], split, 0, &nf), n_near = edge_change(&gb[0], &gb[2], split, 1, &nn);
+    printf("(f) depth step of 20 r: mean depth change beside the step, far side (%d px) gaussian %+.2f r, narrow "
+           "%+.2f r; near side (%d px) gaussian %+.2f r, narrow %+.2f r\n", nf, g_far, n_far, nn, g_near, n_near);
+    CHECK(nf > 100 && nn > 100, "too few pixels beside the step (%d far, %d near)", nf, nn);
+    CHECK(g_far < -2.0 && g_near > 2.0, "the Gaussian does not smear the step (%+.2f r, %+.2f r): the scene tests nothing",
+          g_far, g_near);
+    CHECK(n_far > -0.25, "narrow-range pulls the far surface towards the near one by %.2f r", -n_far);
+    CHECK(n_near > -0.25 && n_near < 1.5, "narrow-range moves the near rim by %+.2f r (mu = r)", n_near);
+    for (int k = 0; k < 3; k++) fs_gbuffer_free(&gb[k]);
+    fs_particles_free(&p);
+    fs_particles_free(&far);
 }
 
 static void plane_normals(void)
@@ -251,6 +345,7 @@ int main(void)
     c_vs_glsl();
     sprite_depth();
     filters();
+    narrow_discontinuity();
     plane_normals();
     aniso_reference();
     fs_gl_context_destroy(&ctx);

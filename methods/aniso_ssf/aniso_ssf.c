@@ -21,8 +21,11 @@ static const fs_param_def params[] = {
     {"iterations", FS_PARAM_INT, 0, 0, 1000, NULL, "filter iterations; 0: the paper's (2, curvature flow 80)"},
     {"sigma", FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL, "spatial Gaussian sigma of every filter kernel, multiples of r"},
     {"sigma_depth", FS_PARAM_FLOAT, 1.0, 0.01, 100.0, NULL, "bilateral range sigma on depth, multiples of r"},
-    {"range", FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL,
-     "narrow-range threshold and curvature-flow discontinuity, multiples of r"},
+    {"range", FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL, "curvature flow: depth jump treated as a discontinuity, multiples of r"},
+    {"narrow_threshold", FS_PARAM_FLOAT, 10.0, 0.01, 1000.0, NULL,
+     "narrow-range filter: depth range delta around the pixel (grows with kept samples), multiples of r"},
+    {"narrow_clamp", FS_PARAM_FLOAT, 1.0, 0.0, 100.0, NULL,
+     "narrow-range filter: samples behind the range (or empty) count as z + mu, mu in multiples of r"},
     {"max_radius_px", FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
     {"aniso_radius", FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "WPCA neighbourhood radius R, multiples of r"},
     {"kappa", FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "largest/smallest eigenvalue limit"},
@@ -33,8 +36,8 @@ static const fs_param_def params[] = {
     {"lambda", FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "Laplacian smoothing of kernel centres (Yu & Turk)"},
     {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
 };
-enum { P_ANISO, P_FILTER, P_ITER, P_SIGMA, P_SIGMA_Z, P_RANGE, P_MAXRAD, P_ARAD, P_KAPPA, P_NEPS, P_ASCALE, P_NORM, P_LAMBDA,
-       P_THICK, P_COUNT };
+enum { P_ANISO, P_FILTER, P_ITER, P_SIGMA, P_SIGMA_Z, P_RANGE, P_NRF_DELTA, P_NRF_MU, P_MAXRAD, P_ARAD, P_KAPPA, P_NEPS,
+       P_ASCALE, P_NORM, P_LAMBDA, P_THICK, P_COUNT };
 
 typedef struct assf {
     fs_field f;
@@ -199,7 +202,8 @@ static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
             break;
         default: /* narrow-range: 1D passes each iteration */
             glUseProgram(s->prog_narrow);
-            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_range"), range);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_threshold"), (float)s->v[P_NRF_DELTA] * s->f.r);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_clamp"), (float)s->v[P_NRF_MU] * s->f.r);
             glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 0);
             STEP(s->prog_narrow);
             glUseProgram(s->prog_narrow);
