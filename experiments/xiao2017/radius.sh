@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Sensitivity of issue 4's normal bars to the PCA / gradient radius R (4 r shipped):
+# the jittered slab and box against `analytic` at 512^2, normals basic / blend
+# (filter on), R = 3, 4, 5, 6 r; interior error and its split into faces >= 2r
+# from an ideal edge and the 2r edge band (experiments/tools/edge_bands.c). It
+# answers "is there an R at which blend beats basic at the edges?"; it does not
+# change the default. Writes results/xiao2017/radius_sweep.csv.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BIN=${BIN:-./build-xiao/fluidsurf}
+TOOL=${TOOL:-./build-xiao/experiments/edge_bands}
+OUT=results/xiao2017
+TMP=out/xiao2017/radius
+mkdir -p "$OUT" "$TMP"
+for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "radius.sh: $x missing" >&2; exit 2; }; done
+csv=$OUT/radius_sweep.csv
+echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.new"
+for shape in slab box; do
+  d=$TMP/$shape
+  "$BIN" compare "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
+      --set raycast_pca.pca_radius=3,4,5,6 --reference analytic -W 512 -H 512 --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
+  "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/raycast_pca_*.exr |
+    awk -F, -v s="$shape" '!/^#/ && $1 != "file" {
+        f = $1; sub(/.*raycast_pca_normals=/, "", f); sub(/\.exr$/, "", f);
+        split(f, a, /_pca_radius=/); key = s "," a[1] "," a[2];
+        v[key, $2] = $4; keys[key] = 1 }
+      END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
+    sort >> "$csv.new"
+done
+mv "$csv.new" "$csv"; column -t -s, "$csv"
