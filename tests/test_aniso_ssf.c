@@ -184,9 +184,10 @@ static void filters(void)
         CHECK(cov_diff == 0, "%s changes the coverage at %d px (holes)", names[k], cov_diff);
         CHECK(bad == 0, "%s leaves %d non-finite or non-positive depths", names[k], bad);
     }
-    /* Narrow-range on a continuous sloped surface: away from the silhouettes it
-     * must move the depth no more than the Gaussian does (its symmetric pairs and
-     * growing range keep a slope; dropping far samples would pull it forward). */
+    /* Narrow-range on a continuous sloped surface, away from the silhouettes: it
+     * must not move the depth towards the camera (dropping the far samples did, by
+     * 1.6 r) and, like the Gaussian, only fill the dips between the sprites
+     * (narrow smooths a little more: its extra 2D pass). */
     unsigned char *in = malloc(128 * 128);
     fs_interior_mask(&gb[0], &gb[0], 12, in);
     double dg = 0, dn = 0;
@@ -202,7 +203,7 @@ static void filters(void)
     printf("(c) sloped slab, %d px >= 12 px from a silhouette: mean depth change gaussian %+.3f r, narrow %+.3f r\n", m,
            dg, dn);
     CHECK(m > 1000, "only %d pixels away from the silhouettes", m);
-    CHECK(fabs(dn - dg) < 0.15, "narrow-range biases a sloped surface by %+.3f r against the Gaussian", dn - dg);
+    CHECK(dn - dg > -0.3 && dn - dg < 0.4, "narrow-range moves a sloped surface by %+.3f r against the Gaussian", dn - dg);
     free(in);
     for (int k = 0; k < 5; k++) fs_gbuffer_free(&gb[k]);
     fs_particles_free(&p);

@@ -9,8 +9,11 @@
 //    so a silhouette bends away from the camera instead of being cut;
 //  - inside the range: kept, and the range grows to reach u_threshold beyond
 //    it (their dynamic range), so a steep but continuous surface stays in.
-// Out-of-image pairs are left out. u_axis 0 or 1: a 1D pass (each side keeps
-// its own range); 2: the final 2D pass (one range, grown ring by ring).
+// Out-of-image pairs are left out. Both samples of a pair are classified
+// before the pair is judged, so a kept sample grows the range even when its
+// mirror is left out (as the authors' demo does). u_axis 0 or 1: a 1D pass
+// (each side keeps its own range); 2: the final 2D pass (one range, grown
+// ring by ring, the first sample of a pair before the second).
 #include "aniso_ssf/filter_common.glsl"
 uniform int u_axis;
 uniform float u_threshold; // delta, scene units
@@ -49,8 +52,8 @@ void main()
             wsum += 2.0 * w;
         }
     } else {
-        // Ring d: the half with y > 0, or y == 0 and x > 0 (4d offsets), each
-        // paired with its mirror -o.
+        // Ring d (8d offsets) as 4d mirror pairs: the top row (x = -d..d, y = d)
+        // and the right column (x = d, y = d-1..-(d-1)), each with -o.
         for (int d = 1; d <= rad; d++)
             for (int i = 0; i < 4 * d; i++) {
                 ivec2 o = i <= 2 * d ? ivec2(i - d, d) : ivec2(d, 3 * d - i);
