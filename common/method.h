@@ -52,6 +52,11 @@ const fs_method *fs_method_at(int i);
 int fs_method_wants_color(const fs_method *m, const fs_particles *p);
 /* Index of a parameter in m->params, or -1. */
 int fs_method_param_index(const fs_method *m, const char *name);
+/* For create(): FS_OK when r, H, V and iso are all positive, else FS_ERR_INPUT
+ * (fs_fail) naming the method. */
+int fs_method_check_field(const char *method, const fs_field *f);
+/* For create(): the setup's parameter values, or the table's defaults. */
+void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v);
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* The one static table of methods (libvmaf-style). Add a method here. */
 #include "method.h"
+#include "fs_error.h"
 #include <string.h>
 
 extern const fs_method fs_method_spheres;
@@ -36,3 +37,15 @@ int fs_method_param_index(const fs_method *m, const char *name)
 }
 
 int fs_method_wants_color(const fs_method *m, const fs_particles *p) { return m->writes_color && p->color != NULL; }
+
+int fs_method_check_field(const char *method, const fs_field *f)
+{
+    if (f->r > 0 && f->H > 0 && f->volume > 0 && f->iso > 0) return FS_OK;
+    return fs_fail(FS_ERR_INPUT, "%s: r %g, H %g, V %g and iso %g must all be positive", method, f->r, f->H, f->volume,
+                   f->iso);
+}
+
+void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v)
+{
+    for (int i = 0; i < n; i++) v[i] = setup->params ? setup->params[i] : defs[i].def;
+}

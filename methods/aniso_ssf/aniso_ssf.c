@@ -93,7 +93,7 @@ static void *create(const fs_method_setup *setup)
     assf *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory"); return NULL; }
     s->f = *f;
-    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    fs_method_values(setup, params, P_COUNT, s->v);
     fs_aniso_defaults(&s->ap, f->kernel, f->r);
     s->ap.radius = (float)s->v[P_ARAD] * f->r;
     s->ap.kappa = (float)s->v[P_KAPPA];

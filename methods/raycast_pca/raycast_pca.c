@@ -77,15 +77,11 @@ static void destroy(void *self)
 static void *create(const fs_method_setup *setup)
 {
     const fs_field *f = &setup->field;
-    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
-        fs_fail(FS_ERR_INPUT, "raycast_pca: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume,
-                f->iso);
-        return NULL;
-    }
+    if (fs_method_check_field("raycast_pca", f)) return NULL;
     rpca *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory"); return NULL; }
     s->f = *f;
-    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    fs_method_values(setup, params, P_COUNT, s->v);
     const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *march[] = {"raycast_pca/march.comp.glsl", NULL};
     const char *normals[] = {"raycast_pca/normals.comp.glsl", NULL};

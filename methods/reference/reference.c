@@ -78,15 +78,12 @@ static void destroy(void *self)
 static void *create(const fs_method_setup *setup)
 {
     const fs_field *f = &setup->field;
-    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
-        fs_fail(FS_ERR_INPUT, "reference: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume, f->iso);
-        return NULL;
-    }
+    if (fs_method_check_field("reference", f)) return NULL;
     reference *R = calloc(1, sizeof *R);
     if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
     R->f = *f;
     double v[P_COUNT];
-    for (int i = 0; i < P_COUNT; i++) v[i] = setup->params ? setup->params[i] : params[i].def;
+    fs_method_values(setup, params, P_COUNT, v);
     R->aniso = v[P_FIELD] != 0;
     fs_aniso_defaults(&R->ap, f->kernel, f->r);
     R->ap.radius = (float)v[P_ARAD] * f->r;

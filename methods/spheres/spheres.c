@@ -45,8 +45,10 @@ static void *create(const fs_method_setup *setup)
     spheres *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
     s->field = setup->field;
-    s->radius = (float)setup->params[0] * setup->field.r;
-    s->thickness = setup->params[1] != 0;
+    double v[2];
+    fs_method_values(setup, params, 2, v);
+    s->radius = (float)v[0] * setup->field.r;
+    s->thickness = v[1] != 0;
     const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     s->prog_surface = fs_program_build(surf, NULL);
     if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "MODE_THICKNESS 1");

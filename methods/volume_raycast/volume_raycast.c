@@ -103,15 +103,11 @@ static void box_corners(float out[36 * 4])
 static void *create(const fs_method_setup *setup)
 {
     const fs_field *f = &setup->field;
-    if (!(f->r > 0) || !(f->H > 0) || !(f->volume > 0) || !(f->iso > 0)) {
-        fs_fail(FS_ERR_INPUT, "volume_raycast: r %g, H %g, V %g and iso %g must all be positive", f->r, f->H, f->volume,
-                f->iso);
-        return NULL;
-    }
+    if (fs_method_check_field("volume_raycast", f)) return NULL;
     vr *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); return NULL; }
     s->f = *f;
-    for (int i = 0; i < P_COUNT; i++) s->v[i] = setup->params ? setup->params[i] : params[i].def;
+    fs_method_values(setup, params, P_COUNT, s->v);
     if (setup->scene) s->scene = *setup->scene;
     else fs_scene_defaults(&s->scene);
     const char *faces[] = {"volume_raycast/faces.vert.glsl", "volume_raycast/faces.frag.glsl", NULL};
