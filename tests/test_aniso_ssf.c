@@ -161,12 +161,9 @@ static void filters(void)
         fs_stages st = {0};
         fs_gbuffer_alloc(&gb[k], 128, 128, 0);
         CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
-        const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback"};
-        for (int w = 0; w < 6; w++) {
-            int found = 0;
-            for (int i = 0; i < st.n; i++) found |= !strcmp(st.name[i], want[w]);
-            CHECK(found, "%s: stage %s not reported", names[k], want[w]);
-        }
+        const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback", NULL};
+        const char *missing = fs_test_missing_stage(&st, want);
+        CHECK(!missing, "%s: stage %s not reported", names[k], missing);
     }
     for (int k = 1; k < 5; k++) {
         int cov_diff = 0, bad = 0, n = 0;

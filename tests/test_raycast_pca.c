@@ -38,12 +38,9 @@ static void against_reference(void)
     CHECK(mt.n_both > 1500, "only %zu pixels covered by both", mt.n_both);
     CHECK(mt.mask_iou >= 0.97, "IoU %g", mt.mask_iou);
     CHECK(fabs(mt.depth_bias_r) + mt.depth_p95_r <= 0.1, "depth bias %g r, p95 %g r", mt.depth_bias_r, mt.depth_p95_r);
-    const char *want[] = {"splat", "march", "normals", "filter", "thickness", "readback"};
-    for (int i = 0; i < 6; i++) {
-        int found = 0;
-        for (int k = 0; k < st.n; k++) found |= !strcmp(st.name[k], want[i]);
-        CHECK(found, "stage %s not reported", want[i]);
-    }
+    const char *want[] = {"splat", "march", "normals", "filter", "thickness", "readback", NULL};
+    const char *missing = fs_test_missing_stage(&st, want);
+    CHECK(!missing, "stage %s not reported", missing);
     double thick = 0;
     for (int i = 0; i < 128 * 128; i++) thick += a.thickness[i];
     CHECK(thick > 0, "no thickness");

@@ -55,3 +55,13 @@ int fs_test_load_dam(fs_particles *p, fs_scene *s, fs_field *f)
     *f = fs_scene_field(s);
     return FS_OK;
 }
+
+const char *fs_test_missing_stage(const fs_stages *st, const char *const *want)
+{
+    for (; *want; want++) {
+        int found = 0;
+        for (int k = 0; k < st->n; k++) found |= !strcmp(st->name[k], *want);
+        if (!found) return *want;
+    }
+    return NULL;
+}

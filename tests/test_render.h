@@ -8,6 +8,9 @@
 int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
                    const fs_camera *cam, fs_gbuffer *out, fs_stages *st);
 
+/* The first name of the NULL-terminated list want that st does not report, or NULL. */
+const char *fs_test_missing_stage(const fs_stages *st, const char *const *want);
+
 struct fs_scene;
 /* The 6,859-particle SPlisHSPlasH dam break (r 0.025, volume_scale 0.8) with a
  * default scene framing it at 128x128 and its field. FS_OK or an error code

@@ -100,12 +100,9 @@ static void against_reference(void)
     CHECK(mt.interior_normal_mean_deg < 10, "interior normal %g deg", mt.interior_normal_mean_deg);
     CHECK(me.mask_iou > 0.999 && me.normal_mean_deg < 0.5, "splat and exact grids disagree: IoU %g, %g deg",
           me.mask_iou, me.normal_mean_deg);
-    const char *want[] = {"density_grid", "extract", "caustics", "visibility", "blend", "normalize", "thickness"};
-    for (int i = 0; i < 7; i++) {
-        int found = 0;
-        for (int k = 0; k < st.n; k++) found |= !strcmp(st.name[k], want[i]);
-        CHECK(found, "stage %s not reported", want[i]);
-    }
+    const char *want[] = {"density_grid", "extract", "caustics", "visibility", "blend", "normalize", "thickness", NULL};
+    const char *missing = fs_test_missing_stage(&st, want);
+    CHECK(!missing, "stage %s not reported", missing);
     double thick = 0;
     for (int i = 0; i < 128 * 128; i++) thick += a.thickness[i];
     CHECK(thick > 0, "no thickness");

@@ -129,12 +129,9 @@ static void against_reference(void)
     CHECK(mt.interior_normal_mean_deg < 10, "interior normal %g deg", mt.interior_normal_mean_deg);
     CHECK(ms.mask_iou > 0.999 && ms.depth_p95_r < 0.01 && ms.normal_mean_deg < 0.1, "slice differs from layered");
     CHECK(me.mask_iou > 0.999 && me.depth_p95_r < 0.01 && me.normal_mean_deg < 0.1, "exact differs from layered");
-    const char *want[] = {"volume", "faces", "march", "readback"};
-    for (int i = 0; i < 4; i++) {
-        int found = 0;
-        for (int k = 0; k < st.n; k++) found |= !strcmp(st.name[k], want[i]);
-        CHECK(found, "stage %s not reported", want[i]);
-    }
+    const char *want[] = {"volume", "faces", "march", "readback", NULL};
+    const char *missing = fs_test_missing_stage(&st, want);
+    CHECK(!missing, "stage %s not reported", missing);
     double thick = 0, thick_ref = 0;
     for (int i = 0; i < 128 * 128; i++) {
         thick += a.thickness[i];
