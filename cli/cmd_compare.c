@@ -9,7 +9,7 @@
 #include "render_output.h"
 #include "shading.h"
 #include "stats.h"
-#include "synthetic.h"
+#include "analytic.h"
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>

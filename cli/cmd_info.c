@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "particle_stats.h"
 #include "fs_error.h"
 #include "particle_io.h"
 #include <stdio.h>

@@ -1,1 +1,1 @@
-fs_add_test(test_scene test_scene.c)
+fs_add_test(test_scene fs_scene test_scene.c)

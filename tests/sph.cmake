@@ -1,5 +1,5 @@
 # Area "sph": the SPH simulator (CPU and GPU paths, boundaries, time step, scenes).
-fs_add_test(test_sph test_sph.c)
+fs_add_test(test_sph fs_sph test_sph.c)
 set_tests_properties(test_sph PROPERTIES TIMEOUT 120)
 # fluidsurf simulate: bad input (exit 2, one line, no file) and short CPU/GPU runs.
 add_test(NAME cli_simulate COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_simulate.sh $<TARGET_FILE:fluidsurf>

@@ -338,6 +338,7 @@ static void aniso_reference(void)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     c_vs_glsl();

@@ -183,6 +183,7 @@ static void test_egl(fs_gl_context *os, const fs_gbuffer *ref)
 
 int main(int argc, char **argv)
 {
+    fs_methods_register_builtin();
     expect_failures = argc > 1 && !strcmp(argv[1], "--expect-failures");
     make_block();
     fs_gbuffer ref = {0}, g = {0};

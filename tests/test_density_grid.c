@@ -3,7 +3,7 @@
  * on the real dam break (cubic and Wyvill kernels, other up axes, 1 vs 16
  * clusters); (c) VDB write + read round trip (tests/density_grid.cmake then
  * runs vdb_print on the file); (d) bad input. Trilinear sampling first. */
-#include "density_grid.h"
+#include "density_splat.h"
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl_context.h"

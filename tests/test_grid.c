@@ -5,7 +5,7 @@
 #include "grid.h"
 #include "kernels.h"
 #include "particle_io.h"
-#include "particles.h"
+#include "particle_stats.h"
 #include "timing.h"
 #include <stdlib.h>
 #include <string.h>

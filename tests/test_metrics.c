@@ -2,7 +2,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gbuffer.h"
-#include "image_io.h"
+#include "srgb.h"
 #include "metrics.h"
 #include <math.h>
 #include <stdlib.h>

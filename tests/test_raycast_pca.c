@@ -10,7 +10,7 @@
 #include "metrics.h"
 #include "particle_io.h"
 #include "scene.h"
-#include "synthetic.h"
+#include "analytic.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -175,6 +175,7 @@ static void colour_tracking(void)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     against_reference();

@@ -6,7 +6,7 @@
 #include "fs_test.h"
 #include "method.h"
 #include "particle_io.h"
-#include "synthetic.h"
+#include "analytic.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -321,6 +321,7 @@ static void refusals(void)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     flat_normals();
     against_analytic();
     thickness_and_params();

@@ -12,6 +12,7 @@
 
 int main(void)
 {
+    fs_methods_register_builtin();
     fs_scene s;
     fs_scene_defaults(&s);
     s.camera.width = s.camera.height = 128;

@@ -113,6 +113,7 @@ static void test_golden(const fs_method *m)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     const fs_method *m = fs_method_find("spheres");

@@ -196,6 +196,7 @@ static void own_appearance_and_exports(void)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     extraction_on_sphere();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }

@@ -2,7 +2,7 @@
  * determinism, motion, and the analytic G-buffer against hand-computed values. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "synthetic.h"
+#include "analytic.h"
 #include <string.h>
 
 static fs_scene scene(fs_synth_shape shape, float jitter, unsigned seed)

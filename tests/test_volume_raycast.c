@@ -3,7 +3,7 @@
  * particle reaches more layers than one geometry-shader draw emits); the method
  * against the CPU reference on a real dam break; layered, slice and exact builds
  * giving the same image; the translucent transfer function; the .vdb export. */
-#include "density_grid.h"
+#include "density_splat.h"
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl.h"
@@ -238,6 +238,7 @@ static void transfer_and_export(void)
 
 int main(void)
 {
+    fs_methods_register_builtin();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     layered_grid();

@@ -2,4 +2,4 @@
 # against the exact one, the method against the reference, layered / slice /
 # exact builds giving the same image, the translucent transfer function, the
 # .vdb export.
-fs_add_test(test_volume_raycast test_volume_raycast.c test_render.c)
+fs_add_test(test_volume_raycast fs_test_methods test_volume_raycast.c test_render.c)

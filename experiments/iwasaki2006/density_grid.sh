@@ -7,7 +7,7 @@
 # (default 3) per cell, the splat grid's relative L2 difference to the exact grid,
 # the disks drawn (one per particle per 4-plane pass its band was drawn in) and
 # the renderer. On OSMesa the renderer is llvmpipe: the "GPU" path runs on the
-# same CPU cores as the C code, so the ratio is not a GPU speed-up (DESIGN.md).
+# same CPU cores as the C code, so the ratio is not a GPU speed-up (docs/DESIGN.md).
 #
 # Timed: exact_cpu = neighbour grid build + exact sum (OpenMP over planes);
 # slice_splat = clustering + upload + all passes + read back, after one untimed

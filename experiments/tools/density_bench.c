@@ -12,7 +12,7 @@
  * method slice_splat: clustering + upload + every 4-plane pass + read back, on
  * the OSMesa context (GL_RENDERER in the row). Each splat run is compared with
  * the first exact grid; each exact run with the first (should be 0). */
-#include "density_grid.h"
+#include "density_splat.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"

@@ -86,6 +86,7 @@ static int render_with(renderer *r, fs_sph *sim, const fs_scene *sc, const fs_ca
 
 int main(int argc, char **argv)
 {
+    fs_methods_register_builtin();
     if (argc < 3 || (strcmp(argv[2], "cpu") && strcmp(argv[2], "gpu"))) {
         fprintf(stderr, "usage: inacio_tables PARTICLES cpu|gpu [SETTLE [FRAMES [SIZE [GRID [LIMIT_S]]]]]\n");
         return 2;

@@ -1,4 +1,4 @@
-/* reference: exact CPU ray caster of the SPH iso-surface phi = iso (DESIGN.md,
+/* reference: exact CPU ray caster of the SPH iso-surface phi = iso (docs/DESIGN.md,
  * References). Per pixel the ray walks the neighbour grid cell by cell (3D-DDA);
  * empty cells are skipped, inside a non-empty cell the ray advances by steps
  * proven not to cross the iso-surface, a sign change is bisected to 1e-4 r and

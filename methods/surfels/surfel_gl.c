@@ -5,6 +5,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_target.h"
+#include "density_splat.h"
 #include "gl_sprites.h"
 #include "shader.h"
 #include <math.h>

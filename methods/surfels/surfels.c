@@ -5,7 +5,7 @@
  * refraction and the caustics (5.3, surfel_gl.c). See README.md. */
 #include "caustics.h"
 #include "output_file.h"
-#include "density_grid.h"
+#include "density_splat.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl.h"

@@ -6,7 +6,7 @@
  * textures give each ray's entry and exit, and a compute pass marches between
  * them (shaders/volume_raycast/march.comp.glsl) writing the G-buffer and the
  * transfer-function image. See README.md. */
-#include "density_grid.h"
+#include "density_splat.h"
 #include "output_file.h"
 #include "frame_source.h"
 #include "fs_error.h"

@@ -1,0 +1,19 @@
+/* One-line errors ("FILE: what is wrong") and the exit codes of docs/DESIGN.md. */
+#ifndef FS_ERROR_H
+#define FS_ERROR_H
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { FS_OK = 0, FS_ERR_RUNTIME = 1, FS_ERR_INPUT = 2, FS_ERR_DIFF = 3 };
+
+/* Stores a formatted message (thread-local) and returns code, so callers write
+ * `return fs_fail(FS_ERR_INPUT, "%s: truncated POINTS section", path);` */
+int fs_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+const char *fs_error_message(void);
+void fs_error_clear(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,137 @@
+#include "gl_target.h"
+#include "fs_error.h"
+#include "gl.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+int fs_gl_target_create(fs_gl_target *t, int w, int h)
+{
+    memset(t, 0, sizeof *t);
+    t->w = w;
+    t->h = h;
+    const GLenum fmt[FS_TARGET_COUNT] = {GL_R32F, GL_RGBA32F, GL_R32F, GL_RGBA32F};
+    glCreateTextures(GL_TEXTURE_2D, FS_TARGET_COUNT, t->tex);
+    for (int i = 0; i < FS_TARGET_COUNT; i++) {
+        glTextureStorage2D(t->tex[i], 1, fmt[i], w, h);
+        glTextureParameteri(t->tex[i], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t->tex[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glCreateRenderbuffers(1, &t->zbuf);
+    glNamedRenderbufferStorage(t->zbuf, GL_DEPTH_COMPONENT32F, w, h);
+    glCreateFramebuffers(1, &t->fbo_surface);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT0, t->tex[FS_TARGET_DEPTH], 0);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT1, t->tex[FS_TARGET_NORMAL], 0);
+    glNamedFramebufferTexture(t->fbo_surface, GL_COLOR_ATTACHMENT2, t->tex[FS_TARGET_COLOR], 0);
+    glNamedFramebufferRenderbuffer(t->fbo_surface, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->zbuf);
+    const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(t->fbo_surface, 3, bufs);
+    glCreateFramebuffers(1, &t->fbo_thickness);
+    glNamedFramebufferTexture(t->fbo_thickness, GL_COLOR_ATTACHMENT0, t->tex[FS_TARGET_THICKNESS], 0);
+    if (glCheckNamedFramebufferStatus(t->fbo_surface, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE ||
+        glCheckNamedFramebufferStatus(t->fbo_thickness, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        fs_gl_target_destroy(t);
+        return fs_fail(FS_ERR_RUNTIME, "OpenGL: float render targets of %dx%d are incomplete", w, h);
+    }
+    return FS_OK;
+}
+
+void fs_gl_target_destroy(fs_gl_target *t)
+{
+    if (t->fbo_surface) glDeleteFramebuffers(1, &t->fbo_surface);
+    if (t->fbo_thickness) glDeleteFramebuffers(1, &t->fbo_thickness);
+    if (t->tex[0]) glDeleteTextures(FS_TARGET_COUNT, t->tex);
+    if (t->zbuf) glDeleteRenderbuffers(1, &t->zbuf);
+    memset(t, 0, sizeof *t);
+}
+
+void fs_gl_target_clear(fs_gl_target *t)
+{
+    const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
+    for (int i = 0; i < 3; i++) glClearNamedFramebufferfv(t->fbo_surface, GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(t->fbo_surface, GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(t->fbo_thickness, GL_COLOR, 0, zero);
+}
+
+void fs_gl_target_begin_surface(const fs_gl_target *t)
+{
+    glViewport(0, 0, t->w, t->h);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo_surface);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+void fs_gl_target_begin_thickness(const fs_gl_target *t)
+{
+    glViewport(0, 0, t->w, t->h);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo_thickness);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+}
+
+void fs_gl_target_end_pass(void)
+{
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst)
+{
+    size_t row = (size_t)w * comps;
+    float *tmp = malloc(row * h * sizeof(float));
+    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "out of memory reading back a %dx%d image", w, h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(tex, 0, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, (GLsizei)(row * h * sizeof(float)), tmp);
+    for (int y = 0; y < h; y++) memcpy(dst + row * y, tmp + row * (h - 1 - y), row * sizeof(float));
+    free(tmp);
+    return FS_OK;
+}
+
+size_t fs_gl_ssbo_chunk(size_t elem_bytes)
+{
+    GLint64 max = 0;
+    GLint v = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &v);
+    max = v > 0 ? v : (128 << 20);
+    if (max > (GLint64)128 << 20) max = (GLint64)128 << 20;
+    return (size_t)max / elem_bytes;
+}
+
+int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs)
+{
+    int nb = (int)((n + chunk - 1) / chunk);
+    if (nb > maxbufs) return -fs_fail(FS_ERR_INPUT, "%zu particles need %d buffers of %zu: too many", n, nb, chunk);
+    for (int b = 0; b < nb; b++) {
+        size_t cnt = n - b * chunk < chunk ? n - b * chunk : chunk;
+        glCreateBuffers(1, &bufs[b]);
+        glNamedBufferStorage(bufs[b], (GLsizeiptr)(cnt * 4 * sizeof(float)), vec4s + 4 * b * chunk, 0);
+    }
+    if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
+    return nb;
+}
+
+unsigned fs_gl_texture_2d(unsigned format, int w, int h)
+{
+    unsigned t = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &t);
+    glTextureStorage2D(t, 1, format, w, h);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
+unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers)
+{
+    unsigned t = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+    glTextureStorage3D(t, 1, format, w, h, layers);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}

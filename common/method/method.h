@@ -1,0 +1,71 @@
+/* The method interface (docs/DESIGN.md): a struct of function pointers, one static
+ * registry (registry.c). A method turns particles + camera into a G-buffer. */
+#ifndef FS_METHOD_H
+#define FS_METHOD_H
+#include "camera.h"
+#include "gbuffer.h"
+#include "grid.h"
+#include "kernels.h"
+#include "params.h"
+#include "particles.h"
+#include "timing.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What every method sees of the scene. */
+struct fs_scene;
+typedef struct fs_method_setup {
+    fs_field field;         /* r, V, kernel, H, iso */
+    const double *params;   /* values in the order of the method's param table */
+    /* Light, material, floor and up axis, for methods with their own appearance
+     * (writes_own); NULL means fs_scene_defaults(). */
+    const struct fs_scene *scene;
+} fs_method_setup;
+
+typedef struct fs_method {
+    const char *name;
+    const char *description; /* one line */
+    const char *paper;       /* "" for our own */
+    int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
+    int writes_color;        /* 1: fills out->color when the particles carry colour */
+    int writes_own;          /* 1: fills out->own and out->caustics when they are allocated */
+    const fs_param_def *params;
+    int nparams;
+    /* Returns NULL on failure with fs_fail() set. */
+    void *(*create)(const fs_method_setup *setup);
+    /* Particles (and a grid built with cell >= field.H) stay valid until destroy. */
+    int (*upload)(void *self, const fs_particles *p, const fs_grid *g);
+    /* Renders one view into out (already sized to the camera); adds stage times. */
+    int (*render)(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t);
+    void (*destroy)(void *self);
+    /* Optional (NULL when none): after upload, writes the method's intermediate
+     * surface to path, its kind chosen by the extension (surfels: .vdb density
+     * grid, .ply surfels). FS_ERR_INPUT for an extension it does not write. */
+    int (*export_file)(void *self, const char *path);
+} fs_method;
+
+enum { FS_METHOD_HIDDEN = 1 }; /* registered, found by name, not listed */
+/* Adds m to the registry (again: no-op). FS_ERR_INPUT when another method has its name. */
+int fs_method_register(const fs_method *m, int flags);
+/* The built-in table of methods/registry.c (idempotent). */
+void fs_methods_register_builtin(void);
+/* By name, hidden ones included; NULL when none. */
+const fs_method *fs_method_find(const char *name);
+/* The listed (not hidden) methods, in registration order. */
+int fs_method_count(void);
+const fs_method *fs_method_at(int i);
+/* 1 when the G-buffer for m on particles p needs a colour layer. */
+int fs_method_wants_color(const fs_method *m, const fs_particles *p);
+/* Index of a parameter in m->params, or -1. */
+int fs_method_param_index(const fs_method *m, const char *name);
+/* For create(): FS_OK when r, H, V and iso are all positive, else FS_ERR_INPUT
+ * (fs_fail) naming the method. */
+int fs_method_check_field(const char *method, const fs_field *f);
+/* For create(): the setup's parameter values, or the table's defaults. */
+void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,64 @@
+/* The registry of methods (libvmaf-style): methods/registry.c registers the
+ * built-in table; a test may register a method of its own the same way. */
+#include "method.h"
+#include "fs_error.h"
+#include <string.h>
+
+#define MAX_METHODS 32
+
+/* Registered methods, in registration order; hidden ones are found by name
+ * but not listed. */
+static const fs_method *methods[MAX_METHODS];
+static int hidden[MAX_METHODS], nmethods;
+
+int fs_method_register(const fs_method *m, int flags)
+{
+    for (int i = 0; i < nmethods; i++)
+        if (methods[i] == m) return FS_OK;
+        else if (!strcmp(methods[i]->name, m->name)) return fs_fail(FS_ERR_INPUT, "method '%s' is registered twice", m->name);
+    if (nmethods == MAX_METHODS) return fs_fail(FS_ERR_RUNTIME, "method '%s': more than %d methods", m->name, MAX_METHODS);
+    hidden[nmethods] = (flags & FS_METHOD_HIDDEN) != 0;
+    methods[nmethods++] = m;
+    return FS_OK;
+}
+
+int fs_method_count(void)
+{
+    int n = 0;
+    for (int i = 0; i < nmethods; i++) n += !hidden[i];
+    return n;
+}
+
+const fs_method *fs_method_at(int i)
+{
+    for (int k = 0; k < nmethods; k++)
+        if (!hidden[k] && i-- == 0) return methods[k];
+    return NULL;
+}
+
+const fs_method *fs_method_find(const char *name)
+{
+    for (int i = 0; i < nmethods; i++)
+        if (!strcmp(methods[i]->name, name)) return methods[i];
+    return NULL;
+}
+int fs_method_param_index(const fs_method *m, const char *name)
+{
+    for (int i = 0; i < m->nparams; i++)
+        if (!strcmp(m->params[i].name, name)) return i;
+    return -1;
+}
+
+int fs_method_wants_color(const fs_method *m, const fs_particles *p) { return m->writes_color && p->color != NULL; }
+
+int fs_method_check_field(const char *method, const fs_field *f)
+{
+    if (f->r > 0 && f->H > 0 && f->volume > 0 && f->iso > 0) return FS_OK;
+    return fs_fail(FS_ERR_INPUT, "%s: r %g, H %g, V %g and iso %g must all be positive", method, f->r, f->H, f->volume,
+                   f->iso);
+}
+
+void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v)
+{
+    for (int i = 0; i < n; i++) v[i] = setup->params ? setup->params[i] : defs[i].def;
+}

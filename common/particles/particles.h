@@ -1,0 +1,37 @@
+/* A particle set: structure-of-arrays positions plus optional attributes. */
+#ifndef FS_PARTICLES_H
+#define FS_PARTICLES_H
+#include <stddef.h>
+#include <stdint.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { FS_HAS_VELOCITY = 1, FS_HAS_COLOR = 2, FS_HAS_PHASE = 4 };
+
+typedef struct fs_particles {
+    size_t n;
+    float *x, *y, *z;       /* positions, scene units */
+    float *vx, *vy, *vz;    /* velocity or NULL */
+    float *color;           /* linear RGB, 3 floats per particle, or NULL */
+    int32_t *phase;         /* phase / material id or NULL */
+    float bmin[3], bmax[3]; /* bounding box, kept current by fs_particles_bounds */
+    float radius;           /* radius stored in the file, 0 when unknown */
+} fs_particles;
+
+/* Allocates n particles with positions and the attributes named in fields
+ * (FS_HAS_*), zero-filled. Returns FS_OK or FS_ERR_RUNTIME. */
+int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields);
+void fs_particles_free(fs_particles *p);
+unsigned fs_particles_fields(const fs_particles *p);
+void fs_particles_bounds(fs_particles *p);
+/* FS_ERR_INPUT with "name: ..." when there are no particles or a position is NaN/Inf. */
+int fs_particles_validate(const fs_particles *p, const char *name);
+/* Per-axis quantile box [frac, 1 - frac] (from at most 65536 evenly spaced
+ * particles): frames the body of the fluid without far-flung spray. */
+void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
