@@ -9,6 +9,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "run.h"
 #include "scene.h"
 #include <stdlib.h>
 #include <string.h>
@@ -44,15 +45,14 @@ static int render_block(fs_gbuffer *g)
 {
     const fs_method *m = fs_method_find("spheres");
     if (!m) return fs_fail(FS_ERR_RUNTIME, "spheres is not registered");
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&scene), params, NULL};
-    fs_gbuffer_alloc(g, SIZE, SIZE, 0);
-    void *self = m->create(&setup);
-    if (!self) return FS_ERR_RUNTIME;
-    fs_stages st = {0};
-    int rc = m->upload(self, &block, NULL);
-    if (!rc) rc = m->render(self, &scene.camera, g, &st);
-    m->destroy(self);
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    int rc = fs_run_open(&run, m, &scene, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &block, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, &scene.camera, &im, NULL);
+    fs_run_close(run);
+    *g = im.g; /* empty on failure */
+    if (rc) fs_gbuffer_free(g);
     return rc;
 }
 

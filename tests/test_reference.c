@@ -5,6 +5,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
+#include "run.h"
 #include "particle_io.h"
 #include "analytic.h"
 #include <stdlib.h>
@@ -22,28 +23,30 @@ static fs_scene scene(fs_synth_shape shape, float jitter, unsigned seed)
     return s;
 }
 
-/* Generates the scene, renders it with the reference into out. */
-static int render(const fs_scene *s, const fs_camera *cam, const double *params, fs_gbuffer *out)
+/* Generates the scene, renders it with the reference (plus the setting
+ * "reference.P=V" when set is not NULL) into out, through the run layer. */
+static int render(const fs_scene *scene0, const fs_camera *cam, const char *set, fs_gbuffer *out)
 {
     const fs_method *m = fs_method_find("reference");
     if (!m) return fs_fail(FS_ERR_RUNTIME, "reference not registered");
-    fs_particles p;
-    int rc = fs_synthetic_generate(s, 0, &p);
-    if (rc) return rc;
-    fs_method_setup setup = {fs_scene_field(s), params, NULL};
-    fs_grid g;
-    rc = fs_grid_build(&g, &p, setup.field.H);
-    void *self = rc ? NULL : m->create(&setup);
-    if (!rc && !self) rc = FS_ERR_RUNTIME;
-    if (!rc) rc = m->upload(self, &p, &g);
+    static fs_scene s; /* the run keeps a pointer until closed */
+    s = *scene0;
+    fs_particles p = {0};
+    fs_run *run = NULL;
+    fs_run_image im = {0};
     fs_stages st = {0};
-    if (!rc) rc = m->render(self, cam, out, &st);
+    int rc = set ? fs_scene_add_set(&s, set) : FS_OK;
+    if (!rc) rc = fs_synthetic_generate(&s, 0, &p);
+    if (!rc) rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, cam, &im, &st);
     if (!rc) {
         CHECK(st.n == 1 && !strcmp(st.name[0], "march"), "stage named march");
         g_ms += st.ms[0];
-    }
-    if (self) m->destroy(self);
-    fs_grid_free(&g);
+        fs_gbuffer_free(out);
+        *out = im.g;
+    } else fs_run_image_free(&im);
+    fs_run_close(run);
     fs_particles_free(&p);
     return rc;
 }
@@ -189,12 +192,8 @@ static void thickness_and_params(void)
     fs_gbuffer on, off;
     fs_gbuffer_alloc(&on, 17, 17, 0);
     fs_gbuffer_alloc(&off, 17, 17, 0);
-    const fs_method *m = fs_method_find("reference");
-    double params[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) params[i] = m->params[i].def;
-    CHECK(render(&s, &cam, params, &on) == FS_OK, "thickness on");
-    params[fs_method_param_index(m, "thickness")] = 0;
-    CHECK(render(&s, &cam, params, &off) == FS_OK, "thickness off");
+    CHECK(render(&s, &cam, NULL, &on) == FS_OK, "thickness on");
+    CHECK(render(&s, &cam, "reference.thickness=off", &off) == FS_OK, "thickness off");
     size_t mid = 8 * 17 + 8;
     double depth = on.depth[mid] / r, thick = on.thickness[mid] / r;
     printf("vertical ray through the exact slab: depth %.4f r (ideal %.1f r), thickness %.4f r (ideal 12 r)\n", depth,
@@ -247,15 +246,17 @@ static void against_brute_force(void)
     fs_camera_frame_box(&cam, p.bmin, p.bmax, 1);
     fs_camera_fit_clip(&cam, p.bmin, p.bmax);
     const fs_method *m = fs_method_find("reference");
-    fs_method_setup setup = {f, NULL, NULL};
-    fs_grid g;
+    fs_grid g; /* the test's own, for the brute-force march below */
     fs_grid_build(&g, &p, f.H);
-    void *self = m->create(&setup);
-    fs_gbuffer gb;
-    fs_gbuffer_alloc(&gb, 40, 40, 0);
-    fs_stages st = {0};
-    CHECK(self && m->upload(self, &p, &g) == FS_OK && m->render(self, &cam, &gb, &st) == FS_OK, "render: %s",
-          fs_error_message());
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, &g, NULL);
+    if (!rc) rc = fs_run_render(run, &cam, &im, NULL);
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    fs_run_close(run);
+    if (rc) { fs_run_image_free(&im); fs_grid_free(&g); fs_particles_free(&p); return; }
+    const fs_gbuffer gb = im.g;
     float rt[3], up[3], fwd[3];
     fs_camera_basis(&cam, rt, up, fwd);
     int plain = 0, missed = 0, behind = 0, extra = 0;
@@ -290,8 +291,7 @@ static void against_brute_force(void)
     CHECK(plain > 200, "plain march found %d surface pixels", plain);
     CHECK(missed == 0 && behind == 0, "reference missed %d, found a later surface at %d pixels", missed, behind);
     CHECK(worst < 0.01, "depths differ by %g r where both find the same surface", worst);
-    if (self) m->destroy(self);
-    fs_gbuffer_free(&gb);
+    fs_run_image_free(&im);
     fs_grid_free(&g);
     fs_particles_free(&p);
 }
@@ -304,17 +304,21 @@ static void refusals(void)
     fs_scene s = scene(FS_SYNTH_BOX, 0.1f, 1);
     fs_particles p;
     fs_synthetic_generate(&s, 0, &p);
-    fs_method_setup setup = {fs_scene_field(&s), NULL, NULL};
     fs_grid g;
-    fs_grid_build(&g, &p, 0.5f * setup.field.H);
-    void *self = m->create(&setup);
-    CHECK(self != NULL, "create");
-    int rc = self ? m->upload(self, &p, &g) : -1;
+    fs_grid_build(&g, &p, 0.5f * fs_scene_field(&s).H);
+    fs_run *run = NULL;
+    CHECK(fs_run_open(&run, m, &s, NULL, NULL) == FS_OK, "open: %s", fs_error_message());
+    int rc = run ? fs_run_upload(run, &p, &g, NULL) : -1;
     CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "smaller than the kernel support"),
           "grid cell below H refused: %s", fs_error_message());
-    if (self) m->destroy(self);
-    setup.field.iso = 0;
-    CHECK(m->create(&setup) == NULL, "iso 0 refused");
+    fs_run_image im = {0};
+    CHECK(run && fs_run_render(run, &s.camera, &im, NULL) != FS_OK && strstr(fs_error_message(), "smaller than the kernel support"),
+          "no render after a failed upload, with its reason: %s", fs_error_message());
+    fs_run_image_free(&im);
+    fs_run_close(run);
+    run = NULL;
+    s.iso = 0;
+    CHECK(fs_run_open(&run, m, &s, NULL, NULL) != FS_OK && run == NULL, "iso 0 refused");
     fs_grid_free(&g);
     fs_particles_free(&p);
 }

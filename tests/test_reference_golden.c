@@ -4,10 +4,8 @@
 #include "fs_test.h"
 #include "golden.h"
 #include "method.h"
-#include "method_params.h"
-#include "frame_source.h"
+#include "run.h"
 #include "particle_io.h"
-#include "shading.h"
 #include <stdlib.h>
 
 int main(void)
@@ -22,28 +20,16 @@ int main(void)
     if (rc) TEST_DONE();
     fs_scene_frame_particles(&s, &p);
     const fs_method *m = fs_method_find("reference");
-    double params[FS_MAX_PARAMS];
-    CHECK(fs_method_params_resolve(m, &s, params) == FS_OK, "params");
-    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
-    fs_grid g;
-    fs_gbuffer gb;
-    fs_stages st = {0};
-    void *self = NULL;
-    rc = fs_grid_build(&g, &p, setup.field.H);
-    if (!rc && !(self = m->create(&setup))) rc = FS_ERR_RUNTIME;
-    if (!rc) rc = m->upload(self, &p, &g);
-    if (!rc) rc = fs_gbuffer_alloc(&gb, 128, 128, 0);
-    if (!rc) rc = m->render(self, &s.camera, &gb, &st);
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
+    if (!rc) rc = fs_run_shade(run, &s.camera, &im, FS_APPEARANCE_SHARED, NULL);
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
-    if (!rc) {
-        float *rgba = malloc(128 * 128 * 4 * sizeof(float));
-        fs_shade(&s, &s.camera, &gb, fs_scene_floor(&s, &p), rgba);
-        CHECK(fs_golden_check("reference_cube", rgba, 128, 128, 1.0, 0.01) == 0, "golden image reference_cube differs");
-        free(rgba);
-        fs_gbuffer_free(&gb);
-    }
-    if (self) m->destroy(self);
-    fs_grid_free(&g);
+    if (!rc) CHECK(fs_golden_check("reference_cube", im.rgba, 128, 128, 1.0, 0.01) == 0, "golden image reference_cube differs");
+    fs_run_image_free(&im);
+    fs_run_close(run);
     fs_particles_free(&p);
     TEST_DONE();
 }

@@ -1,21 +1,24 @@
 #include "test_render.h"
 #include "fs_error.h"
 #include "particle_io.h"
+#include "run.h"
 #include "scene.h"
 #include <stdio.h>
 #include <string.h>
 
-static int param_values(const fs_method *m, double *v, const char *const *sets)
+/* A scene whose field is f, with "method.name=value" settings for the method. */
+static int scene_for(fs_scene *s, const char *method, const char *const *sets, fs_field f)
 {
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
+    fs_scene_defaults(s);
+    s->radius = f.r;
+    s->volume_scale = f.volume / (8.0f * f.r * f.r * f.r);
+    s->kernel = f.kernel;
+    s->support_r = f.H / f.r;
+    s->iso = f.iso;
     for (; sets && *sets; sets++) {
-        char name[64];
-        const char *eq = strchr(*sets, '=');
-        if (!eq) return fs_fail(FS_ERR_INPUT, "bad test parameter %s", *sets);
-        snprintf(name, sizeof name, "%.*s", (int)(eq - *sets), *sets);
-        int i = fs_method_param_index(m, name);
-        if (i < 0) return fs_fail(FS_ERR_INPUT, "%s has no parameter %s", m->name, name);
-        int rc = fs_param_parse(&m->params[i], eq + 1, &v[i], name);
+        char set[256];
+        snprintf(set, sizeof set, "%s.%s", method, *sets);
+        int rc = fs_scene_add_set(s, set);
         if (rc) return rc;
     }
     return FS_OK;
@@ -24,22 +27,21 @@ static int param_values(const fs_method *m, double *v, const char *const *sets)
 int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
                    const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
 {
+    fs_methods_register_builtin();
     const fs_method *m = fs_method_find(method);
     if (!m) return fs_fail(FS_ERR_RUNTIME, "%s is not registered", method);
-    double v[FS_MAX_PARAMS];
-    int rc = param_values(m, v, sets);
-    if (rc) return rc;
-    fs_method_setup setup = {f, v, NULL};
-    fs_grid g;
-    rc = fs_grid_build(&g, p, f.H);
-    void *self = rc ? NULL : m->create(&setup);
-    if (!rc && !self) rc = FS_ERR_RUNTIME;
-    if (!rc) rc = m->upload(self, p, &g);
-    fs_stages local = {0};
-    if (!rc) rc = m->render(self, cam, out, st ? st : &local);
-    if (self) m->destroy(self);
-    fs_grid_free(&g);
-    return rc;
+    static fs_scene s; /* large; the run keeps a pointer until closed */
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    int rc = scene_for(&s, method, sets, f);
+    if (!rc) rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, p, NULL, st);
+    if (!rc) rc = fs_run_render(run, cam, &im, st);
+    fs_run_close(run);
+    if (rc) { fs_run_image_free(&im); return rc; }
+    fs_gbuffer_free(out);
+    *out = im.g;
+    return FS_OK;
 }
 
 int fs_test_load_dam(fs_particles *p, fs_scene *s, fs_field *f)

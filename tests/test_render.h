@@ -1,10 +1,12 @@
-/* Test helper: renders a registered method on particles with its default
- * parameters plus "name=value" overrides (grid built with cell = f.H). */
+/* Test helper: renders a registered method through the run layer on particles,
+ * with field f and its default parameters plus "name=value" settings (set by
+ * name through the scene, as --set does). */
 #ifndef FS_TEST_RENDER_H
 #define FS_TEST_RENDER_H
 #include "method.h"
 
-/* FS_OK or an error code with fs_fail set (also for a bad override). st may be NULL. */
+/* FS_OK or an error code with fs_fail set (also for a bad setting). out is replaced
+ * by the method's G-buffer at the camera's size. st may be NULL. */
 int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
                    const fs_camera *cam, fs_gbuffer *out, fs_stages *st);
 

@@ -5,8 +5,8 @@
 #include "gl_context.h"
 #include "golden.h"
 #include "method.h"
+#include "run.h"
 #include "scene.h"
-#include "shading.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,18 +23,19 @@ static void test_single_sphere(const fs_method *m)
     fs_particles_alloc(&p, 1, 0);
     p.x[0] = 0.1f; p.y[0] = -0.05f; p.z[0] = 0.0f;
     fs_particles_bounds(&p);
-    fs_field f = {r, 8 * r * r * r, FS_KERNEL_CUBIC, 4 * r, 0.6f};
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {f, params, NULL};
-    void *self = m->create(&setup);
-    CHECK(self != NULL, "create: %s", fs_error_message());
-    if (!self) return;
-    CHECK(m->upload(self, &p, NULL) == FS_OK, "upload: %s", fs_error_message());
+    static fs_scene s; /* the default field (cubic spline, H = 4r, iso 0.6) at r */
+    fs_scene_defaults(&s);
+    s.radius = r;
+    fs_run *run = NULL;
+    CHECK(fs_run_open(&run, m, &s, NULL, NULL) == FS_OK, "open: %s", fs_error_message());
+    if (!run) return;
+    CHECK(fs_run_upload(run, &p, NULL, NULL) == FS_OK, "upload: %s", fs_error_message());
     fs_camera cam = camera(128, 96, 3.0f);
-    fs_gbuffer g;
-    fs_gbuffer_alloc(&g, cam.width, cam.height, 0);
+    fs_run_image im = {0};
     fs_stages st = {0};
-    CHECK(m->render(self, &cam, &g, &st) == FS_OK, "render: %s", fs_error_message());
+    CHECK(fs_run_render(run, &cam, &im, &st) == FS_OK, "render: %s", fs_error_message());
+    const fs_gbuffer g = im.g;
+    if (!g.depth) { fs_run_close(run); fs_particles_free(&p); return; }
     int mismatched = 0, covered = 0;
     double worst_depth = 0, worst_normal = 0, worst_thick = 0;
     float rr[3], uu[3], ff[3];
@@ -70,8 +71,8 @@ static void test_single_sphere(const fs_method *m)
     CHECK(worst_normal < 1e-4, "normal error %g", worst_normal);
     CHECK(worst_thick < 1e-3, "thickness error %g", worst_thick);
     CHECK(st.n >= 2, "stages reported: %d", st.n);
-    fs_gbuffer_free(&g);
-    m->destroy(self);
+    fs_run_image_free(&im);
+    fs_run_close(run);
     fs_particles_free(&p);
 }
 
@@ -94,20 +95,16 @@ static void test_golden(const fs_method *m)
     fs_particles_bounds(&p);
     s.camera.width = s.camera.height = 128;
     fs_scene_finish_camera(&s, p.bmin, p.bmax);
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
-    void *self = m->create(&setup);
-    fs_gbuffer g;
-    fs_gbuffer_alloc(&g, 128, 128, 0);
-    fs_stages st = {0};
-    CHECK(self && m->upload(self, &p, NULL) == FS_OK && m->render(self, &s.camera, &g, &st) == FS_OK, "render: %s",
-          fs_error_message());
-    float *rgba = malloc(128 * 128 * 4 * sizeof(float));
-    fs_shade(&s, &s.camera, &g, p.bmin[1] - s.radius, rgba);
-    CHECK(fs_golden_check("spheres_block", rgba, 128, 128, 1.0, 0.01) == 0, "golden image spheres_block differs");
-    free(rgba);
-    fs_gbuffer_free(&g);
-    if (self) m->destroy(self);
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    int rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
+    if (!rc) rc = fs_run_shade(run, &s.camera, &im, FS_APPEARANCE_SHARED, NULL); /* floor: lowest centre - r */
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    if (!rc) CHECK(fs_golden_check("spheres_block", im.rgba, 128, 128, 1.0, 0.01) == 0, "golden image spheres_block differs");
+    fs_run_image_free(&im);
+    fs_run_close(run);
     fs_particles_free(&p);
 }
 

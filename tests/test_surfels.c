@@ -7,6 +7,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "run.h"
 #include "metrics.h"
 #include "particle_io.h"
 #include "scene.h"
@@ -122,21 +123,18 @@ static void own_appearance_and_exports(void)
     fs_field f;
     if (load_dam(&p, &s, &f)) return;
     const fs_method *m = fs_method_find("surfels");
-    double v[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    v[fs_method_param_index(m, "grid_res")] = 96;
-    fs_method_setup setup = {f, v, &s};
-    fs_grid grid;
-    fs_grid_build(&grid, &p, f.H);
-    void *self = m->create(&setup);
-    CHECK(self != NULL, "create: %s", fs_error_message());
-    if (!self) { fs_grid_free(&grid); fs_particles_free(&p); return; }
-    fs_gbuffer g;
-    fs_gbuffer_alloc(&g, 128, 128, 0);
-    fs_gbuffer_alloc_own(&g);
-    fs_stages st = {0};
-    CHECK(m->upload(self, &p, &grid) == FS_OK && m->render(self, &s.camera, &g, &st) == FS_OK, "render: %s",
-          fs_error_message());
+    static fs_scene s2; /* the same scene without the object, for the second run */
+    fs_scene_add_set(&s, "surfels.grid_res=96");
+    s2 = s;
+    fs_scene_add_set(&s2, "surfels.object=none");
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    int rc = fs_run_open(&run, m, &s, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    if (rc) { fs_run_close(run); fs_run_image_free(&im); fs_particles_free(&p); return; }
+    const fs_gbuffer g = im.g;
     size_t water = 0, caustic_water = 0, sky = 0, sky_caustic = 0;
     for (int i = 0; i < 128 * 128; i++) {
         const float *o = g.own + 4 * i;
@@ -155,15 +153,15 @@ static void own_appearance_and_exports(void)
     CHECK(sky > 0 && sky_caustic == 0, "%zu of %zu sky pixels carry caustics", sky_caustic, sky);
 
     /* the object under the water changes the own image, never the G-buffer */
-    v[fs_method_param_index(m, "object")] = 0;
-    void *plain = m->create(&setup);
-    fs_gbuffer h;
-    fs_gbuffer_alloc(&h, 128, 128, 0);
-    fs_gbuffer_alloc_own(&h);
-    CHECK(plain && m->upload(plain, &p, &grid) == FS_OK && m->render(plain, &s.camera, &h, &st) == FS_OK,
-          "render without object: %s", fs_error_message());
+    fs_run *plain = NULL;
+    fs_run_image him = {0};
+    rc = fs_run_open(&plain, m, &s2, NULL, NULL);
+    if (!rc) rc = fs_run_upload(plain, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(plain, &s.camera, &him, NULL);
+    CHECK(rc == FS_OK, "render without object: %s", fs_error_message());
+    const fs_gbuffer h = him.g;
     size_t changed = 0, gdiff = 0;
-    for (int i = 0; i < 128 * 128; i++) {
+    for (int i = 0; !rc && i < 128 * 128; i++) {
         float d = fabsf(g.own[4 * i] - h.own[4 * i]) + fabsf(g.own[4 * i + 2] - h.own[4 * i + 2]);
         changed += d > 0.02f;
         gdiff += g.coverage[i] != h.coverage[i] || (g.coverage[i] > 0 && g.depth[i] != h.depth[i]);
@@ -171,14 +169,14 @@ static void own_appearance_and_exports(void)
     printf("(c) object box vs none: %zu own pixels change, %zu G-buffer pixels\n", changed, gdiff);
     CHECK(changed > 20, "the object shows in only %zu pixels", changed);
     CHECK(gdiff == 0, "the object changed %zu G-buffer pixels", gdiff);
-    if (plain) m->destroy(plain);
-    fs_gbuffer_free(&h);
+    fs_run_close(plain);
+    fs_run_image_free(&him);
 
     const char *ply = FS_TEST_OUT "/surfels_export.ply", *vdb = FS_TEST_OUT "/surfels_export.vdb";
     unlink(ply);
     unlink(vdb);
-    CHECK(m->export_file(self, ply) == FS_OK, "ply: %s", fs_error_message());
-    CHECK(m->export_file(self, vdb) == FS_OK, "vdb: %s", fs_error_message());
+    CHECK(fs_run_export(run, ply) == FS_OK, "ply: %s", fs_error_message());
+    CHECK(fs_run_export(run, vdb) == FS_OK, "vdb: %s", fs_error_message());
     fs_particles q;
     CHECK(fs_particles_read(&q, ply, NULL) == FS_OK, "read ply back: %s", fs_error_message());
     CHECK(q.n > 1000, "only %zu surfels in the PLY", q.n);
@@ -186,11 +184,10 @@ static void own_appearance_and_exports(void)
     fs_density_grid d;
     CHECK(fs_density_grid_read_vdb(&d, vdb, "density") == FS_OK, "read vdb back: %s", fs_error_message());
     fs_density_grid_free(&d);
-    CHECK(m->export_file(self, FS_TEST_OUT "/surfels_export.txt") == FS_ERR_INPUT, "a .txt export must be refused");
+    CHECK(fs_run_export(run, FS_TEST_OUT "/surfels_export.txt") == FS_ERR_INPUT, "a .txt export must be refused");
     CHECK(access(FS_TEST_OUT "/surfels_export.txt", F_OK) != 0, "a refused export left a file");
-    m->destroy(self);
-    fs_gbuffer_free(&g);
-    fs_grid_free(&grid);
+    fs_run_close(run);
+    fs_run_image_free(&im);
     fs_particles_free(&p);
 }
 

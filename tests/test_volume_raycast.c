@@ -9,6 +9,7 @@
 #include "gl.h"
 #include "gl_context.h"
 #include "method.h"
+#include "run.h"
 #include "metrics.h"
 #include "particle_io.h"
 #include "scene.h"
@@ -156,24 +157,27 @@ static void transfer_and_export(void)
     fs_field f;
     if (load_dam(&p, &s, &f)) return;
     const fs_method *m = fs_method_find("volume_raycast");
-    double v[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    v[fs_method_param_index(m, "grid_res")] = 96;
-    fs_method_setup setup = {f, v, &s};
-    void *opaque = m->create(&setup);
-    v[fs_method_param_index(m, "mode")] = 1;
-    void *translucent = m->create(&setup);
-    CHECK(opaque && translucent, "create: %s", fs_error_message());
-    if (!opaque || !translucent) { fs_particles_free(&p); return; }
-    fs_gbuffer g[2];
-    fs_stages st = {0};
-    for (int k = 0; k < 2; k++) {
-        void *self = k ? translucent : opaque;
-        fs_gbuffer_alloc(&g[k], 128, 128, 0);
-        fs_gbuffer_alloc_own(&g[k]);
-        CHECK(m->upload(self, &p, NULL) == FS_OK && m->render(self, &s.camera, &g[k], &st) == FS_OK, "render: %s",
-              fs_error_message());
+    static fs_scene s2; /* the same scene in translucent mode */
+    fs_scene_add_set(&s, "volume_raycast.grid_res=96");
+    s2 = s;
+    fs_scene_add_set(&s2, "volume_raycast.mode=translucent");
+    fs_run *runs[2] = {NULL, NULL};
+    fs_run_image im[2];
+    memset(im, 0, sizeof im);
+    int rc = FS_OK;
+    for (int k = 0; k < 2 && !rc; k++) {
+        rc = fs_run_open(&runs[k], m, k ? &s2 : &s, NULL, NULL);
+        if (!rc) rc = fs_run_upload(runs[k], &p, NULL, NULL);
+        if (!rc) rc = fs_run_render(runs[k], &s.camera, &im[k], NULL);
     }
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    if (rc) {
+        for (int k = 0; k < 2; k++) { fs_run_close(runs[k]); fs_run_image_free(&im[k]); }
+        fs_particles_free(&p);
+        return;
+    }
+    const fs_gbuffer g[2] = {im[0].g, im[1].g};
+    fs_run *opaque = runs[0];
     size_t water = 0, differ = 0, gdiff = 0, bad = 0;
     double lum[2] = {0, 0};
     for (int i = 0; i < 128 * 128; i++) {
@@ -205,7 +209,7 @@ static void transfer_and_export(void)
 
     const char *vdb = FS_TEST_OUT "/volume_raycast_export.vdb";
     unlink(vdb);
-    CHECK(m->export_file(opaque, vdb) == FS_OK, "vdb: %s", fs_error_message());
+    CHECK(fs_run_export(opaque, vdb) == FS_OK, "vdb: %s", fs_error_message());
     fs_density_grid d, ex;
     fs_grid ng;
     fs_grid_build(&ng, &p, f.H);
@@ -226,13 +230,11 @@ static void transfer_and_export(void)
            d.dim[2], d.spacing, ex.spacing, maxd, maxv);
     CHECK(fabsf(d.spacing - ex.spacing) < 1e-6f * ex.spacing, "spacing %g vs %g", d.spacing, ex.spacing);
     CHECK(maxv > 0.5 && maxd < 1e-4, "vdb differs from the exact grid by %g", maxd);
-    CHECK(m->export_file(opaque, FS_TEST_OUT "/volume_raycast_export.ply") == FS_ERR_INPUT, "a .ply export must be refused");
+    CHECK(fs_run_export(opaque, FS_TEST_OUT "/volume_raycast_export.ply") == FS_ERR_INPUT, "a .ply export must be refused");
     fs_density_grid_free(&d);
     fs_density_grid_free(&ex);
     fs_grid_free(&ng);
-    for (int k = 0; k < 2; k++) fs_gbuffer_free(&g[k]);
-    m->destroy(opaque);
-    m->destroy(translucent);
+    for (int k = 0; k < 2; k++) { fs_run_close(runs[k]); fs_run_image_free(&im[k]); }
     fs_particles_free(&p);
 }
 
