@@ -1,5 +1,6 @@
 /* fluidsurf compare: every method variant on the same particles, camera, light,
  * material and resolution; metrics against references; timings; figures. */
+#include "scene_provenance.h"
 #include "cli.h"
 #include "compare.h"
 #include "frame_source.h"

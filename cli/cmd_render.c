@@ -4,7 +4,7 @@
 #include "gl_context.h"
 #include "method_params.h"
 #include "render_output.h"
-#include "shading.h"
+#include "run.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +29,55 @@ static const char help[] =
     "  -q                   no notes on stderr\n"
     "EXR output holds R G B A depth normal.X/Y/Z thickness coverage (+ own.R/G/B/A caustics\n"
     "for a method with its own appearance) and the provenance.\n";
+
+/* What to do with the loaded frame. */
+typedef struct render_job {
+    const fs_method *m;
+    const double *params;
+    int frame;
+    const char *out;            /* NULL: exports only */
+    const char *const *exports;
+    int nexports;
+    fs_appearance look;
+    int timings;                /* print the stage times */
+} render_job;
+
+static void print_timings(const fs_run *run, const fs_stages *st)
+{
+    printf("stage,ms,renderer\n");
+    for (int i = 0; i < st->n; i++) printf("%s,%.3f,%s\n", st->name[i], st->ms[i], fs_run_stage_renderer(run, st->name[i]));
+}
+
+/* Runs the method on one frame: exports, render, shading, the output file. */
+static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st)
+{
+    int rc = fs_run_upload(run, p, NULL, st);
+    for (int i = 0; !rc && i < job->nexports; i++) rc = fs_run_export(run, job->exports[i]);
+    if (rc || !job->out) return rc;
+    fs_run_image im = {0};
+    fs_provenance prov;
+    rc = fs_run_render(run, &scene->camera, &im, st);
+    if (!rc) rc = fs_run_shade(run, &scene->camera, &im, job->look, st);
+    fs_run_provenance(run, NULL, job->frame, &prov);
+    if (!rc) rc = fs_write_render(job->out, &im.g, im.rgba, &prov);
+    fs_run_image_free(&im);
+    return rc;
+}
+
+/* A GL context when the method needs one, the run, the job. */
+static int render_one(const fs_scene *scene, const fs_particles *p, const render_job *job, fs_ctx_kind kind,
+                      fs_stages *st)
+{
+    fs_gl_context ctx = {0};
+    fs_run *run = NULL;
+    int rc = job->m->needs_gl ? fs_gl_context_create(&ctx, kind, 16, 16) : FS_OK;
+    if (!rc) rc = fs_run_open(&run, job->m, scene, job->params, job->m->needs_gl ? &ctx : NULL);
+    if (!rc) rc = run_job(run, scene, p, job, st);
+    if (!rc && job->timings) print_timings(run, st);
+    fs_run_close(run);
+    if (job->m->needs_gl) fs_gl_context_destroy(&ctx);
+    return rc;
+}
 
 int cmd_render(int argc, char **argv)
 {
@@ -111,67 +160,15 @@ int cmd_render(int argc, char **argv)
     fs_particles p;
     fs_stages st = {0};
     double tl = fs_now_ms();
+    if (radius > 0) scene.radius = radius; /* before a synthetic scene is generated */
     if ((rc = fs_scene_load_frame(&scene, first, &p))) return cli_error(rc);
     fs_stages_add(&st, "load", fs_now_ms() - tl);
-    if (radius > 0) scene.radius = radius;
-    else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
-    int radius_note = !scene.path[0] && !(radius > 0) && !(p.radius > 0) && !quiet;
-    fs_scene_frame_particles(&scene, &p);
-    fs_method_setup setup = {fs_scene_field(&scene), params, &scene};
-
-    fs_grid grid = {0};
-    fs_gl_context ctx = {0};
-    fs_gbuffer g = {0};
-    void *self = NULL;
-    float *rgba = NULL;
-    double t0 = fs_now_ms();
-    if ((rc = fs_grid_build(&grid, &p, setup.field.H))) goto done;
-    fs_stages_add(&st, "grid", fs_now_ms() - t0);
-    if (m->needs_gl && (rc = fs_gl_context_create(&ctx, ctx_kind, 16, 16))) goto done;
-    rc = FS_ERR_RUNTIME;
-    if (!(self = m->create(&setup))) goto done;
-    t0 = fs_now_ms();
-    if ((rc = m->upload(self, &p, &grid))) goto done;
-    fs_stages_add(&st, "upload", fs_now_ms() - t0);
-    for (int i = 0; i < nexports; i++)
-        if ((rc = m->export_file(self, exports[i]))) goto done;
-    if (!out) goto done;
-    if ((rc = fs_gbuffer_alloc(&g, scene.camera.width, scene.camera.height, fs_method_wants_color(m, &p)))) goto done;
-    if (m->writes_own && (rc = fs_gbuffer_alloc_own(&g))) goto done;
-    if ((rc = m->render(self, &scene.camera, &g, &st))) goto done;
-    rc = FS_ERR_RUNTIME;
-    if (!(rgba = malloc((size_t)g.w * g.h * 4 * sizeof(float)))) { fs_fail(rc, "out of memory"); goto done; }
-    t0 = fs_now_ms();
-    if (own_look) memcpy(rgba, g.own, (size_t)g.w * g.h * 4 * sizeof(float));
-    else fs_shade(&scene, &scene.camera, &g, fs_scene_floor(&scene, &p), rgba);
-    fs_stages_add(&st, "shade", fs_now_ms() - t0);
-    fs_provenance prov;
-    fs_provenance_init(&prov, &scene, m->needs_gl ? ctx.renderer : NULL, m->needs_gl ? ctx.version : NULL);
-    char pstr[600], fstr[32];
-    fs_method_params_string(m, params, pstr, sizeof pstr);
-    fs_provenance_set(&prov, "method", m->name);
-    fs_provenance_set(&prov, "params", pstr);
-    snprintf(fstr, sizeof fstr, "%d", first);
-    fs_provenance_set(&prov, "frame", fstr);
-    rc = fs_write_render(out, &g, rgba, &prov);
+    int radius_note = fs_scene_adopt_frame(&scene, &p, radius) && !quiet;
+    const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED, timings};
+    rc = render_one(&scene, &p, &job, ctx_kind, &st);
     /* after success only, so a failing run prints exactly one line */
     if (!rc && radius_note) fprintf(stderr, "fluidsurf: note: %s: used r = %g (set --radius)\n", input, scene.radius);
-    if (!rc && timings) {
-        printf("stage,ms,renderer\n");
-        /* loading, grid building and shading always run in C on the CPU */
-        for (int i = 0; i < st.n; i++) {
-            int cpu = !m->needs_gl || !strcmp(st.name[i], "load") || !strcmp(st.name[i], "grid") ||
-                      !strcmp(st.name[i], "shade");
-            printf("%s,%.3f,%s\n", st.name[i], st.ms[i], cpu ? "CPU" : ctx.renderer);
-        }
-    }
-done:
     if (rc) cli_error(rc);
-    if (self) m->destroy(self);
-    free(rgba);
-    fs_gbuffer_free(&g);
-    if (m->needs_gl) fs_gl_context_destroy(&ctx);
-    fs_grid_free(&grid);
     fs_particles_free(&p);
     return rc;
 }

@@ -24,3 +24,13 @@ float fs_scene_floor(const fs_scene *s, const fs_particles *p)
 {
     return p->bmin[s->up_axis] - s->radius;
 }
+
+int fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt)
+{
+    int fallback = 0;
+    if (radius_opt > 0) s->radius = radius_opt;
+    else if (!s->path[0] && p->radius > 0) s->radius = p->radius;
+    else fallback = !s->path[0];
+    fs_scene_frame_particles(s, p);
+    return fallback;
+}

@@ -13,6 +13,11 @@ extern "C" {
 void fs_scene_frames(const fs_scene *s, int *first, int *last);
 /* Loads frame `frame` (ignored for a single file) and validates it. */
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
+/* Settles what the first frame decides for the whole run, once: a scene given
+ * as a bare particle file takes r from the file, unless radius_opt > 0 sets it
+ * (a scene file's r stays); the camera frames the particles unless the scene
+ * places it. Returns 1 when r is the default because nothing gave one. */
+int fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt);
 /* Height of the checker floor: the particles' lowest point minus r, along up. */
 float fs_scene_floor(const fs_scene *s, const fs_particles *p);
 

@@ -8,7 +8,7 @@
 #include "gl.h"
 #include "gl_grid.h"
 #include "gl_sprites.h"
-#include "gl_target.h"
+#include "gl_gbuffer.h"
 #include "method.h"
 #include "shader.h"
 #include <stdlib.h>

@@ -7,7 +7,7 @@
 #include "gl.h"
 #include "gl_grid.h"
 #include "gl_sprites.h"
-#include "gl_target.h"
+#include "gl_gbuffer.h"
 #include "method.h"
 #include "raycast_pca/pca_normal.h"
 #include "shader.h"

@@ -4,7 +4,7 @@
 #include "surfel_gl.h"
 #include "fs_error.h"
 #include "gl.h"
-#include "gl_target.h"
+#include "gl_gbuffer.h"
 #include "density_splat.h"
 #include "gl_sprites.h"
 #include "shader.h"

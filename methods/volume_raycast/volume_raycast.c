@@ -12,7 +12,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_sprites.h"
-#include "gl_target.h"
+#include "gl_gbuffer.h"
 #include "method.h"
 #include "scene.h"
 #include "shader.h"
