@@ -8,6 +8,7 @@
 #include "gl_context.h"
 #include "method_params.h"
 #include "render_output.h"
+#include "run.h"
 #include "shading.h"
 #include "stats.h"
 #include "analytic.h"
@@ -35,7 +36,7 @@ static const char help[] =
     "<label>_own.png for a method with its own appearance (surfels, volume_raycast),\n"
     "report.md (and temporal.csv for a sequence).\n";
 
-static void free_view(cmp_view *v) { fs_gbuffer_free(&v->g); free(v->rgba); v->rgba = NULL; }
+static void free_view(cmp_view *v) { fs_run_image_free(v); }
 
 static int make_outdir(const char *dir)
 {
@@ -113,33 +114,46 @@ static int parse_import(cmp_run *r, const char *spec)
 
 static double since_s(double t0) { return (fs_now_ms() - t0) / 1000.0; }
 
+/* The analytic reference of frame f: the ideal shape's exact G-buffer. */
+static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v)
+{
+    int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height, 0);
+    if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
+    if (!rc) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
+    if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, p), v->rgba);
+    return rc;
+}
+
+/* One reference on every frame; frame_ms times the first. */
+static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, const fs_grid *grids)
+{
+    fs_run *run = NULL;
+    int rc = ref->analytic ? FS_OK : fs_run_open(&run, ref->v.m, &r->scene, ref->v.params, NULL);
+    for (int f = 0; f < r->nframes && !rc; f++) {
+        cmp_view *v = &ref->frames[f];
+        double t0 = fs_now_ms();
+        if (ref->analytic) rc = render_analytic(r, f, &frames_p[f], v);
+        else {
+            rc = fs_run_upload(run, &frames_p[f], &grids[f], NULL);
+            if (!rc) rc = fs_run_render(run, &r->scene.camera, v, NULL);
+            if (!rc) rc = fs_run_shade(run, &r->scene.camera, v, FS_APPEARANCE_SHARED, NULL);
+        }
+        if (f == 0) ref->frame_ms = fs_now_ms() - t0;
+    }
+    fs_run_close(run);
+    return rc;
+}
+
 /* Renders the references of every frame (before any method, so metrics and
  * temporal stability can be computed frame by frame). */
-static int render_refs(cmp_run *r, fs_particles *frames_p, const fs_grid *grids)
+static int render_refs(cmp_run *r, const fs_particles *frames_p, const fs_grid *grids)
 {
     for (int k = 0; k < r->nrefs; k++) {
         cmp_ref *ref = &r->refs[k];
         ref->frames = calloc(r->nframes, sizeof *ref->frames);
         if (!ref->frames) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-        void *self = NULL;
-        fs_method_setup setup = {fs_scene_field(&r->scene), ref->v.params, &r->scene};
-        if (!ref->analytic && !(self = ref->v.m->create(&setup))) return FS_ERR_RUNTIME;
-        for (int f = 0; f < r->nframes; f++) {
-            cmp_view *v = &ref->frames[f];
-            int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height, 0);
-            if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-            double t0 = fs_now_ms();
-            fs_stages st = {0};
-            if (!rc && ref->analytic) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
-            else if (!rc) {
-                rc = ref->v.m->upload(self, &frames_p[f], &grids[f]);
-                if (!rc) rc = ref->v.m->render(self, &r->scene.camera, &v->g, &st);
-            }
-            if (f == 0) ref->frame_ms = fs_now_ms() - t0;
-            if (rc) { if (self) ref->v.m->destroy(self); return rc; }
-            fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, &frames_p[f]), v->rgba);
-        }
-        if (self) ref->v.m->destroy(self);
+        int rc = render_ref(r, ref, frames_p, grids);
+        if (rc) return rc;
     }
     return FS_OK;
 }
@@ -176,53 +190,56 @@ static int write_view(const cmp_run *r, const char *label, int frame, const cmp_
     return fs_write_render(path, &v->g, v->g.own, prov);
 }
 
-/* Runs one method variant on every frame: upload, a warm-up render, `repeat`
- * timed renders; metrics against every reference; writes its images. */
-static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_grid *grids, const fs_gl_context *ctx,
-                     int index, int total, double t_start)
+static void progress(const cmp_run *r, const cmp_entry *e, int index, int total, int f, double t_start)
 {
-    const fs_method *m = e->v.m;
-    fs_method_setup setup = {fs_scene_field(&r->scene), e->v.params, &r->scene};
-    void *self = m->create(&setup);
-    if (!self) return FS_ERR_RUNTIME;
-    snprintf(e->renderer, sizeof e->renderer, "%s", m->needs_gl ? ctx->renderer : "CPU");
-    fs_provenance prov = r->prov;
-    char pstr[600], fstr[32];
-    fs_method_params_string(m, e->v.params, pstr, sizeof pstr);
-    fs_provenance_set(&prov, "method", m->name);
-    fs_provenance_set(&prov, "params", pstr);
-    fs_provenance_set(&prov, "gl_renderer", e->renderer);
+    if (r->quiet) return;
+    double el = since_s(t_start), done = (double)(index * r->nframes + f) / (total * r->nframes);
+    fprintf(stderr, "compare: variant %d/%d %s, frame %d/%d, elapsed %.1f s, remaining ~%.0f s\n", index + 1, total,
+            e->label, f + 1, r->nframes, el, done > 0 ? el / done - el : 0.0);
+}
+
+/* Frame f of one variant: upload, a warm-up render, `repeat` timed renders
+ * (the first frame's kept in e->runs), shading, metrics, images. */
+static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_particles *p, const fs_grid *g,
+                     cmp_view *cur)
+{
+    double times[CMP_MAX_RUNS];
+    int rc = fs_run_upload(run, p, g, NULL);
+    for (int k = 0; k <= r->repeat && !rc; k++) { /* run 0 is the warm-up */
+        fs_stages st = {0};
+        rc = fs_run_render(run, &r->scene.camera, cur, &st);
+        if (k == 0) continue;
+        times[k - 1] = fs_stages_total(&st);
+        if (f == 0) e->runs[e->nruns++] = st;
+    }
+    if (!rc) rc = fs_run_shade(run, &r->scene.camera, cur, FS_APPEARANCE_SHARED, NULL);
+    if (rc) return rc;
+    e->frame_ms[f] = fs_median(times, r->repeat);
+    for (int k = 0; k < r->nrefs && !rc; k++)
+        rc = fs_metrics_compute(&cur->g, cur->rgba, &r->refs[k].frames[f].g, r->refs[k].frames[f].rgba, r->scene.radius,
+                                &e->metrics[k * r->nframes + f]);
+    fs_provenance prov;
+    fs_run_provenance(run, &r->prov, r->first_frame + f, &prov);
+    if (!rc) rc = write_view(r, e->label, r->first_frame + f, cur, &prov);
+    return rc;
+}
+
+/* Runs one method variant on every frame; keeps the first frame's view for
+ * the panel and heatmaps and the mean normal change between frames. */
+static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
+                     const fs_gl_context *ctx, int index, int total, double t_start)
+{
+    fs_run *run = NULL;
+    int rc = fs_run_open(&run, e->v.m, &r->scene, e->v.params, e->v.m->needs_gl ? ctx : NULL);
+    if (rc) return rc;
+    snprintf(e->renderer, sizeof e->renderer, "%s", fs_run_renderer(run));
     cmp_view cur = {0}, prev = {0};
     double tsum = 0;
-    int tn = 0, rc = FS_OK;
+    int tn = 0;
     for (int f = 0; f < r->nframes && !rc; f++) {
-        if (!r->quiet) {
-            double el = since_s(t_start), done = (double)(index * r->nframes + f) / (total * r->nframes);
-            fprintf(stderr, "compare: variant %d/%d %s, frame %d/%d, elapsed %.1f s, remaining ~%.0f s\n", index + 1,
-                    total, e->label, f + 1, r->nframes, el, done > 0 ? el / done - el : 0.0);
-        }
-        rc = fs_gbuffer_alloc(&cur.g, r->scene.camera.width, r->scene.camera.height, fs_method_wants_color(m, &frames_p[f]));
-        if (!rc && m->writes_own) rc = fs_gbuffer_alloc_own(&cur.g);
-        if (!rc && !(cur.rgba = malloc((size_t)cur.g.w * cur.g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-        if (!rc) rc = m->upload(self, &frames_p[f], &grids[f]);
-        double times[CMP_MAX_RUNS];
-        for (int run = 0; run <= r->repeat && !rc; run++) { /* run 0 is the warm-up */
-            fs_stages st = {0};
-            fs_gbuffer_clear(&cur.g);
-            rc = m->render(self, &r->scene.camera, &cur.g, &st);
-            if (run == 0) continue;
-            times[run - 1] = fs_stages_total(&st);
-            if (f == 0) e->runs[e->nruns++] = st;
-        }
+        progress(r, e, index, total, f, t_start);
+        rc = run_frame(r, e, run, f, &frames_p[f], &grids[f], &cur);
         if (rc) break;
-        e->frame_ms[f] = fs_median(times, r->repeat);
-        fs_shade(&r->scene, &r->scene.camera, &cur.g, fs_scene_floor(&r->scene, &frames_p[f]), cur.rgba);
-        for (int k = 0; k < r->nrefs && !rc; k++)
-            rc = fs_metrics_compute(&cur.g, cur.rgba, &r->refs[k].frames[f].g, r->refs[k].frames[f].rgba, r->scene.radius,
-                                    &e->metrics[k * r->nframes + f]);
-        snprintf(fstr, sizeof fstr, "%d", r->first_frame + f);
-        fs_provenance_set(&prov, "frame", fstr);
-        if (!rc) rc = write_view(r, e->label, r->first_frame + f, &cur, &prov);
         if (f > 0) {
             double d = mean_normal_change(&prev.g, &cur.g);
             if (isfinite(d)) { tsum += d; tn++; }
@@ -235,7 +252,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_
     if (prev.rgba && prev.rgba != e->first.rgba) free_view(&prev);
     free_view(&cur);
     e->temporal_deg = tn ? tsum / tn : NAN;
-    m->destroy(self);
+    fs_run_close(run);
     return rc;
 }
 
@@ -268,6 +285,243 @@ static void quote_command(char *buf, int size, int argc, char **argv)
             n += snprintf(buf + n, size - n, "'");
         }
     }
+}
+
+/* The parsed command line. */
+typedef struct cmp_options {
+    const char *input, *methods;
+    const char *const *refspecs;
+    int nrefspecs;
+    const char *const *imports;
+    int nimports;
+    const char *const *sets;
+    int nsets, w, h;
+    float radius, nscale, dscale;
+    fs_ctx_kind ctx_kind;
+} cmp_options;
+
+/* The variants of every method of the comma list (all registered when NULL). */
+static int add_variants(cmp_run *r, const char *methods, const fs_sweep *sweeps, int nsweeps)
+{
+    char mlist[1024];
+    if (methods) snprintf(mlist, sizeof mlist, "%s", methods);
+    else {
+        int n = 0;
+        mlist[0] = 0;
+        for (int i = 0; i < fs_method_count(); i++) n += snprintf(mlist + n, sizeof mlist - n, "%s%s", i ? "," : "", fs_method_at(i)->name);
+    }
+    for (char *tok = strtok(mlist, ","); tok; tok = strtok(NULL, ",")) {
+        const fs_method *m = fs_method_find(tok);
+        if (!m) return cli_usage("compare", "unknown method '%s' (see 'fluidsurf methods')", tok);
+        static fs_variant vars[CMP_MAX_ENTRIES];
+        int n = fs_sweep_variants(m, &r->scene, sweeps, nsweeps, vars, CMP_MAX_ENTRIES - r->nentries);
+        if (n < 0) return cli_error(-n);
+        for (int k = 0; k < n; k++) {
+            cmp_entry *e = &r->entries[r->nentries + k];
+            e->v = vars[k];
+            snprintf(e->name, sizeof e->name, "%s", m->name);
+            memcpy(e->label, e->v.label, sizeof e->label);
+            memcpy(e->variant, e->v.variant, sizeof e->variant);
+        }
+        r->nentries += n;
+    }
+    for (int i = 0; i < nsweeps; i++) {
+        int used = 0;
+        for (int k = 0; k < r->nentries; k++) used |= r->entries[k].v.m == sweeps[i].m;
+        if (!used) return cli_usage("compare", "--set sweeps %s, which is not among the methods", sweeps[i].m->name);
+    }
+    return FS_OK;
+}
+
+/* The scene and the variants: plain settings go to the scene, comma lists become sweeps. */
+static int plan_variants(cmp_run *r, const cmp_options *o)
+{
+    fs_scene *s = &r->scene;
+    int rc = cli_scene_from_arg(s, o->input);
+    if (rc) return cli_error(rc);
+    if (o->w) s->camera.width = o->w;
+    if (o->h) s->camera.height = o->h;
+    if ((long)s->camera.width * s->camera.height > 16384L * 16384L / 4)
+        return cli_usage("compare", "%dx%d pixels is too large", s->camera.width, s->camera.height);
+    if (o->radius > 0) s->radius = o->radius;
+    fs_sweep sweeps[FS_MAX_SWEEPS];
+    int nsweeps = 0;
+    for (int i = 0; i < o->nsets; i++) {
+        const char *eq = strchr(o->sets[i], '=');
+        rc = eq && strchr(eq, ',') ? fs_sweep_add(sweeps, &nsweeps, o->sets[i]) : fs_scene_add_set(s, o->sets[i]);
+        if (rc) return cli_error(rc);
+    }
+    if ((rc = add_variants(r, o->methods, sweeps, nsweeps))) return rc;
+    double check[FS_MAX_PARAMS]; /* every plain --set must name a real method and parameter */
+    if ((rc = fs_method_params_resolve(fs_method_at(0), s, check))) return cli_error(rc);
+    return FS_OK;
+}
+
+/* References and imports, then the output folder: all input is checked before it is made. */
+static int plan_references(cmp_run *r, const cmp_options *o)
+{
+    const fs_scene *s = &r->scene;
+    int rc = FS_OK;
+    for (int i = 0; i < o->nrefspecs && !rc; i++) rc = parse_ref(r, o->refspecs[i]);
+    if (!rc && !o->nrefspecs) rc = parse_ref(r, "reference");
+    if (!rc && o->nimports && s->frame_first >= 0 && s->frame_last > s->frame_first)
+        rc = fs_fail(FS_ERR_INPUT, "--import needs a single-frame scene");
+    for (int i = 0; i < o->nimports && !rc; i++) rc = parse_import(r, o->imports[i]);
+    if (!rc) rc = make_outdir(r->outdir);
+    if (rc) {
+        for (int i = 0; i < r->nentries; i++) free_view(&r->entries[i].first);
+        return cli_error(rc);
+    }
+    int last;
+    fs_scene_frames(s, &r->first_frame, &last);
+    r->sequence = s->frame_first >= 0;
+    r->nframes = last - r->first_frame + 1;
+    if (r->nframes > CMP_MAX_FRAMES) return cli_usage("compare", "%d frames: at most %d", r->nframes, CMP_MAX_FRAMES);
+    return FS_OK;
+}
+
+/* Every frame's particles and neighbour grid, shared by all variants; the first
+ * frame settles r and the camera for the whole sequence. */
+static int load_frames(cmp_run *r, float radius, fs_particles *frames_p, fs_grid *grids)
+{
+    int rc = FS_OK;
+    for (int f = 0; f < r->nframes && !rc; f++) {
+        rc = fs_scene_load_frame(&r->scene, r->first_frame + f, &frames_p[f]);
+        if (!rc && f == 0) fs_scene_adopt_frame(&r->scene, &frames_p[0], radius);
+        if (!rc) rc = fs_grid_build(&grids[f], &frames_p[f], fs_scene_field(&r->scene).H);
+    }
+    return rc;
+}
+
+static int alloc_results(cmp_run *r)
+{
+    for (int i = 0; i < r->nentries; i++) {
+        cmp_entry *e = &r->entries[i];
+        e->metrics = calloc((size_t)r->nrefs * r->nframes, sizeof *e->metrics);
+        e->frame_ms = calloc(r->nframes, sizeof *e->frame_ms);
+        e->runs = calloc(r->repeat, sizeof *e->runs);
+        if (!e->metrics || !e->frame_ms || !e->runs) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+    }
+    return FS_OK;
+}
+
+static int write_refs(const cmp_run *r)
+{
+    int rc = FS_OK;
+    for (int k = 0; k < r->nrefs && !rc; k++) {
+        fs_provenance prov = r->prov;
+        char pstr[600];
+        if (!r->refs[k].analytic) {
+            fs_method_params_string(r->refs[k].v.m, r->refs[k].v.params, pstr, sizeof pstr);
+            fs_provenance_set(&prov, "params", pstr);
+        }
+        fs_provenance_set(&prov, "method", r->refs[k].label);
+        fs_provenance_set(&prov, "gl_renderer", "CPU");
+        for (int f = 0; f < r->nframes && !rc; f++) rc = write_view(r, r->refs[k].label, r->first_frame + f, &r->refs[k].frames[f], &prov);
+    }
+    return rc;
+}
+
+/* An imported G-buffer: metrics of its one frame against every reference. */
+static int measure_import(cmp_run *r, cmp_entry *e)
+{
+    int rc = FS_OK;
+    for (int k = 0; k < r->nrefs && !rc; k++)
+        rc = fs_metrics_compute(&e->first.g, e->first.rgba, &r->refs[k].frames[0].g, r->refs[k].frames[0].rgba,
+                                r->scene.radius, &e->metrics[k]);
+    e->frame_ms[0] = NAN;
+    e->temporal_deg = NAN;
+    return rc;
+}
+
+/* The references, then every variant (and import) against them. */
+static int render_all(cmp_run *r, const fs_particles *frames_p, const fs_grid *grids, const fs_gl_context *ctx,
+                      double t_start)
+{
+    if (!r->quiet) fprintf(stderr, "compare: rendering %d reference(s) on %d frame(s)\n", r->nrefs, r->nframes);
+    int rc = render_refs(r, frames_p, grids);
+    if (!rc) rc = write_refs(r);
+    int nmethod = 0;
+    for (int i = 0; i < r->nentries; i++) nmethod += !r->entries[i].imported;
+    for (int i = 0, idx = 0; i < r->nentries && !rc; i++) {
+        cmp_entry *e = &r->entries[i];
+        rc = e->imported ? measure_import(r, e) : run_entry(r, e, frames_p, grids, ctx, idx++, nmethod, t_start);
+    }
+    return rc;
+}
+
+/* The reference's own mean normal change between frames, beside the methods'. */
+static void reference_temporal(cmp_run *r)
+{
+    double sum = 0;
+    int n = 0;
+    for (int f = 1; f < r->nframes; f++) {
+        double d = mean_normal_change(&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g);
+        if (isfinite(d)) { sum += d; n++; }
+    }
+    r->ref_temporal_deg = n ? sum / n : NAN;
+}
+
+static int write_outputs(cmp_run *r, const cmp_options *o)
+{
+    if (r->nframes > 1) reference_temporal(r);
+    choose_scales(r, o->nscale, o->dscale);
+    int rc = cmp_write_metrics(r);
+    if (!rc) rc = cmp_write_timings(r);
+    if (!rc && r->nframes > 1) rc = cmp_write_temporal(r);
+    if (!rc) rc = cmp_write_diffs(r);
+    if (!rc) rc = cmp_write_panel(r);
+    if (!rc) rc = cmp_write_report(r);
+    return rc;
+}
+
+static void free_results(cmp_run *r, fs_particles *frames_p, fs_grid *grids)
+{
+    for (int i = 0; i < r->nentries; i++) {
+        free_view(&r->entries[i].first);
+        free(r->entries[i].metrics);
+        free(r->entries[i].frame_ms);
+        free(r->entries[i].runs);
+    }
+    for (int k = 0; k < r->nrefs; k++) {
+        for (int f = 0; r->refs[k].frames && f < r->nframes; f++) free_view(&r->refs[k].frames[f]);
+        free(r->refs[k].frames);
+    }
+    for (int f = 0; frames_p && f < r->nframes; f++) { fs_particles_free(&frames_p[f]); fs_grid_free(&grids[f]); }
+    free(frames_p);
+    free(grids);
+}
+
+static int need_gl(const cmp_run *r)
+{
+    for (int i = 0; i < r->nentries; i++)
+        if (r->entries[i].v.m && r->entries[i].v.m->needs_gl) return 1;
+    return 0;
+}
+
+/* The plan: variants, references, frames, a GL context if any variant needs
+ * one, every render, the outputs. */
+static int compare(cmp_run *r, const cmp_options *o)
+{
+    int rc = plan_variants(r, o);
+    if (!rc) rc = plan_references(r, o);
+    if (rc) return rc;
+    fs_particles *frames_p = calloc(r->nframes, sizeof *frames_p);
+    fs_grid *grids = calloc(r->nframes, sizeof *grids);
+    fs_gl_context ctx = {0};
+    int have_ctx = 0;
+    double t_start = fs_now_ms();
+    rc = !frames_p || !grids ? fs_fail(FS_ERR_RUNTIME, "out of memory") : load_frames(r, o->radius, frames_p, grids);
+    if (!rc && need_gl(r)) { rc = fs_gl_context_create(&ctx, o->ctx_kind, 16, 16); have_ctx = !rc; }
+    if (!rc) fs_provenance_init(&r->prov, &r->scene, have_ctx ? ctx.renderer : NULL, have_ctx ? ctx.version : NULL);
+    if (!rc) rc = alloc_results(r);
+    if (!rc) rc = render_all(r, frames_p, grids, &ctx, t_start);
+    if (!rc) rc = write_outputs(r, o);
+    if (!rc && !r->quiet) fprintf(stderr, "compare: done in %.1f s, outputs in %s/\n", since_s(t_start), r->outdir);
+    if (rc) cli_error(rc);
+    free_results(r, frames_p, grids);
+    if (have_ctx) fs_gl_context_destroy(&ctx);
+    return rc;
 }
 
 int cmd_compare(int argc, char **argv)
@@ -323,159 +577,7 @@ int cmd_compare(int argc, char **argv)
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
     snprintf(r->outdir, sizeof r->outdir, "%s", out);
     quote_command(r->command, sizeof r->command, argc, argv);
-
-    fs_scene *s = &r->scene;
-    if ((rc = cli_scene_from_arg(s, input))) return cli_error(rc);
-    if (w) s->camera.width = w;
-    if (h) s->camera.height = h;
-    if ((long)s->camera.width * s->camera.height > 16384L * 16384L / 4)
-        return cli_usage("compare", "%dx%d pixels is too large", s->camera.width, s->camera.height);
-    if (radius > 0) s->radius = radius;
-    /* plain settings go to the scene, comma lists become sweeps */
-    fs_sweep sweeps[FS_MAX_SWEEPS];
-    int nsweeps = 0;
-    for (int i = 0; i < nsets; i++) {
-        const char *eq = strchr(sets[i], '=');
-        rc = eq && strchr(eq, ',') ? fs_sweep_add(sweeps, &nsweeps, sets[i]) : fs_scene_add_set(s, sets[i]);
-        if (rc) return cli_error(rc);
-    }
-    /* methods and their variants */
-    char mlist[1024];
-    if (methods) snprintf(mlist, sizeof mlist, "%s", methods);
-    else {
-        int n = 0;
-        mlist[0] = 0;
-        for (int i = 0; i < fs_method_count(); i++) n += snprintf(mlist + n, sizeof mlist - n, "%s%s", i ? "," : "", fs_method_at(i)->name);
-    }
-    for (char *tok = strtok(mlist, ","); tok; tok = strtok(NULL, ",")) {
-        const fs_method *m = fs_method_find(tok);
-        if (!m) return cli_usage("compare", "unknown method '%s' (see 'fluidsurf methods')", tok);
-        static fs_variant vars[CMP_MAX_ENTRIES];
-        int n = fs_sweep_variants(m, s, sweeps, nsweeps, vars, CMP_MAX_ENTRIES - r->nentries);
-        if (n < 0) return cli_error(-n);
-        for (int k = 0; k < n; k++) {
-            cmp_entry *e = &r->entries[r->nentries + k];
-            e->v = vars[k];
-            snprintf(e->name, sizeof e->name, "%s", m->name);
-            memcpy(e->label, e->v.label, sizeof e->label);
-            memcpy(e->variant, e->v.variant, sizeof e->variant);
-        }
-        r->nentries += n;
-    }
-    for (int i = 0; i < nsweeps; i++) {
-        int used = 0;
-        for (int k = 0; k < r->nentries; k++) used |= r->entries[k].v.m == sweeps[i].m;
-        if (!used) return cli_usage("compare", "--set sweeps %s, which is not among the methods", sweeps[i].m->name);
-    }
-    double check[FS_MAX_PARAMS]; /* every plain --set must name a real method and parameter */
-    if ((rc = fs_method_params_resolve(fs_method_at(0), s, check))) return cli_error(rc);
-    /* references and imports: all input is checked before the output folder is made */
-    for (int i = 0; i < nrefspecs && !rc; i++) rc = parse_ref(r, refspecs[i]);
-    if (!rc && !nrefspecs) rc = parse_ref(r, "reference");
-    if (!rc && nimports && s->frame_first >= 0 && s->frame_last > s->frame_first)
-        rc = fs_fail(FS_ERR_INPUT, "--import needs a single-frame scene");
-    for (int i = 0; i < nimports && !rc; i++) rc = parse_import(r, imports[i]);
-    if (!rc) rc = make_outdir(out);
-    if (rc) {
-        for (int i = 0; i < r->nentries; i++) free_view(&r->entries[i].first);
-        return cli_error(rc);
-    }
-
-    int last;
-    fs_scene_frames(s, &r->first_frame, &last);
-    r->sequence = s->frame_first >= 0;
-    r->nframes = last - r->first_frame + 1;
-    if (r->nframes > CMP_MAX_FRAMES) return cli_usage("compare", "%d frames: at most %d", r->nframes, CMP_MAX_FRAMES);
-
-    fs_particles *frames_p = calloc(r->nframes, sizeof *frames_p);
-    fs_grid *grids = calloc(r->nframes, sizeof *grids);
-    fs_gl_context ctx = {0};
-    int have_ctx = 0;
-    double t_start = fs_now_ms();
-    rc = !frames_p || !grids ? fs_fail(FS_ERR_RUNTIME, "out of memory") : FS_OK;
-    for (int f = 0; f < r->nframes && !rc; f++) {
-        rc = fs_scene_load_frame(s, r->first_frame + f, &frames_p[f]);
-        if (!rc && f == 0) {
-            if (!s->path[0] && radius <= 0 && frames_p[0].radius > 0) s->radius = frames_p[0].radius;
-            fs_scene_frame_particles(s, &frames_p[0]); /* one camera for the whole sequence */
-        }
-        if (!rc) rc = fs_grid_build(&grids[f], &frames_p[f], fs_scene_field(s).H);
-    }
-    int need_gl = 0;
-    for (int i = 0; i < r->nentries; i++) need_gl |= r->entries[i].v.m && r->entries[i].v.m->needs_gl;
-    if (!rc && need_gl) { rc = fs_gl_context_create(&ctx, ctx_kind, 16, 16); have_ctx = !rc; }
-    if (!rc) {
-        fs_provenance_init(&r->prov, s, have_ctx ? ctx.renderer : NULL, have_ctx ? ctx.version : NULL);
-        for (int i = 0; i < r->nentries && !rc; i++) {
-            cmp_entry *e = &r->entries[i];
-            e->metrics = calloc((size_t)r->nrefs * r->nframes, sizeof *e->metrics);
-            e->frame_ms = calloc(r->nframes, sizeof *e->frame_ms);
-            e->runs = calloc(r->repeat, sizeof *e->runs);
-            if (!e->metrics || !e->frame_ms || !e->runs) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-        }
-    }
-    if (!rc) {
-        if (!r->quiet) fprintf(stderr, "compare: rendering %d reference(s) on %d frame(s)\n", r->nrefs, r->nframes);
-        rc = render_refs(r, frames_p, grids);
-    }
-    for (int k = 0; k < r->nrefs && !rc; k++) {
-        fs_provenance prov = r->prov;
-        char pstr[600];
-        if (!r->refs[k].analytic) {
-            fs_method_params_string(r->refs[k].v.m, r->refs[k].v.params, pstr, sizeof pstr);
-            fs_provenance_set(&prov, "params", pstr);
-        }
-        fs_provenance_set(&prov, "method", r->refs[k].label);
-        fs_provenance_set(&prov, "gl_renderer", "CPU");
-        for (int f = 0; f < r->nframes && !rc; f++) rc = write_view(r, r->refs[k].label, r->first_frame + f, &r->refs[k].frames[f], &prov);
-    }
-    int nmethod = 0;
-    for (int i = 0; i < r->nentries; i++) nmethod += !r->entries[i].imported;
-    for (int i = 0, idx = 0; i < r->nentries && !rc; i++) {
-        cmp_entry *e = &r->entries[i];
-        if (e->imported) {
-            for (int k = 0; k < r->nrefs && !rc; k++)
-                rc = fs_metrics_compute(&e->first.g, e->first.rgba, &r->refs[k].frames[0].g, r->refs[k].frames[0].rgba,
-                                        s->radius, &e->metrics[k]);
-            e->frame_ms[0] = NAN;
-            e->temporal_deg = NAN;
-            continue;
-        }
-        rc = run_entry(r, e, frames_p, grids, &ctx, idx++, nmethod, t_start);
-    }
-    if (!rc && r->nframes > 1) {
-        double sum = 0;
-        int n = 0;
-        for (int f = 1; f < r->nframes; f++) {
-            double d = mean_normal_change(&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g);
-            if (isfinite(d)) { sum += d; n++; }
-        }
-        r->ref_temporal_deg = n ? sum / n : NAN;
-    }
-    if (!rc) {
-        choose_scales(r, nscale, dscale);
-        rc = cmp_write_metrics(r);
-        if (!rc) rc = cmp_write_timings(r);
-        if (!rc && r->nframes > 1) rc = cmp_write_temporal(r);
-        if (!rc) rc = cmp_write_diffs(r);
-        if (!rc) rc = cmp_write_panel(r);
-        if (!rc) rc = cmp_write_report(r);
-    }
-    if (!rc && !r->quiet) fprintf(stderr, "compare: done in %.1f s, outputs in %s/\n", since_s(t_start), out);
-    if (rc) cli_error(rc);
-    for (int i = 0; i < r->nentries; i++) {
-        free_view(&r->entries[i].first);
-        free(r->entries[i].metrics);
-        free(r->entries[i].frame_ms);
-        free(r->entries[i].runs);
-    }
-    for (int k = 0; k < r->nrefs; k++) {
-        for (int f = 0; r->refs[k].frames && f < r->nframes; f++) free_view(&r->refs[k].frames[f]);
-        free(r->refs[k].frames);
-    }
-    for (int f = 0; frames_p && f < r->nframes; f++) { fs_particles_free(&frames_p[f]); fs_grid_free(&grids[f]); }
-    free(frames_p);
-    free(grids);
-    if (have_ctx) fs_gl_context_destroy(&ctx);
-    return rc;
+    const cmp_options o = {input, methods, refspecs, nrefspecs, imports, nimports, sets, nsets, w, h, radius, nscale,
+                           dscale, ctx_kind};
+    return compare(r, &o);
 }

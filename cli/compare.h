@@ -5,6 +5,7 @@
 #include "gbuffer.h"
 #include "metrics.h"
 #include "provenance.h"
+#include "run.h"
 #include "scene.h"
 #include "sweep.h"
 #include "timing.h"
@@ -15,7 +16,7 @@
 #define CMP_MAX_RUNS 64
 
 /* A view of one frame: its G-buffer and shaded image. */
-typedef struct cmp_view { fs_gbuffer g; float *rgba; } cmp_view;
+typedef fs_run_image cmp_view;
 
 /* A reference: "reference", "reference:p=v,..." (the reference method with
  * those parameters) or "analytic" (the ideal shape of a synthetic scene). */
