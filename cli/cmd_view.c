@@ -12,8 +12,8 @@
 #include "image_io.h"
 #include "method.h"
 #include "method_params.h"
+#include "run.h"
 #include "shader.h"
-#include "shading.h"
 #include "sph.h"
 #include "view.h"
 #define GLFW_INCLUDE_NONE
@@ -57,14 +57,12 @@ typedef struct viewer {
     double dt;               /* simulated time per frame */
     float box_speed;         /* of the container now (m/s) */
     int first, last, cur;    /* frames of a sequence scene */
-    fs_particles p;          /* current particles and their grid: the method holds them */
-    fs_grid grid;
-    int mi;                  /* index of the created method (-1 none) */
-    void *self;
-    double params[FS_MAX_PARAMS];
-    fs_gbuffer g;
-    int g_mi;                /* the method g was allocated for */
-    float *rgba;
+    fs_particles p;          /* current particles: the run holds them until the next upload */
+    fs_run *run;             /* the current method's run (NULL: none could be made) */
+    int mi;                  /* index of the method the run is for (-1 none) */
+    fs_run_image im;         /* its G-buffer and shaded image */
+    char why[512];           /* why the method cannot render this frame ("" when it can) */
+    char said[512];          /* the reason last printed on stderr, so it is said once */
     fs_gl_context ctx;
     unsigned prog, vao, tex;
     int tw, th;
@@ -94,12 +92,21 @@ static int sim_advance(viewer *w)
     return fs_sph_move_box(w->sim, move, w->dt);
 }
 
-/* Loads (advance: the next) particles, builds their grid and uploads them to
- * the method; the previous set is freed only after the new upload. */
+/* A method that cannot render the current frame does not end the viewer: the
+ * reason goes to the title bar and, once per new reason, to stderr. */
+static void method_failed(viewer *w)
+{
+    snprintf(w->why, sizeof w->why, "%s", fs_error_message());
+    if (strcmp(w->why, w->said)) fprintf(stderr, "fluidsurf: %s\n", w->why);
+    snprintf(w->said, sizeof w->said, "%s", w->why);
+}
+
+/* Loads (advance: the next) particles and hands them to the current run; the
+ * previous set is freed once the run no longer holds it. Only a frame that
+ * cannot be loaded ends the viewer. */
 static int next_particles(viewer *w, int advance)
 {
     fs_particles np = {0};
-    fs_grid ng = {0};
     int rc;
     if (w->sim) {
         double t0 = fs_now_ms();
@@ -111,34 +118,28 @@ static int next_particles(viewer *w, int advance)
         if (advance) w->cur = w->cur < w->last ? w->cur + 1 : w->first;
         rc = fs_scene_load_frame(&w->scene, w->cur, &np);
     }
-    if (!rc && np.n) rc = fs_grid_build(&ng, &np, fs_scene_field(&w->scene).H);
-    if (!rc && np.n && w->self) rc = fs_method_at(w->mi)->upload(w->self, &np, &ng);
     if (rc) {
-        fs_grid_free(&ng);
         fs_particles_free(&np);
         return rc;
     }
-    fs_grid_free(&w->grid);
-    fs_particles_free(&w->p);
+    if (w->run && fs_run_upload(w->run, &np, NULL, NULL)) method_failed(w);
+    fs_particles_free(&w->p); /* after a failed upload the run holds no frame either */
     w->p = np;
-    w->grid = ng;
     w->gen++;
     return FS_OK;
 }
 
-/* Creates the method the user picked (when it changed) and uploads the particles. */
-static int use_method(viewer *w)
+/* Opens a run of the method the user picked (when it changed) and hands it the particles. */
+static void use_method(viewer *w)
 {
-    if (w->self && w->mi == w->v.method) return FS_OK;
-    const fs_method *m = fs_method_at(w->v.method);
-    int rc = fs_method_params_resolve(m, &w->scene, w->params);
-    if (rc) return rc;
-    if (w->self) fs_method_at(w->mi)->destroy(w->self);
-    w->self = NULL;
-    fs_method_setup setup = {fs_scene_field(&w->scene), w->params, &w->scene};
-    if (!(w->self = m->create(&setup))) return FS_ERR_RUNTIME;
+    if (w->mi == w->v.method) return;
+    fs_run_close(w->run);
+    w->run = NULL;
     w->mi = w->v.method;
-    return w->p.n ? m->upload(w->self, &w->p, &w->grid) : FS_OK;
+    w->why[0] = 0;
+    if (fs_run_open(&w->run, fs_method_at(w->mi), &w->scene, NULL, &w->ctx) ||
+        fs_run_upload(w->run, &w->p, NULL, NULL))
+        method_failed(w);
 }
 
 /* ---- drawing ---- */
@@ -172,9 +173,9 @@ static void sized_texture(unsigned *tex, int *tw, int *th, int gw, int gh, unsig
  * G-buffer depth is nearer, so the user sees what a box drag moves. */
 static void draw_box(viewer *w, const fs_camera *cam, int fw, int fh)
 {
-    int gw = w->g.w, gh = w->g.h;
+    int gw = w->im.g.w, gh = w->im.g.h;
     sized_texture(&w->depth_tex, &w->dtw, &w->dth, gw, gh, GL_R32F, GL_NEAREST); /* no filtering across inf */
-    glTextureSubImage2D(w->depth_tex, 0, 0, 0, gw, gh, GL_RED, GL_FLOAT, w->g.depth);
+    glTextureSubImage2D(w->depth_tex, 0, 0, 0, gw, gh, GL_RED, GL_FLOAT, w->im.g.depth);
     float lo[3], hi[3], view[16], proj[16];
     fs_sph_box(w->sim, lo, hi);
     fs_camera_view_matrix(cam, view);
@@ -198,7 +199,7 @@ static void present(viewer *w, int gw, int gh, int fw, int fh)
 {
     sized_texture(&w->tex, &w->tw, &w->th, gw, gh, GL_RGBA32F, GL_LINEAR);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(w->tex, 0, 0, 0, gw, gh, GL_RGBA, GL_FLOAT, w->rgba);
+    glTextureSubImage2D(w->tex, 0, 0, 0, gw, gh, GL_RGBA, GL_FLOAT, w->im.rgba);
     /* methods leave their own state behind: reset what the draw depends on */
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fw, fh);
@@ -215,49 +216,56 @@ static void present(viewer *w, int gw, int gh, int fw, int fh)
     glUseProgram(0);
 }
 
-/* Renders the current particles with the current method at the window size
- * times the scale, shades and draws them. */
-static int render_frame(viewer *w, int fw, int fh)
+/* The camera of this frame: the orbit, the G-buffer size, clip planes around
+ * the particles (and the simulator's container, so they do not jump as fluid splashes). */
+static fs_camera frame_camera(const viewer *w, int gw, int gh)
 {
-    const fs_method *m = fs_method_at(w->mi);
-    int gw = (int)lroundf(fw * w->v.scale), gh = (int)lroundf(fh * w->v.scale), rc;
-    if (gw < 1) gw = 1;
-    if (gh < 1) gh = 1;
-    if (w->g.w != gw || w->g.h != gh || w->g_mi != w->mi) {
-        fs_gbuffer_free(&w->g);
-        free(w->rgba);
-        w->rgba = malloc((size_t)gw * gh * 4 * sizeof(float));
-        if (!w->rgba) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-        if ((rc = fs_gbuffer_alloc(&w->g, gw, gh, fs_method_wants_color(m, &w->p)))) return rc;
-        if (m->writes_own && (rc = fs_gbuffer_alloc_own(&w->g))) return rc;
-        w->g_mi = w->mi;
-    }
     fs_camera cam = w->scene.camera;
     cam.width = gw;
     cam.height = gh;
     fs_orbit_apply(&w->v.orbit, &cam);
-    float lo[3], hi[3], floor_y = 0, H = fs_scene_field(&w->scene).H;
+    float lo[3], hi[3], H = fs_scene_field(&w->scene).H;
     for (int k = 0; k < 3; k++) {
         lo[k] = w->p.n ? w->p.bmin[k] - H : 0;
         hi[k] = w->p.n ? w->p.bmax[k] + H : 0;
     }
-    if (w->sim) { /* the container too, so clip planes do not jump as fluid splashes */
+    if (w->sim) {
         float blo[3], bhi[3];
         fs_sph_box(w->sim, blo, bhi);
         for (int k = 0; k < 3; k++) {
             lo[k] = w->p.n ? fminf(lo[k], blo[k]) : blo[k];
             hi[k] = w->p.n ? fmaxf(hi[k], bhi[k]) : bhi[k];
         }
-        floor_y = blo[w->scene.up_axis];
     }
     fs_camera_fit_clip(&cam, lo, hi);
-    fs_gbuffer_clear(&w->g);
+    return cam;
+}
+
+/* Renders the current particles with the current method at the window size
+ * times the scale, shades and draws them. A method that fails shows the empty
+ * scene and says why. */
+static int render_frame(viewer *w, int fw, int fh)
+{
+    int gw = (int)lroundf(fw * w->v.scale), gh = (int)lroundf(fh * w->v.scale);
+    fs_camera cam = frame_camera(w, gw < 1 ? 1 : gw, gh < 1 ? 1 : gh);
+    if (!w->run) { /* no method could be made: nothing to draw but the reason */
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        return FS_OK;
+    }
+    if (w->sim) { /* the container's floor, not the fluid's lowest point */
+        float blo[3], bhi[3];
+        fs_sph_box(w->sim, blo, bhi);
+        fs_run_set_floor(w->run, blo[w->scene.up_axis]);
+    }
     fs_stages st = {0};
-    if (w->p.n && (rc = m->render(w->self, &cam, &w->g, &st))) return rc;
-    if (w->p.n && !w->sim) floor_y = fs_scene_floor(&w->scene, &w->p); /* the simulator's: the box floor */
-    if (w->v.own && m->writes_own && w->p.n) memcpy(w->rgba, w->g.own, (size_t)gw * gh * 4 * sizeof(float));
-    else fs_shade(&w->scene, &cam, &w->g, floor_y, w->rgba);
-    present(w, gw, gh, fw, fh);
+    if (fs_run_render(w->run, &cam, &w->im, &st)) method_failed(w);
+    else w->why[0] = 0;
+    int own = w->v.own && fs_run_method(w->run)->writes_own && w->p.n && !w->why[0];
+    int rc = fs_run_shade(w->run, &cam, &w->im, own ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED, NULL);
+    if (rc) return rc;
+    present(w, cam.width, cam.height, fw, fh);
     if (w->sim) draw_box(w, &cam, fw, fh);
     return FS_OK;
 }
@@ -302,9 +310,11 @@ static void set_title(viewer *w, int frame, int fw, int fh)
                  w->v.playing ? "" : ", paused");
     else
         snprintf(where, sizeof where, "frame %d [%d..%d]%s", w->cur, w->first, w->last, w->v.playing ? "" : ", paused");
-    snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %s | %s | scale %.2f (%dx%d) | %s | #%d", m->name,
+    char why[600] = "";
+    if (w->why[0]) snprintf(why, sizeof why, " | cannot render: %s", w->why);
+    snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %s | %s | scale %.2f (%dx%d) | %s | #%d%s", m->name,
              w->v.own && m->writes_own ? "own" : "shared", ms, w->ctx.renderer, w->v.scale,
-             (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame);
+             (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame, why);
     glfwSetWindowTitle(w->ctx.handle, title);
     if (w->verbose) fprintf(stderr, "%s\n", title);
 }
@@ -354,7 +364,7 @@ static int run(viewer *w, int max_frames, int scripted)
             w->v.step = 0;
             if ((rc = next_particles(w, 1))) break;
         }
-        if ((rc = use_method(w))) break;
+        use_method(w);
         int fw, fh, ww, wh;
         glfwGetFramebufferSize(win, &fw, &fh);
         glfwGetWindowSize(win, &ww, &wh);
@@ -452,15 +462,16 @@ int cmd_view(int argc, char **argv)
     /* everything the user typed is checked before a window opens */
     static viewer w;
     memset(&w, 0, sizeof w);
-    w.mi = w.g_mi = -1;
+    w.mi = -1;
     w.dt = dt;
     w.verbose = verbose;
     if (simulate) fs_scene_defaults(&w.scene);
     else if ((rc = cli_scene_from_arg(&w.scene, input))) return cli_error(rc);
     for (int i = 0; i < nsets; i++)
         if ((rc = fs_scene_add_set(&w.scene, sets[i]))) return cli_error(rc);
+    double check[FS_MAX_PARAMS];
     for (int i = 0; i < fs_method_count(); i++) /* a bad --set fails now, not on a key press */
-        if ((rc = fs_method_params_resolve(fs_method_at(i), &w.scene, w.params))) return cli_error(rc);
+        if ((rc = fs_method_params_resolve(fs_method_at(i), &w.scene, check))) return cli_error(rc);
     if (script || events) {
         char *text = NULL;
         if (script && (rc = read_text(script, &text))) return cli_error(rc);
@@ -476,14 +487,9 @@ int cmd_view(int argc, char **argv)
     } else {
         fs_scene_frames(&w.scene, &w.first, &w.last);
         w.cur = w.first;
+        if (radius > 0) w.scene.radius = radius; /* before a synthetic scene is generated */
         if ((rc = next_particles(&w, 0))) { view_script_free(&w.script); return cli_error(rc); }
-        if (radius > 0) w.scene.radius = radius;
-        else if (!w.scene.path[0] && w.p.radius > 0) w.scene.radius = w.p.radius;
-        fs_scene_frame_particles(&w.scene, &w.p);
-        if (radius > 0 || (!w.scene.path[0] && w.p.radius > 0)) { /* the grid's cell follows H */
-            fs_grid_free(&w.grid);
-            if ((rc = fs_grid_build(&w.grid, &w.p, fs_scene_field(&w.scene).H))) goto done;
-        }
+        fs_scene_adopt_frame(&w.scene, &w.p, radius);
     }
     int win_w = W ? W : simulate ? 800 : w.scene.camera.width, win_h = H ? H : simulate ? 600 : w.scene.camera.height;
     if ((rc = fs_gl_context_create(&w.ctx, FS_CTX_GLFW, win_w, win_h))) goto done;
@@ -514,7 +520,7 @@ int cmd_view(int argc, char **argv)
     rc = run(&w, max_frames, script || events || max_frames); /* scripted runs never idle */
 done:
     if (rc) cli_error(rc);
-    if (w.self) fs_method_at(w.mi)->destroy(w.self);
+    fs_run_close(w.run); /* in the context its GL objects live in */
     fs_sph_destroy(w.sim);
     if (w.ctx.handle) {
         if (w.tex) glDeleteTextures(1, &w.tex);
@@ -524,9 +530,7 @@ done:
         if (w.depth_tex) glDeleteTextures(1, &w.depth_tex);
     }
     fs_gl_context_destroy(&w.ctx);
-    fs_gbuffer_free(&w.g);
-    free(w.rgba);
-    fs_grid_free(&w.grid);
+    fs_run_image_free(&w.im);
     fs_particles_free(&w.p);
     view_script_free(&w.script);
     return rc;
