@@ -121,8 +121,12 @@ static int render_refs(cmp_run *r, fs_particles *frames_p, const fs_grid *grids)
         ref->frames = calloc(r->nframes, sizeof *ref->frames);
         if (!ref->frames) return fs_fail(FS_ERR_RUNTIME, "out of memory");
         void *self = NULL;
-        fs_method_setup setup = {fs_scene_field(&r->scene), ref->v.params, &r->scene};
-        if (!ref->analytic && !(self = ref->v.m->create(&setup))) return FS_ERR_RUNTIME;
+        if (!ref->analytic) {
+            fs_method_setup setup = {fs_scene_field(&r->scene), fs_method_params_alloc(ref->v.m, ref->v.params), &r->scene};
+            self = ref->v.m->create(&setup);
+            free((void *)setup.params);
+            if (!self) return FS_ERR_RUNTIME;
+        }
         for (int f = 0; f < r->nframes; f++) {
             cmp_view *v = &ref->frames[f];
             int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height, 0);
@@ -181,8 +185,9 @@ static int run_entry(cmp_run *r, cmp_entry *e, fs_particles *frames_p, const fs_
                      int index, int total, double t_start)
 {
     const fs_method *m = e->v.m;
-    fs_method_setup setup = {fs_scene_field(&r->scene), e->v.params, &r->scene};
+    fs_method_setup setup = {fs_scene_field(&r->scene), fs_method_params_alloc(m, e->v.params), &r->scene};
     void *self = m->create(&setup);
+    free((void *)setup.params);
     if (!self) return FS_ERR_RUNTIME;
     snprintf(e->renderer, sizeof e->renderer, "%s", m->needs_gl ? ctx->renderer : "CPU");
     fs_provenance prov = r->prov;
@@ -334,8 +339,9 @@ int cmd_compare(int argc, char **argv)
     fs_sweep sweeps[FS_MAX_SWEEPS];
     int nsweeps = 0;
     for (int i = 0; i < nsets; i++) {
-        const char *eq = strchr(sets[i], '=');
-        rc = eq && strchr(eq, ',') ? fs_sweep_add(sweeps, &nsweeps, sets[i]) : fs_scene_add_set(s, sets[i]);
+        fs_param_setting split;
+        if ((rc = fs_param_split(sets[i], &split))) return cli_error(rc);
+        rc = strchr(split.value, ',') ? fs_sweep_add(sweeps, &nsweeps, sets[i]) : fs_scene_add_set(s, sets[i]);
         if (rc) return cli_error(rc);
     }
     /* methods and their variants */

@@ -117,7 +117,7 @@ int cmd_render(int argc, char **argv)
     else if (!scene.path[0] && p.radius > 0) scene.radius = p.radius;
     int radius_note = !scene.path[0] && !(radius > 0) && !(p.radius > 0) && !quiet;
     fs_scene_frame_particles(&scene, &p);
-    fs_method_setup setup = {fs_scene_field(&scene), params, &scene};
+    fs_method_setup setup = {fs_scene_field(&scene), fs_method_params_alloc(m, params), &scene};
 
     fs_grid grid = {0};
     fs_gl_context ctx = {0};
@@ -168,6 +168,7 @@ int cmd_render(int argc, char **argv)
 done:
     if (rc) cli_error(rc);
     if (self) m->destroy(self);
+    free((void *)setup.params);
     free(rgba);
     fs_gbuffer_free(&g);
     if (m->needs_gl) fs_gl_context_destroy(&ctx);

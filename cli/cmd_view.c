@@ -135,8 +135,10 @@ static int use_method(viewer *w)
     if (rc) return rc;
     if (w->self) fs_method_at(w->mi)->destroy(w->self);
     w->self = NULL;
-    fs_method_setup setup = {fs_scene_field(&w->scene), w->params, &w->scene};
-    if (!(w->self = m->create(&setup))) return FS_ERR_RUNTIME;
+    fs_method_setup setup = {fs_scene_field(&w->scene), fs_method_params_alloc(m, w->params), &w->scene};
+    w->self = m->create(&setup);
+    free((void *)setup.params);
+    if (!w->self) return FS_ERR_RUNTIME;
     w->mi = w->v.method;
     return w->p.n ? m->upload(w->self, &w->p, &w->grid) : FS_OK;
 }

@@ -9,6 +9,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "method_params.h"
 #include "scene.h"
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,8 @@ static void make_block(void)
 {
     fs_scene_defaults(&scene);
     scene.radius = 0.05f;
+    fs_scene_add_set(&scene, "spheres.radius_scale=1");
+    fs_scene_add_set(&scene, "spheres.thickness=on");
     fs_particles_alloc(&block, 6 * 4 * 5, 0);
     size_t k = 0;
     for (int z = 0; z < 5; z++)
@@ -44,10 +47,12 @@ static int render_block(fs_gbuffer *g)
 {
     const fs_method *m = fs_method_find("spheres");
     if (!m) return fs_fail(FS_ERR_RUNTIME, "spheres is not registered");
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&scene), params, NULL};
+    double params[FS_MAX_PARAMS];
+    if (fs_method_params_resolve(m, &scene, params)) return FS_ERR_INPUT;
+    fs_method_setup setup = {fs_scene_field(&scene), fs_method_params_alloc(m, params), NULL};
     fs_gbuffer_alloc(g, SIZE, SIZE, 0);
     void *self = m->create(&setup);
+    free((void *)setup.params);
     if (!self) return FS_ERR_RUNTIME;
     fs_stages st = {0};
     int rc = m->upload(self, &block, NULL);

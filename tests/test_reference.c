@@ -5,6 +5,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
+#include "method_params.h"
 #include "particle_io.h"
 #include "analytic.h"
 #include <stdlib.h>
@@ -30,7 +31,7 @@ static int render(const fs_scene *s, const fs_camera *cam, const double *params,
     fs_particles p;
     int rc = fs_synthetic_generate(s, 0, &p);
     if (rc) return rc;
-    fs_method_setup setup = {fs_scene_field(s), params, NULL};
+    fs_method_setup setup = {fs_scene_field(s), fs_method_params_alloc(m, params), NULL};
     fs_grid g;
     rc = fs_grid_build(&g, &p, setup.field.H);
     void *self = rc ? NULL : m->create(&setup);
@@ -43,6 +44,7 @@ static int render(const fs_scene *s, const fs_camera *cam, const double *params,
         g_ms += st.ms[0];
     }
     if (self) m->destroy(self);
+    free((void *)setup.params);
     fs_grid_free(&g);
     fs_particles_free(&p);
     return rc;
@@ -191,9 +193,10 @@ static void thickness_and_params(void)
     fs_gbuffer_alloc(&off, 17, 17, 0);
     const fs_method *m = fs_method_find("reference");
     double params[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) params[i] = m->params[i].def;
+    CHECK(fs_method_params_resolve(m, &s, params) == FS_OK, "defaults: %s", fs_error_message());
     CHECK(render(&s, &cam, params, &on) == FS_OK, "thickness on");
-    params[fs_method_param_index(m, "thickness")] = 0;
+    fs_scene_add_set(&s, "reference.thickness=off");
+    CHECK(fs_method_params_resolve(m, &s, params) == FS_OK, "thickness=off: %s", fs_error_message());
     CHECK(render(&s, &cam, params, &off) == FS_OK, "thickness off");
     size_t mid = 8 * 17 + 8;
     double depth = on.depth[mid] / r, thick = on.thickness[mid] / r;
@@ -247,7 +250,7 @@ static void against_brute_force(void)
     fs_camera_frame_box(&cam, p.bmin, p.bmax, 1);
     fs_camera_fit_clip(&cam, p.bmin, p.bmax);
     const fs_method *m = fs_method_find("reference");
-    fs_method_setup setup = {f, NULL, NULL};
+    fs_method_setup setup = {f, fs_method_params_alloc(m, NULL), NULL};
     fs_grid g;
     fs_grid_build(&g, &p, f.H);
     void *self = m->create(&setup);
@@ -291,6 +294,7 @@ static void against_brute_force(void)
     CHECK(missed == 0 && behind == 0, "reference missed %d, found a later surface at %d pixels", missed, behind);
     CHECK(worst < 0.01, "depths differ by %g r where both find the same surface", worst);
     if (self) m->destroy(self);
+    free((void *)setup.params);
     fs_gbuffer_free(&gb);
     fs_grid_free(&g);
     fs_particles_free(&p);
@@ -304,7 +308,7 @@ static void refusals(void)
     fs_scene s = scene(FS_SYNTH_BOX, 0.1f, 1);
     fs_particles p;
     fs_synthetic_generate(&s, 0, &p);
-    fs_method_setup setup = {fs_scene_field(&s), NULL, NULL};
+    fs_method_setup setup = {fs_scene_field(&s), fs_method_params_alloc(m, NULL), NULL};
     fs_grid g;
     fs_grid_build(&g, &p, 0.5f * setup.field.H);
     void *self = m->create(&setup);
@@ -315,6 +319,7 @@ static void refusals(void)
     if (self) m->destroy(self);
     setup.field.iso = 0;
     CHECK(m->create(&setup) == NULL, "iso 0 refused");
+    free((void *)setup.params);
     fs_grid_free(&g);
     fs_particles_free(&p);
 }

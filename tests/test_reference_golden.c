@@ -24,7 +24,7 @@ int main(void)
     const fs_method *m = fs_method_find("reference");
     double params[FS_MAX_PARAMS];
     CHECK(fs_method_params_resolve(m, &s, params) == FS_OK, "params");
-    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
+    fs_method_setup setup = {fs_scene_field(&s), fs_method_params_alloc(m, params), NULL};
     fs_grid g;
     fs_gbuffer gb;
     fs_stages st = {0};
@@ -43,6 +43,7 @@ int main(void)
         fs_gbuffer_free(&gb);
     }
     if (self) m->destroy(self);
+    free((void *)setup.params);
     fs_grid_free(&g);
     fs_particles_free(&p);
     TEST_DONE();

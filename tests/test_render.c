@@ -1,24 +1,25 @@
 #include "test_render.h"
 #include "fs_error.h"
+#include "method_params.h"
 #include "particle_io.h"
 #include "scene.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+/* The method's values with "name=value" overrides, set by name through a
+ * scene's "method.name=value" settings like every other caller. */
 static int param_values(const fs_method *m, double *v, const char *const *sets)
 {
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
+    fs_scene s;
+    fs_scene_defaults(&s);
     for (; sets && *sets; sets++) {
-        char name[64];
-        const char *eq = strchr(*sets, '=');
-        if (!eq) return fs_fail(FS_ERR_INPUT, "bad test parameter %s", *sets);
-        snprintf(name, sizeof name, "%.*s", (int)(eq - *sets), *sets);
-        int i = fs_method_param_index(m, name);
-        if (i < 0) return fs_fail(FS_ERR_INPUT, "%s has no parameter %s", m->name, name);
-        int rc = fs_param_parse(&m->params[i], eq + 1, &v[i], name);
+        char set[160];
+        snprintf(set, sizeof set, "%s.%s", m->name, *sets);
+        int rc = fs_scene_add_set(&s, set);
         if (rc) return rc;
     }
-    return FS_OK;
+    return fs_method_params_resolve(m, &s, v);
 }
 
 int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
@@ -29,7 +30,7 @@ int fs_test_render(const char *method, const char *const *sets, const fs_particl
     double v[FS_MAX_PARAMS];
     int rc = param_values(m, v, sets);
     if (rc) return rc;
-    fs_method_setup setup = {f, v, NULL};
+    fs_method_setup setup = {f, fs_method_params_alloc(m, v), NULL};
     fs_grid g;
     rc = fs_grid_build(&g, p, f.H);
     void *self = rc ? NULL : m->create(&setup);
@@ -38,6 +39,7 @@ int fs_test_render(const char *method, const char *const *sets, const fs_particl
     fs_stages local = {0};
     if (!rc) rc = m->render(self, cam, out, st ? st : &local);
     if (self) m->destroy(self);
+    free((void *)setup.params);
     fs_grid_free(&g);
     return rc;
 }

@@ -5,6 +5,7 @@
 #include "gl_context.h"
 #include "golden.h"
 #include "method.h"
+#include "method_params.h"
 #include "scene.h"
 #include "shading.h"
 #include <stdlib.h>
@@ -24,9 +25,14 @@ static void test_single_sphere(const fs_method *m)
     p.x[0] = 0.1f; p.y[0] = -0.05f; p.z[0] = 0.0f;
     fs_particles_bounds(&p);
     fs_field f = {r, 8 * r * r * r, FS_KERNEL_CUBIC, 4 * r, 0.6f};
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {f, params, NULL};
+    fs_scene ps; /* only for its parameter settings */
+    fs_scene_defaults(&ps);
+    double params[FS_MAX_PARAMS];
+    CHECK(!fs_scene_add_set(&ps, "spheres.radius_scale=1") && !fs_scene_add_set(&ps, "spheres.thickness=on") &&
+          !fs_method_params_resolve(m, &ps, params), "parameters: %s", fs_error_message());
+    fs_method_setup setup = {f, fs_method_params_alloc(m, params), NULL};
     void *self = m->create(&setup);
+    free((void *)setup.params);
     CHECK(self != NULL, "create: %s", fs_error_message());
     if (!self) return;
     CHECK(m->upload(self, &p, NULL) == FS_OK, "upload: %s", fs_error_message());
@@ -94,9 +100,12 @@ static void test_golden(const fs_method *m)
     fs_particles_bounds(&p);
     s.camera.width = s.camera.height = 128;
     fs_scene_finish_camera(&s, p.bmin, p.bmax);
-    double params[2] = {1.0, 1.0};
-    fs_method_setup setup = {fs_scene_field(&s), params, NULL};
+    double params[FS_MAX_PARAMS];
+    CHECK(!fs_scene_add_set(&s, "spheres.radius_scale=1") && !fs_scene_add_set(&s, "spheres.thickness=on") &&
+          !fs_method_params_resolve(m, &s, params), "parameters: %s", fs_error_message());
+    fs_method_setup setup = {fs_scene_field(&s), fs_method_params_alloc(m, params), NULL};
     void *self = m->create(&setup);
+    free((void *)setup.params);
     fs_gbuffer g;
     fs_gbuffer_alloc(&g, 128, 128, 0);
     fs_stages st = {0};

@@ -7,6 +7,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
+#include "method_params.h"
 #include "metrics.h"
 #include "particle_io.h"
 #include "scene.h"
@@ -123,12 +124,13 @@ static void own_appearance_and_exports(void)
     if (load_dam(&p, &s, &f)) return;
     const fs_method *m = fs_method_find("surfels");
     double v[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    v[fs_method_param_index(m, "grid_res")] = 96;
-    fs_method_setup setup = {f, v, &s};
+    fs_scene_add_set(&s, "surfels.grid_res=96");
+    CHECK(fs_method_params_resolve(m, &s, v) == FS_OK, "parameters: %s", fs_error_message());
+    fs_method_setup setup = {f, fs_method_params_alloc(m, v), &s};
     fs_grid grid;
     fs_grid_build(&grid, &p, f.H);
     void *self = m->create(&setup);
+    free((void *)setup.params);
     CHECK(self != NULL, "create: %s", fs_error_message());
     if (!self) { fs_grid_free(&grid); fs_particles_free(&p); return; }
     fs_gbuffer g;
@@ -155,8 +157,11 @@ static void own_appearance_and_exports(void)
     CHECK(sky > 0 && sky_caustic == 0, "%zu of %zu sky pixels carry caustics", sky_caustic, sky);
 
     /* the object under the water changes the own image, never the G-buffer */
-    v[fs_method_param_index(m, "object")] = 0;
+    fs_scene_add_set(&s, "surfels.object=none");
+    CHECK(fs_method_params_resolve(m, &s, v) == FS_OK, "object=none: %s", fs_error_message());
+    setup.params = fs_method_params_alloc(m, v);
     void *plain = m->create(&setup);
+    free((void *)setup.params);
     fs_gbuffer h;
     fs_gbuffer_alloc(&h, 128, 128, 0);
     fs_gbuffer_alloc_own(&h);

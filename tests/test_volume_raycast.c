@@ -9,6 +9,7 @@
 #include "gl.h"
 #include "gl_context.h"
 #include "method.h"
+#include "method_params.h"
 #include "metrics.h"
 #include "particle_io.h"
 #include "scene.h"
@@ -157,12 +158,16 @@ static void transfer_and_export(void)
     if (load_dam(&p, &s, &f)) return;
     const fs_method *m = fs_method_find("volume_raycast");
     double v[FS_MAX_PARAMS];
-    for (int i = 0; i < m->nparams; i++) v[i] = m->params[i].def;
-    v[fs_method_param_index(m, "grid_res")] = 96;
-    fs_method_setup setup = {f, v, &s};
+    fs_scene_add_set(&s, "volume_raycast.grid_res=96");
+    CHECK(fs_method_params_resolve(m, &s, v) == FS_OK, "parameters: %s", fs_error_message());
+    fs_method_setup setup = {f, fs_method_params_alloc(m, v), &s};
     void *opaque = m->create(&setup);
-    v[fs_method_param_index(m, "mode")] = 1;
+    free((void *)setup.params);
+    fs_scene_add_set(&s, "volume_raycast.mode=translucent");
+    CHECK(fs_method_params_resolve(m, &s, v) == FS_OK, "mode=translucent: %s", fs_error_message());
+    setup.params = fs_method_params_alloc(m, v);
     void *translucent = m->create(&setup);
+    free((void *)setup.params);
     CHECK(opaque && translucent, "create: %s", fs_error_message());
     if (!opaque || !translucent) { fs_particles_free(&p); return; }
     fs_gbuffer g[2];
