@@ -347,8 +347,9 @@ static int plan_variants(cmp_run *r, const cmp_options *o)
     fs_sweep sweeps[FS_MAX_SWEEPS];
     int nsweeps = 0;
     for (int i = 0; i < o->nsets; i++) {
-        const char *eq = strchr(o->sets[i], '=');
-        rc = eq && strchr(eq, ',') ? fs_sweep_add(sweeps, &nsweeps, o->sets[i]) : fs_scene_add_set(s, o->sets[i]);
+        fs_param_setting split;
+        if ((rc = fs_param_split(o->sets[i], &split))) return cli_error(rc);
+        rc = strchr(split.value, ',') ? fs_sweep_add(sweeps, &nsweeps, o->sets[i]) : fs_scene_add_set(s, o->sets[i]);
         if (rc) return cli_error(rc);
     }
     if ((rc = add_variants(r, o->methods, sweeps, nsweeps))) return rc;

@@ -17,7 +17,9 @@ extern "C" {
 struct fs_scene;
 typedef struct fs_method_setup {
     fs_field field;         /* r, V, kernel, H, iso */
-    const double *params;   /* values in the order of the method's param table */
+    /* The method's parameter struct, every field filled (fs_method_params_fill);
+     * create() copies what it keeps, so it need only live during create(). */
+    const void *params;
     /* Light, material, floor and up axis, for methods with their own appearance
      * (writes_own); NULL means fs_scene_defaults(). */
     const struct fs_scene *scene;
@@ -30,8 +32,9 @@ typedef struct fs_method {
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
     int writes_color;        /* 1: fills out->color when the particles carry colour */
     int writes_own;          /* 1: fills out->own and out->caustics when they are allocated */
-    const fs_param_def *params;
+    const fs_param_def *params; /* one entry per field of its parameter struct */
     int nparams;
+    size_t params_size;         /* sizeof that struct */
     /* Returns NULL on failure with fs_fail() set. */
     void *(*create)(const fs_method_setup *setup);
     /* Particles (and a grid built with cell >= field.H) stay valid until destroy. */
@@ -62,8 +65,15 @@ int fs_method_param_index(const fs_method *m, const char *name);
 /* For create(): FS_OK when r, H, V and iso are all positive, else FS_ERR_INPUT
  * (fs_fail) naming the method. */
 int fs_method_check_field(const char *method, const fs_field *f);
-/* For create(): the setup's parameter values, or the table's defaults. */
-void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v);
+/* Writes m's parameter values (in table order; NULL: the defaults) into dst, a
+ * struct of m->params_size bytes, each at its table entry's offset (any other
+ * byte 0). FS_ERR_RUNTIME (fs_fail) when the table does not fit the struct. */
+int fs_method_params_fill(const fs_method *m, const double *values, void *dst);
+/* The same into malloc'd memory (free() it after create()); NULL with fs_fail set on failure. */
+void *fs_method_params_alloc(const fs_method *m, const double *values);
+/* For create(): copies the setup's parameter struct (size bytes) into dst;
+ * FS_ERR_RUNTIME (fs_fail) naming the method when the setup has none. */
+int fs_method_params_copy(const char *method, const fs_method_setup *setup, void *dst, size_t size);
 
 #ifdef __cplusplus
 }

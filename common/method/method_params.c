@@ -1,26 +1,40 @@
 #include "method_params.h"
 #include "fs_error.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+int fs_method_setting_find(const char *text, fs_method_setting *out)
+{
+    fs_param_setting split;
+    int rc = fs_param_split(text, &split);
+    if (rc) return rc;
+    if (!(out->m = fs_method_find(split.method)))
+        return fs_fail(FS_ERR_INPUT, "--set %s: unknown method '%s' (see 'fluidsurf methods')", text, split.method);
+    if ((out->param = fs_method_param_index(out->m, split.param)) < 0)
+        return fs_fail(FS_ERR_INPUT, "--set %s: %s has no parameter '%s'", text, split.method, split.param);
+    out->value = split.value;
+    return FS_OK;
+}
+
+int fs_method_setting_parse(const fs_method_setting *set, const char *value, double *out)
+{
+    const fs_param_def *def = &set->m->params[set->param];
+    char what[160];
+    snprintf(what, sizeof what, "--set %s.%s", set->m->name, def->name);
+    return fs_param_parse(def, value, out, what);
+}
 
 int fs_method_params_resolve(const fs_method *m, const fs_scene *s, double values[FS_MAX_PARAMS])
 {
     for (int i = 0; i < m->nparams; i++) values[i] = m->params[i].def;
     for (int k = 0; k < s->nsets; k++) {
-        const char *set = s->sets[k], *dot = strchr(set, '.'), *eq = strchr(set, '=');
-        char mname[64], pname[64];
-        snprintf(mname, sizeof mname, "%.*s", (int)(dot - set), set);
-        snprintf(pname, sizeof pname, "%.*s", (int)(eq - dot - 1), dot + 1);
-        const fs_method *target = fs_method_find(mname);
-        if (!target) return fs_fail(FS_ERR_INPUT, "--set %s: unknown method '%s' (see 'fluidsurf methods')", set, mname);
-        int idx = fs_method_param_index(target, pname);
-        if (idx < 0) return fs_fail(FS_ERR_INPUT, "--set %s: %s has no parameter '%s'", set, mname, pname);
+        fs_method_setting set;
         double v;
-        char what[200];
-        snprintf(what, sizeof what, "--set %s.%s", mname, pname);
-        int rc = fs_param_parse(&target->params[idx], eq + 1, &v, what);
+        int rc = fs_method_setting_find(s->sets[k], &set);
+        if (!rc) rc = fs_method_setting_parse(&set, set.value, &v);
         if (rc) return rc;
-        if (target == m) values[idx] = v;
+        if (set.m == m) values[set.param] = v;
     }
     return FS_OK;
 }
@@ -34,4 +48,35 @@ void fs_method_params_string(const fs_method *m, const double *values, char *buf
         fs_param_format(&m->params[i], values[i], v, sizeof v);
         n += snprintf(buf + n, size - n, "%s%s=%s", i ? ";" : "", m->params[i].name, v);
     }
+}
+
+/* ---- the parameter struct handed to create() ---- */
+
+int fs_method_params_fill(const fs_method *m, const double *values, void *dst)
+{
+    memset(dst, 0, m->params_size);
+    for (int i = 0; i < m->nparams; i++) {
+        const fs_param_def *def = &m->params[i];
+        if (def->offset + sizeof(double) > m->params_size)
+            return fs_fail(FS_ERR_RUNTIME, "%s: parameter %s lies outside its %zu-byte struct", m->name, def->name,
+                           m->params_size);
+        *(double *)((char *)dst + def->offset) = values ? values[i] : def->def;
+    }
+    return FS_OK;
+}
+
+void *fs_method_params_alloc(const fs_method *m, const double *values)
+{
+    void *p = malloc(m->params_size ? m->params_size : 1);
+    if (!p) { fs_fail(FS_ERR_RUNTIME, "%s: out of memory for its parameters", m->name); return NULL; }
+    if (fs_method_params_fill(m, values, p)) { free(p); return NULL; }
+    return p;
+}
+
+int fs_method_params_copy(const char *method, const fs_method_setup *setup, void *dst, size_t size)
+{
+    if (!setup->params)
+        return fs_fail(FS_ERR_RUNTIME, "%s: no parameter struct in the setup (fs_method_params_fill)", method);
+    memcpy(dst, setup->params, size);
+    return FS_OK;
 }

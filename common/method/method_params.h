@@ -8,6 +8,19 @@
 extern "C" {
 #endif
 
+/* A "METHOD.PARAM=VALUE" setting matched to a registered method and parameter. */
+typedef struct fs_method_setting {
+    const fs_method *m;
+    int param;         /* index in m->params */
+    const char *value; /* into the setting's text: everything after the '=' */
+} fs_method_setting;
+
+/* Splits text (fs_param_split) and finds its method and parameter; FS_ERR_INPUT
+ * naming text when either is unknown. The value is not parsed. */
+int fs_method_setting_find(const char *text, fs_method_setting *out);
+/* Parses one value for the setting's parameter; errors name "--set METHOD.PARAM". */
+int fs_method_setting_parse(const fs_method_setting *set, const char *value, double *out);
+
 /* FS_ERR_INPUT when a setting names an unknown method or parameter, or a bad
  * value; settings for other methods are checked but not applied. */
 int fs_method_params_resolve(const fs_method *m, const fs_scene *s, double values[FS_MAX_PARAMS]);

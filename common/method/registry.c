@@ -57,8 +57,3 @@ int fs_method_check_field(const char *method, const fs_field *f)
     return fs_fail(FS_ERR_INPUT, "%s: r %g, H %g, V %g and iso %g must all be positive", method, f->r, f->H, f->volume,
                    f->iso);
 }
-
-void fs_method_values(const fs_method_setup *setup, const fs_param_def *defs, int n, double *v)
-{
-    for (int i = 0; i < n; i++) v[i] = setup->params ? setup->params[i] : defs[i].def;
-}

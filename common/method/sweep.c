@@ -6,33 +6,25 @@
 
 int fs_sweep_add(fs_sweep *sweeps, int *nsweeps, const char *spec)
 {
-    const char *dot = strchr(spec, '.'), *eq = strchr(spec, '=');
-    if (!dot || !eq || dot > eq || dot == spec || eq == dot + 1 || !eq[1])
-        return fs_fail(FS_ERR_INPUT, "--set %s: expected METHOD.PARAM=V1,V2,...", spec);
+    fs_method_setting set;
+    int rc = fs_method_setting_find(spec, &set);
+    if (rc) return rc;
     if (*nsweeps == FS_MAX_SWEEPS) return fs_fail(FS_ERR_INPUT, "--set %s: too many sweeps", spec);
-    char mname[64], pname[64];
-    snprintf(mname, sizeof mname, "%.*s", (int)(dot - spec), spec);
-    snprintf(pname, sizeof pname, "%.*s", (int)(eq - dot - 1), dot + 1);
     fs_sweep *sw = &sweeps[*nsweeps];
     memset(sw, 0, sizeof *sw);
-    if (!(sw->m = fs_method_find(mname)))
-        return fs_fail(FS_ERR_INPUT, "--set %s: unknown method '%s' (see 'fluidsurf methods')", spec, mname);
-    if ((sw->param = fs_method_param_index(sw->m, pname)) < 0)
-        return fs_fail(FS_ERR_INPUT, "--set %s: %s has no parameter '%s'", spec, mname, pname);
+    sw->m = set.m;
+    sw->param = set.param;
     for (int i = 0; i < *nsweeps; i++)
         if (sweeps[i].m == sw->m && sweeps[i].param == sw->param)
-            return fs_fail(FS_ERR_INPUT, "--set %s: %s.%s is swept twice", spec, mname, pname);
-    for (const char *v = eq + 1; *v;) {
+            return fs_fail(FS_ERR_INPUT, "--set %s: %s.%s is swept twice", spec, sw->m->name, sw->m->params[sw->param].name);
+    for (const char *v = set.value; *v;) {
         const char *comma = strchr(v, ',');
         int len = comma ? (int)(comma - v) : (int)strlen(v);
         if (sw->nvalues == FS_MAX_SWEEP_VALUES) return fs_fail(FS_ERR_INPUT, "--set %s: too many values", spec);
         if (len <= 0 || len >= (int)sizeof sw->values[0]) return fs_fail(FS_ERR_INPUT, "--set %s: empty or long value", spec);
         snprintf(sw->values[sw->nvalues], sizeof sw->values[0], "%.*s", len, v);
         double parsed;
-        char what[160];
-        snprintf(what, sizeof what, "--set %s.%s", mname, pname);
-        int rc = fs_param_parse(&sw->m->params[sw->param], sw->values[sw->nvalues], &parsed, what);
-        if (rc) return rc;
+        if ((rc = fs_method_setting_parse(&set, sw->values[sw->nvalues], &parsed))) return rc;
         sw->nvalues++;
         v += len + (comma ? 1 : 0);
         if (comma && !*v) return fs_fail(FS_ERR_INPUT, "--set %s: trailing comma", spec);

@@ -67,8 +67,11 @@ int fs_run_open(fs_run **out, const fs_method *m, const fs_scene *s, const doubl
     else if (!rc) rc = fs_method_params_resolve(m, s, r->values);
     r->cur = -1;
     snprintf(r->why, sizeof r->why, "%s: no frame uploaded", m->name);
-    fs_method_setup setup = {fs_scene_field(s), r->values, s};
+    /* create() receives the method's filled parameter struct and copies it */
+    fs_method_setup setup = {fs_scene_field(s), rc ? NULL : fs_method_params_alloc(m, r->values), s};
+    if (!rc && !setup.params) rc = FS_ERR_RUNTIME;
     if (!rc && !(r->self = m->create(&setup))) rc = FS_ERR_RUNTIME;
+    free((void *)setup.params);
     if (rc) { free(r); return rc; }
     *out = r;
     return FS_OK;

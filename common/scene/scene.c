@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "fs_error.h"
+#include "params.h"
 #include "particles.h"
 #include <math.h>
 #include <stdio.h>
@@ -47,9 +48,9 @@ fs_field fs_scene_field(const fs_scene *s)
 
 int fs_scene_add_set(fs_scene *s, const char *set)
 {
-    const char *dot = strchr(set, '.'), *eq = strchr(set, '=');
-    if (!dot || !eq || dot > eq || dot == set || eq == dot + 1)
-        return fs_fail(FS_ERR_INPUT, "--set %s: expected METHOD.PARAM=VALUE", set);
+    fs_param_setting split; /* only checked here: methods resolve the setting later */
+    int rc = fs_param_split(set, &split);
+    if (rc) return rc;
     if (s->nsets == FS_MAX_SETS) return fs_fail(FS_ERR_INPUT, "--set %s: too many settings", set);
     if (strlen(set) >= sizeof s->sets[0]) return fs_fail(FS_ERR_INPUT, "--set %s: too long", set);
     strcpy(s->sets[s->nsets++], set);

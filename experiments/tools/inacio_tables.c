@@ -140,8 +140,10 @@ int main(int argc, char **argv)
         if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %d not registered\n", k); return 1; }
         if (fs_method_params_resolve(rr[k].m, &sc, rr[k].params)) return die("parameters");
         if (k == 2) rr[k].params[fs_method_param_index(rr[k].m, "build")] = 1; /* layered|slice|exact */
-        setup[k] = (fs_method_setup){fs_scene_field(&sc), rr[k].params, &sc};
-        if (!(rr[k].self = rr[k].m->create(&setup[k]))) return die(rr[k].m->name);
+        setup[k] = (fs_method_setup){fs_scene_field(&sc), fs_method_params_alloc(rr[k].m, rr[k].params), &sc};
+        rr[k].self = rr[k].m->create(&setup[k]);
+        free((void *)setup[k].params);
+        if (!rr[k].self) return die(rr[k].m->name);
         if (fs_gbuffer_alloc(&rr[k].g, size, size, 0)) return die("G-buffer");
     }
     float *rgba = malloc((size_t)size * size * 4 * sizeof(float));

@@ -15,33 +15,39 @@
 #include <string.h>
 
 enum { F_NONE, F_GAUSSIAN, F_BILATERAL, F_CURVATURE, F_NARROW };
+
+typedef struct aniso_ssf_params {
+    double anisotropy, filter, iterations, sigma, sigma_depth, range, narrow_threshold, narrow_clamp;
+    double max_radius_px, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda, thickness;
+} aniso_ssf_params;
+
+#define FIELD(f) FS_PARAM_FIELD(aniso_ssf_params, f)
 static const fs_param_def params[] = {
-    {"anisotropy", FS_PARAM_BOOL, 1, 0, 1, NULL, "WPCA ellipsoid sprites (on) or spheres of radius r (off)"},
-    {"filter", FS_PARAM_ENUM, F_NARROW, 0, 4, "none|gaussian|bilateral|curvature|narrow", "depth filter"},
-    {"iterations", FS_PARAM_INT, 0, 0, 1000, NULL, "filter iterations; 0: the paper's (2, curvature flow 80)"},
-    {"sigma", FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL, "spatial Gaussian sigma of every filter kernel, multiples of r"},
-    {"sigma_depth", FS_PARAM_FLOAT, 1.0, 0.01, 100.0, NULL, "bilateral range sigma on depth, multiples of r"},
-    {"range", FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL, "curvature flow: depth jump treated as a discontinuity, multiples of r"},
-    {"narrow_threshold", FS_PARAM_FLOAT, 10.0, 0.01, 1000.0, NULL,
+    {FIELD(anisotropy), FS_PARAM_BOOL, 1, 0, 1, NULL, "WPCA ellipsoid sprites (on) or spheres of radius r (off)"},
+    {FIELD(filter), FS_PARAM_ENUM, F_NARROW, 0, 4, "none|gaussian|bilateral|curvature|narrow", "depth filter"},
+    {FIELD(iterations), FS_PARAM_INT, 0, 0, 1000, NULL, "filter iterations; 0: the paper's (2, curvature flow 80)"},
+    {FIELD(sigma), FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL, "spatial Gaussian sigma of every filter kernel, multiples of r"},
+    {FIELD(sigma_depth), FS_PARAM_FLOAT, 1.0, 0.01, 100.0, NULL, "bilateral range sigma on depth, multiples of r"},
+    {FIELD(range), FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL, "curvature flow: depth jump treated as a discontinuity, multiples of r"},
+    {FIELD(narrow_threshold), FS_PARAM_FLOAT, 10.0, 0.01, 1000.0, NULL,
      "narrow-range filter: depth range delta around the pixel (grows with kept samples), multiples of r"},
-    {"narrow_clamp", FS_PARAM_FLOAT, 1.0, 0.0, 100.0, NULL,
+    {FIELD(narrow_clamp), FS_PARAM_FLOAT, 1.0, 0.0, 100.0, NULL,
      "narrow-range filter: samples behind the range (or empty) count as z + mu, mu in multiples of r"},
-    {"max_radius_px", FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
-    {"aniso_radius", FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "WPCA neighbourhood radius R, multiples of r"},
-    {"kappa", FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "largest/smallest eigenvalue limit"},
-    {"n_eps", FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "at or below this many neighbours: isotropic"},
-    {"aniso_scale", FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "stretch = scale sigma_k / sigma_bulk (paper s)"},
-    {"aniso_norm", FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume",
+    {FIELD(max_radius_px), FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
+    {FIELD(aniso_radius), FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "WPCA neighbourhood radius R, multiples of r"},
+    {FIELD(kappa), FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "largest/smallest eigenvalue limit"},
+    {FIELD(n_eps), FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "at or below this many neighbours: isotropic"},
+    {FIELD(aniso_scale), FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "stretch = scale sigma_k / sigma_bulk (paper s)"},
+    {FIELD(aniso_norm), FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume",
      "stretch normalisation: global s (paper) or determinant 1 per particle"},
-    {"lambda", FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "Laplacian smoothing of kernel centres (Yu & Turk)"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
+    {FIELD(lambda), FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "Laplacian smoothing of kernel centres (Yu & Turk)"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
 };
-enum { P_ANISO, P_FILTER, P_ITER, P_SIGMA, P_SIGMA_Z, P_RANGE, P_NRF_DELTA, P_NRF_MU, P_MAXRAD, P_ARAD, P_KAPPA, P_NEPS,
-       P_ASCALE, P_NORM, P_LAMBDA, P_THICK, P_COUNT };
+#undef FIELD
 
 typedef struct assf {
     fs_field f;
-    double v[P_COUNT];
+    aniso_ssf_params params;
     fs_aniso_params ap;
     unsigned prog_sph, prog_sph_thick, prog_ell, prog_ell_thick, vao;
     unsigned prog_gauss, prog_bilat, prog_curv, prog_narrow, prog_normals;
@@ -93,14 +99,14 @@ static void *create(const fs_method_setup *setup)
     assf *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory"); return NULL; }
     s->f = *f;
-    fs_method_values(setup, params, P_COUNT, s->v);
+    if (fs_method_params_copy("aniso_ssf", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
     fs_aniso_defaults(&s->ap, f->kernel, f->r);
-    s->ap.radius = (float)s->v[P_ARAD] * f->r;
-    s->ap.kappa = (float)s->v[P_KAPPA];
-    s->ap.n_eps = (int)s->v[P_NEPS];
-    s->ap.scale = (float)s->v[P_ASCALE];
-    s->ap.lambda = (float)s->v[P_LAMBDA];
-    s->ap.per_particle = (int)s->v[P_NORM];
+    s->ap.radius = (float)s->params.aniso_radius * f->r;
+    s->ap.kappa = (float)s->params.kappa;
+    s->ap.n_eps = (int)s->params.n_eps;
+    s->ap.scale = (float)s->params.aniso_scale;
+    s->ap.lambda = (float)s->params.lambda;
+    s->ap.per_particle = (int)s->params.aniso_norm;
     s->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, s->ap.radius, 2 * f->r);
     const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
@@ -161,8 +167,8 @@ static void pass(const assf *s, unsigned prog, unsigned src, unsigned dst, const
 {
     glUseProgram(prog);
     glUniform1f(glGetUniformLocation(prog, "u_focal_px"), focal_px);
-    glUniform1f(glGetUniformLocation(prog, "u_sigma"), (float)s->v[P_SIGMA] * s->f.r);
-    glUniform1i(glGetUniformLocation(prog, "u_max_radius"), (int)s->v[P_MAXRAD]);
+    glUniform1f(glGetUniformLocation(prog, "u_sigma"), (float)s->params.sigma * s->f.r);
+    glUniform1i(glGetUniformLocation(prog, "u_max_radius"), (int)s->params.max_radius_px);
     glBindImageTexture(0, src, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, dst, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
@@ -172,13 +178,13 @@ static void pass(const assf *s, unsigned prog, unsigned src, unsigned dst, const
 /* Runs the chosen filter; returns the texture holding the filtered depth. */
 static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
 {
-    int filter = (int)s->v[P_FILTER], iters = (int)s->v[P_ITER];
+    int filter = (int)s->params.filter, iters = (int)s->params.iterations;
     if (iters == 0) iters = filter == F_CURVATURE ? 80 : 2;
     unsigned cur = s->target.tex[FS_TARGET_DEPTH];
     if (filter == F_NONE) return cur;
     int k = 0; /* next ping-pong texture */
 #define STEP(prog) do { pass(s, prog, cur, s->tex[k], cam, focal_px); cur = s->tex[k]; k ^= 1; } while (0)
-    float range = (float)s->v[P_RANGE] * s->f.r;
+    float range = (float)s->params.range * s->f.r;
     for (int it = 0; it < iters; it++) {
         switch (filter) {
         case F_GAUSSIAN:
@@ -191,7 +197,7 @@ static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
             break;
         case F_BILATERAL:
             glUseProgram(s->prog_bilat);
-            glUniform1f(glGetUniformLocation(s->prog_bilat, "u_sigma_z"), (float)s->v[P_SIGMA_Z] * s->f.r);
+            glUniform1f(glGetUniformLocation(s->prog_bilat, "u_sigma_z"), (float)s->params.sigma_depth * s->f.r);
             STEP(s->prog_bilat);
             break;
         case F_CURVATURE:
@@ -202,8 +208,8 @@ static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
             break;
         default: /* narrow-range: 1D passes each iteration */
             glUseProgram(s->prog_narrow);
-            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_threshold"), (float)s->v[P_NRF_DELTA] * s->f.r);
-            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_clamp"), (float)s->v[P_NRF_MU] * s->f.r);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_threshold"), (float)s->params.narrow_threshold * s->f.r);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_clamp"), (float)s->params.narrow_clamp * s->f.r);
             glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 0);
             STEP(s->prog_narrow);
             glUseProgram(s->prog_narrow);
@@ -226,7 +232,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (!s->gg.start) return fs_fail(FS_ERR_RUNTIME, "aniso_ssf: render before upload");
     int rc = ensure_targets(s, cam->width, cam->height);
     if (rc) return rc;
-    int aniso = s->v[P_ANISO] != 0;
+    int aniso = s->params.anisotropy != 0;
     float proj[16], r = s->f.r;
     fs_camera_proj_matrix(cam, proj);
     float focal_px = proj[5] * 0.5f * (float)cam->height;
@@ -269,7 +275,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     double t4 = fs_now_ms();
     fs_stages_add(t, "normals", t4 - t3);
 
-    if (s->v[P_THICK] != 0) {
+    if (s->params.thickness != 0) {
         fs_gl_target_begin_thickness(&s->target);
         camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
         draw_sprites(s, aniso);
@@ -288,6 +294,7 @@ const fs_method fs_method_aniso_ssf = {
     .needs_gl = 1,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
+    .params_size = sizeof(aniso_ssf_params),
     .create = create,
     .upload = upload,
     .render = render,

@@ -14,34 +14,38 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef struct rpca_params {
+    double splat_radius, step, max_steps, refine, step_back, normals, pca_radius, min_neighbors, blend_weight;
+    double w, blend_d, blend_k, normal_filter, filter_sigma, filter_sigma_n, thickness;
+} rpca_params;
+
+#define FIELD(f) FS_PARAM_FIELD(rpca_params, f)
 static const fs_param_def params[] = {
-    {"splat_radius", FS_PARAM_FLOAT, 1.0, 0.1, 4.0, NULL, "radius of the entry (and thickness) spheres, multiples of r"},
-    {"step", FS_PARAM_FLOAT, 0.5, 0.01, 4.0, NULL, "ray-march step, multiples of r"},
-    {"max_steps", FS_PARAM_INT, 512, 1, 1e6, NULL, "most density samples per ray before it stops without a hit"},
-    {"refine", FS_PARAM_INT, 12, 0, 40, NULL, "bisection iterations refining a crossing"},
-    {"step_back", FS_PARAM_FLOAT, 8.0, 0.0, 1000.0, NULL, "how far an entry inside the fluid steps back, multiples of r"},
-    {"normals", FS_PARAM_ENUM, RPCA_NORMALS_BLEND, 0, 2, "basic|pca|blend", "normal estimate (3.3)"},
-    {"pca_radius", FS_PARAM_FLOAT, 4.0, 0.5, 40.0, NULL, "R of eqs. 2-4 (spiky gradient and PCA), multiples of r"},
-    {"min_neighbors", FS_PARAM_INT, 10, 3, 1e6, NULL, "fewer particles within R: use the basic normal"},
-    {"blend_weight", FS_PARAM_ENUM, 0, 0, 1, "adaptive|fixed", "w of eq. 5: eq. 6 (adaptive) or the constant w"},
-    {"w", FS_PARAM_FLOAT, 0.5, 0.0, 1.0, NULL, "blend weight when blend_weight=fixed"},
-    {"blend_d", FS_PARAM_FLOAT, 10.0, 0.0, 1000.0, NULL, "d of eq. 6"},
-    {"blend_k", FS_PARAM_FLOAT, 0.998, -1.0, 1.0, NULL, "k of eq. 6"},
-    {"normal_filter", FS_PARAM_BOOL, 1, 0, 1, NULL, "bilateral Gaussian filter of the normal map (on/off)"},
-    {"filter_sigma", FS_PARAM_FLOAT, 1.0, 0.01, 20.0, NULL, "spatial sigma of the filter, multiples of r at the pixel's depth"},
-    {"filter_sigma_n", FS_PARAM_FLOAT, 0.3, 0.01, 4.0, NULL, "range sigma of the filter on |n_p - n_q|"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive sphere-splatting thickness pass (on/off)"},
+    {FIELD(splat_radius), FS_PARAM_FLOAT, 1.0, 0.1, 4.0, NULL, "radius of the entry (and thickness) spheres, multiples of r"},
+    {FIELD(step), FS_PARAM_FLOAT, 0.5, 0.01, 4.0, NULL, "ray-march step, multiples of r"},
+    {FIELD(max_steps), FS_PARAM_INT, 512, 1, 1e6, NULL, "most density samples per ray before it stops without a hit"},
+    {FIELD(refine), FS_PARAM_INT, 12, 0, 40, NULL, "bisection iterations refining a crossing"},
+    {FIELD(step_back), FS_PARAM_FLOAT, 8.0, 0.0, 1000.0, NULL, "how far an entry inside the fluid steps back, multiples of r"},
+    {FIELD(normals), FS_PARAM_ENUM, RPCA_NORMALS_BLEND, 0, 2, "basic|pca|blend", "normal estimate (3.3)"},
+    {FIELD(pca_radius), FS_PARAM_FLOAT, 4.0, 0.5, 40.0, NULL, "R of eqs. 2-4 (spiky gradient and PCA), multiples of r"},
+    {FIELD(min_neighbors), FS_PARAM_INT, 10, 3, 1e6, NULL, "fewer particles within R: use the basic normal"},
+    {FIELD(blend_weight), FS_PARAM_ENUM, 0, 0, 1, "adaptive|fixed", "w of eq. 5: eq. 6 (adaptive) or the constant w"},
+    {FIELD(w), FS_PARAM_FLOAT, 0.5, 0.0, 1.0, NULL, "blend weight when blend_weight=fixed"},
+    {FIELD(blend_d), FS_PARAM_FLOAT, 10.0, 0.0, 1000.0, NULL, "d of eq. 6"},
+    {FIELD(blend_k), FS_PARAM_FLOAT, 0.998, -1.0, 1.0, NULL, "k of eq. 6"},
+    {FIELD(normal_filter), FS_PARAM_BOOL, 1, 0, 1, NULL, "bilateral Gaussian filter of the normal map (on/off)"},
+    {FIELD(filter_sigma), FS_PARAM_FLOAT, 1.0, 0.01, 20.0, NULL, "spatial sigma of the filter, multiples of r at the pixel's depth"},
+    {FIELD(filter_sigma_n), FS_PARAM_FLOAT, 0.3, 0.01, 4.0, NULL, "range sigma of the filter on |n_p - n_q|"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive sphere-splatting thickness pass (on/off)"},
 };
-enum {
-    P_SPLAT_RADIUS, P_STEP, P_MAX_STEPS, P_REFINE, P_STEP_BACK, P_NORMALS, P_PCA_RADIUS, P_MIN_NEIGHBORS,
-    P_BLEND_WEIGHT, P_W, P_BLEND_D, P_BLEND_K, P_FILTER, P_FILTER_SIGMA, P_FILTER_SIGMA_N, P_THICKNESS, P_COUNT
-};
+#undef FIELD
+
 #define FILTER_MAX_RADIUS 12 /* pixels: bounds the filter's cost at close range */
 #define FILTER_DEPTH_GATE 2.0f /* multiples of r */
 
 typedef struct rpca {
     fs_field f;
-    double v[P_COUNT];
+    rpca_params params;
     unsigned prog_splat, prog_thick, prog_march, prog_normals, prog_filter, vao;
     unsigned tex_hit, tex_raw; /* world hit point; unfiltered view normal */
     int tex_w, tex_h;
@@ -81,7 +85,7 @@ static void *create(const fs_method_setup *setup)
     rpca *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory"); return NULL; }
     s->f = *f;
-    fs_method_values(setup, params, P_COUNT, s->v);
+    if (fs_method_params_copy("raycast_pca", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
     const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *march[] = {"raycast_pca/march.comp.glsl", NULL};
     const char *normals[] = {"raycast_pca/normals.comp.glsl", NULL};
@@ -148,7 +152,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     int rc = ensure_targets(s, cam->width, cam->height);
     if (rc) return rc;
     const fs_field *f = &s->f;
-    float r = f->r, splat_r = (float)s->v[P_SPLAT_RADIUS] * r;
+    float r = f->r, splat_r = (float)s->params.splat_radius * r;
     float proj[16];
     fs_camera_proj_matrix(cam, proj);
 
@@ -174,10 +178,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
     glUniform1f(glGetUniformLocation(P, "u_V"), f->volume);
     glUniform1f(glGetUniformLocation(P, "u_iso"), f->iso);
-    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->v[P_STEP] * r);
-    glUniform1f(glGetUniformLocation(P, "u_step_back"), (float)s->v[P_STEP_BACK] * r);
-    glUniform1i(glGetUniformLocation(P, "u_max_steps"), (int)s->v[P_MAX_STEPS]);
-    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->v[P_REFINE]);
+    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->params.step * r);
+    glUniform1f(glGetUniformLocation(P, "u_step_back"), (float)s->params.step_back * r);
+    glUniform1i(glGetUniformLocation(P, "u_max_steps"), (int)s->params.max_steps);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->params.refine);
     glBindImageTexture(0, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(2, s->tex_hit, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -192,13 +196,13 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_gl_camera_uniforms(P, cam);
     glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
     glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
-    glUniform1f(glGetUniformLocation(P, "u_R"), (float)s->v[P_PCA_RADIUS] * r);
-    glUniform1i(glGetUniformLocation(P, "u_mode"), (int)s->v[P_NORMALS]);
-    glUniform1i(glGetUniformLocation(P, "u_min_neighbors"), (int)s->v[P_MIN_NEIGHBORS]);
-    glUniform1i(glGetUniformLocation(P, "u_fixed_weight"), (int)s->v[P_BLEND_WEIGHT]);
-    glUniform1f(glGetUniformLocation(P, "u_w"), (float)s->v[P_W]);
-    glUniform1f(glGetUniformLocation(P, "u_blend_d"), (float)s->v[P_BLEND_D]);
-    glUniform1f(glGetUniformLocation(P, "u_blend_k"), (float)s->v[P_BLEND_K]);
+    glUniform1f(glGetUniformLocation(P, "u_R"), (float)s->params.pca_radius * r);
+    glUniform1i(glGetUniformLocation(P, "u_mode"), (int)s->params.normals);
+    glUniform1i(glGetUniformLocation(P, "u_min_neighbors"), (int)s->params.min_neighbors);
+    glUniform1i(glGetUniformLocation(P, "u_fixed_weight"), (int)s->params.blend_weight);
+    glUniform1f(glGetUniformLocation(P, "u_w"), (float)s->params.w);
+    glUniform1f(glGetUniformLocation(P, "u_blend_d"), (float)s->params.blend_d);
+    glUniform1f(glGetUniformLocation(P, "u_blend_k"), (float)s->params.blend_k);
     glUniform1i(glGetUniformLocation(P, "u_use_color"), s->use_color);
     glBindImageTexture(0, s->tex_hit, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -212,10 +216,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     /* Bilateral Gaussian filter of the normal map (a copy when off). */
     P = s->prog_filter;
     glUseProgram(P);
-    glUniform1i(glGetUniformLocation(P, "u_enable"), s->v[P_FILTER] != 0);
+    glUniform1i(glGetUniformLocation(P, "u_enable"), s->params.normal_filter != 0);
     glUniform1f(glGetUniformLocation(P, "u_focal_px"), proj[5] * 0.5f * (float)cam->height);
-    glUniform1f(glGetUniformLocation(P, "u_sigma"), (float)s->v[P_FILTER_SIGMA] * r);
-    glUniform1f(glGetUniformLocation(P, "u_sigma_n"), (float)s->v[P_FILTER_SIGMA_N]);
+    glUniform1f(glGetUniformLocation(P, "u_sigma"), (float)s->params.filter_sigma * r);
+    glUniform1f(glGetUniformLocation(P, "u_sigma_n"), (float)s->params.filter_sigma_n);
     glUniform1f(glGetUniformLocation(P, "u_depth_gate"), FILTER_DEPTH_GATE * r);
     glUniform1i(glGetUniformLocation(P, "u_max_radius"), FILTER_MAX_RADIUS);
     glBindImageTexture(0, s->tex_raw, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
@@ -227,7 +231,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_stages_add(t, "filter", t4 - t3);
 
     /* 3.4 thickness: additive sphere splatting (chord lengths). */
-    if (s->v[P_THICKNESS] != 0) {
+    if (s->params.thickness != 0) {
         fs_gl_target_begin_thickness(&s->target);
         fs_gl_camera_uniforms(s->prog_thick, cam);
         glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
@@ -247,6 +251,7 @@ const fs_method fs_method_raycast_pca = {
     .writes_color = 1,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
+    .params_size = sizeof(rpca_params),
     .create = create,
     .upload = upload,
     .render = render,

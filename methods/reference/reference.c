@@ -14,20 +14,25 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef struct reference_params {
+    double step_min, thickness, max_layers, field, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda;
+} reference_params;
+
+#define FIELD(f) FS_PARAM_FIELD(reference_params, f)
 static const fs_param_def params[] = {
-    {"step_min", FS_PARAM_FLOAT, 0.02, 1e-4, 1.0, NULL,
+    {FIELD(step_min), FS_PARAM_FLOAT, 0.02, 1e-4, 1.0, NULL,
      "smallest march step, multiples of r; crossing intervals shorter than this can be missed"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "march past the first hit and sum every inside interval (on/off)"},
-    {"max_layers", FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
-    {"field", FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
-    {"aniso_radius", FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "anisotropic: WPCA radius, multiples of r"},
-    {"kappa", FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "anisotropic: largest/smallest eigenvalue limit"},
-    {"n_eps", FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "anisotropic: at or below this many neighbours: isotropic"},
-    {"aniso_scale", FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "anisotropic: stretch scale"},
-    {"aniso_norm", FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume", "anisotropic: stretch normalisation"},
-    {"lambda", FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "anisotropic: Laplacian smoothing of centres"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "march past the first hit and sum every inside interval (on/off)"},
+    {FIELD(max_layers), FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
+    {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
+    {FIELD(aniso_radius), FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "anisotropic: WPCA radius, multiples of r"},
+    {FIELD(kappa), FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "anisotropic: largest/smallest eigenvalue limit"},
+    {FIELD(n_eps), FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "anisotropic: at or below this many neighbours: isotropic"},
+    {FIELD(aniso_scale), FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "anisotropic: stretch scale"},
+    {FIELD(aniso_norm), FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume", "anisotropic: stretch normalisation"},
+    {FIELD(lambda), FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "anisotropic: Laplacian smoothing of centres"},
 };
-enum { P_STEP_MIN, P_THICKNESS, P_MAX_LAYERS, P_FIELD, P_ARAD, P_KAPPA, P_NEPS, P_ASCALE, P_NORM, P_LAMBDA, P_COUNT };
+#undef FIELD
 
 typedef struct reference {
     fs_field f;
@@ -79,24 +84,24 @@ static void *create(const fs_method_setup *setup)
 {
     const fs_field *f = &setup->field;
     if (fs_method_check_field("reference", f)) return NULL;
+    reference_params p;
+    if (fs_method_params_copy("reference", setup, &p, sizeof p)) return NULL;
     reference *R = calloc(1, sizeof *R);
     if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
     R->f = *f;
-    double v[P_COUNT];
-    fs_method_values(setup, params, P_COUNT, v);
-    R->aniso = v[P_FIELD] != 0;
+    R->aniso = p.field != 0;
     fs_aniso_defaults(&R->ap, f->kernel, f->r);
-    R->ap.radius = (float)v[P_ARAD] * f->r;
-    R->ap.kappa = (float)v[P_KAPPA];
-    R->ap.n_eps = (int)v[P_NEPS];
-    R->ap.scale = (float)v[P_ASCALE];
-    R->ap.per_particle = (int)v[P_NORM];
-    R->ap.lambda = (float)v[P_LAMBDA];
+    R->ap.radius = (float)p.aniso_radius * f->r;
+    R->ap.kappa = (float)p.kappa;
+    R->ap.n_eps = (int)p.n_eps;
+    R->ap.scale = (float)p.aniso_scale;
+    R->ap.per_particle = (int)p.aniso_norm;
+    R->ap.lambda = (float)p.lambda;
     R->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, R->ap.radius, 2 * f->r);
     R->reach = f->H;
-    R->step_min = (float)v[P_STEP_MIN] * f->r;
-    R->thickness = v[P_THICKNESS] != 0;
-    R->max_layers = (int)v[P_MAX_LAYERS];
+    R->step_min = (float)p.step_min * f->r;
+    R->thickness = p.thickness != 0;
+    R->max_layers = (int)p.max_layers;
     R->lip_unit = f->volume * fs_kernel_max_dw(f->kernel, f->H);
     return R;
 }
@@ -516,6 +521,7 @@ const fs_method fs_method_reference = {
     .needs_gl = 0,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
+    .params_size = sizeof(reference_params),
     .create = create,
     .upload = upload,
     .render = render,

@@ -12,10 +12,16 @@
 
 #define MAX_CHUNKS 16
 
+typedef struct spheres_params {
+    double radius_scale, thickness;
+} spheres_params;
+
+#define FIELD(f) FS_PARAM_FIELD(spheres_params, f)
 static const fs_param_def params[] = {
-    {"radius_scale", FS_PARAM_FLOAT, 1.0, 0.05, 4.0, NULL, "sphere radius in multiples of the particle radius r"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "additive chord-length thickness pass (on/off)"},
+    {FIELD(radius_scale), FS_PARAM_FLOAT, 1.0, 0.05, 4.0, NULL, "sphere radius in multiples of the particle radius r"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive chord-length thickness pass (on/off)"},
 };
+#undef FIELD
 
 typedef struct spheres {
     fs_field field;
@@ -42,13 +48,13 @@ static void destroy(void *self)
 
 static void *create(const fs_method_setup *setup)
 {
+    spheres_params p;
+    if (fs_method_params_copy("spheres", setup, &p, sizeof p)) return NULL;
     spheres *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
     s->field = setup->field;
-    double v[2];
-    fs_method_values(setup, params, 2, v);
-    s->radius = (float)v[0] * setup->field.r;
-    s->thickness = v[1] != 0;
+    s->radius = (float)p.radius_scale * setup->field.r;
+    s->thickness = p.thickness != 0;
     const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     s->prog_surface = fs_program_build(surf, NULL);
     if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "MODE_THICKNESS 1");
@@ -123,6 +129,7 @@ const fs_method fs_method_spheres = {
     .needs_gl = 1,
     .params = params,
     .nparams = sizeof params / sizeof *params,
+    .params_size = sizeof(spheres_params),
     .create = create,
     .upload = upload,
     .render = render,

@@ -20,25 +20,29 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef struct surfels_params {
+    double grid_res, grid_build, clusters, radius_scale, gap, epsilon, gauss, caustics, caustic_screen;
+    double caustic_map, thickness, object, object_slices;
+} surfels_params;
+
+#define FIELD(f) FS_PARAM_FIELD(surfels_params, f)
 static const fs_param_def params[] = {
-    {"grid_res", FS_PARAM_INT, 256, 8, 1024, NULL, "density grid points along the longest axis of the particles' box (paper: 256)"},
-    {"grid_build", FS_PARAM_ENUM, 0, 0, 1, "splat|exact", "density grid: slice splatting on GL (the paper) or the exact CPU sum"},
-    {"clusters", FS_PARAM_INT, 16, 1, 4096, NULL, "N_c, height clusters of particles for the slice splatting"},
-    {"radius_scale", FS_PARAM_FLOAT, 1.0, 0.1, 8.0, NULL, "surfel radius R in grid spacings"},
-    {"gap", FS_PARAM_FLOAT, 0.75, 0.0, 4.0, NULL, "gap filling: a cell whose crossings spread wider than this (grid spacings) gets a surfel at their centre; 0 = off"},
-    {"epsilon", FS_PARAM_FLOAT, 0.5, 0.0, 16.0, NULL, "visibility-pass depth offset epsilon, multiples of r"},
-    {"gauss", FS_PARAM_FLOAT, 2.0, 0.0, 20.0, NULL, "surfel blending weight g(t) = exp(-gauss t^2), t = distance / R"},
-    {"caustics", FS_PARAM_BOOL, 1, 0, 1, NULL, "caustics from illumination volumes (on/off)"},
-    {"caustic_screen", FS_PARAM_INT, 128, 8, 2048, NULL, "virtual screen pixels per side for the illumination volumes (paper: 128)"},
-    {"caustic_map", FS_PARAM_INT, 256, 8, 4096, NULL, "sample plane texels per side"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading by a march through the grid (on/off)"},
-    {"object", FS_PARAM_ENUM, 1, 0, 1, "none|box", "an opaque box under the water, seen by refraction mapping of sliced object images (own appearance only)"},
-    {"object_slices", FS_PARAM_INT, 3, 1, OBJECT_MAX_SLICES, NULL, "slabs (sample planes - 1) the object is sliced into"},
+    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL, "density grid points along the longest axis of the particles' box (paper: 256)"},
+    {FIELD(grid_build), FS_PARAM_ENUM, 0, 0, 1, "splat|exact", "density grid: slice splatting on GL (the paper) or the exact CPU sum"},
+    {FIELD(clusters), FS_PARAM_INT, 16, 1, 4096, NULL, "N_c, height clusters of particles for the slice splatting"},
+    {FIELD(radius_scale), FS_PARAM_FLOAT, 1.0, 0.1, 8.0, NULL, "surfel radius R in grid spacings"},
+    {FIELD(gap), FS_PARAM_FLOAT, 0.75, 0.0, 4.0, NULL, "gap filling: a cell whose crossings spread wider than this (grid spacings) gets a surfel at their centre; 0 = off"},
+    {FIELD(epsilon), FS_PARAM_FLOAT, 0.5, 0.0, 16.0, NULL, "visibility-pass depth offset epsilon, multiples of r"},
+    {FIELD(gauss), FS_PARAM_FLOAT, 2.0, 0.0, 20.0, NULL, "surfel blending weight g(t) = exp(-gauss t^2), t = distance / R"},
+    {FIELD(caustics), FS_PARAM_BOOL, 1, 0, 1, NULL, "caustics from illumination volumes (on/off)"},
+    {FIELD(caustic_screen), FS_PARAM_INT, 128, 8, 2048, NULL, "virtual screen pixels per side for the illumination volumes (paper: 128)"},
+    {FIELD(caustic_map), FS_PARAM_INT, 256, 8, 4096, NULL, "sample plane texels per side"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading by a march through the grid (on/off)"},
+    {FIELD(object), FS_PARAM_ENUM, 1, 0, 1, "none|box", "an opaque box under the water, seen by refraction mapping of sliced object images (own appearance only)"},
+    {FIELD(object_slices), FS_PARAM_INT, 3, 1, OBJECT_MAX_SLICES, NULL, "slabs (sample planes - 1) the object is sliced into"},
 };
-enum {
-    P_GRID_RES, P_GRID_BUILD, P_CLUSTERS, P_RADIUS, P_GAP, P_EPS, P_GAUSS, P_CAUSTICS, P_SCREEN, P_MAP, P_THICK, P_OBJECT,
-    P_SLICES, P_COUNT
-};
+#undef FIELD
+
 /* The box: centred under the particles' horizontal box, three tenths of its smaller
  * side wide, as tall as the particles' mean height above the floor (about half
  * the water's depth), terracotta so it stands out from the floor. */
@@ -47,7 +51,7 @@ static const float OBJECT_ALBEDO[3] = {0.70f, 0.32f, 0.16f};
 
 typedef struct surfels {
     fs_field f;
-    double v[P_COUNT];
+    surfels_params params;
     fs_scene scene;
     const fs_particles *p;
     const fs_grid *ng;
@@ -87,7 +91,7 @@ static void *create(const fs_method_setup *setup)
     surfels *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "surfels: out of memory"); return NULL; }
     s->f = *f;
-    fs_method_values(setup, params, P_COUNT, s->v);
+    if (fs_method_params_copy("surfels", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
     if (setup->scene) s->scene = *setup->scene;
     else fs_scene_defaults(&s->scene);
     if (surfel_gl_create(&s->gl)) { destroy(s); return NULL; }
@@ -109,21 +113,21 @@ static int build_surface(surfels *s, fs_stages *t)
 {
     const fs_particles *p = s->p;
     fs_density_grid_free(&s->dg);
-    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->v[P_GRID_RES]);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->params.grid_res);
     if (rc) return rc;
     glFinish();
     double t0 = fs_now_ms();
-    if (s->v[P_GRID_BUILD] == 0)
-        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, (int)s->v[P_CLUSTERS]);
+    if (s->params.grid_build == 0)
+        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters);
     else
         rc = fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
     if (rc) return rc;
     double t1 = fs_now_ms();
     fs_stages_add(t, "density_grid", t1 - t0);
-    fs_surfel_extract_opts eo = {s->f.iso, (float)s->v[P_RADIUS], (float)s->v[P_GAP]};
+    fs_surfel_extract_opts eo = {s->f.iso, (float)s->params.radius_scale, (float)s->params.gap};
     if ((rc = fs_surfels_extract(&s->dg, &eo, &s->set, &s->gap_added))) return rc;
     if ((rc = surfel_gl_upload(&s->gl, &s->set))) return rc;
-    if (s->v[P_THICK] != 0 && (rc = surfel_gl_upload_grid(&s->gl, &s->dg))) return rc;
+    if (s->params.thickness != 0 && (rc = surfel_gl_upload_grid(&s->gl, &s->dg))) return rc;
     glFinish();
     fs_stages_add(t, "extract", fs_now_ms() - t1);
     return FS_OK;
@@ -209,27 +213,27 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     cs.rect_max[0] = g->origin[a] + (g->dim[a] - 1) * g->spacing + reach;
     cs.rect_max[1] = g->origin[b] + (g->dim[b] - 1) * g->spacing + reach;
     cs.top = top + g->spacing;
-    cs.screen_res = (int)s->v[P_SCREEN];
-    cs.plane_res = (int)s->v[P_MAP];
+    cs.screen_res = (int)s->params.caustic_screen;
+    cs.plane_res = (int)s->params.caustic_map;
     cs.nplanes = 1;
     cs.plane_height[0] = l->floor_h;
     memcpy(l->rect_min, cs.rect_min, sizeof l->rect_min);
     memcpy(l->rect_max, cs.rect_max, sizeof l->rect_max);
     object_box box;
-    int object = s->v[P_OBJECT] != 0;
+    int object = s->params.object != 0;
     if (object) {
         box = place_object(s->p, up, l->floor_h);
         object = box.top > box.bottom;
     }
     if (object) { /* sample planes evenly from the floor to the box's top */
-        int n = (int)s->v[P_SLICES];
+        int n = (int)s->params.object_slices;
         cs.nplanes = n + 1;
         for (int k = 0; k <= n; k++) cs.plane_height[k] = box.bottom + (box.top - box.bottom) * k / n;
         l->nslices = n;
         memcpy(l->slice_h, cs.plane_height, (size_t)(n + 1) * sizeof(float));
     }
     const float *maps = NULL;
-    if (s->v[P_CAUSTICS] != 0) {
+    if (s->params.caustics != 0) {
         glFinish();
         double t0 = fs_now_ms();
         int rc = fs_caustics_run(s->caustics, &cs, s->gl.buf, s->gl.n);
@@ -256,9 +260,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (!rc) rc = build_look(s, &look, t);
     if (rc) return rc;
     surfel_draw_opts o = {
-        .epsilon = (float)s->v[P_EPS] * s->f.r,
-        .gauss = (float)s->v[P_GAUSS],
-        .thickness = s->v[P_THICK] != 0,
+        .epsilon = (float)s->params.epsilon * s->f.r,
+        .gauss = (float)s->params.gauss,
+        .thickness = s->params.thickness != 0,
         .step = s->dg.spacing,
         .iso = s->f.iso,
         .grid_spacing = s->dg.spacing,
@@ -287,6 +291,7 @@ const fs_method fs_method_surfels = {
     .writes_own = 1,
     .params = params,
     .nparams = sizeof params / sizeof *params,
+    .params_size = sizeof(surfels_params),
     .create = create,
     .upload = upload,
     .render = render,

@@ -21,24 +21,30 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef struct volume_raycast_params {
+    double grid_res, build, clusters, step, refine, mode, opacity, absorption, termination, thickness;
+} volume_raycast_params;
+
+#define FIELD(f) FS_PARAM_FIELD(volume_raycast_params, f)
 static const fs_param_def params[] = {
-    {"grid_res", FS_PARAM_INT, 256, 8, 1024, NULL, "volume points along the longest axis of the particles' box + H (paper: 128^3 CPU path, 128x512x512 GPU path)"},
-    {"build", FS_PARAM_ENUM, 0, 0, 2, "layered|slice|exact", "volume generation: single-pass layered splatting (the paper), iwasaki2006 slice splatting, or the exact CPU grid"},
-    {"clusters", FS_PARAM_INT, 16, 1, 4096, NULL, "height clusters for build=slice"},
-    {"step", FS_PARAM_FLOAT, 0.5, 0.05, 4.0, NULL, "ray-march step, grid spacings"},
-    {"refine", FS_PARAM_INT, 8, 0, 30, NULL, "bisection steps refining the iso crossing"},
-    {"mode", FS_PARAM_ENUM, 0, 0, 1, "surface|translucent", "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
-    {"opacity", FS_PARAM_FLOAT, 0.35, 0.0, 1.0, NULL, "translucent: opacity of the iso-surface at each crossing"},
-    {"absorption", FS_PARAM_FLOAT, 0.01, 0.0, 1.0, NULL, "translucent: opacity of the inside per grid spacing"},
-    {"termination", FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL, "translucent: early ray termination once the accumulated opacity reaches this"},
-    {"thickness", FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
+    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL, "volume points along the longest axis of the particles' box + H (paper: 128^3 CPU path, 128x512x512 GPU path)"},
+    {FIELD(build), FS_PARAM_ENUM, 0, 0, 2, "layered|slice|exact", "volume generation: single-pass layered splatting (the paper), iwasaki2006 slice splatting, or the exact CPU grid"},
+    {FIELD(clusters), FS_PARAM_INT, 16, 1, 4096, NULL, "height clusters for build=slice"},
+    {FIELD(step), FS_PARAM_FLOAT, 0.5, 0.05, 4.0, NULL, "ray-march step, grid spacings"},
+    {FIELD(refine), FS_PARAM_INT, 8, 0, 30, NULL, "bisection steps refining the iso crossing"},
+    {FIELD(mode), FS_PARAM_ENUM, 0, 0, 1, "surface|translucent", "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
+    {FIELD(opacity), FS_PARAM_FLOAT, 0.35, 0.0, 1.0, NULL, "translucent: opacity of the iso-surface at each crossing"},
+    {FIELD(absorption), FS_PARAM_FLOAT, 0.01, 0.0, 1.0, NULL, "translucent: opacity of the inside per grid spacing"},
+    {FIELD(termination), FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL, "translucent: early ray termination once the accumulated opacity reaches this"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
 };
-enum { P_RES, P_BUILD, P_CLUSTERS, P_STEP, P_REFINE, P_MODE, P_OPACITY, P_ABSORB, P_TERM, P_THICK, P_COUNT };
+#undef FIELD
+
 enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT };
 
 typedef struct vr {
     fs_field f;
-    double v[P_COUNT];
+    volume_raycast_params params;
     fs_scene scene;
     const fs_particles *p;
     const fs_grid *ng;
@@ -107,7 +113,7 @@ static void *create(const fs_method_setup *setup)
     vr *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); return NULL; }
     s->f = *f;
-    fs_method_values(setup, params, P_COUNT, s->v);
+    if (fs_method_params_copy("volume_raycast", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
     if (setup->scene) s->scene = *setup->scene;
     else fs_scene_defaults(&s->scene);
     const char *faces[] = {"volume_raycast/faces.vert.glsl", "volume_raycast/faces.frag.glsl", NULL};
@@ -116,7 +122,7 @@ static void *create(const fs_method_setup *setup)
         destroy(s);
         return NULL;
     }
-    int b = (int)s->v[P_BUILD];
+    int b = (int)s->params.build;
     if ((b == BUILD_LAYERED && !(s->layered = fs_layered_splat_create())) ||
         (b == BUILD_SLICE && !(s->slice = fs_slice_splat_create()))) {
         destroy(s);
@@ -135,7 +141,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     vr *s = self;
     s->p = p;
     s->ng = g;
-    if (s->v[P_BUILD] != BUILD_EXACT) return FS_OK; /* only the exact build walks the neighbour grid */
+    if (s->params.build != BUILD_EXACT) return FS_OK; /* only the exact build walks the neighbour grid */
     return fs_grid_fit(g, p, s->f.H, &s->own_ng, &s->has_own_ng, &s->ng);
 }
 
@@ -143,9 +149,9 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
 static int build_volume(vr *s, fs_stages *t)
 {
     const fs_particles *p = s->p;
-    int b = (int)s->v[P_BUILD];
+    int b = (int)s->params.build;
     fs_density_grid_free(&s->dg);
-    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->v[P_RES]);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->params.grid_res);
     if (rc) return rc;
     if (!s->tex3d || memcmp(s->tex_dim, s->dg.dim, sizeof s->tex_dim)) {
         if (s->tex3d) glDeleteTextures(1, &s->tex3d);
@@ -158,7 +164,7 @@ static int build_volume(vr *s, fs_stages *t)
         rc = fs_layered_splat_run(s->layered, &s->dg, p, &s->f, s->tex3d);
     } else {
         /* the CPU-side builds end in main memory: the upload is part of their cost */
-        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, (int)s->v[P_CLUSTERS])
+        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters)
                               : fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
         if (!rc) rc = fs_density_texture_upload(s->tex3d, &s->dg);
     }
@@ -237,16 +243,16 @@ static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
     glUniform3fv(glGetUniformLocation(P, "u_box_extent"), 1, ext);
     glUniform3f(glGetUniformLocation(P, "u_grid_dim"), (float)s->dg.dim[0], (float)s->dg.dim[1], (float)s->dg.dim[2]);
     glUniform1f(glGetUniformLocation(P, "u_spacing"), s->dg.spacing);
-    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->v[P_STEP] * s->dg.spacing);
+    glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->params.step * s->dg.spacing);
     glUniform1f(glGetUniformLocation(P, "u_iso"), s->f.iso);
-    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->v[P_REFINE]);
-    glUniform1i(glGetUniformLocation(P, "u_thick"), s->v[P_THICK] != 0);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->params.refine);
+    glUniform1i(glGetUniformLocation(P, "u_thick"), s->params.thickness != 0);
     /* no own image wanted: the translucent compositing would only cost time */
-    glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->v[P_MODE] == 1);
+    glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->params.mode == 1);
     glUniform1i(glGetUniformLocation(P, "u_own_on"), own);
-    glUniform1f(glGetUniformLocation(P, "u_opacity"), (float)s->v[P_OPACITY]);
-    glUniform1f(glGetUniformLocation(P, "u_absorption"), (float)s->v[P_ABSORB]);
-    glUniform1f(glGetUniformLocation(P, "u_term"), (float)s->v[P_TERM]);
+    glUniform1f(glGetUniformLocation(P, "u_opacity"), (float)s->params.opacity);
+    glUniform1f(glGetUniformLocation(P, "u_absorption"), (float)s->params.absorption);
+    glUniform1f(glGetUniformLocation(P, "u_term"), (float)s->params.termination);
     glUniform3fv(glGetUniformLocation(P, "u_light_dir"), 1, sc->light_dir);
     glUniform3fv(glGetUniformLocation(P, "u_light_color"), 1, sc->light_color);
     glUniform3fv(glGetUniformLocation(P, "u_material"), 1, sc->material_color);
@@ -342,6 +348,7 @@ const fs_method fs_method_volume_raycast = {
     .writes_own = 1,
     .params = params,
     .nparams = sizeof params / sizeof *params,
+    .params_size = sizeof(volume_raycast_params),
     .create = create,
     .upload = upload,
     .render = render,

@@ -1,0 +1,155 @@
+/* Typed parameters: the one "METHOD.PARAM=VALUE" splitter and its messages
+ * (scene, --set, sweeps), the fill of a method's parameter struct by table
+ * offsets, parameters set by name reaching create() as named fields, and the
+ * tables of every built-in method fitting their structs. */
+#include "fs_error.h"
+#include "fs_test.h"
+#include "method.h"
+#include "method_params.h"
+#include "sweep.h"
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A test-only method whose struct lists its fields in another order than its
+ * table, with a member that is not a parameter: only the offsets can place them. */
+typedef struct probe_params {
+    double gain;
+    int unused;
+    double mode, enabled;
+} probe_params;
+
+/* Spelled out here; the methods use FS_PARAM_FIELD, which also names each entry. */
+static const fs_param_def probe_table[] = {
+    {"enabled", offsetof(probe_params, enabled), FS_PARAM_BOOL, 1, 0, 1, NULL, "on/off"},
+    {"mode", offsetof(probe_params, mode), FS_PARAM_ENUM, 1, 0, 2, "a|b|c", "a choice"},
+    {"gain", offsetof(probe_params, gain), FS_PARAM_FLOAT, 0.5, 0, 10, NULL, "a number"},
+};
+
+static probe_params created; /* what the last create() received */
+
+static void *probe_create(const fs_method_setup *setup)
+{
+    if (fs_method_params_copy("probe", setup, &created, sizeof created)) return NULL;
+    return &created;
+}
+
+static const fs_method probe = {
+    .name = "probe",
+    .description = "test-only: records its parameters",
+    .paper = "",
+    .params = probe_table,
+    .nparams = 3,
+    .params_size = sizeof(probe_params),
+    .create = probe_create,
+};
+
+static void split(void)
+{
+    fs_param_setting s;
+    CHECK(fs_param_split("spheres.radius_scale=0.5", &s) == FS_OK && !strcmp(s.method, "spheres") &&
+          !strcmp(s.param, "radius_scale") && !strcmp(s.value, "0.5"), "split spheres.radius_scale=0.5");
+    CHECK(fs_param_split("m.p=a.b=c", &s) == FS_OK && !strcmp(s.param, "p") && !strcmp(s.value, "a.b=c"),
+          "the value keeps its '.' and '='");
+    const char *bad[] = {"spheres", "spheres.radius_scale", ".p=1", "m.=1", "m.p=", "a=b.c", NULL};
+    for (int i = 0; bad[i]; i++) {
+        CHECK(fs_param_split(bad[i], &s) == FS_ERR_INPUT && strstr(fs_error_message(), "expected METHOD.PARAM=VALUE"),
+              "%s refused: %s", bad[i], fs_error_message());
+    }
+    char longname[200];
+    memset(longname, 'x', 100);
+    strcpy(longname + 100, ".p=1");
+    CHECK(fs_param_split(longname, &s) == FS_ERR_INPUT && strstr(fs_error_message(), "too long"), "long name refused");
+}
+
+/* The scene, the settings and the sweeps report a bad setting the same way. */
+static void same_messages(void)
+{
+    const char *bad[] = {"spheres", "nosuch.x=1", "spheres.nosuch=1", NULL};
+    for (int i = 0; bad[i]; i++) {
+        fs_method_setting set;
+        fs_method_setting_find(bad[i], &set);
+        char want[300];
+        snprintf(want, sizeof want, "%s", fs_error_message());
+        fs_sweep sw[FS_MAX_SWEEPS];
+        int n = 0;
+        CHECK(fs_sweep_add(sw, &n, bad[i]) == FS_ERR_INPUT && !strcmp(fs_error_message(), want), "sweep %s: %s vs %s",
+              bad[i], fs_error_message(), want);
+        fs_scene s;
+        fs_scene_defaults(&s);
+        int rc = fs_scene_add_set(&s, bad[i]);
+        if (!rc) rc = fs_method_params_resolve(fs_method_find("spheres"), &s, (double[FS_MAX_PARAMS]){0});
+        CHECK(rc == FS_ERR_INPUT && !strcmp(fs_error_message(), want), "scene %s: %s vs %s", bad[i],
+              fs_error_message(), want);
+    }
+}
+
+static void fill(void)
+{
+    probe_params p;
+    memset(&p, 0xff, sizeof p);
+    CHECK(fs_method_params_fill(&probe, NULL, &p) == FS_OK, "fill defaults");
+    CHECK(p.enabled == 1 && p.mode == 1 && p.gain == 0.5 && p.unused == 0, "defaults %g %g %g %d", p.enabled, p.mode,
+          p.gain, p.unused);
+    double v[3] = {0, 2, 7.25}; /* table order: enabled, mode, gain */
+    CHECK(fs_method_params_fill(&probe, v, &p) == FS_OK && p.enabled == 0 && p.mode == 2 && p.gain == 7.25,
+          "values at their offsets: %g %g %g", p.enabled, p.mode, p.gain);
+    fs_method small = probe;
+    small.params_size = sizeof(double);
+    CHECK(fs_method_params_fill(&small, NULL, &p) == FS_ERR_RUNTIME && strstr(fs_error_message(), "outside"),
+          "a table that does not fit its struct: %s", fs_error_message());
+    CHECK(fs_method_params_alloc(&small, NULL) == NULL, "alloc refuses it too");
+}
+
+/* Set by name in a scene, resolved, filled: create() reads named fields. */
+static void by_name(void)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    CHECK(fs_scene_add_set(&s, "probe.gain=3") == FS_OK && fs_scene_add_set(&s, "probe.mode=c") == FS_OK &&
+          fs_scene_add_set(&s, "spheres.thickness=off") == FS_OK, "settings");
+    double v[FS_MAX_PARAMS];
+    CHECK(fs_method_params_resolve(&probe, &s, v) == FS_OK, "resolve: %s", fs_error_message());
+    fs_method_setup setup = {{0}, fs_method_params_alloc(&probe, v), NULL};
+    CHECK(probe.create(&setup) != NULL, "create");
+    free((void *)setup.params);
+    CHECK(created.gain == 3 && created.mode == 2 && created.enabled == 1, "created with %g %g %g", created.gain,
+          created.mode, created.enabled);
+    setup.params = NULL;
+    CHECK(probe.create(&setup) == NULL && strstr(fs_error_message(), "no parameter struct"), "no struct: %s",
+          fs_error_message());
+}
+
+/* Every built-in table fits its struct, one distinct double per parameter, and
+ * every method refuses a setup without its struct (before touching OpenGL). */
+static void builtin_tables(void)
+{
+    for (int i = 0; i < fs_method_count(); i++) {
+        const fs_method *m = fs_method_at(i);
+        /* every field is a parameter: a field without a table entry would stay 0 */
+        CHECK(m->params_size == m->nparams * sizeof(double) && m->nparams <= FS_MAX_PARAMS, "%s: %zu bytes, %d parameters",
+              m->name, m->params_size, m->nparams);
+        for (int a = 0; a < m->nparams; a++)
+            for (int b = 0; b < a; b++)
+                CHECK(m->params[a].offset != m->params[b].offset, "%s: %s and %s share an offset", m->name,
+                      m->params[a].name, m->params[b].name);
+        void *p = fs_method_params_alloc(m, NULL);
+        CHECK(p != NULL, "%s: fill: %s", m->name, fs_error_message());
+        free(p);
+        fs_method_setup setup = {{0.025f, 1.25e-4f, FS_KERNEL_CUBIC, 0.1f, 0.6f}, NULL, NULL};
+        CHECK(m->create(&setup) == NULL && strstr(fs_error_message(), "no parameter struct"), "%s without a struct: %s",
+              m->name, fs_error_message());
+    }
+}
+
+int main(void)
+{
+    fs_methods_register_builtin();
+    CHECK(fs_method_register(&probe, FS_METHOD_HIDDEN) == FS_OK, "register probe");
+    split();
+    same_messages();
+    fill();
+    by_name();
+    builtin_tables();
+    TEST_DONE();
+}
