@@ -7,6 +7,7 @@
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
+#include "options.h"
 #include "render_output.h"
 #include "run.h"
 #include "shading.h"
@@ -20,18 +21,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char help[] =
-    "usage: fluidsurf compare SCENE.json|PARTICLES -o DIR [options]\n"
-    "  --methods a,b,c        methods to run (default: every registered method)\n"
-    "  --set M.P=V            set a parameter; M.P=v1,v2,... sweeps it (repeatable)\n"
-    "  --reference SPEC       reference, reference:PARAM=V,... or analytic (repeatable;\n"
-    "                         default: reference with the scene's field); the first is\n"
-    "                         used for the heatmaps\n"
-    "  --import NAME=FILE.exr compare a G-buffer EXR rendered elsewhere (same channels)\n"
-    "  --repeat N             timed runs per variant after one warm-up (default 3)\n"
-    "  --normal-scale DEG     heatmap scale of the normal error (default: from the data)\n"
-    "  --depth-scale R        heatmap scale of the depth error, in r (default: from the data)\n"
-    "  -W N, -H N             image size; --radius R; --gl osmesa|egl; -q quiet\n"
+/* what --help says after the options */
+static const char epilogue[] =
+    "--set M.P=v1,v2,... sweeps the parameter over the values.\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
     "<label>_own.png for a method with its own appearance (surfels, volume_raycast),\n"
     "report.md (and temporal.csv for a sequence).\n";
@@ -536,43 +528,28 @@ int cmd_compare(int argc, char **argv)
     float radius = 0, nscale = 0, dscale = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     r->repeat = 3;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
-        else if (!strcmp(a, "-o") && v) { out = v; i++; }
-        else if (!strcmp(a, "--methods") && v) { methods = v; i++; }
-        else if (!strcmp(a, "--set") && v) {
-            if (nsets == FS_MAX_SETS) return cli_usage("compare", "too many --set");
-            sets[nsets++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "--reference") && v) {
-            if (nrefspecs == CMP_MAX_REFS) return cli_usage("compare", "at most %d --reference", CMP_MAX_REFS);
-            refspecs[nrefspecs++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "--import") && v) {
-            if (nimports == CMP_MAX_ENTRIES) return cli_usage("compare", "too many --import");
-            imports[nimports++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "--repeat")) { if ((rc = cli_int("compare", a, v, 1, CMP_MAX_RUNS, &r->repeat))) return rc; i++; }
-        else if (!strcmp(a, "-W")) { if ((rc = cli_int("compare", a, v, 1, 16384, &w))) return rc; i++; }
-        else if (!strcmp(a, "-H")) { if ((rc = cli_int("compare", a, v, 1, 16384, &h))) return rc; i++; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("compare", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
-        else if (!strcmp(a, "--normal-scale")) { if ((rc = cli_float("compare", a, v, 1e-6, 180, &nscale))) return rc; i++; }
-        else if (!strcmp(a, "--depth-scale")) { if ((rc = cli_float("compare", a, v, 1e-9, 1e9, &dscale))) return rc; i++; }
-        else if (!strcmp(a, "--gl") && v) {
-            int k = fs_ctx_kind_from_name(v);
-            if (k != FS_CTX_OSMESA && k != FS_CTX_EGL) return cli_usage("compare", "--gl %s: expected osmesa or egl", v);
-            ctx_kind = (fs_ctx_kind)k;
-            i++;
-        }
-        else if (!strcmp(a, "-q")) r->quiet = 1;
-        else if (a[0] == '-' && a[1]) return cli_usage("compare", "unknown or incomplete option '%s'", a);
-        else if (!input) input = a;
-        else return cli_usage("compare", "more than one input ('%s' and '%s')", input, a);
-    }
+    const cli_opt opts[] = {
+        CLI_OPT_OUT(out, "DIR", "the output folder (made if missing)"),
+        CLI_STRING_OPT("--methods", methods, "a,b,c", "methods to run (default: every registered method)"),
+        CLI_OPT_SET(sets, nsets),
+        CLI_LIST_OPT("--reference", refspecs, nrefspecs, CMP_MAX_REFS, "SPEC",
+                     "reference, reference:PARAM=V,... or analytic (repeatable;\n"
+                     "default: reference with the scene's field); the first is\n"
+                     "used for the heatmaps"),
+        CLI_LIST_OPT("--import", imports, nimports, CMP_MAX_ENTRIES, "NAME=FILE.exr",
+                     "compare a G-buffer EXR rendered elsewhere (same channels)"),
+        CLI_INT_OPT("--repeat", r->repeat, 1, CMP_MAX_RUNS, "N", "timed runs per variant after one warm-up (default 3)"),
+        CLI_FLOAT_OPT("--normal-scale", nscale, 1e-6, 180, "DEG", "heatmap scale of the normal error (default: from the data)"),
+        CLI_FLOAT_OPT("--depth-scale", dscale, 1e-9, 1e9, "R", "heatmap scale of the depth error, in r (default: from the data)"),
+        CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
+        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
+        CLI_OPT_GL(ctx_kind),
+        CLI_OPT_QUIET(r->quiet),
+        CLI_END,
+    };
+    const cli_command cmd = {"compare", "SCENE.json|PARTICLES -o DIR [options]", opts,
+                             {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");

@@ -3,34 +3,31 @@
 #include "cli.h"
 #include "fs_error.h"
 #include "metrics.h"
+#include "options.h"
 #include "render_output.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-static const char help[] =
-    "usage: fluidsurf diff A.exr B.exr [--fail-iou X] [--fail-normal-deg Y] [--fail-depth-r Z] [--radius R]\n"
-    "Prints the metrics of A against B (B is the reference) and exits 3 when\n"
-    "  mask IoU < X,  mean normal angle > Y degrees,  or |depth bias| or depth RMSE > Z r;\n"
-    "0 otherwise. r comes from A's provenance (fluidsurf:r) unless --radius is given.\n";
+/* what --help says after the options */
+static const char epilogue[] =
+    "Prints the metrics of A against B (B is the reference); exits 3 when a --fail-*\n"
+    "threshold is crossed, 0 otherwise.\n";
 
 int cmd_diff(int argc, char **argv)
 {
     const char *files[2] = {NULL, NULL};
     float fail_iou = -1, fail_normal = -1, fail_depth = -1, radius = 0;
     int nfiles = 0, rc;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
-        else if (!strcmp(a, "--fail-iou")) { if ((rc = cli_float("diff", a, v, 0, 1, &fail_iou))) return rc; i++; }
-        else if (!strcmp(a, "--fail-normal-deg")) { if ((rc = cli_float("diff", a, v, 0, 180, &fail_normal))) return rc; i++; }
-        else if (!strcmp(a, "--fail-depth-r")) { if ((rc = cli_float("diff", a, v, 0, 1e9, &fail_depth))) return rc; i++; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("diff", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
-        else if (a[0] == '-' && a[1]) return cli_usage("diff", "unknown or incomplete option '%s'", a);
-        else if (nfiles < 2) files[nfiles++] = a;
-        else return cli_usage("diff", "more than two files");
-    }
+    const cli_opt opts[] = {
+        CLI_FLOAT_OPT("--fail-iou", fail_iou, 0, 1, "X", "exit 3 when the mask IoU is below X"),
+        CLI_FLOAT_OPT("--fail-normal-deg", fail_normal, 0, 180, "Y", "exit 3 when the mean normal angle exceeds Y degrees"),
+        CLI_FLOAT_OPT("--fail-depth-r", fail_depth, 0, 1e9, "Z", "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
+        CLI_OPT_RADIUS(radius, "A's provenance, fluidsurf:r"),
+        CLI_END,
+    };
+    const cli_command cmd = {"diff", "A.exr B.exr [options]", opts, {files, &nfiles, 2, "more than two files"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (nfiles != 2) return cli_usage("diff", "needs two EXR files");
     fs_gbuffer g[2] = {{0}};
     float *rgba[2] = {NULL, NULL}, r[2] = {0, 0};

@@ -1,12 +1,12 @@
 #include "cli.h"
 #include "particle_stats.h"
 #include "fs_error.h"
+#include "options.h"
 #include "particle_io.h"
 #include <stdio.h>
-#include <string.h>
 
-static const char help[] =
-    "usage: fluidsurf info FILE [--radius R] [--volume-scale S] [--format FMT]\n"
+/* what --help says after the options */
+static const char epilogue[] =
     "Prints the particle count, bounding box, attributes, the median nearest-neighbour\n"
     "distance and the median normalised density phi at particle centres (cubic spline,\n"
     "support 4r), so you can choose r and volume_scale (phi should read ~1 inside).\n";
@@ -16,16 +16,14 @@ int cmd_info(int argc, char **argv)
     const char *file = NULL, *format = NULL;
     float radius = 0, vscale = 1;
     int rc;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("info", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
-        else if (!strcmp(a, "--volume-scale")) { if ((rc = cli_float("info", a, v, 1e-6, 1e6, &vscale))) return rc; i++; }
-        else if (!strcmp(a, "--format") && v) { format = v; i++; }
-        else if (a[0] == '-' && a[1]) return cli_usage("info", "unknown or incomplete option '%s'", a);
-        else if (!file) file = a;
-        else return cli_usage("info", "more than one file");
-    }
+    const cli_opt opts[] = {
+        CLI_OPT_RADIUS(radius, "the file's, else 0.025"),
+        CLI_FLOAT_OPT("--volume-scale", vscale, 1e-6, 1e6, "S", "particle volume V = S (2r)^3 (default 1)"),
+        CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
+        CLI_END,
+    };
+    const cli_command cmd = {"info", "FILE [options]", opts, {&file, NULL, 1, "more than one file"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (!file) return cli_usage("info", "no particle file given");
     fs_particles p;
     if ((rc = fs_particles_read(&p, file, format))) return cli_error(rc);

@@ -1,19 +1,22 @@
 #include "cli.h"
 #include "method.h"
+#include "options.h"
 #include <stdio.h>
 #include <string.h>
 
 int cmd_methods(int argc, char **argv)
 {
-    if (argc > 1 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-        printf("usage: fluidsurf methods [NAME]\nLists every method (or one) with its paper and parameters;\n"
-               "set a parameter with --set NAME.PARAM=VALUE in any command that renders.\n");
-        return 0;
-    }
-    if (argc > 1 && !fs_method_find(argv[1])) return cli_usage("methods", "unknown method '%s'", argv[1]);
+    const char *name = NULL;
+    const cli_opt opts[] = {CLI_END};
+    const cli_command cmd = {"methods", "[NAME]", opts, {&name, NULL, 1, "more than one method ('%s' and '%s')"},
+                             "Lists every method (or one) with its paper and parameters;\n"
+                             "set a parameter with --set NAME.PARAM=VALUE in any command that renders.\n"};
+    int rc = cli_parse(&cmd, argc, argv);
+    if (rc != CLI_GO_ON) return rc;
+    if (name && !fs_method_find(name)) return cli_usage("methods", "unknown method '%s'", name);
     for (int i = 0; i < fs_method_count(); i++) {
         const fs_method *m = fs_method_at(i);
-        if (argc > 1 && strcmp(argv[1], m->name)) continue;
+        if (name && strcmp(name, m->name)) continue;
         printf("%s — %s\n  paper: %s; runs on: %s\n", m->name, m->description, m->paper[0] ? m->paper : "(ours)",
                m->needs_gl ? "OpenGL 4.5" : "CPU");
         for (int k = 0; k < m->nparams; k++) {

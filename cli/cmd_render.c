@@ -3,30 +3,15 @@
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
+#include "options.h"
 #include "render_output.h"
 #include "run.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
-    "usage: fluidsurf render SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]\n"
-    "  --method NAME        method to run (fluidsurf methods lists them); default reference\n"
-    "  --set M.P=V          set a method parameter (repeatable)\n"
-    "  -W N, -H N           image size in pixels (default: the scene's, else 512x512)\n"
-    "  --radius R           particle radius r (default: the scene's, else 0.025)\n"
-    "  --format FMT         particle file format (default: from the extension)\n"
-    "  --frame N            frame of a sequence scene (default: its first)\n"
-    "  --gl osmesa|egl      OpenGL context (default osmesa, or FLUIDSURF_GL)\n"
-    "  --timings            print per-stage times and the renderer they ran on\n"
-    "  --export FILE        write the method's intermediate surface too (repeatable;\n"
-    "                       surfels: .vdb density grid, .ply surfels; volume_raycast:\n"
-    "                       .vdb density volume); -o is then optional\n"
-    "  --appearance A       shared (default): the harness's shading, the same for every\n"
-    "                       method; own: the method's own (surfels: reflection, refraction\n"
-    "                       and caustics as its paper renders them; volume_raycast: its\n"
-    "                       transfer function, surface or translucent)\n"
-    "  -q                   no notes on stderr\n"
+/* what --help says after the options */
+static const char epilogue[] =
     "EXR output holds R G B A depth normal.X/Y/Z thickness coverage (+ own.R/G/B/A caustics\n"
     "for a method with its own appearance) and the provenance.\n";
 
@@ -88,44 +73,31 @@ int cmd_render(int argc, char **argv)
     static fs_scene scene;
     const char *sets[FS_MAX_SETS], *exports[4];
     int nsets = 0, nexports = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
-        else if (!strcmp(a, "--method") && v) { mname = v; i++; }
-        else if (!strcmp(a, "-o") && v) { out = v; i++; }
-        else if (!strcmp(a, "--set") && v) {
-            if (nsets == FS_MAX_SETS) return cli_usage("render", "too many --set");
-            sets[nsets++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "-W")) { if ((rc = cli_int("render", a, v, 1, 16384, &w))) return rc; i++; }
-        else if (!strcmp(a, "-H")) { if ((rc = cli_int("render", a, v, 1, 16384, &h))) return rc; i++; }
-        else if (!strcmp(a, "--frame")) { if ((rc = cli_int("render", a, v, 0, 100000000, &frame))) return rc; i++; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("render", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
-        else if (!strcmp(a, "--format") && v) { format = v; i++; }
-        else if (!strcmp(a, "--gl") && v) {
-            int k = fs_ctx_kind_from_name(v);
-            if (k != FS_CTX_OSMESA && k != FS_CTX_EGL) return cli_usage("render", "--gl %s: expected osmesa or egl", v);
-            ctx_kind = (fs_ctx_kind)k;
-            i++;
-        }
-        else if (!strcmp(a, "--timings")) timings = 1;
-        else if (!strcmp(a, "--export") && v) {
-            if (nexports == 4) return cli_usage("render", "too many --export");
-            exports[nexports++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "--appearance") && v) {
-            if (strcmp(v, "shared") && strcmp(v, "own"))
-                return cli_usage("render", "--appearance %s: expected shared or own", v);
-            own_look = !strcmp(v, "own");
-            i++;
-        }
-        else if (!strcmp(a, "-q")) quiet = 1;
-        else if (a[0] == '-' && a[1]) return cli_usage("render", "unknown or incomplete option '%s'", a);
-        else if (!input) input = a;
-        else return cli_usage("render", "more than one input ('%s' and '%s')", input, a);
-    }
+    const cli_opt opts[] = {
+        CLI_STRING_OPT("--method", mname, "NAME", "method to run (fluidsurf methods lists them); default reference"),
+        CLI_OPT_OUT(out, "OUT.png|OUT.exr", "the image: PNG, or EXR with the G-buffer and provenance"),
+        CLI_OPT_SET(sets, nsets),
+        CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
+        CLI_OPT_RADIUS(radius, "the scene's, else 0.025"),
+        CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
+        CLI_INT_OPT("--frame", frame, 0, 100000000, "N", "frame of a sequence scene (default: its first)"),
+        CLI_OPT_GL(ctx_kind),
+        CLI_FLAG_OPT("--timings", timings, "print per-stage times and the renderer they ran on"),
+        CLI_LIST_OPT("--export", exports, nexports, 4, "FILE",
+                     "write the method's intermediate surface too (repeatable;\n"
+                     "surfels: .vdb density grid, .ply surfels; volume_raycast:\n"
+                     ".vdb density volume); -o is then optional"),
+        CLI_CHOICE_OPT("--appearance", own_look, "shared|own", NULL,
+                       "shared (default): the harness's shading, the same for\n"
+                       "every method; own: the method's own (surfels: reflection,\n"
+                       "refraction and caustics as its paper renders them;\n"
+                       "volume_raycast: its transfer function)"),
+        CLI_OPT_QUIET(quiet),
+        CLI_END,
+    };
+    const cli_command cmd = {"render", "SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]", opts,
+                             {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (!input) return cli_usage("render", "no scene or particle file given");
     if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);

@@ -1,6 +1,7 @@
 #include "cli.h"
 #include "fs_error.h"
 #include "gl_context.h"
+#include "options.h"
 #include "output_file.h"
 #include "particle_io.h"
 #include "provenance.h"
@@ -11,31 +12,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
-    "usage: fluidsurf simulate SCENE --frames N -o OUT_%04d.bgeo|.vtk|.ply|.vdb [options]\n"
+/* what --help says after the options */
+static const char epilogue[] =
     "SPH after Mueller et al. 2003 (inacio2010 section III). SCENE: dam_break, double_dam_break,\n"
     "drop, spouts (four coloured spouts filling a pool), pool (water at rest), or a JSON file\n"
     "{\"box\": [x, y, z], \"fluid\": [{\"min\": [..], \"max\": [..], \"color\": 0},\n"
     "{\"centre\": [..], \"radius\": R, \"color\": 1}]} in metres (colour ids 0..4).\n"
     "Writes frames 0..N, frame f being the state at t = f / fps (frame 0: the start).\n"
-    "  --frames N           frames to simulate (default 60)\n"
-    "  -o PATTERN           printf pattern of the frame files, one %d (e.g. out_%04d.bgeo)\n"
-    "  --particles N        about N fluid particles (default: the scene's); the tank\n"
-    "                       grows with N at fixed r\n"
-    "  --cpu | --gpu        C + OpenMP (default) or GL compute shaders on the context\n"
-    "  --gl osmesa|egl      context of --gpu (default osmesa, or FLUIDSURF_GL)\n"
-    "  --eos tait|ideal     equation of state (default tait; ideal: p = k (rho - rho0))\n"
-    "  --fps F              frames per second (default 60); steps adapt to the CFL and\n"
-    "                       viscosity bounds within each frame\n"
-    "  --dt DT [--substeps K] fixed steps instead: each frame is K steps of DT (default\n"
-    "                       K = 1) whatever the bound; steps beyond it are counted\n"
-    "  --radius R           particle radius (default 0.025)\n"
-    "  --nu NU              kinematic viscosity, m^2/s (default 0.05)\n"
-    "  --sound-speed C      speed of sound (default 10x the scene's expected peak speed)\n"
-    "  --k K                ideal-gas constant (default C^2)\n"
-    "  --cfl L              dt <= L H / (C + v_max) (default 0.2)\n"
-    "  --stats FILE.csv     per-frame record: steps, dt, bound, clamps, density error, depth\n"
-    "  -q                   no progress on stderr\n"
     "-o may be left out when --stats is given. A run that diverges (NaN) stops with exit 1.\n";
 
 typedef struct opts {
@@ -48,44 +31,40 @@ typedef struct opts {
 
 static int parse(int argc, char **argv, opts *o)
 {
-    int rc, have_fps = 0, have_k = 0;
+    int rc;
     fs_sph_params_default(&o->prm);
     o->frames = 60;
-    o->fps = 60;
     o->ctx = fs_gl_context_default_kind();
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return -1; }
-        else if (!strcmp(a, "-o") && v) { o->out = v; i++; }
-        else if (!strcmp(a, "--stats") && v) { o->stats = v; i++; }
-        else if (!strcmp(a, "--frames")) { if ((rc = cli_int("simulate", a, v, 1, 1000000, &o->frames))) return rc; i++; }
-        else if (!strcmp(a, "--particles")) { if ((rc = cli_int("simulate", a, v, 64, 50000000, &o->particles))) return rc; i++; }
-        else if (!strcmp(a, "--substeps")) { if ((rc = cli_int("simulate", a, v, 1, 100000, &o->substeps))) return rc; i++; }
-        else if (!strcmp(a, "--fps")) { if ((rc = cli_float("simulate", a, v, 0.01, 100000, &o->fps))) return rc; have_fps = 1; i++; }
-        else if (!strcmp(a, "--dt")) { if ((rc = cli_float("simulate", a, v, 1e-7, 10, &o->dt))) return rc; i++; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("simulate", a, v, 1e-5, 100, &o->prm.r))) return rc; i++; }
-        else if (!strcmp(a, "--nu")) { if ((rc = cli_float("simulate", a, v, 0, 1000, &o->prm.nu))) return rc; i++; }
-        else if (!strcmp(a, "--sound-speed")) { if ((rc = cli_float("simulate", a, v, 1e-3, 1e6, &o->prm.c))) return rc; i++; }
-        else if (!strcmp(a, "--k")) { if ((rc = cli_float("simulate", a, v, 1e-6, 1e12, &o->prm.k))) return rc; have_k = 1; i++; }
-        else if (!strcmp(a, "--cfl")) { if ((rc = cli_float("simulate", a, v, 1e-4, 1, &o->prm.cfl))) return rc; i++; }
-        else if (!strcmp(a, "--cpu")) o->gpu = 0;
-        else if (!strcmp(a, "--gpu")) o->gpu = 1;
-        else if (!strcmp(a, "--eos") && v) {
-            if (strcmp(v, "tait") && strcmp(v, "ideal")) return cli_usage("simulate", "--eos %s: expected tait or ideal", v);
-            o->prm.eos = strcmp(v, "tait") ? FS_SPH_IDEAL : FS_SPH_TAIT;
-            i++;
-        }
-        else if (!strcmp(a, "--gl") && v) {
-            int k = fs_ctx_kind_from_name(v);
-            if (k != FS_CTX_OSMESA && k != FS_CTX_EGL) return cli_usage("simulate", "--gl %s: expected osmesa or egl", v);
-            o->ctx = (fs_ctx_kind)k;
-            i++;
-        }
-        else if (!strcmp(a, "-q")) o->quiet = 1;
-        else if (a[0] == '-' && a[1]) return cli_usage("simulate", "unknown or incomplete option '%s'", a);
-        else if (!o->scene) o->scene = a;
-        else return cli_usage("simulate", "more than one scene ('%s' and '%s')", o->scene, a);
-    }
+    const cli_opt table[] = {
+        CLI_INT_OPT("--frames", o->frames, 1, 1000000, "N", "frames to simulate (default 60)"),
+        CLI_OPT_OUT(o->out, "PATTERN", "printf pattern of the frame files, one %d (e.g. out_%04d.bgeo)"),
+        CLI_INT_OPT("--particles", o->particles, 64, 50000000, "N",
+                    "about N fluid particles (default: the scene's); the tank\ngrows with N at fixed r"),
+        CLI_STORE_OPT("--cpu", o->gpu, 0, "simulate in C + OpenMP (default)"),
+        CLI_STORE_OPT("--gpu", o->gpu, 1, "simulate with GL compute shaders on the --gl context"),
+        CLI_OPT_GL(o->ctx),
+        CLI_CHOICE_OPT("--eos", o->prm.eos, "tait|ideal", ((const int[]){FS_SPH_TAIT, FS_SPH_IDEAL}),
+                       "equation of state (default tait; ideal: p = k (rho - rho0))"),
+        CLI_FLOAT_OPT("--fps", o->fps, 0.01, 100000, "F",
+                      "frames per second (default 60); steps adapt to the CFL and\nviscosity bounds within each frame"),
+        CLI_FLOAT_OPT("--dt", o->dt, 1e-7, 10, "DT",
+                      "fixed steps instead: each frame is K (--substeps) steps of DT\nwhatever the bound; steps beyond it are counted"),
+        CLI_INT_OPT("--substeps", o->substeps, 1, 100000, "K", "steps of DT per frame with --dt (default 1)"),
+        CLI_OPT_RADIUS_IN(o->prm.r, 1e-5, 100, "0.025"),
+        CLI_FLOAT_OPT("--nu", o->prm.nu, 0, 1000, "NU", "kinematic viscosity, m^2/s (default 0.05)"),
+        CLI_FLOAT_OPT("--sound-speed", o->prm.c, 1e-3, 1e6, "C", "speed of sound (default 10x the scene's expected peak speed)"),
+        CLI_FLOAT_OPT("--k", o->prm.k, 1e-6, 1e12, "K", "ideal-gas constant (default C^2)"),
+        CLI_FLOAT_OPT("--cfl", o->prm.cfl, 1e-4, 1, "L", "dt <= L H / (C + v_max) (default 0.2)"),
+        CLI_STRING_OPT("--stats", o->stats, "FILE.csv", "per-frame record: steps, dt, bound, clamps, density error, depth"),
+        CLI_OPT_QUIET(o->quiet),
+        CLI_END,
+    };
+    const cli_command cmd = {"simulate", "SCENE --frames N -o OUT_%04d.bgeo|.vtk|.ply|.vdb [options]", table,
+                             {&o->scene, NULL, 1, "more than one scene ('%s' and '%s')"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc ? rc : -1; /* -1: --help shown */
+    /* both 0 unless given: their ranges exclude 0 */
+    int have_fps = o->fps > 0, have_k = o->prm.k > 0;
+    if (!have_fps) o->fps = 60;
     if (!o->scene) return cli_usage("simulate", "no scene given (dam_break, double_dam_break, drop, spouts, pool)");
     if (!o->out && !o->stats) return cli_usage("simulate", "no output given (-o OUT_%%04d.bgeo or --stats FILE.csv)");
     if (o->substeps && !(o->dt > 0)) return cli_usage("simulate", "--substeps needs --dt");

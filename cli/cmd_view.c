@@ -12,6 +12,7 @@
 #include "image_io.h"
 #include "method.h"
 #include "method_params.h"
+#include "options.h"
 #include "run.h"
 #include "shader.h"
 #include "sph.h"
@@ -24,26 +25,11 @@
 #include <string.h>
 #include <unistd.h>
 
-static const char help[] =
-    "usage: fluidsurf view SCENE.json|PARTICLES [options]\n"
-    "       fluidsurf view --simulate NAME [options]\n"
-    "  --simulate NAME      run the SPH simulator live, one --dt per displayed frame\n"
-    "                       (dam_break, double_dam_break, drop, spouts, pool)\n"
-    "  --particles N        simulator: about N fluid particles (default: the scene's)\n"
-    "  --gpu                simulator: the GPU path (compute shaders) instead of C + OpenMP\n"
-    "  --dt S               simulated seconds per displayed frame (default 1/60)\n"
-    "  --method NAME        method shown first (default: the first registered)\n"
-    "  --set M.P=V          set a method parameter (repeatable)\n"
-    "  -W N, -H N           window size (default: the scene's image size, else 800x600)\n"
-    "  --scale S            G-buffer size / window size, 1/16..2 (default 1)\n"
-    "  --radius R           particle radius r (default: the scene's, else the file's, else 0.025)\n"
-    "  --paused             start paused\n"
-    "  --frames N           quit after N displayed frames\n"
-    "  -v                   print the title bar (method, ms, renderer, scale, frame) each frame\n"
-    "  --script FILE        timed input, lines 'frame N ACTION ARGS':\n"
-    "                         key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
-    "                         scroll DY   screenshot PATH   quit\n"
-    "  --events TEXT        the same inline, actions separated by ';'\n"
+/* what --help says after the options */
+static const char epilogue[] =
+    "--script lines are 'frame N ACTION ARGS', an ACTION one of\n"
+    "  key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
+    "  scroll DY   screenshot PATH   quit\n"
     "keys: 1-9 method (registry order), space play/pause, N or . one frame, S screenshot,\n"
     "      +/- resolution scale, O own/shared appearance, R reset camera, Esc/Q quit;\n"
     "      simulator: arrows, or shift (ctrl) + left drag, move the container\n"
@@ -424,32 +410,28 @@ int cmd_view(int argc, char **argv)
     float scale = 1, radius = 0, dt = 1.0f / 60;
     const char *sets[FS_MAX_SETS];
     int nsets = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(help, stdout); return 0; }
-        else if (!strcmp(a, "--simulate") && v) { simulate = v; i++; }
-        else if (!strcmp(a, "--particles")) { if ((rc = cli_int("view", a, v, 1, 100000000, &particles))) return rc; i++; }
-        else if (!strcmp(a, "--gpu")) gpu = 1;
-        else if (!strcmp(a, "--dt")) { if ((rc = cli_float("view", a, v, 1e-6, 1, &dt))) return rc; i++; }
-        else if (!strcmp(a, "--method") && v) { mname = v; i++; }
-        else if (!strcmp(a, "--set") && v) {
-            if (nsets == FS_MAX_SETS) return cli_usage("view", "too many --set");
-            sets[nsets++] = v;
-            i++;
-        }
-        else if (!strcmp(a, "-W")) { if ((rc = cli_int("view", a, v, 16, 8192, &W))) return rc; i++; }
-        else if (!strcmp(a, "-H")) { if ((rc = cli_int("view", a, v, 16, 8192, &H))) return rc; i++; }
-        else if (!strcmp(a, "--scale")) { if ((rc = cli_float("view", a, v, 1.0 / 16, 2, &scale))) return rc; i++; }
-        else if (!strcmp(a, "--radius")) { if ((rc = cli_float("view", a, v, 1e-9, 1e9, &radius))) return rc; i++; }
-        else if (!strcmp(a, "--paused")) paused = 1;
-        else if (!strcmp(a, "-v")) verbose = 1;
-        else if (!strcmp(a, "--frames")) { if ((rc = cli_int("view", a, v, 1, 100000000, &max_frames))) return rc; i++; }
-        else if (!strcmp(a, "--script") && v) { script = v; i++; }
-        else if (!strcmp(a, "--events") && v) { events = v; i++; }
-        else if (a[0] == '-' && a[1]) return cli_usage("view", "unknown or incomplete option '%s'", a);
-        else if (!input) input = a;
-        else return cli_usage("view", "more than one input ('%s' and '%s')", input, a);
-    }
+    const cli_opt opts[] = {
+        CLI_STRING_OPT("--simulate", simulate, "NAME",
+                       "run the SPH simulator live, one --dt per displayed frame\n"
+                       "(dam_break, double_dam_break, drop, spouts, pool)"),
+        CLI_INT_OPT("--particles", particles, 1, 100000000, "N", "simulator: about N fluid particles (default: the scene's)"),
+        CLI_FLAG_OPT("--gpu", gpu, "simulator: the GPU path (compute shaders) instead of C + OpenMP"),
+        CLI_FLOAT_OPT("--dt", dt, 1e-6, 1, "S", "simulated seconds per displayed frame (default 1/60)"),
+        CLI_STRING_OPT("--method", mname, "NAME", "method shown first (default: the first registered)"),
+        CLI_OPT_SET(sets, nsets),
+        CLI_OPT_SIZE(W, H, 16, 8192, "window", "the scene's image size, else 800x600"),
+        CLI_FLOAT_OPT("--scale", scale, 1.0 / 16, 2, "S", "G-buffer size / window size, 1/16..2 (default 1)"),
+        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
+        CLI_FLAG_OPT("--paused", paused, "start paused"),
+        CLI_INT_OPT("--frames", max_frames, 1, 100000000, "N", "quit after N displayed frames"),
+        CLI_FLAG_OPT("-v", verbose, "print the title bar (method, ms, renderer, scale, frame) each frame"),
+        CLI_STRING_OPT("--script", script, "FILE", "timed input, lines 'frame N ACTION ARGS' (below)"),
+        CLI_STRING_OPT("--events", events, "TEXT", "the same inline, actions separated by ';'"),
+        CLI_END,
+    };
+    const cli_command cmd = {"view", "SCENE.json|PARTICLES [options]\n--simulate NAME [options]", opts,
+                             {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (!input == !simulate) return cli_usage("view", "give a scene or particle file, or --simulate NAME (not both)");
     if (script && events) return cli_usage("view", "--script and --events: give one");
     if (!simulate && (gpu || particles)) return cli_usage("view", "--gpu and --particles apply to --simulate only");

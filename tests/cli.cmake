@@ -9,3 +9,8 @@ add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.s
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
   ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+# Every command's --help comes from its option table and lists all its options; unknown options exit 2, one line.
+add_test(NAME cli_help COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_BINARY_DIR}/test-out/cli_help)
+set_tests_properties(cli_help PROPERTIES
+  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
