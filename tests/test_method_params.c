@@ -6,6 +6,7 @@
 #include "fs_test.h"
 #include "method.h"
 #include "method_params.h"
+#include "run.h"
 #include "sweep.h"
 #include <stddef.h>
 #include <stdlib.h>
@@ -33,6 +34,7 @@ static void *probe_create(const fs_method_setup *setup)
     if (fs_method_params_copy("probe", setup, &created, sizeof created)) return NULL;
     return &created;
 }
+static void probe_destroy(void *self) { (void)self; }
 
 static const fs_method probe = {
     .name = "probe",
@@ -42,6 +44,7 @@ static const fs_method probe = {
     .nparams = 3,
     .params_size = sizeof(probe_params),
     .create = probe_create,
+    .destroy = probe_destroy,
 };
 
 static void split(void)
@@ -108,16 +111,11 @@ static void by_name(void)
     fs_scene_defaults(&s);
     CHECK(fs_scene_add_set(&s, "probe.gain=3") == FS_OK && fs_scene_add_set(&s, "probe.mode=c") == FS_OK &&
           fs_scene_add_set(&s, "spheres.thickness=off") == FS_OK, "settings");
-    double v[FS_MAX_PARAMS];
-    CHECK(fs_method_params_resolve(&probe, &s, v) == FS_OK, "resolve: %s", fs_error_message());
-    fs_method_setup setup = {{0}, fs_method_params_alloc(&probe, v), NULL};
-    CHECK(probe.create(&setup) != NULL, "create");
-    free((void *)setup.params);
+    fs_run *run = NULL; /* resolves the settings by name and fills the struct */
+    CHECK(fs_run_open(&run, &probe, &s, NULL, NULL) == FS_OK, "open: %s", fs_error_message());
+    fs_run_close(run);
     CHECK(created.gain == 3 && created.mode == 2 && created.enabled == 1, "created with %g %g %g", created.gain,
           created.mode, created.enabled);
-    setup.params = NULL;
-    CHECK(probe.create(&setup) == NULL && strstr(fs_error_message(), "no parameter struct"), "no struct: %s",
-          fs_error_message());
 }
 
 /* Every built-in table fits its struct, one distinct double per parameter, and
@@ -136,9 +134,6 @@ static void builtin_tables(void)
         void *p = fs_method_params_alloc(m, NULL);
         CHECK(p != NULL, "%s: fill: %s", m->name, fs_error_message());
         free(p);
-        fs_method_setup setup = {{0.025f, 1.25e-4f, FS_KERNEL_CUBIC, 0.1f, 0.6f}, NULL, NULL};
-        CHECK(m->create(&setup) == NULL && strstr(fs_error_message(), "no parameter struct"), "%s without a struct: %s",
-              m->name, fs_error_message());
     }
 }
 

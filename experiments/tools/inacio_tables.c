@@ -32,9 +32,8 @@
 #include "gl_context.h"
 #include "image_io.h"
 #include "method.h"
-#include "method_params.h"
+#include "run.h"
 #include "scene.h"
-#include "shading.h"
 #include "sph.h"
 #include "timing.h"
 #include <stdio.h>
@@ -43,9 +42,9 @@
 
 typedef struct renderer {
     const fs_method *m;
-    void *self;
-    double params[FS_MAX_PARAMS];
-    fs_gbuffer g;
+    fs_scene scene; /* the shared scene, plus this renderer's settings */
+    fs_run *run;
+    fs_run_image im;
 } renderer;
 
 static const char *row_head; /* the leading columns, filled once */
@@ -63,25 +62,22 @@ static int die(const char *what)
 }
 
 /* Renders p with r (upload, render, shade), adding the stages to st (NULL: untimed). */
-static int render_with(renderer *r, fs_sph *sim, const fs_scene *sc, const fs_camera *cam, const fs_particles *p,
-                       float *rgba, fs_stages *st, int time_upload)
+static int render_with(renderer *r, fs_sph *sim, const fs_camera *cam, const fs_particles *p, fs_stages *st,
+                       int time_upload)
 {
     fs_stages dummy = {0};
     if (!st) st = &dummy;
     glFinish();
     double t0 = fs_now_ms();
-    int rc = r->m->upload(r->self, p, NULL);
+    int rc = fs_run_upload(r->run, p, NULL, NULL); /* the grid, the method's upload, all GL work finished */
     glFinish();
     if (rc) return rc;
     if (time_upload) fs_stages_add(st, "upload", fs_now_ms() - t0);
-    fs_gbuffer_clear(&r->g);
-    if ((rc = r->m->render(r->self, cam, &r->g, st))) return rc;
+    if ((rc = fs_run_render(r->run, cam, &r->im, st))) return rc;
     float lo[3], hi[3];
     fs_sph_box(sim, lo, hi);
-    t0 = fs_now_ms();
-    fs_shade(sc, cam, &r->g, lo[sc->up_axis], rgba);
-    fs_stages_add(st, "shade", fs_now_ms() - t0);
-    return FS_OK;
+    fs_run_set_floor(r->run, lo[r->scene.up_axis]);
+    return fs_run_shade(r->run, cam, &r->im, FS_APPEARANCE_SHARED, st);
 }
 
 int main(int argc, char **argv)
@@ -129,25 +125,16 @@ int main(int argc, char **argv)
     fs_camera cam = sc.camera;
 
     enum { NR = 3 };
-    renderer rr[NR];
-    memset(rr, 0, sizeof rr);
-    rr[0].m = fs_method_find("volume_raycast");
-    rr[1].m = fs_method_find("spheres");
-    rr[2].m = rr[0].m; /* build=slice, for its volume stage */
+    static renderer rr[NR];
+    const char *names[NR] = {"volume_raycast", "spheres", "volume_raycast"};
     const char *table[NR] = {"I", "II", "I_slice"};
-    fs_method_setup setup[NR];
     for (int k = 0; k < NR; k++) {
-        if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %d not registered\n", k); return 1; }
-        if (fs_method_params_resolve(rr[k].m, &sc, rr[k].params)) return die("parameters");
-        if (k == 2) rr[k].params[fs_method_param_index(rr[k].m, "build")] = 1; /* layered|slice|exact */
-        setup[k] = (fs_method_setup){fs_scene_field(&sc), fs_method_params_alloc(rr[k].m, rr[k].params), &sc};
-        rr[k].self = rr[k].m->create(&setup[k]);
-        free((void *)setup[k].params);
-        if (!rr[k].self) return die(rr[k].m->name);
-        if (fs_gbuffer_alloc(&rr[k].g, size, size, 0)) return die("G-buffer");
+        rr[k].m = fs_method_find(names[k]);
+        if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %s not registered\n", names[k]); return 1; }
+        rr[k].scene = sc;
+        if (k == 2 && fs_scene_add_set(&rr[k].scene, "volume_raycast.build=slice")) return die("scene"); /* its volume stage */
+        if (fs_run_open(&rr[k].run, rr[k].m, &rr[k].scene, NULL, &ctx)) return die(rr[k].m->name);
     }
-    float *rgba = malloc((size_t)size * size * 4 * sizeof(float));
-    if (!rgba) { fprintf(stderr, "inacio_tables: out of memory\n"); return 1; }
 
     /* settle: untimed frames; the first checked against the limit */
     for (int f = 1; f <= settle; f++) {
@@ -164,7 +151,7 @@ int main(int argc, char **argv)
     fs_particles p = {0};
     if (fs_sph_get(sim, &p)) return die("get");
     for (int k = 0; k < NR; k++) /* warm-up: shader compilation, first allocations */
-        if (render_with(&rr[k], sim, &sc, &cam, &p, rgba, NULL, 0)) return die(rr[k].m->name);
+        if (render_with(&rr[k], sim, &cam, &p, NULL, 0)) return die(rr[k].m->name);
     fflush(stdout);
 
     for (int f = settle + 1; f <= settle + frames; f++) {
@@ -186,14 +173,14 @@ int main(int argc, char **argv)
         row(f, t, steps, "sim", "fetch", fs_now_ms() - t0);
         for (int k = 0; k < NR; k++) {
             fs_stages st = {0};
-            if (render_with(&rr[k], sim, &sc, &cam, &np, rgba, &st, k == 1)) return die(rr[k].m->name);
+            if (render_with(&rr[k], sim, &cam, &np, &st, k == 1)) return die(rr[k].m->name);
             for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i]);
             const char *prefix = getenv("INACIO_TABLES_PNG");
             if (prefix && f == settle + frames && k < 2) {
                 char path[1200];
                 snprintf(path, sizeof path, "%s_%s.png", prefix, rr[k].m->name);
                 const char *ch[4] = {"R", "G", "B", "A"};
-                fs_image im = {size, size, 4, ch, rgba};
+                fs_image im = {size, size, 4, ch, rr[k].im.rgba};
                 if (fs_write_png(path, &im)) return die(path);
             }
         }
@@ -202,11 +189,10 @@ int main(int argc, char **argv)
         fflush(stdout);
     }
     for (int k = 0; k < NR; k++) {
-        rr[k].m->destroy(rr[k].self);
-        fs_gbuffer_free(&rr[k].g);
+        fs_run_close(rr[k].run);
+        fs_run_image_free(&rr[k].im);
     }
     fs_particles_free(&p);
-    free(rgba);
     fs_sph_destroy(sim);
     fs_gl_context_destroy(&ctx);
     return 0;

@@ -1,0 +1,245 @@
+/* The run layer with a test-only method registered through the same API as the
+ * built-in table (fs_method_register, hidden from the listing): render, shade,
+ * provenance, an EXR written and read back; the particle-lifetime rule (the
+ * method keeps the pointers it was given while the caller's struct goes out of
+ * scope); a failed upload; an empty frame; a GL method without a context.
+ * Links the run and report layers only, not methods/. */
+#include "fs_error.h"
+#include "fs_test.h"
+#include "image_io.h"
+#include "method.h"
+#include "render_output.h"
+#include "run.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* "flat": every pixel whose ray passes within the particles' box (seen along
+ * the view axis) is covered, at the depth of the box's nearest face; it keeps
+ * the particle set it was given, as surfels and volume_raycast do. */
+typedef struct flat_params { double depth_scale; } flat_params;
+static const fs_param_def flat_table[] = {
+    {"depth_scale", offsetof(flat_params, depth_scale), FS_PARAM_FLOAT, 1.0, 0.1, 10, NULL, "scales the depth"},
+};
+typedef struct flat { flat_params prm; const fs_particles *p; int renders; } flat;
+static flat the_flat;
+
+static void *flat_create(const fs_method_setup *setup)
+{
+    memset(&the_flat, 0, sizeof the_flat);
+    return fs_method_params_copy("flat", setup, &the_flat.prm, sizeof the_flat.prm) ? NULL : &the_flat;
+}
+static int flat_upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    (void)g;
+    if (p->n > 1000) return fs_fail(FS_ERR_INPUT, "flat: %zu particles: too many", p->n);
+    ((flat *)self)->p = p; /* read again in render */
+    return FS_OK;
+}
+static int flat_render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
+{
+    flat *F = self;
+    F->renders++;
+    const fs_particles *p = F->p;
+    for (int y = 0; y < out->h; y++)
+        for (int x = 0; x < out->w; x++) {
+            float d[3];
+            fs_camera_ray(cam, x + 0.5f, y + 0.5f, d);
+            float t = (p->bmax[2] - cam->eye[2]) / d[2], hx = cam->eye[0] + t * d[0], hy = cam->eye[1] + t * d[1];
+            if (hx < p->bmin[0] || hx > p->bmax[0] || hy < p->bmin[1] || hy > p->bmax[1]) continue;
+            size_t i = (size_t)y * out->w + x;
+            out->depth[i] = (float)(F->prm.depth_scale * (cam->eye[2] - p->bmax[2]));
+            out->normal[3 * i + 2] = 1;
+            out->coverage[i] = 1;
+        }
+    fs_stages_add(st, "flat", 0.0);
+    return FS_OK;
+}
+static void flat_destroy(void *self) { ((flat *)self)->p = NULL; }
+
+static const fs_method flat_method = {
+    .name = "test_flat",
+    .description = "test-only: the particles' box as a flat face",
+    .paper = "",
+    .params = flat_table,
+    .nparams = 1,
+    .params_size = sizeof(flat_params),
+    .create = flat_create,
+    .upload = flat_upload,
+    .render = flat_render,
+    .destroy = flat_destroy,
+};
+
+static const fs_method gl_method = {.name = "test_needs_gl", .needs_gl = 1, .params_size = 0,
+                                    .create = flat_create, .destroy = flat_destroy};
+
+/* A square of n x n particles in the plane z = 0, half-size h. */
+static void square(fs_particles *p, int n, float h)
+{
+    fs_particles_alloc(p, (size_t)n * n, 0);
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            p->x[j * n + i] = -h + 2 * h * i / (n - 1);
+            p->y[j * n + i] = -h + 2 * h * j / (n - 1);
+            p->z[j * n + i] = 0;
+        }
+    fs_particles_bounds(p);
+}
+
+static fs_scene scene;
+static fs_camera camera(void)
+{
+    fs_camera c = {{0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 40.0f, 64, 64, 0.1f, 10.0f};
+    return c;
+}
+
+static size_t covered(const fs_gbuffer *g)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < (size_t)g->w * g->h; i++) n += g->coverage[i] > 0;
+    return n;
+}
+
+/* Uploads a frame from a particle struct that lives only in this function. */
+static int upload_from_stack(fs_run *run, float h, fs_particles *arrays)
+{
+    fs_particles local;
+    square(&local, 8, h);
+    int rc = fs_run_upload(run, &local, NULL, NULL);
+    *arrays = local; /* the caller keeps the arrays alive; the struct's address dies here */
+    volatile unsigned char *v = (volatile unsigned char *)&local; /* a store the compiler keeps */
+    for (size_t i = 0; i < sizeof local; i++) v[i] = 0x5a;
+    return rc;
+}
+
+static void registry(void)
+{
+    int listed = fs_method_count();
+    CHECK(fs_method_register(&flat_method, FS_METHOD_HIDDEN) == FS_OK, "register: %s", fs_error_message());
+    CHECK(fs_method_register(&flat_method, FS_METHOD_HIDDEN) == FS_OK, "registering again is a no-op");
+    fs_method twin = flat_method;
+    CHECK(fs_method_register(&twin, 0) == FS_ERR_INPUT && strstr(fs_error_message(), "registered twice"),
+          "a second method of the same name is refused: %s", fs_error_message());
+    CHECK(fs_method_find("test_flat") == &flat_method, "found by name");
+    CHECK(fs_method_count() == listed, "a hidden method is not listed (%d vs %d)", fs_method_count(), listed);
+    for (int i = 0; i < fs_method_count(); i++) CHECK(fs_method_at(i) != &flat_method, "listed at %d", i);
+}
+
+/* Render, shade, provenance, EXR written and read back. */
+static void render_and_read_back(void)
+{
+    fs_scene_defaults(&scene);
+    scene.radius = 0.05f;
+    CHECK(fs_scene_add_set(&scene, "test_flat.depth_scale=2") == FS_OK, "set by name: %s", fs_error_message());
+    fs_particles p;
+    square(&p, 8, 0.3f);
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    fs_camera cam = camera();
+    fs_stages st = {0};
+    int rc = fs_run_open(&run, &flat_method, &scene, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, &st);
+    if (!rc) rc = fs_run_render(run, &cam, &im, &st);
+    if (!rc) rc = fs_run_shade(run, &cam, &im, FS_APPEARANCE_SHARED, &st);
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    if (rc) { fs_run_close(run); fs_particles_free(&p); return; }
+    CHECK(fs_run_values(run)[0] == 2 && !strcmp(fs_run_renderer(run), "CPU"), "values and renderer");
+    CHECK(fs_run_shade(run, &cam, &im, FS_APPEARANCE_OWN, NULL) == FS_ERR_INPUT, "no own appearance to show");
+    const char *want[] = {"grid", "upload", "flat", "shade"};
+    for (int k = 0; k < 4; k++) {
+        int found = 0;
+        for (int i = 0; i < st.n; i++) found |= !strcmp(st.name[i], want[k]);
+        CHECK(found, "stage %s reported", want[k]);
+    }
+    size_t n = covered(&im.g);
+    CHECK(n > 200 && n < 64 * 64 / 2, "the face covers %zu px", n);
+    fs_provenance prov;
+    fs_run_provenance(run, NULL, 7, &prov);
+    const char *path = FS_TEST_OUT "/test_run_flat.exr";
+    unlink(path);
+    CHECK(fs_write_render(path, &im.g, im.rgba, &prov) == FS_OK, "write: %s", fs_error_message());
+    fs_gbuffer back;
+    float *rgba = NULL, r = 0;
+    CHECK(fs_read_render(path, &back, &rgba, &r) == FS_OK, "read back: %s", fs_error_message());
+    if (rgba) {
+        size_t same = 0;
+        for (size_t i = 0; i < 64 * 64; i++)
+            same += back.coverage[i] == im.g.coverage[i] &&
+                    (!back.coverage[i] || (back.depth[i] == im.g.depth[i] && back.normal[3 * i + 2] == 1));
+        CHECK(same == 64 * 64, "%zu of %d pixels read back as written", same, 64 * 64);
+        CHECK(fabsf(im.g.depth[32 * 64 + 32] - 4.0f) < 1e-5f, "depth_scale=2 doubles the depth: %g",
+              im.g.depth[32 * 64 + 32]);
+        CHECK(fabsf(r - 0.05f) < 1e-7f, "r in the provenance: %g", r);
+    }
+    char attr[64];
+    CHECK(fs_read_image_attr(path, "fluidsurf:method", attr, sizeof attr) == 1 && !strcmp(attr, "test_flat"),
+          "method in the EXR: %s", attr);
+    CHECK(fs_read_image_attr(path, "fluidsurf:frame", attr, sizeof attr) == 1 && !strcmp(attr, "7"), "frame: %s", attr);
+    CHECK(fs_read_image_attr(path, "fluidsurf:params", attr, sizeof attr) == 1 && !strcmp(attr, "depth_scale=2"),
+          "params: %s", attr);
+    fs_gbuffer_free(&back);
+    free(rgba);
+    fs_run_image_free(&im);
+    fs_run_close(run);
+    fs_particles_free(&p);
+}
+
+/* The method keeps the pointer it was given at upload; the caller's struct is
+ * gone by render (the viewer's old bug). A bigger frame must show bigger. */
+static void lifetime_and_failures(void)
+{
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    fs_camera cam = camera();
+    fs_particles a = {0}, b = {0}, big, empty = {0};
+    CHECK(fs_run_open(&run, &flat_method, &scene, NULL, NULL) == FS_OK, "open: %s", fs_error_message());
+    if (!run) return;
+    CHECK(fs_run_render(run, &cam, &im, NULL) == FS_ERR_RUNTIME && strstr(fs_error_message(), "no frame uploaded"),
+          "render before any upload says so: %s", fs_error_message());
+    CHECK(upload_from_stack(run, 0.2f, &a) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK, "small: %s",
+          fs_error_message());
+    size_t small = covered(&im.g);
+    CHECK(upload_from_stack(run, 0.4f, &b) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK, "large: %s",
+          fs_error_message());
+    size_t large = covered(&im.g);
+    CHECK(small > 50 && large > 3 * small, "the method saw each frame: %zu then %zu px", small, large);
+    fs_particles_free(&a); /* the first frame's arrays: no longer held */
+
+    square(&big, 40, 0.3f); /* 1600 particles: the method refuses them */
+    CHECK(fs_run_upload(run, &big, NULL, NULL) == FS_ERR_INPUT, "upload refused");
+    CHECK(fs_run_render(run, &cam, &im, NULL) == FS_ERR_RUNTIME && strstr(fs_error_message(), "too many"),
+          "after a failed upload, render refuses with the reason: %s", fs_error_message());
+    CHECK(fs_run_upload(run, &b, NULL, NULL) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK &&
+              covered(&im.g) == large, "the next upload recovers: %s", fs_error_message());
+
+    int before = the_flat.renders;
+    CHECK(fs_run_upload(run, &empty, NULL, NULL) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK,
+          "an empty frame renders: %s", fs_error_message());
+    CHECK(covered(&im.g) == 0 && the_flat.renders == before, "empty image, the method not called");
+    fs_particles unbounded = b;
+    unbounded.bmin[0] = 1, unbounded.bmax[0] = -1;
+    CHECK(fs_run_upload(run, &unbounded, NULL, NULL) == FS_ERR_INPUT && strstr(fs_error_message(), "bounding box"),
+          "a frame without bounds is refused: %s", fs_error_message());
+    fs_run_close(run);
+    fs_run_image_free(&im);
+    fs_particles_free(&b);
+    fs_particles_free(&big);
+}
+
+static void gl_without_context(void)
+{
+    fs_run *run = NULL;
+    CHECK(fs_run_open(&run, &gl_method, &scene, NULL, NULL) == FS_ERR_RUNTIME && run == NULL &&
+              strstr(fs_error_message(), "needs a current OpenGL 4.5 context"),
+          "a GL method without a context: %s", fs_error_message());
+}
+
+int main(void)
+{
+    registry();
+    render_and_read_back();
+    lifetime_and_failures();
+    gl_without_context();
+    TEST_DONE();
+}
