@@ -1,23 +1,21 @@
-/* The built-in methods, in the order `fluidsurf methods` lists them. Adding a
- * method: its folder under methods/, one line here, its shaders under shaders/NAME/
- * (docs/DESIGN.md, "Adding a method"). */
+/* The built-in methods, in the order `fluidsurf methods` lists them (and the
+ * viewer's keys 1-9 pick them). Adding a method: its folder methods/NAME/ with
+ * `const fs_method fs_method_NAME`, one line here, its shaders under
+ * shaders/NAME/ (docs/DESIGN.md, "Adding a method"). */
 #include "method.h"
 
-extern const fs_method fs_method_spheres;
-extern const fs_method fs_method_reference;
-extern const fs_method fs_method_raycast_pca;
-extern const fs_method fs_method_aniso_ssf;
-extern const fs_method fs_method_surfels;
-extern const fs_method fs_method_volume_raycast;
+#define BUILTIN_METHODS(X) \
+    X(spheres)             \
+    X(reference)           \
+    X(raycast_pca)         \
+    X(aniso_ssf)           \
+    X(surfels)             \
+    X(volume_raycast)
 
-static const fs_method *const builtin[] = {
-    &fs_method_spheres,
-    &fs_method_reference,
-    &fs_method_raycast_pca,
-    &fs_method_aniso_ssf,
-    &fs_method_surfels,
-    &fs_method_volume_raycast,
-};
+#define DECLARE(name) extern const fs_method fs_method_##name;
+#define ENTRY(name) &fs_method_##name,
+BUILTIN_METHODS(DECLARE)
+static const fs_method *const builtin[] = {BUILTIN_METHODS(ENTRY)};
 
 void fs_methods_register_builtin(void)
 {
