@@ -171,8 +171,7 @@ static void draw_range(const fs_slice_splat *s, size_t s0, size_t s1, size_t chu
     }
 }
 
-int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles *p, const fs_field *f, int up_axis,
-                       int clusters)
+static int check_run(const fs_density_grid *g, const fs_field *f, int up_axis, int clusters)
 {
     if (!g->data) return fs_fail(FS_ERR_INPUT, "slice splat: density grid not initialised");
     if (up_axis < 0 || up_axis > 2) return fs_fail(FS_ERR_INPUT, "slice splat: up axis %d is not 0, 1 or 2", up_axis);
@@ -180,39 +179,64 @@ int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles
         return fs_fail(FS_ERR_INPUT, "slice splat: %d clusters (1 to %d)", clusters, MAX_CLUSTERS);
     if (!(f->H > 0) || !(f->volume > 0) || !isfinite(f->H) || !isfinite(f->volume))
         return fs_fail(FS_ERR_INPUT, "slice splat: support H %g and volume V %g must be positive", f->H, f->volume);
-    s->disks = 0;
-    size_t npts = fs_density_grid_points(g);
-    if (p->n == 0) {
-        memset(g->data, 0, npts * sizeof(float));
-        return FS_OK;
-    }
-    /* framebuffer axes: the two other axes in increasing order */
-    const int up = up_axis, ax = up == 0 ? 1 : 0, bx = up == 2 ? 1 : 2;
-    const int w = g->dim[ax], h = g->dim[bx], nplanes_all = g->dim[up];
+    return FS_OK;
+}
+
+/* A grid plane as a framebuffer: pixel (i, j) is grid point i along ax, j along
+ * bx (the two axes other than up, in increasing order), w x h pixels. */
+typedef struct plane_axes {
+    int up, ax, bx, w, h;
+} plane_axes;
+
+static int plane_axes_of(const fs_density_grid *g, int up, plane_axes *a)
+{
+    a->up = up;
+    a->ax = up == 0 ? 1 : 0;
+    a->bx = up == 2 ? 1 : 2;
+    a->w = g->dim[a->ax];
+    a->h = g->dim[a->bx];
     GLint maxtex = 0, maxvp[2] = {0, 0};
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxtex);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxvp);
-    if (w > maxtex || h > maxtex || w > maxvp[0] || h > maxvp[1])
+    if (a->w > maxtex || a->h > maxtex || a->w > maxvp[0] || a->h > maxvp[1])
         return fs_fail(FS_ERR_INPUT, "slice splat: planes of %dx%d points exceed this context's %dx%d framebuffer limit",
-                       w, h, maxvp[0] < maxtex ? maxvp[0] : maxtex, maxvp[1] < maxtex ? maxvp[1] : maxtex);
-    int rc = ensure_target(s, w, h);
-    if (rc) return rc;
+                       a->w, a->h, maxvp[0] < maxtex ? maxvp[0] : maxtex, maxvp[1] < maxtex ? maxvp[1] : maxtex);
+    return FS_OK;
+}
 
-    float *zb = malloc((clusters + 1) * sizeof *zb);
-    size_t *start = malloc((clusters + 1) * sizeof *start);
-    float *pix = malloc((size_t)w * h * 4 * sizeof(float));
-    if (!zb || !start || !pix) {
-        free(zb); free(start); free(pix);
-        return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory for a %dx%d framebuffer", w, h);
-    }
-    rc = cluster_upload(s, p, up, clusters, zb, start);
-    if (rc) { free(zb); free(start); free(pix); return rc; }
-    const size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
-    const float H = f->H, sp = g->spacing;
+/* The clusters of a run: nc bands with boundaries zb and first slots start
+ * (nc + 1 each), and the read-back pixels of one group of planes. */
+typedef struct bands {
+    int nc;
+    float *zb;
+    size_t *start;
+    float *pix;
+} bands;
 
+static void free_bands(bands *b)
+{
+    free(b->zb);
+    free(b->start);
+    free(b->pix);
+}
+
+static int alloc_bands(bands *b, int nc, const plane_axes *a)
+{
+    b->nc = nc;
+    b->zb = malloc((nc + 1) * sizeof *b->zb);
+    b->start = malloc((nc + 1) * sizeof *b->start);
+    b->pix = malloc((size_t)a->w * a->h * 4 * sizeof(float));
+    if (!b->zb || !b->start || !b->pix)
+        return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory for a %dx%d framebuffer", a->w, a->h);
+    return FS_OK;
+}
+
+/* Additive blending into the planes' framebuffer, the grid's uniforms. */
+static void begin_splat(const fs_slice_splat *s, const fs_density_grid *g, const fs_field *f, const plane_axes *a)
+{
     glBindFramebuffer(GL_FRAMEBUFFER, s->fbo);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, a->w, a->h);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
@@ -220,68 +244,111 @@ int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glUseProgram(s->prog);
     glBindVertexArray(s->vao);
-    const int axes[3] = {ax, bx, up};
+    const int axes[3] = {a->ax, a->bx, a->up};
     glUniform3iv(s->u_axes, 1, axes);
-    glUniform2f(s->u_origin, g->origin[ax], g->origin[bx]);
-    glUniform1f(s->u_spacing, sp);
-    glUniform2f(s->u_size, (float)w, (float)h);
-    glUniform1f(s->u_H, H);
+    glUniform2f(s->u_origin, g->origin[a->ax], g->origin[a->bx]);
+    glUniform1f(s->u_spacing, g->spacing);
+    glUniform2f(s->u_size, (float)a->w, (float)a->h);
+    glUniform1f(s->u_H, f->H);
     glUniform1f(s->u_V, f->volume);
     glUniform1i(s->u_kernel, (int)f->kernel);
-    const float zero[4] = {0, 0, 0, 0};
+}
 
-    for (int k0 = 0; k0 < nplanes_all; k0 += 4) {
-        int np = nplanes_all - k0 < 4 ? nplanes_all - k0 : 4;
-        float planes[4];
-        for (int c = 0; c < 4; c++) planes[c] = g->origin[up] + sp * (k0 + c);
-        glClearNamedFramebufferfv(s->fbo, GL_COLOR, 0, zero);
-        glUniform4f(s->u_planes, planes[0], planes[1], planes[2], planes[3]);
-        glUniform2f(s->u_zrange, planes[0], planes[np - 1]);
-        /* the bands that can reach one of the planes, drawn as runs of consecutive bands */
-        int drawn = 0;
-        for (int k = 0; k < clusters;) {
-            int run = k;
-            for (; run < clusters; run++) {
-                int reach = 0;
-                for (int c = 0; c < np && !reach; c++) reach = zb[run] - H <= planes[c] && planes[c] < zb[run + 1] + H;
-                if (!reach) break;
-            }
-            if (run > k && start[run] > start[k]) {
-                draw_range(s, start[k], start[run], chunk);
-                s->disks += start[run] - start[k];
-                drawn = 1;
-            }
-            k = run > k ? run : k + 1;
-        }
-        if (drawn) glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, pix);
-        /* pixel (i, j) of plane k0 + c is grid point i along ax, j along bx */
-        for (int c = 0; c < np; c++) {
-            int ijk[3];
-            ijk[up] = k0 + c;
-            for (int j = 0; j < h; j++) {
-                ijk[bx] = j;
-                ijk[ax] = 0;
-                const float *src = pix + (size_t)j * w * 4 + c;
-                if (ax == 0) { /* a row of pixels is a row of the grid */
-                    float *dst = g->data + fs_density_grid_index(g, ijk[0], ijk[1], ijk[2]);
-                    if (drawn) for (int i = 0; i < w; i++) dst[i] = src[4 * i];
-                    else memset(dst, 0, (size_t)w * sizeof(float));
-                } else {
-                    for (int i = 0; i < w; i++) {
-                        ijk[ax] = i;
-                        g->data[fs_density_grid_index(g, ijk[0], ijk[1], ijk[2])] = drawn ? src[4 * i] : 0.0f;
-                    }
-                }
-            }
-        }
-    }
+static void end_splat(void)
+{
     glDisable(GL_BLEND);
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    free(zb);
-    free(start);
-    free(pix);
+}
+
+/* Whether band k can reach one of the np planes at heights planes[]. */
+static int band_reaches(const bands *b, int k, float H, const float *planes, int np)
+{
+    int reach = 0;
+    for (int c = 0; c < np && !reach; c++) reach = b->zb[k] - H <= planes[c] && planes[c] < b->zb[k + 1] + H;
+    return reach;
+}
+
+/* Draws the bands that can reach one of the planes, as runs of consecutive
+ * bands; returns whether any particle was drawn. */
+static int draw_reaching_bands(fs_slice_splat *s, const bands *b, float H, const float *planes, int np)
+{
+    const size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
+    int drawn = 0;
+    for (int k = 0; k < b->nc;) {
+        int run = k;
+        while (run < b->nc && band_reaches(b, run, H, planes, np)) run++;
+        if (run > k && b->start[run] > b->start[k]) {
+            draw_range(s, b->start[k], b->start[run], chunk);
+            s->disks += b->start[run] - b->start[k];
+            drawn = 1;
+        }
+        k = run > k ? run : k + 1;
+    }
+    return drawn;
+}
+
+/* Channel c of the read-back pixels (zeros when nothing was drawn) into grid plane k. */
+static void store_plane(fs_density_grid *g, const plane_axes *a, const float *pix, int c, int k, int drawn)
+{
+    const int w = a->w;
+    int ijk[3];
+    ijk[a->up] = k;
+    for (int j = 0; j < a->h; j++) {
+        ijk[a->bx] = j;
+        ijk[a->ax] = 0;
+        const float *src = pix + (size_t)j * w * 4 + c;
+        if (a->ax == 0) { /* a row of pixels is a row of the grid */
+            float *dst = g->data + fs_density_grid_index(g, ijk[0], ijk[1], ijk[2]);
+            if (drawn) for (int i = 0; i < w; i++) dst[i] = src[4 * i];
+            else memset(dst, 0, (size_t)w * sizeof(float));
+        } else {
+            for (int i = 0; i < w; i++) {
+                ijk[a->ax] = i;
+                g->data[fs_density_grid_index(g, ijk[0], ijk[1], ijk[2])] = drawn ? src[4 * i] : 0.0f;
+            }
+        }
+    }
+}
+
+/* Step 2 for the grid planes k0 .. k0 + np - 1 (np <= 4, one per channel). */
+static void splat_planes(fs_slice_splat *s, fs_density_grid *g, const plane_axes *a, const bands *b, float H, int k0,
+                         int np)
+{
+    const float zero[4] = {0, 0, 0, 0};
+    float planes[4];
+    for (int c = 0; c < 4; c++) planes[c] = g->origin[a->up] + g->spacing * (k0 + c);
+    glClearNamedFramebufferfv(s->fbo, GL_COLOR, 0, zero);
+    glUniform4f(s->u_planes, planes[0], planes[1], planes[2], planes[3]);
+    glUniform2f(s->u_zrange, planes[0], planes[np - 1]);
+    int drawn = draw_reaching_bands(s, b, H, planes, np);
+    if (drawn) glReadPixels(0, 0, a->w, a->h, GL_RGBA, GL_FLOAT, b->pix);
+    for (int c = 0; c < np; c++) store_plane(g, a, b->pix, c, k0 + c, drawn);
+}
+
+int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles *p, const fs_field *f, int up_axis,
+                       int clusters)
+{
+    int rc = check_run(g, f, up_axis, clusters);
+    if (rc) return rc;
+    s->disks = 0;
+    if (p->n == 0) {
+        memset(g->data, 0, fs_density_grid_points(g) * sizeof(float));
+        return FS_OK;
+    }
+    plane_axes a;
+    if ((rc = plane_axes_of(g, up_axis, &a)) || (rc = ensure_target(s, a.w, a.h))) return rc;
+    bands b = {0};
+    if ((rc = alloc_bands(&b, clusters, &a)) || (rc = cluster_upload(s, p, a.up, clusters, b.zb, b.start))) {
+        free_bands(&b);
+        return rc;
+    }
+    begin_splat(s, g, f, &a);
+    const int nplanes = g->dim[a.up];
+    for (int k0 = 0; k0 < nplanes; k0 += 4) splat_planes(s, g, &a, &b, f->H, k0, nplanes - k0 < 4 ? nplanes - k0 : 4);
+    end_splat();
+    free_bands(&b);
     if (glGetError() != GL_NO_ERROR) return fs_fail(FS_ERR_RUNTIME, "slice splat: OpenGL error while splatting");
     return FS_OK;
 }

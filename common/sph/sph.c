@@ -242,87 +242,136 @@ static double fluid_fraction(const fs_sph *s, const fs_grid *g, float x, float y
     return q.w < 0.9 ? q.f / (1 - q.w) : 0;
 }
 
-int fs_sph_measure_state(fs_sph *s, fs_sph_measure *m)
+/* Fluid particles outside the box (or not finite) and the kinetic energy sum. */
+static void count_outside(const fs_sph *s, fs_sph_measure *m)
 {
-    memset(m, 0, sizeof *m);
-    int rc = sync(s);
-    if (rc) return rc;
-    size_t nf = s->nf, nb = s->nb, o = nb;
-    float dx = 2 * s->prm.r;
-    for (size_t i = o; i < o + nf; i++) {
+    for (size_t i = s->nb; i < s->nb + s->nf; i++) {
         int bad = !isfinite(s->x[i]) || !isfinite(s->y[i]) || !isfinite(s->z[i]);
         if (bad || s->x[i] < s->box_lo[0] || s->x[i] > s->box_hi[0] || s->y[i] < s->box_lo[1] ||
             s->y[i] > s->box_hi[1] || s->z[i] < s->box_lo[2] || s->z[i] > s->box_hi[2])
             m->outside++;
         m->kinetic += 0.5 * ((double)s->vx[i] * s->vx[i] + (double)s->vy[i] * s->vy[i] + (double)s->vz[i] * s->vz[i]);
     }
-    if (!nf) return FS_OK;
-    m->kinetic /= nf;
-    if (m->outside) return FS_OK; /* non-finite positions: no grid */
-    int cx = (int)lroundf((s->box_hi[0] - s->box_lo[0]) / dx), cz = (int)lroundf((s->box_hi[2] - s->box_lo[2]) / dx);
-    float *top = malloc((size_t)cx * cz * sizeof *top);
-    if (!top) return fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
-    for (int c = 0; c < cx * cz; c++) top[c] = -INFINITY;
-#define COLUMN(i) (fs_grid_clampi((int)((s->z[i] - s->box_lo[2]) / dx), cz - 1) * cx + \
-                   fs_grid_clampi((int)((s->x[i] - s->box_lo[0]) / dx), cx - 1))
-    for (size_t i = o; i < o + nf; i++) {
-        int c = COLUMN(i);
-        if (s->y[i] > top[c]) top[c] = s->y[i];
+}
+
+/* The floor in columns of dx = 2r, cx x cz, and the highest fluid particle of each. */
+typedef struct columns {
+    float dx;
+    int cx, cz;
+    float *top;
+} columns;
+
+static int column_of(const fs_sph *s, const columns *c, size_t i)
+{
+    return fs_grid_clampi((int)((s->z[i] - s->box_lo[2]) / c->dx), c->cz - 1) * c->cx +
+           fs_grid_clampi((int)((s->x[i] - s->box_lo[0]) / c->dx), c->cx - 1);
+}
+
+static int column_tops(const fs_sph *s, columns *c)
+{
+    c->dx = 2 * s->prm.r;
+    c->cx = (int)lroundf((s->box_hi[0] - s->box_lo[0]) / c->dx);
+    c->cz = (int)lroundf((s->box_hi[2] - s->box_lo[2]) / c->dx);
+    c->top = malloc((size_t)c->cx * c->cz * sizeof *c->top);
+    if (!c->top) return fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
+    for (int k = 0; k < c->cx * c->cz; k++) c->top[k] = -INFINITY;
+    for (size_t i = s->nb; i < s->nb + s->nf; i++) {
+        int k = column_of(s, c, i);
+        if (s->y[i] > c->top[k]) c->top[k] = s->y[i];
     }
-    fs_particles view = {0};
-    view.n = nb + nf;
-    view.x = s->x; view.y = s->y; view.z = s->z;
-    fs_grid g;
-    if ((rc = fs_grid_build(&g, &view, s->H))) { free(top); return rc; }
-    /* Depth: the mean over the floor (columns of 2r) of the free-surface height,
-     * the surface being where the fluid fraction (fluid_fraction) falls to 1/2. By volume
-     * conservation the mean surface height of a single-valued surface is the
-     * water's volume over the floor area whatever waves are still running, and
-     * the fraction does not depend on how the particles stack into layers. (The estimator
-     * before this one, the height where the count per 2r layer from the floor
-     * falls to half a lattice layer, is a median that snaps to layers: on the
-     * settling dam break it swung by up to 11% with the sloshing and read 5-9%
-     * low at 5 s where this one reads 1.5-2% low; see README_sim.) Lone drops (fraction
-     * about 0.2 at their centre) are not surface. */
+    return FS_OK;
+}
+
+/* The free-surface height above the floor at (x, z): marched down from ystart
+ * in steps, then bisected to where the fluid fraction falls to 1/2; 0 for a dry column. */
+static double surface_height(const fs_sph *s, const fs_grid *g, float x, float z, float ystart, float step)
+{
+    float y = ystart;
+    while (y > s->box_lo[1] && fluid_fraction(s, g, x, y, z) < 0.5) y -= step;
+    if (y <= s->box_lo[1]) return 0; /* dry column: height 0 */
+    float a = y, b = y + step; /* fraction(a) >= 1/2 > fraction(b) */
+    for (int it = 0; it < 16; it++) {
+        float mid = 0.5f * (a + b);
+        if (fluid_fraction(s, g, x, mid, z) >= 0.5) a = mid; else b = mid;
+    }
+    return 0.5 * (a + b) - s->box_lo[1];
+}
+
+/* Depth: the mean over the floor (columns of 2r) of the free-surface height,
+ * the surface being where the fluid fraction (fluid_fraction) falls to 1/2. By volume
+ * conservation the mean surface height of a single-valued surface is the
+ * water's volume over the floor area whatever waves are still running, and
+ * the fraction does not depend on how the particles stack into layers. (The estimator
+ * before this one, the height where the count per 2r layer from the floor
+ * falls to half a lattice layer, is a median that snaps to layers: on the
+ * settling dam break it swung by up to 11% with the sloshing and read 5-9%
+ * low at 5 s where this one reads 1.5-2% low; see README_sim.) Lone drops (fraction
+ * about 0.2 at their centre) are not surface. */
+static double mean_depth(const fs_sph *s, const fs_grid *g, const columns *c)
+{
+    const float dx = c->dx;
     float ymax = s->box_lo[1];
-    for (size_t i = o; i < o + nf; i++) ymax = fmaxf(ymax, s->y[i]);
+    for (size_t i = s->nb; i < s->nb + s->nf; i++) ymax = fmaxf(ymax, s->y[i]);
     float ystart = fminf(ymax + s->H, s->box_hi[1]), step = 0.25f * dx;
     double hsum = 0;
-    for (int ck = 0; ck < cz; ck++)
-        for (int ci = 0; ci < cx; ci++) {
+    for (int ck = 0; ck < c->cz; ck++)
+        for (int ci = 0; ci < c->cx; ci++) {
             float x = s->box_lo[0] + (ci + 0.5f) * dx, z = s->box_lo[2] + (ck + 0.5f) * dx;
-            float y = ystart;
-            while (y > s->box_lo[1] && fluid_fraction(s, &g, x, y, z) < 0.5) y -= step;
-            if (y <= s->box_lo[1]) continue; /* dry column: height 0 */
-            float a = y, b = y + step; /* fraction(a) >= 1/2 > fraction(b) */
-            for (int it = 0; it < 16; it++) {
-                float mid = 0.5f * (a + b);
-                if (fluid_fraction(s, &g, x, mid, z) >= 0.5) a = mid; else b = mid;
-            }
-            hsum += 0.5 * (a + b) - s->box_lo[1];
+            hsum += surface_height(s, g, x, z, ystart, step);
         }
-    m->depth = hsum / ((double)cx * cz);
-    m->depth_expected = (double)nf * dx * dx * dx / ((double)(s->box_hi[0] - s->box_lo[0]) * (s->box_hi[2] - s->box_lo[2]));
+    return hsum / ((double)c->cx * c->cz);
+}
+
+/* Interior: at least H below the surface of every column within H of column k. */
+static int is_interior(const fs_sph *s, const columns *c, int k, float y)
+{
+    int ci = k % c->cx, ck = k / c->cx, w = (int)ceilf(s->H / c->dx);
+    float lowest = INFINITY;
+    for (int kk = ck - w; kk <= ck + w; kk++)
+        for (int ii = ci - w; ii <= ci + w; ii++)
+            if (ii >= 0 && kk >= 0 && ii < c->cx && kk < c->cz) lowest = fminf(lowest, c->top[kk * c->cx + ii]);
+    return y + s->H <= lowest;
+}
+
+/* The mean density excess over all fluid particles, the mean absolute error
+ * over the interior ones. */
+static void density_errors(const fs_sph *s, const fs_grid *g, const columns *c, fs_sph_measure *m)
+{
     double err = 0, aerr = 0;
     size_t ninner = 0;
-    for (size_t i = o; i < o + nf; i++) {
+    for (size_t i = s->nb; i < s->nb + s->nf; i++) {
         float x[3] = {s->x[i], s->y[i], s->z[i]};
-        dsum q = {s, &g, 0};
-        fs_grid_query(&g, x, s->H, dvisit, &q);
+        dsum q = {s, g, 0};
+        fs_grid_query(g, x, s->H, dvisit, &q);
         double e = q.rho / s->prm.rho0 - 1;
         err += e > 0 ? e : 0;
-        /* Interior: at least H below the surface of every column within H. */
-        int c = COLUMN(i), ci = c % cx, ck = c / cx, w = (int)ceilf(s->H / dx);
-        float lowest = INFINITY;
-        for (int kk = ck - w; kk <= ck + w; kk++)
-            for (int ii = ci - w; ii <= ci + w; ii++)
-                if (ii >= 0 && kk >= 0 && ii < cx && kk < cz) lowest = fminf(lowest, top[kk * cx + ii]);
-        if (s->y[i] + s->H <= lowest) { aerr += fabs(e); ninner++; }
+        if (is_interior(s, c, column_of(s, c, i), s->y[i])) { aerr += fabs(e); ninner++; }
     }
-#undef COLUMN
-    m->density_err = err / nf;
+    m->density_err = err / s->nf;
     m->density_abs_err = ninner ? aerr / ninner : 0;
+}
+
+int fs_sph_measure_state(fs_sph *s, fs_sph_measure *m)
+{
+    memset(m, 0, sizeof *m);
+    int rc = sync(s);
+    if (rc) return rc;
+    count_outside(s, m);
+    if (!s->nf) return FS_OK;
+    m->kinetic /= s->nf;
+    if (m->outside) return FS_OK; /* non-finite positions: no grid */
+    columns c;
+    if ((rc = column_tops(s, &c))) return rc;
+    fs_particles view = {0};
+    view.n = s->nb + s->nf;
+    view.x = s->x; view.y = s->y; view.z = s->z;
+    fs_grid g;
+    if ((rc = fs_grid_build(&g, &view, s->H))) { free(c.top); return rc; }
+    m->depth = mean_depth(s, &g, &c);
+    float dx = c.dx;
+    m->depth_expected = (double)s->nf * dx * dx * dx / ((double)(s->box_hi[0] - s->box_lo[0]) * (s->box_hi[2] - s->box_lo[2]));
+    density_errors(s, &g, &c, m);
     fs_grid_free(&g);
-    free(top);
+    free(c.top);
     return FS_OK;
 }

@@ -155,66 +155,98 @@ static int json_scene(const char *path, scene_def *d, float r)
     return FS_OK;
 }
 
-int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
+/* The scene by name: a .json file (parsed into js) or a built-in one. */
+static int find_scene(fs_sph *s, const char *name, scene_def *js, const scene_def **d)
 {
-    const scene_def *d = NULL;
-    scene_def js;
+    *d = NULL;
     size_t len = strlen(name);
     if (len > 5 && !strcmp(name + len - 5, ".json")) {
-        int rc = json_scene(name, &js, s->prm.r);
+        int rc = json_scene(name, js, s->prm.r);
         if (rc) return rc;
-        d = &js;
+        *d = js;
     }
-    for (size_t i = 0; !d && i < sizeof scenes / sizeof *scenes; i++)
-        if (!strcmp(scenes[i].name, name)) d = &scenes[i];
-    if (!d)
+    for (size_t i = 0; !*d && i < sizeof scenes / sizeof *scenes; i++)
+        if (!strcmp(scenes[i].name, name)) *d = &scenes[i];
+    if (!*d)
         return fs_fail(FS_ERR_INPUT, "%s: unknown scene (dam_break, double_dam_break, drop, spouts, pool, or a .json)", name);
-    if (!particles) particles = d->default_n;
-    float r = s->prm.r, dx = 2 * r;
-    /* Scale so that the fluid volume at rest holds `particles` lattice sites. */
+    return FS_OK;
+}
+
+/* The scene scaled by sc on the lattice of spacing dx = 2r: nc[a] sites along
+ * axis a inside the box, two more layers of boundary around it. */
+typedef struct lattice {
+    float r, dx, sc;
+    int nc[3];
+} lattice;
+
+/* Scales the scene so that its fluid volume at rest holds `particles` lattice
+ * sites; sets the box. */
+static int scale_tank(fs_sph *s, const scene_def *d, const char *name, size_t particles, lattice *l)
+{
+    l->r = s->prm.r;
+    l->dx = 2 * l->r;
+    const float dx = l->dx;
     double vol = 0;
     for (int i = 0; i < d->nreg; i++) vol += region_volume(&d->reg[i]);
     vol /= d->fill;
-    float sc = (float)cbrt((double)particles * dx * dx * dx / vol);
-    int nc[3];
+    l->sc = (float)cbrt((double)particles * dx * dx * dx / vol);
     for (int a = 0; a < 3; a++) {
-        nc[a] = (int)lroundf(d->box[a] * sc / dx);
-        if (nc[a] < 4) nc[a] = 4;
+        l->nc[a] = (int)lroundf(d->box[a] * l->sc / dx);
+        if (l->nc[a] < 4) l->nc[a] = 4;
         s->box_lo[a] = 0;
-        s->box_hi[a] = nc[a] * dx;
+        s->box_hi[a] = l->nc[a] * dx;
     }
-    if ((double)nc[0] * nc[1] * nc[2] > 4e8) return fs_fail(FS_ERR_INPUT, "%s: %zu particles: too many", name, particles);
-    /* Count the fluid lattice sites and the boundary shell. */
-    size_t nfluid = 0, nb = 0;
-    for (int k = -2; k < nc[2] + 2; k++)
-        for (int j = -2; j < nc[1] + 2; j++)
-            for (int i = -2; i < nc[0] + 2; i++) {
-                int inside = i >= 0 && j >= 0 && k >= 0 && i < nc[0] && j < nc[1] && k < nc[2];
-                if (!inside) { nb++; continue; }
-                float p[3] = {r + i * dx, r + j * dx, r + k * dx};
-                for (int g = 0; g < d->nreg; g++)
-                    if (in_region(&d->reg[g], sc, p)) { nfluid++; break; }
+    if ((double)l->nc[0] * l->nc[1] * l->nc[2] > 4e8) return fs_fail(FS_ERR_INPUT, "%s: %zu particles: too many", name, particles);
+    return FS_OK;
+}
+
+/* Lattice site (i, j, k): its position p; whether it lies inside the box. */
+static int lattice_site(const lattice *l, int i, int j, int k, float p[3])
+{
+    p[0] = l->r + i * l->dx;
+    p[1] = l->r + j * l->dx;
+    p[2] = l->r + k * l->dx;
+    return i >= 0 && j >= 0 && k >= 0 && i < l->nc[0] && j < l->nc[1] && k < l->nc[2];
+}
+
+/* The first fluid region holding p, d->nreg if none. */
+static int region_of(const scene_def *d, float sc, const float p[3])
+{
+    int g = 0;
+    while (g < d->nreg && !in_region(&d->reg[g], sc, p)) g++;
+    return g;
+}
+
+/* Counts the fluid lattice sites and the boundary shell. */
+static void count_sites(const scene_def *d, const lattice *l, size_t *nfluid, size_t *nb)
+{
+    *nfluid = *nb = 0;
+    for (int k = -2; k < l->nc[2] + 2; k++)
+        for (int j = -2; j < l->nc[1] + 2; j++)
+            for (int i = -2; i < l->nc[0] + 2; i++) {
+                float p[3];
+                if (!lattice_site(l, i, j, k, p)) (*nb)++;
+                else if (region_of(d, l->sc, p) < d->nreg) (*nfluid)++;
             }
-    if (!nfluid) return fs_fail(FS_ERR_INPUT, "%s: no fluid inside the box", name);
-    size_t cap = nfluid;
-    if (d->nspouts) cap = nfluid + (size_t)((double)particles * (1 - d->fill));
-    int rc = fs_sph_alloc(s, nb, cap);
-    if (rc) return rc;
-    size_t b = 0, f = nb;
+}
+
+/* Places the boundary particles at [0, nb) and the fluid after them; returns
+ * the height of the highest fluid particle. */
+static float place_particles(fs_sph *s, const scene_def *d, const lattice *l)
+{
+    size_t b = 0, f = s->nb;
     float top = 0;
-    for (int k = -2; k < nc[2] + 2; k++)
-        for (int j = -2; j < nc[1] + 2; j++)
-            for (int i = -2; i < nc[0] + 2; i++) {
-                int inside = i >= 0 && j >= 0 && k >= 0 && i < nc[0] && j < nc[1] && k < nc[2];
-                float p[3] = {r + i * dx, r + j * dx, r + k * dx};
+    for (int k = -2; k < l->nc[2] + 2; k++)
+        for (int j = -2; j < l->nc[1] + 2; j++)
+            for (int i = -2; i < l->nc[0] + 2; i++) {
+                float p[3];
                 size_t o;
-                if (!inside) {
+                if (!lattice_site(l, i, j, k, p)) {
                     o = b++;
                     s->phase[o] = -1;
-                    s->m[o] = s->mass; /* Psi_b: see below */
+                    s->m[o] = s->mass; /* Psi_b: see fs_sph_scene_build */
                 } else {
-                    int g = 0;
-                    while (g < d->nreg && !in_region(&d->reg[g], sc, p)) g++;
+                    int g = region_of(d, l->sc, p);
                     if (g == d->nreg) continue;
                     o = f++;
                     s->phase[o] = d->reg[g].phase;
@@ -223,10 +255,13 @@ int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
                 }
                 s->x[o] = p[0]; s->y[o] = p[1]; s->z[o] = p[2];
             }
-    s->nf = nfluid;
-    s->ncolors = d->ncolors;
-    memcpy(s->colors, palette, sizeof palette);
-    /* Spouts: corners at 1.2 m, pointing at the middle and a little down. */
+    return top;
+}
+
+/* Spouts: corners at 1.2 m, pointing at the middle and a little down. Returns
+ * the largest expected speed: the fall from `top` or a spout's jet. */
+static float place_spouts(fs_sph *s, const scene_def *d, float sc, float top)
+{
     s->nspouts = d->nspouts;
     float vexp = sqrtf(2 * s->prm.gravity * top);
     for (int q = 0; q < d->nspouts; q++) {
@@ -243,6 +278,29 @@ int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
         float v = sp->speed + sqrtf(2 * s->prm.gravity * sp->pos[1]);
         if (v > vexp) vexp = v;
     }
+    return vexp;
+}
+
+int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
+{
+    const scene_def *d;
+    scene_def js;
+    lattice l;
+    int rc = find_scene(s, name, &js, &d);
+    if (rc) return rc;
+    if (!particles) particles = d->default_n;
+    if ((rc = scale_tank(s, d, name, particles, &l))) return rc;
+    size_t nfluid, nb;
+    count_sites(d, &l, &nfluid, &nb);
+    if (!nfluid) return fs_fail(FS_ERR_INPUT, "%s: no fluid inside the box", name);
+    size_t cap = nfluid;
+    if (d->nspouts) cap = nfluid + (size_t)((double)particles * (1 - d->fill));
+    if ((rc = fs_sph_alloc(s, nb, cap))) return rc;
+    float top = place_particles(s, d, &l);
+    s->nf = nfluid;
+    s->ncolors = d->ncolors;
+    memcpy(s->colors, palette, sizeof palette);
+    float vexp = place_spouts(s, d, l.sc, top);
     /* Weakly compressible: a sound speed 10x the largest expected speed keeps
      * density variations near 1% (Mach 0.1). */
     if (!(s->prm.c > 0)) s->prm.c = 10 * vexp;

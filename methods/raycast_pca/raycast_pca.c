@@ -6,6 +6,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_grid.h"
+#include "gl_stage.h"
 #include "gl_sprites.h"
 #include "gl_gbuffer.h"
 #include "method.h"
@@ -145,6 +146,13 @@ static void dispatch(const fs_camera *cam)
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
+/* xiao2017's passes, in the order render() runs them (defined below it). */
+static void entry_pass(rpca *s, const fs_camera *cam, float splat_r);
+static void march_pass(rpca *s, const fs_camera *cam);
+static void normals_pass(rpca *s, const fs_camera *cam);
+static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16]);
+static void thickness_pass(rpca *s, const fs_camera *cam, float splat_r, fs_stages *t, double start);
+
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
     rpca *s = self;
@@ -158,6 +166,20 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 
     glFinish();
     double t0 = fs_now_ms();
+    entry_pass(s, cam, splat_r);
+    double t1 = fs_gl_stage_end(t, "splat", t0);
+    march_pass(s, cam);
+    double t2 = fs_gl_stage_end(t, "march", t1);
+    normals_pass(s, cam);
+    double t3 = fs_gl_stage_end(t, "normals", t2);
+    filter_pass(s, cam, proj);
+    double t4 = fs_gl_stage_end(t, "filter", t3);
+    thickness_pass(s, cam, splat_r, t, t4);
+    return fs_gl_target_read_timed(&s->target, out, t);
+}
+
+static void entry_pass(rpca *s, const fs_camera *cam, float splat_r)
+{
     /* 3.1 ray entry: nearest sphere per pixel, hardware depth test. */
     fs_gl_target_clear(&s->target);
     fs_gl_target_begin_surface(&s->target);
@@ -166,11 +188,13 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     draw_spheres(s);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
-    glFinish();
-    double t1 = fs_now_ms();
-    fs_stages_add(t, "splat", t1 - t0);
+}
 
+static void march_pass(rpca *s, const fs_camera *cam)
+{
     /* 3.2 iso-surface by narrow-band ray casting. */
+    const fs_field *f = &s->f;
+    const float r = f->r;
     unsigned P = s->prog_march;
     fs_gl_grid_bind(&s->gg, P);
     fs_gl_camera_uniforms(P, cam);
@@ -186,12 +210,14 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glBindImageTexture(1, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(2, s->tex_hit, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch(cam);
-    glFinish();
-    double t2 = fs_now_ms();
-    fs_stages_add(t, "march", t2 - t1);
+}
 
+static void normals_pass(rpca *s, const fs_camera *cam)
+{
     /* 3.3 normals (and colour, eye depth). */
-    P = s->prog_normals;
+    const fs_field *f = &s->f;
+    const float r = f->r;
+    unsigned P = s->prog_normals;
     fs_gl_grid_bind(&s->gg, P);
     fs_gl_camera_uniforms(P, cam);
     glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
@@ -209,12 +235,13 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glBindImageTexture(2, s->tex_raw, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(3, s->target.tex[FS_TARGET_COLOR], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch(cam);
-    glFinish();
-    double t3 = fs_now_ms();
-    fs_stages_add(t, "normals", t3 - t2);
+}
 
+static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16])
+{
     /* Bilateral Gaussian filter of the normal map (a copy when off). */
-    P = s->prog_filter;
+    const float r = s->f.r;
+    unsigned P = s->prog_filter;
     glUseProgram(P);
     glUniform1i(glGetUniformLocation(P, "u_enable"), s->params.normal_filter != 0);
     glUniform1f(glGetUniformLocation(P, "u_focal_px"), proj[5] * 0.5f * (float)cam->height);
@@ -226,10 +253,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glBindImageTexture(1, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(2, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch(cam);
-    glFinish();
-    double t4 = fs_now_ms();
-    fs_stages_add(t, "filter", t4 - t3);
+}
 
+static void thickness_pass(rpca *s, const fs_camera *cam, float splat_r, fs_stages *t, double start)
+{
     /* 3.4 thickness: additive sphere splatting (chord lengths). */
     if (s->params.thickness != 0) {
         fs_gl_target_begin_thickness(&s->target);
@@ -237,10 +264,8 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
         draw_spheres(s);
         fs_gl_target_end_pass();
-        glFinish();
-        fs_stages_add(t, "thickness", fs_now_ms() - t4);
+        fs_gl_stage_end(t, "thickness", start);
     }
-    return fs_gl_target_read_timed(&s->target, out, t);
 }
 
 const fs_method fs_method_raycast_pca = {

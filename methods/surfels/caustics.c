@@ -206,46 +206,122 @@ static void draw_chunked(unsigned buf, size_t n, size_t stride)
     }
 }
 
-/* Step 1: splat the surfels onto the virtual screen, normalise, read back. */
-static void screen_pass(fs_caustics *c, const fs_caustics_setup *s, unsigned ssbo, size_t n, const float ea[3],
-                        const float eb[3], const float eu[3], float tfar)
+static int ensure_tris(fs_caustics *c, size_t n)
+{
+    if (n <= c->tris_cap) return FS_OK;
+    float *t = realloc(c->tris, n * TRI_VEC4 * 4 * sizeof *t);
+    if (!t) return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (%zu triangles)", n);
+    c->tris = t;
+    c->tris_cap = n;
+    return FS_OK;
+}
+
+/* The light's frame: up the vertical axis, ax and bx the horizontal axes a and b
+ * (u and v of the screen and the planes; unit vectors ea, eb, eu), L the unit
+ * direction towards the light, tfar the depth range of the virtual screen. */
+typedef struct light_frame {
+    int up, ax, bx;
+    float ea[3], eb[3], eu[3];
+    double L[3];
+    float tfar;
+} light_frame;
+
+/* The water-surface triangles whose refracted sweeps are the illumination
+ * volumes: pixel index triples of the virtual screen, and their areas S. */
+typedef struct water_tris {
+    uint32_t *idx;
+    double *area;
+    size_t n;
+} water_tris;
+
+/* The size along horizontal axis 0 (a) or 1 (b) of one of res cells across the rectangle. */
+static double cell_size(const fs_caustics_setup *s, int axis, int res)
+{
+    return ((double)s->rect_max[axis] - s->rect_min[axis]) / res;
+}
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Checks the setup and copies it to s with light_dir made unit; sizes the
+ * virtual screen and the sample planes. */
+static int begin_run(fs_caustics *c, const fs_caustics_setup *setup, fs_caustics_setup *s)
+{
+    int rc = check_setup(setup);
+    if (rc) return rc;
+    *s = *setup;
+    float len = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] + s->light_dir[2] * s->light_dir[2]);
+    for (int k = 0; k < 3; k++) s->light_dir[k] /= len;
+    if ((rc = ensure_screen(c, s->screen_res)) || (rc = ensure_planes(c, s->plane_res, s->nplanes))) return rc;
+    return FS_OK;
+}
+
+static void light_frame_of(const fs_caustics_setup *s, light_frame *f)
+{
+    f->up = s->up_axis;
+    f->ax = (f->up + 1) % 3;
+    f->bx = (f->up + 2) % 3;
+    for (int k = 0; k < 3; k++) {
+        f->ea[k] = f->eb[k] = f->eu[k] = 0.0f;
+        f->L[k] = s->light_dir[k];
+    }
+    f->ea[f->ax] = f->eb[f->bx] = f->eu[f->up] = 1.0f;
+    float lowest = s->plane_height[0];
+    for (int k = 1; k < s->nplanes; k++) lowest = fminf(lowest, s->plane_height[k]);
+    /* depth range: down to twice the deepest plane (depths beyond clamp to 1) */
+    f->tfar = 2.0f * (s->top - lowest) / (float)f->L[f->up];
+}
+
+static void set_screen_uniforms(unsigned p, const fs_caustics_setup *s, const light_frame *f, float eps)
 {
     int res = s->screen_res;
     float size[2] = {s->rect_max[0] - s->rect_min[0], s->rect_max[1] - s->rect_min[1]};
+    glUseProgram(p);
+    glUniform3fv(glGetUniformLocation(p, "u_light"), 1, s->light_dir);
+    glUniform3fv(glGetUniformLocation(p, "u_ea"), 1, f->ea);
+    glUniform3fv(glGetUniformLocation(p, "u_eb"), 1, f->eb);
+    glUniform3fv(glGetUniformLocation(p, "u_eu"), 1, f->eu);
+    glUniform2f(glGetUniformLocation(p, "u_rect_min"), s->rect_min[0], s->rect_min[1]);
+    glUniform2f(glGetUniformLocation(p, "u_rect_size"), size[0], size[1]);
+    glUniform2f(glGetUniformLocation(p, "u_pix"), size[0] / res, size[1] / res);
+    glUniform1f(glGetUniformLocation(p, "u_top"), s->top);
+    glUniform1f(glGetUniformLocation(p, "u_tfar"), f->tfar);
+    glUniform1f(glGetUniformLocation(p, "u_eps"), eps);
+}
+
+/* Pass 0: depth only, with the epsilon offset; pass 1: blend what passes the
+ * depth test, no depth writes. */
+static void set_screen_pass_state(int pass)
+{
+    if (!pass) {
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glDisable(GL_BLEND);
+    } else {
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    }
+}
+
+/* Step 1 (5.2): the surfels splatted onto the virtual screen along the light
+ * with Gaussian weights, summing g n and g d (eq. 3) where visible. */
+static void splat_screen(fs_caustics *c, const fs_caustics_setup *s, const light_frame *f, unsigned ssbo, size_t n)
+{
     const float zero[4] = {0, 0, 0, 0}, one = 1.0f;
     glClearNamedFramebufferfv(c->screen_fbo, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(c->screen_fbo, GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(c->screen_fbo, GL_DEPTH, 0, &one);
     glBindFramebuffer(GL_FRAMEBUFFER, c->screen_fbo);
-    glViewport(0, 0, res, res);
+    glViewport(0, 0, s->screen_res, s->screen_res);
     glBindVertexArray(c->vao);
     glEnable(GL_DEPTH_TEST);
     for (int pass = 0; pass < 2 && n; pass++) {
-        unsigned p = pass ? c->prog_splat : c->prog_depth;
-        glUseProgram(p);
-        glUniform3fv(glGetUniformLocation(p, "u_light"), 1, s->light_dir);
-        glUniform3fv(glGetUniformLocation(p, "u_ea"), 1, ea);
-        glUniform3fv(glGetUniformLocation(p, "u_eb"), 1, eb);
-        glUniform3fv(glGetUniformLocation(p, "u_eu"), 1, eu);
-        glUniform2f(glGetUniformLocation(p, "u_rect_min"), s->rect_min[0], s->rect_min[1]);
-        glUniform2f(glGetUniformLocation(p, "u_rect_size"), size[0], size[1]);
-        glUniform2f(glGetUniformLocation(p, "u_pix"), size[0] / res, size[1] / res);
-        glUniform1f(glGetUniformLocation(p, "u_top"), s->top);
-        glUniform1f(glGetUniformLocation(p, "u_tfar"), tfar);
-        glUniform1f(glGetUniformLocation(p, "u_eps"), c->eps_radii);
-        if (!pass) { /* pass 1: depth only, with the epsilon offset */
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            glDepthMask(GL_TRUE);
-            glDepthFunc(GL_LESS);
-            glDisable(GL_BLEND);
-        } else { /* pass 2: blend what passes the depth test, no depth writes */
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glDepthMask(GL_FALSE);
-            glDepthFunc(GL_LEQUAL);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunc(GL_ONE, GL_ONE);
-        }
+        set_screen_uniforms(pass ? c->prog_splat : c->prog_depth, s, f, c->eps_radii);
+        set_screen_pass_state(pass);
         draw_chunked(ssbo, n, sizeof(fs_surfel));
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -254,7 +330,12 @@ static void screen_pass(fs_caustics *c, const fs_caustics_setup *s, unsigned ssb
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    /* per-pixel normalisation */
+}
+
+/* Step 1 (5.2): eq. 3's per-pixel normalisation, n(x,y) and d(x,y), read back
+ * to c->screen. */
+static void normalise_screen(fs_caustics *c, int res)
+{
     glUseProgram(c->prog_norm);
     glUniform1i(glGetUniformLocation(c->prog_norm, "u_res"), res);
     glUniform1f(glGetUniformLocation(c->prog_norm, "u_wmin"), W_MIN);
@@ -267,81 +348,79 @@ static void screen_pass(fs_caustics *c, const fs_caustics_setup *s, unsigned ssb
     glGetTextureImage(c->screen_out, 0, GL_RGBA, GL_FLOAT, (GLsizei)((size_t)res * res * 4 * sizeof(float)), c->screen);
 }
 
-static int ensure_tris(fs_caustics *c, size_t n)
+/* One pixel of the virtual screen, px = (n, d), at screen point P: v gets the
+ * surface point s = P - d L, the refracted direction t (unit), cos(theta_i) T
+ * (times L_i per channel later), d, and 1; v[8] = 0 where the pixel is uncovered. */
+static void surface_point(const float px[4], const double P[3], const double L[3], double ior, double *v)
 {
-    if (n <= c->tris_cap) return FS_OK;
-    float *t = realloc(c->tris, n * TRI_VEC4 * 4 * sizeof *t);
-    if (!t) return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (%zu triangles)", n);
-    c->tris = t;
-    c->tris_cap = n;
-    return FS_OK;
+    v[8] = 0;
+    if (!(px[3] >= 0.0f) || !isfinite(px[0] + px[1] + px[2] + px[3])) return;
+    const double eta = 1.0 / ior;
+    double nrm[3] = {px[0], px[1], px[2]}, d = px[3];
+    double ci = dot3(nrm, L);
+    if (ci < 0) ci = 0;
+    double st2 = eta * eta * (1.0 - ci * ci), ct = sqrt(1.0 - st2);
+    for (int k = 0; k < 3; k++) {
+        v[k] = P[k] - d * L[k];                             /* s */
+        v[3 + k] = -eta * L[k] + (eta * ci - ct) * nrm[k]; /* refracted, unit */
+    }
+    v[6] = ci * fresnel_t(ci, ct, ior);
+    v[7] = d;
+    v[8] = 1;
 }
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned surfel_ssbo, size_t n)
+/* Step 2 (5.2): per screen pixel P(x,y), the surface point s(x,y) and the
+ * refracted direction of the incident light there, into c->vtx. */
+static void surface_points(fs_caustics *c, const fs_caustics_setup *s, const light_frame *f)
 {
-    int rc = check_setup(setup);
-    if (rc) return rc;
-    fs_caustics_setup copy = *setup, *s = &copy; /* light_dir made unit */
-    float len = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] + s->light_dir[2] * s->light_dir[2]);
-    for (int k = 0; k < 3; k++) s->light_dir[k] /= len;
-    if ((rc = ensure_screen(c, s->screen_res)) || (rc = ensure_planes(c, s->plane_res, s->nplanes))) return rc;
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    while (glGetError() != GL_NO_ERROR) {}
-
-    const int up = s->up_axis, ax = (up + 1) % 3, bx = (up + 2) % 3;
-    float ea[3] = {0, 0, 0}, eb[3] = {0, 0, 0}, eu[3] = {0, 0, 0};
-    ea[ax] = eb[bx] = eu[up] = 1.0f;
-    const double L[3] = {s->light_dir[0], s->light_dir[1], s->light_dir[2]};
-    const double Lu = L[up];
-    float lowest = s->plane_height[0];
-    for (int k = 1; k < s->nplanes; k++) lowest = fminf(lowest, s->plane_height[k]);
-    /* depth range: down to twice the deepest plane (depths beyond clamp to 1) */
-    float tfar = 2.0f * (s->top - lowest) / (float)Lu;
-
-    /* 1. virtual screen */
-    screen_pass(c, s, surfel_ssbo, n, ea, eb, eu, tfar);
-
-    /* 2. per pixel: surface point s, refracted direction t, E = L_i cos T (mean over RGB below) */
     const int res = s->screen_res;
-    const double pa = ((double)s->rect_max[0] - s->rect_min[0]) / res, pb = ((double)s->rect_max[1] - s->rect_min[1]) / res;
-    const double eta = 1.0 / s->ior;
-    const double lmean = (s->light_color[0] + s->light_color[1] + s->light_color[2]) / 3.0;
+    const double pa = cell_size(s, 0, res), pb = cell_size(s, 1, res);
     for (int j = 0; j < res; j++)
         for (int i = 0; i < res; i++) {
-            const float *px = c->screen + 4 * ((size_t)j * res + i);
-            double *v = c->vtx + VTX * ((size_t)j * res + i);
-            v[8] = 0;
-            if (!(px[3] >= 0.0f) || !isfinite(px[0] + px[1] + px[2] + px[3])) continue;
             double P[3];
-            P[ax] = s->rect_min[0] + (i + 0.5) * pa;
-            P[bx] = s->rect_min[1] + (j + 0.5) * pb;
-            P[up] = s->top;
-            double nrm[3] = {px[0], px[1], px[2]}, d = px[3];
-            double ci = dot3(nrm, L);
-            if (ci < 0) ci = 0;
-            double st2 = eta * eta * (1.0 - ci * ci), ct = sqrt(1.0 - st2);
-            for (int k = 0; k < 3; k++) {
-                v[k] = P[k] - d * L[k];                                    /* s */
-                v[3 + k] = -eta * L[k] + (eta * ci - ct) * nrm[k];        /* refracted, unit */
-            }
-            double tr = fresnel_t(ci, ct, s->ior);
-            v[6] = ci * tr; /* times L_i per channel */
-            v[7] = d;
-            v[8] = 1;
+            P[f->ax] = s->rect_min[0] + (i + 0.5) * pa;
+            P[f->bx] = s->rect_min[1] + (j + 0.5) * pb;
+            P[f->up] = s->top;
+            size_t q = (size_t)j * res + i;
+            surface_point(c->screen + 4 * q, P, f->L, s->ior, c->vtx + VTX * q);
         }
+}
 
-    /* 3. illumination volumes: water triangles, cut by each plane */
-    const double jump = c->max_jump_px * fmax(pa, pb);
+/* Whether three pixels make a water triangle: all covered, and their depths
+ * along the light within jump (else it straddles a depth discontinuity). */
+static int is_water_triangle(const double *v0, const double *v1, const double *v2, double jump)
+{
+    if (!v0[8] || !v1[8] || !v2[8]) return 0;
+    double dmin = fmin(v0[7], fmin(v1[7], v2[7])), dmax = fmax(v0[7], fmax(v1[7], v2[7]));
+    return !(dmax - dmin > jump);
+}
+
+/* The area S of the triangle of surface points v0, v1, v2. */
+static double triangle_area(const double *v0, const double *v1, const double *v2)
+{
+    double e1[3], e2[3], cr[3];
+    for (int k = 0; k < 3; k++) { e1[k] = v1[k] - v0[k]; e2[k] = v2[k] - v0[k]; }
+    cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    return 0.5 * sqrt(dot3(cr, cr));
+}
+
+/* Step 2 (5.2): the illumination volumes, swept from the water triangles
+ * (x,y),(x+1,y),(x,y+1) and (x+1,y+1),(x+1,y),(x,y+1) of covered pixels; sets
+ * c->ntri and c->flux_in. On failure w holds nothing. */
+static int illumination_volumes(fs_caustics *c, const fs_caustics_setup *s, water_tris *w)
+{
+    const int res = s->screen_res;
+    const double jump = c->max_jump_px * fmax(cell_size(s, 0, res), cell_size(s, 1, res));
+    const double lmean = (s->light_color[0] + s->light_color[1] + s->light_color[2]) / 3.0;
     const size_t maxtri = 2 * (size_t)(res - 1) * (res - 1);
-    if ((rc = ensure_tris(c, maxtri))) return rc;
-    /* the water triangles that pass, as pixel index triples, and their areas S */
-    uint32_t *idx = malloc(maxtri * 3 * sizeof *idx);
-    double *area = malloc(maxtri * sizeof *area);
-    if (!idx || !area) { free(idx); free(area); return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory"); }
-    size_t nt = 0;
+    int rc = ensure_tris(c, maxtri);
+    if (rc) return rc;
+    w->idx = malloc(maxtri * 3 * sizeof *w->idx);
+    w->area = malloc(maxtri * sizeof *w->area);
+    if (!w->idx || !w->area) { free(w->idx); free(w->area); return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory"); }
+    w->n = 0;
     double flux_in = 0;
     for (int j = 0; j + 1 < res; j++)
         for (int i = 0; i + 1 < res; i++) {
@@ -350,26 +429,101 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
             const uint32_t tri[2][3] = {{q[0], q[1], q[2]}, {q[3], q[1], q[2]}};
             for (int h = 0; h < 2; h++) {
                 const double *v0 = c->vtx + VTX * tri[h][0], *v1 = c->vtx + VTX * tri[h][1], *v2 = c->vtx + VTX * tri[h][2];
-                if (!v0[8] || !v1[8] || !v2[8]) continue;
-                double dmin = fmin(v0[7], fmin(v1[7], v2[7])), dmax = fmax(v0[7], fmax(v1[7], v2[7]));
-                if (dmax - dmin > jump) continue; /* straddles a depth discontinuity */
-                double e1[3], e2[3], cr[3];
-                for (int k = 0; k < 3; k++) { e1[k] = v1[k] - v0[k]; e2[k] = v2[k] - v0[k]; }
-                cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
-                cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
-                cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-                double S = 0.5 * sqrt(dot3(cr, cr));
-                memcpy(idx + 3 * nt, tri[h], sizeof tri[h]);
-                area[nt++] = S;
-                flux_in += S * lmean * (v0[6] + v1[6] + v2[6]) / 3.0;
+                if (!is_water_triangle(v0, v1, v2, jump)) continue;
+                memcpy(w->idx + 3 * w->n, tri[h], sizeof tri[h]);
+                w->area[w->n] = triangle_area(v0, v1, v2);
+                flux_in += w->area[w->n++] * lmean * (v0[6] + v1[6] + v2[6]) / 3.0;
             }
         }
-    c->ntri = nt;
+    c->ntri = w->n;
     c->flux_in = flux_in;
+    return FS_OK;
+}
 
+/* Where the illumination volume of water triangle tri meets the sample plane at
+ * height h: per vertex the plane point in texels (texel = texel sizes) and eq.
+ * 2's L_i cos T exp(-c l_q); 0 where a vertex is not above the plane or its
+ * refracted ray does not go down. */
+static int plane_triangle(const fs_caustics *c, const fs_caustics_setup *s, const light_frame *f, const uint32_t tri[3],
+                          double h, const double texel[2], double uv[3][2], double E[3][3])
+{
+    for (int a = 0; a < 3; a++) {
+        const double *v = c->vtx + VTX * tri[a];
+        double tu = v[3 + f->up], su = v[f->up] - h;
+        if (!(su > 0) || !(tu < -1e-6)) return 0;
+        double lam = su / -tu; /* path length in water (t is unit) */
+        uv[a][0] = (v[f->ax] + lam * v[3 + f->ax] - s->rect_min[0]) / texel[0];
+        uv[a][1] = (v[f->bx] + lam * v[3 + f->bx] - s->rect_min[1]) / texel[1];
+        for (int ch = 0; ch < 3; ch++) E[a][ch] = s->light_color[ch] * v[6] * exp(-(double)s->extinction[ch] * lam);
+    }
+    return 1;
+}
+
+/* Whether a plane triangle (in texels) can touch a plane of res^2 texels. */
+static int on_plane(const double uv[3][2], int res)
+{
+    double lo0 = fmin(uv[0][0], fmin(uv[1][0], uv[2][0])), hi0 = fmax(uv[0][0], fmax(uv[1][0], uv[2][0]));
+    double lo1 = fmin(uv[0][1], fmin(uv[1][1], uv[2][1])), hi1 = fmax(uv[0][1], fmax(uv[1][1], uv[2][1]));
+    return !(hi0 < 0 || hi1 < 0 || lo0 > res || lo1 > res || !isfinite(hi0 - lo0 + hi1 - lo1));
+}
+
+/* One plane triangle as caustic_accum.vert.glsl reads it: a corner, two edges,
+ * S in texel areas, and the three vertices' intensities. */
+static void pack_triangle(float *o, const double uv[3][2], const double E[3][3], double area_texels)
+{
+    o[0] = (float)uv[0][0];
+    o[1] = (float)uv[0][1];
+    o[2] = (float)(uv[1][0] - uv[0][0]);
+    o[3] = (float)(uv[1][1] - uv[0][1]);
+    o[4] = (float)(uv[2][0] - uv[0][0]);
+    o[5] = (float)(uv[2][1] - uv[0][1]);
+    o[6] = (float)area_texels;
+    o[7] = 0;
+    for (int a = 0; a < 3; a++) {
+        for (int ch = 0; ch < 3; ch++) o[8 + 4 * a + ch] = (float)E[a][ch];
+        o[8 + 4 * a + 3] = 0;
+    }
+}
+
+/* The intersection triangles of the illumination volumes with the sample plane
+ * at height h, packed into c->tris; returns how many. */
+static size_t cut_plane(fs_caustics *c, const fs_caustics_setup *s, const light_frame *f, const water_tris *w, double h)
+{
     const int pres = s->plane_res;
-    const double ta = ((double)s->rect_max[0] - s->rect_min[0]) / pres, tb = ((double)s->rect_max[1] - s->rect_min[1]) / pres;
-    const double texel_area = ta * tb;
+    const double texel[2] = {cell_size(s, 0, pres), cell_size(s, 1, pres)};
+    const double texel_area = texel[0] * texel[1];
+    size_t m = 0;
+    for (size_t t = 0; t < w->n; t++) {
+        double uv[3][2], E[3][3];
+        if (!plane_triangle(c, s, f, w->idx + 3 * t, h, texel, uv, E) || !on_plane(uv, pres)) continue;
+        pack_triangle(c->tris + (size_t)TRI_VEC4 * 4 * m++, uv, E, w->area[t] / texel_area);
+    }
+    return m;
+}
+
+/* Clears sample plane k and accumulates the m triangles in c->tris into it. */
+static void accumulate_plane(fs_caustics *c, int k, size_t m)
+{
+    const float zero[4] = {0, 0, 0, 0};
+    glNamedFramebufferTextureLayer(c->plane_fbo, GL_COLOR_ATTACHMENT0, c->plane_tex, 0, k);
+    glClearNamedFramebufferfv(c->plane_fbo, GL_COLOR, 0, zero);
+    if (!m) return;
+    size_t bytes = m * TRI_VEC4 * 4 * sizeof(float);
+    if (bytes > c->tri_buf_bytes) {
+        if (c->tri_buf) glDeleteBuffers(1, &c->tri_buf);
+        glCreateBuffers(1, &c->tri_buf);
+        glNamedBufferData(c->tri_buf, (GLsizeiptr)bytes, NULL, GL_STREAM_DRAW);
+        c->tri_buf_bytes = bytes;
+    }
+    glNamedBufferSubData(c->tri_buf, 0, (GLsizeiptr)bytes, c->tris);
+    draw_chunked(c->tri_buf, m, TRI_VEC4 * 4 * sizeof(float));
+}
+
+/* Step 3 (5.1): each sample plane accumulates, additively, its intersection
+ * triangles with the illumination volumes (eq. 2). */
+static void sample_planes(fs_caustics *c, const fs_caustics_setup *s, const light_frame *f, const water_tris *w)
+{
+    const int pres = s->plane_res;
     glBindFramebuffer(GL_FRAMEBUFFER, c->plane_fbo);
     glViewport(0, 0, pres, pres);
     glDisable(GL_DEPTH_TEST);
@@ -380,60 +534,16 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
     glUniform1f(glGetUniformLocation(c->prog_accum, "u_res"), (float)pres);
     glUniform1f(glGetUniformLocation(c->prog_accum, "u_sq_min"), SQ_MIN);
     glBindVertexArray(c->vao);
-    for (int k = 0; k < s->nplanes; k++) {
-        const double h = s->plane_height[k];
-        size_t m = 0;
-        for (size_t t = 0; t < nt; t++) {
-            double uv[3][2], E[3][3];
-            int ok = 1;
-            for (int a = 0; a < 3 && ok; a++) {
-                const double *v = c->vtx + VTX * idx[3 * t + a];
-                double tu = v[3 + up], su = v[up] - h;
-                if (!(su > 0) || !(tu < -1e-6)) { ok = 0; break; }
-                double lam = su / -tu; /* path length in water (t is unit) */
-                uv[a][0] = (v[ax] + lam * v[3 + ax] - s->rect_min[0]) / ta;
-                uv[a][1] = (v[bx] + lam * v[3 + bx] - s->rect_min[1]) / tb;
-                for (int ch = 0; ch < 3; ch++) E[a][ch] = s->light_color[ch] * v[6] * exp(-(double)s->extinction[ch] * lam);
-            }
-            if (!ok) continue;
-            double lo0 = fmin(uv[0][0], fmin(uv[1][0], uv[2][0])), hi0 = fmax(uv[0][0], fmax(uv[1][0], uv[2][0]));
-            double lo1 = fmin(uv[0][1], fmin(uv[1][1], uv[2][1])), hi1 = fmax(uv[0][1], fmax(uv[1][1], uv[2][1]));
-            if (hi0 < 0 || hi1 < 0 || lo0 > pres || lo1 > pres || !isfinite(hi0 - lo0 + hi1 - lo1)) continue;
-            float *o = c->tris + (size_t)TRI_VEC4 * 4 * m++;
-            o[0] = (float)uv[0][0];
-            o[1] = (float)uv[0][1];
-            o[2] = (float)(uv[1][0] - uv[0][0]);
-            o[3] = (float)(uv[1][1] - uv[0][1]);
-            o[4] = (float)(uv[2][0] - uv[0][0]);
-            o[5] = (float)(uv[2][1] - uv[0][1]);
-            o[6] = (float)(area[t] / texel_area);
-            o[7] = 0;
-            for (int a = 0; a < 3; a++) {
-                for (int ch = 0; ch < 3; ch++) o[8 + 4 * a + ch] = (float)E[a][ch];
-                o[8 + 4 * a + 3] = 0;
-            }
-        }
-        const float zero[4] = {0, 0, 0, 0};
-        glNamedFramebufferTextureLayer(c->plane_fbo, GL_COLOR_ATTACHMENT0, c->plane_tex, 0, k);
-        glClearNamedFramebufferfv(c->plane_fbo, GL_COLOR, 0, zero);
-        if (!m) continue;
-        size_t bytes = m * TRI_VEC4 * 4 * sizeof(float);
-        if (bytes > c->tri_buf_bytes) {
-            if (c->tri_buf) glDeleteBuffers(1, &c->tri_buf);
-            glCreateBuffers(1, &c->tri_buf);
-            glNamedBufferData(c->tri_buf, (GLsizeiptr)bytes, NULL, GL_STREAM_DRAW);
-            c->tri_buf_bytes = bytes;
-        }
-        glNamedBufferSubData(c->tri_buf, 0, (GLsizeiptr)bytes, c->tris);
-        draw_chunked(c->tri_buf, m, TRI_VEC4 * 4 * sizeof(float));
-    }
-    free(idx);
-    free(area);
+    for (int k = 0; k < s->nplanes; k++) accumulate_plane(c, k, cut_plane(c, s, f, w, s->plane_height[k]));
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+}
 
-    /* read back; flux on each plane from what was deposited */
+/* Reads the sample planes back to c->maps; the flux on each from what was deposited. */
+static void read_planes(fs_caustics *c, const fs_caustics_setup *s)
+{
+    const int pres = s->plane_res;
+    const double texel_area = cell_size(s, 0, pres) * cell_size(s, 1, pres);
     size_t layer = (size_t)pres * pres;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(c->plane_tex, 0, GL_RGBA, GL_FLOAT, (GLsizei)(layer * s->nplanes * 4 * sizeof(float)), c->maps);
@@ -444,6 +554,32 @@ int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned sur
         for (size_t i = 0; i < layer; i++) sum += (double)m[4 * i] + m[4 * i + 1] + m[4 * i + 2];
         c->flux_plane[k] = sum / 3.0 * texel_area;
     }
+}
+
+int fs_caustics_run(fs_caustics *c, const fs_caustics_setup *setup, unsigned surfel_ssbo, size_t n)
+{
+    fs_caustics_setup s;
+    int rc = begin_run(c, setup, &s);
+    if (rc) return rc;
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    while (glGetError() != GL_NO_ERROR) {}
+    light_frame f;
+    light_frame_of(&s, &f);
+
+    /* 1. the virtual screen: the water surface's normal and depth maps (eq. 3) */
+    splat_screen(c, &s, &f, surfel_ssbo, n);
+    normalise_screen(c, s.screen_res);
+    /* 2. read back: surface points, refracted light, illumination volumes */
+    surface_points(c, &s, &f);
+    water_tris w = {0};
+    if ((rc = illumination_volumes(c, &s, &w))) return rc;
+    /* 3. the sample planes accumulate the volumes' intersection triangles (eq. 2) */
+    sample_planes(c, &s, &f, &w);
+    free(w.idx);
+    free(w.area);
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    read_planes(c, &s);
     if (glGetError() != GL_NO_ERROR) return fs_fail(FS_ERR_RUNTIME, "caustics: OpenGL error");
     return FS_OK;
 }

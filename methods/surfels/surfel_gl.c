@@ -7,6 +7,7 @@
 #include "gl_gbuffer.h"
 #include "density_splat.h"
 #include "gl_sprites.h"
+#include "gl_stage.h"
 #include "shader.h"
 #include <math.h>
 #include <stdlib.h>
@@ -141,17 +142,11 @@ static void draw_surfels(const surfel_gl *s)
     if (s->n) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)s->n);
 }
 
-int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look, const surfel_draw_opts *o,
-                     fs_gbuffer *out, fs_stages *t)
+/* Pass 1: visibility, depth only, pushed back by epsilon. */
+static void visibility_pass(const surfel_gl *s, const fs_camera *cam, float epsilon)
 {
-    int rc = resize(s, cam->width, cam->height);
-    if (rc) return rc;
-    int w = cam->width, h = cam->height;
-    glFinish();
-    double t0 = fs_now_ms();
-    /* pass 1: visibility, depth only, pushed back by epsilon */
     glBindFramebuffer(GL_FRAMEBUFFER, s->fbo);
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, cam->width, cam->height);
     float zero[4] = {0, 0, 0, 0}, one = 1.0f;
     for (int i = 0; i < 3; i++) glClearNamedFramebufferfv(s->fbo, GL_COLOR, i, zero);
     glClearNamedFramebufferfv(s->fbo, GL_DEPTH, 0, &one);
@@ -160,66 +155,69 @@ int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look
     glDepthMask(GL_TRUE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     fs_gl_camera_uniforms(s->prog_vis, cam);
-    glUniform1f(glGetUniformLocation(s->prog_vis, "u_epsilon"), o->epsilon);
+    glUniform1f(glGetUniformLocation(s->prog_vis, "u_epsilon"), epsilon);
     draw_surfels(s);
-    glFinish();
-    double t1 = fs_now_ms();
-    fs_stages_add(t, "visibility", t1 - t0);
-    /* pass 2: Gaussian-weighted blending of the surfels within epsilon of the front */
+}
+
+/* Pass 2: Gaussian-weighted blending of the surfels within epsilon of the front. */
+static void blend_pass(const surfel_gl *s, const fs_camera *cam, const surfel_look *look, float gauss)
+{
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
     fs_gl_camera_uniforms(s->prog_blend, cam);
-    glUniform1f(glGetUniformLocation(s->prog_blend, "u_gauss"), o->gauss);
+    glUniform1f(glGetUniformLocation(s->prog_blend, "u_gauss"), gauss);
     look_uniforms(s->prog_blend, cam, look);
     draw_surfels(s);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glFinish();
-    double t2 = fs_now_ms();
-    fs_stages_add(t, "blend", t2 - t1);
-    /* pass 3: per-pixel normalisation into the G-buffer and the own image */
+}
+
+/* Pass 3: per-pixel normalisation into the G-buffer and the own image. */
+static void normalize_pass(const surfel_gl *s, const fs_camera *cam, const surfel_look *look)
+{
     fs_gl_camera_uniforms(s->prog_norm, cam);
     look_uniforms(s->prog_norm, cam, look);
     for (int i = 0; i < 3; i++) glBindImageTexture(i, s->acc[i], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(3, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(4, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(5, s->own_tex, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glDispatchCompute((unsigned)(w + 7) / 8, (unsigned)(h + 7) / 8, 1);
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    glFinish();
-    double t3 = fs_now_ms();
-    fs_stages_add(t, "normalize", t3 - t2);
-    float zero1 = 0;
-    glClearTexImage(s->target.tex[FS_TARGET_THICKNESS], 0, GL_RED, GL_FLOAT, &zero1);
-    if (o->thickness && s->grid_tex) {
-        fs_gl_camera_uniforms(s->prog_thick, cam);
-        float inv[16];
-        inverse_view(cam, inv);
-        unsigned p = s->prog_thick;
-        glUniformMatrix4fv(glGetUniformLocation(p, "u_view_inv"), 1, GL_FALSE, inv);
-        glUniform3fv(glGetUniformLocation(p, "u_grid_origin"), 1, o->grid_origin);
-        glUniform3f(glGetUniformLocation(p, "u_grid_extent"), (s->grid_dim[0] - 1) * o->grid_spacing,
-                    (s->grid_dim[1] - 1) * o->grid_spacing, (s->grid_dim[2] - 1) * o->grid_spacing);
-        glUniform3f(glGetUniformLocation(p, "u_grid_dim"), (float)s->grid_dim[0], (float)s->grid_dim[1],
-                    (float)s->grid_dim[2]);
-        glUniform1f(glGetUniformLocation(p, "u_step"), o->step);
-        glUniform1f(glGetUniformLocation(p, "u_iso"), o->iso);
-        glUniform1i(glGetUniformLocation(p, "u_grid"), 2);
-        glBindTextureUnit(2, s->grid_tex);
-        glBindImageTexture(0, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-        glBindImageTexture(1, s->target.tex[FS_TARGET_THICKNESS], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        glDispatchCompute((unsigned)(w + 7) / 8, (unsigned)(h + 7) / 8, 1);
-        glMemoryBarrier(GL_ALL_BARRIER_BITS);
-        glFinish();
-        fs_stages_add(t, "thickness", fs_now_ms() - t3);
-    }
-    double t4 = fs_now_ms();
-    rc = fs_gl_target_read(&s->target, out);
+}
+
+/* Thickness by a march through the density grid, from the surface depth on. */
+static void thickness_pass(const surfel_gl *s, const fs_camera *cam, const surfel_draw_opts *o)
+{
+    fs_gl_camera_uniforms(s->prog_thick, cam);
+    float inv[16];
+    inverse_view(cam, inv);
+    unsigned p = s->prog_thick;
+    glUniformMatrix4fv(glGetUniformLocation(p, "u_view_inv"), 1, GL_FALSE, inv);
+    glUniform3fv(glGetUniformLocation(p, "u_grid_origin"), 1, o->grid_origin);
+    glUniform3f(glGetUniformLocation(p, "u_grid_extent"), (s->grid_dim[0] - 1) * o->grid_spacing,
+                (s->grid_dim[1] - 1) * o->grid_spacing, (s->grid_dim[2] - 1) * o->grid_spacing);
+    glUniform3f(glGetUniformLocation(p, "u_grid_dim"), (float)s->grid_dim[0], (float)s->grid_dim[1],
+                (float)s->grid_dim[2]);
+    glUniform1f(glGetUniformLocation(p, "u_step"), o->step);
+    glUniform1f(glGetUniformLocation(p, "u_iso"), o->iso);
+    glUniform1i(glGetUniformLocation(p, "u_grid"), 2);
+    glBindTextureUnit(2, s->grid_tex);
+    glBindImageTexture(0, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(1, s->target.tex[FS_TARGET_THICKNESS], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+/* The G-buffer and the own image (its alpha: the caustics layer). */
+static int read_back(const surfel_gl *s, int w, int h, fs_gbuffer *out, fs_stages *t)
+{
+    double t0 = fs_now_ms();
+    int rc = fs_gl_target_read(&s->target, out);
     if (!rc && out->own) {
         rc = fs_gl_read_texture(s->own_tex, 4, w, h, out->own);
         for (size_t i = 0, n = (size_t)w * h; !rc && i < n; i++) {
@@ -227,6 +225,28 @@ int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look
             out->own[4 * i + 3] = 1.0f;
         }
     }
-    fs_stages_add(t, "readback", fs_now_ms() - t4);
+    fs_stages_add(t, "readback", fs_now_ms() - t0);
     return rc;
+}
+
+int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look, const surfel_draw_opts *o,
+                     fs_gbuffer *out, fs_stages *t)
+{
+    int rc = resize(s, cam->width, cam->height);
+    if (rc) return rc;
+    glFinish();
+    double t0 = fs_now_ms();
+    visibility_pass(s, cam, o->epsilon);
+    double t1 = fs_gl_stage_end(t, "visibility", t0);
+    blend_pass(s, cam, look, o->gauss);
+    double t2 = fs_gl_stage_end(t, "blend", t1);
+    normalize_pass(s, cam, look);
+    double t3 = fs_gl_stage_end(t, "normalize", t2);
+    float zero = 0;
+    glClearTexImage(s->target.tex[FS_TARGET_THICKNESS], 0, GL_RED, GL_FLOAT, &zero);
+    if (o->thickness && s->grid_tex) {
+        thickness_pass(s, cam, o);
+        fs_gl_stage_end(t, "thickness", t3);
+    }
+    return read_back(s, cam->width, cam->height, out, t);
 }

@@ -75,87 +75,129 @@ static int find_attr(const bgeo_attr *a, int n, unsigned size, int want_int, con
     return -1;
 }
 
-static int parse_bgeo(fs_particles *p, const char *path, const unsigned char *data, size_t size)
+/* The header: magic, version 5, the counts; npoints and nattr, the number of
+ * point attribute definitions that follow. */
+static int read_header(cursor *c, const char *path, int32_t *npoints, int32_t *nattr)
 {
-    cursor c = {data, size};
     const unsigned char *b;
-    if (size >= 4 && data[0] == 0x7f && data[1] == 'N')
+    if (c->left >= 4 && c->p[0] == 0x7f && c->p[1] == 'N')
         return fs_fail(FS_ERR_INPUT, "%s: Houdini 12+ binary JSON geometry is not supported, only classic BGEO V5", path);
-    if (!take(&c, 5, &b) || memcmp(b, "BgeoV", 5) != 0)
+    if (!take(c, 5, &b) || memcmp(b, "BgeoV", 5) != 0)
         return fs_fail(FS_ERR_INPUT, "%s: not a BGEO file (bad magic)", path);
     int32_t h[9]; /* version, points, prims, point groups, prim groups, point/vertex/prim/detail attribs */
     for (int i = 0; i < 9; i++)
-        if (!rd_i32(&c, &h[i])) return fs_fail(FS_ERR_INPUT, "%s: truncated BGEO header", path);
+        if (!rd_i32(c, &h[i])) return fs_fail(FS_ERR_INPUT, "%s: truncated BGEO header", path);
     if (h[0] != 5) return fs_fail(FS_ERR_INPUT, "%s: unsupported BGEO version %d (only 5)", path, (int)h[0]);
     for (int i = 1; i < 9; i++)
         if (h[i] < 0) return fs_fail(FS_ERR_INPUT, "%s: negative count %d in BGEO header", path, (int)h[i]);
-    int32_t npoints = h[1], nattr = h[5];
+    *npoints = h[1];
+    *nattr = h[5];
     /* Vertex attribute definitions would sit between the point attributes and the points. */
     if (h[6] != 0) return fs_fail(FS_ERR_INPUT, "%s: BGEO vertex attributes are not supported", path);
     /* Each definition takes at least 8 bytes: reject counts the file cannot hold before allocating. */
-    if ((size_t)nattr > c.left / 8)
-        return fs_fail(FS_ERR_INPUT, "%s: BGEO header claims %d point attributes, more than the file holds", path, (int)nattr);
+    if ((size_t)*nattr > c->left / 8)
+        return fs_fail(FS_ERR_INPUT, "%s: BGEO header claims %d point attributes, more than the file holds", path, (int)*nattr);
+    return FS_OK;
+}
 
+/* Skips the string table of an index attribute: a count, then u16-length strings. */
+static int skip_string_table(cursor *c, const char *path, const bgeo_attr *a)
+{
+    const unsigned char *b;
+    int32_t nstr;
+    if (!rd_i32(c, &nstr) || nstr < 0)
+        return fs_fail(FS_ERR_INPUT, "%s: bad string table of BGEO attribute '%s'", path, a->name);
+    for (int32_t k = 0; k < nstr; k++) {
+        unsigned slen;
+        if (!rd_u16(c, &slen) || !take(c, slen, &b))
+            return fs_fail(FS_ERR_INPUT, "%s: truncated string table of BGEO attribute '%s'", path, a->name);
+    }
+    return FS_OK;
+}
+
+/* Point attribute definition i: name, size, type, then its defaults (or string
+ * table); a's values sit at offset *record in a point, which it then extends. */
+static int read_attr_def(cursor *c, const char *path, int32_t i, bgeo_attr *a, size_t *record)
+{
+    unsigned len, asize;
+    const unsigned char *name, *b;
+    if (!rd_u16(c, &len) || !take(c, len, &name) || !rd_u16(c, &asize) || !rd_i32(c, &a->type))
+        return fs_fail(FS_ERR_INPUT, "%s: truncated BGEO attribute definition %d", path, (int)i);
+    size_t keep = len < sizeof a->name ? len : sizeof a->name - 1;
+    memcpy(a->name, name, keep);
+    a->size = asize;
+    a->offset = *record;
+    *record += (size_t)asize * 4; /* every supported type stores 4 bytes per component */
+    int32_t type = a->type;
+    if (type == BGEO_FLOAT || type == BGEO_INT || type == BGEO_VECTOR) {
+        if (!take(c, (size_t)asize * 4, &b)) /* default values */
+            return fs_fail(FS_ERR_INPUT, "%s: truncated defaults of BGEO attribute '%s'", path, a->name);
+        return FS_OK;
+    }
+    if (type == BGEO_INDEX) return skip_string_table(c, path, a);
+    return fs_fail(FS_ERR_INPUT, "%s: BGEO attribute '%s' has unknown type %d", path, a->name, (int)type);
+}
+
+/* The attributes read per point (indices into the definitions, -1 if absent). */
+typedef struct point_attrs {
+    int v, cd, phase, pscale;
+} point_attrs;
+
+/* Finds the attributes the particles keep; returns the fields they fill. */
+static unsigned find_point_attrs(const bgeo_attr *attrs, int n, point_attrs *pa)
+{
+    static const char *const vel_names[] = {"v", "velocity", NULL}, *const cd_names[] = {"Cd", NULL},
+                             *const phase_names[] = {"phase", NULL}, *const pscale_names[] = {"pscale", NULL};
+    pa->v = find_attr(attrs, n, 3, 0, vel_names);
+    pa->cd = find_attr(attrs, n, 3, 0, cd_names);
+    pa->phase = find_attr(attrs, n, 1, 1, phase_names);
+    pa->pscale = find_attr(attrs, n, 1, 0, pscale_names);
+    return (pa->v >= 0 ? FS_HAS_VELOCITY : 0) | (pa->cd >= 0 ? FS_HAS_COLOR : 0) | (pa->phase >= 0 ? FS_HAS_PHASE : 0);
+}
+
+/* Particle i from its point record r. */
+static void read_point(fs_particles *p, size_t i, const unsigned char *r, const bgeo_attr *attrs, const point_attrs *pa)
+{
+    p->x[i] = be32f(r);
+    p->y[i] = be32f(r + 4);
+    p->z[i] = be32f(r + 8);
+    if (pa->v >= 0) {
+        const unsigned char *v = r + attrs[pa->v].offset;
+        p->vx[i] = be32f(v);
+        p->vy[i] = be32f(v + 4);
+        p->vz[i] = be32f(v + 8);
+    }
+    if (pa->cd >= 0)
+        for (int k = 0; k < 3; k++) p->color[3 * i + k] = be32f(r + attrs[pa->cd].offset + 4 * k);
+    if (pa->phase >= 0) p->phase[i] = (int32_t)be32(r + attrs[pa->phase].offset);
+    if (pa->pscale >= 0 && i == 0) p->radius = be32f(r + attrs[pa->pscale].offset);
+}
+
+/* The n points of `record` bytes each at the cursor. */
+static int read_points(fs_particles *p, const cursor *c, const bgeo_attr *attrs, int nattr, size_t n, size_t record)
+{
+    point_attrs pa;
+    unsigned fields = find_point_attrs(attrs, nattr, &pa);
+    int rc = fs_particles_alloc(p, n, fields);
+    if (rc) return rc;
+    for (size_t i = 0; i < n; i++) read_point(p, i, c->p + i * record, attrs, &pa);
+    return FS_OK;
+}
+
+static int parse_bgeo(fs_particles *p, const char *path, const unsigned char *data, size_t size)
+{
+    cursor c = {data, size};
+    int32_t npoints = 0, nattr = 0;
+    int rc = read_header(&c, path, &npoints, &nattr);
+    if (rc) return rc;
     bgeo_attr *attrs = calloc(nattr ? (size_t)nattr : 1, sizeof *attrs);
     if (!attrs) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
     size_t record = 16; /* x y z w */
-    int rc = FS_OK;
-    for (int32_t i = 0; i < nattr && !rc; i++) {
-        unsigned len, asize;
-        const unsigned char *name;
-        if (!rd_u16(&c, &len) || !take(&c, len, &name) || !rd_u16(&c, &asize) || !rd_i32(&c, &attrs[i].type)) {
-            rc = fs_fail(FS_ERR_INPUT, "%s: truncated BGEO attribute definition %d", path, (int)i);
-            break;
-        }
-        size_t keep = len < sizeof attrs[i].name ? len : sizeof attrs[i].name - 1;
-        memcpy(attrs[i].name, name, keep);
-        attrs[i].size = asize;
-        attrs[i].offset = record;
-        int32_t type = attrs[i].type;
-        if (type == BGEO_FLOAT || type == BGEO_INT || type == BGEO_VECTOR) {
-            if (!take(&c, (size_t)asize * 4, &b)) /* default values */
-                rc = fs_fail(FS_ERR_INPUT, "%s: truncated defaults of BGEO attribute '%s'", path, attrs[i].name);
-        } else if (type == BGEO_INDEX) { /* string table: count, then u16-length strings */
-            int32_t nstr;
-            if (!rd_i32(&c, &nstr) || nstr < 0)
-                rc = fs_fail(FS_ERR_INPUT, "%s: bad string table of BGEO attribute '%s'", path, attrs[i].name);
-            for (int32_t k = 0; k < nstr && !rc; k++) {
-                unsigned slen;
-                if (!rd_u16(&c, &slen) || !take(&c, slen, &b))
-                    rc = fs_fail(FS_ERR_INPUT, "%s: truncated string table of BGEO attribute '%s'", path, attrs[i].name);
-            }
-        } else {
-            rc = fs_fail(FS_ERR_INPUT, "%s: BGEO attribute '%s' has unknown type %d", path, attrs[i].name, (int)type);
-        }
-        record += (size_t)asize * 4; /* every supported type stores 4 bytes per component */
-    }
+    for (int32_t i = 0; i < nattr && !rc; i++) rc = read_attr_def(&c, path, i, &attrs[i], &record);
     if (!rc && (size_t)npoints > c.left / record)
         rc = fs_fail(FS_ERR_INPUT, "%s: truncated BGEO: header says %d points of %zu bytes but only %zu bytes follow",
                      path, (int)npoints, record, c.left);
-    static const char *const vel_names[] = {"v", "velocity", NULL}, *const cd_names[] = {"Cd", NULL},
-                             *const phase_names[] = {"phase", NULL}, *const pscale_names[] = {"pscale", NULL};
-    int av = rc ? -1 : find_attr(attrs, nattr, 3, 0, vel_names);
-    int ac = rc ? -1 : find_attr(attrs, nattr, 3, 0, cd_names);
-    int ap = rc ? -1 : find_attr(attrs, nattr, 1, 1, phase_names);
-    int ar = rc ? -1 : find_attr(attrs, nattr, 1, 0, pscale_names);
-    unsigned fields = (av >= 0 ? FS_HAS_VELOCITY : 0) | (ac >= 0 ? FS_HAS_COLOR : 0) | (ap >= 0 ? FS_HAS_PHASE : 0);
-    if (!rc) rc = fs_particles_alloc(p, (size_t)npoints, fields);
-    for (size_t i = 0; !rc && i < (size_t)npoints; i++) {
-        const unsigned char *r = c.p + i * record;
-        p->x[i] = be32f(r);
-        p->y[i] = be32f(r + 4);
-        p->z[i] = be32f(r + 8);
-        if (av >= 0) {
-            const unsigned char *v = r + attrs[av].offset;
-            p->vx[i] = be32f(v);
-            p->vy[i] = be32f(v + 4);
-            p->vz[i] = be32f(v + 8);
-        }
-        if (ac >= 0)
-            for (int k = 0; k < 3; k++) p->color[3 * i + k] = be32f(r + attrs[ac].offset + 4 * k);
-        if (ap >= 0) p->phase[i] = (int32_t)be32(r + attrs[ap].offset);
-        if (ar >= 0 && i == 0) p->radius = be32f(r + attrs[ar].offset);
-    }
+    if (!rc) rc = read_points(p, &c, attrs, nattr, (size_t)npoints, record);
     free(attrs);
     return rc;
 }
