@@ -25,7 +25,7 @@
 static const char epilogue[] =
     "--set M.P=v1,v2,... sweeps the parameter over the values.\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
-    "<label>_own.png for a method with its own appearance (surfels, volume_raycast),\n"
+    "<label>_own.png for a method with its own appearance (fluidsurf methods says which),\n"
     "report.md (and temporal.csv for a sequence).\n";
 
 static void free_view(cmp_view *v) { fs_run_image_free(v); }

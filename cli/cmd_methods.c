@@ -19,6 +19,8 @@ int cmd_methods(int argc, char **argv)
         if (name && strcmp(name, m->name)) continue;
         printf("%s — %s\n  paper: %s; runs on: %s\n", m->name, m->description, m->paper[0] ? m->paper : "(ours)",
                m->needs_gl ? "OpenGL 4.5" : "CPU");
+        if (m->appearance) printf("  own appearance (--appearance own): %s\n", m->appearance);
+        if (m->exports) printf("  exports (--export): %s\n", m->exports);
         for (int k = 0; k < m->nparams; k++) {
             const fs_param_def *p = &m->params[k];
             char def[64], range[96];

@@ -85,13 +85,12 @@ int cmd_render(int argc, char **argv)
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the renderer they ran on"),
         CLI_LIST_OPT("--export", exports, nexports, 4, "FILE",
                      "write the method's intermediate surface too (repeatable;\n"
-                     "surfels: .vdb density grid, .ply surfels; volume_raycast:\n"
-                     ".vdb density volume); -o is then optional"),
+                     "the kinds a method writes: fluidsurf methods NAME);\n"
+                     "-o is then optional"),
         CLI_CHOICE_OPT("--appearance", own_look, "shared|own", NULL,
                        "shared (default): the harness's shading, the same for\n"
-                       "every method; own: the method's own (surfels: reflection,\n"
-                       "refraction and caustics as its paper renders them;\n"
-                       "volume_raycast: its transfer function)"),
+                       "every method; own: the method's own, where its paper\n"
+                       "defines one (fluidsurf methods NAME says)"),
         CLI_OPT_QUIET(quiet),
         CLI_END,
     };

@@ -29,6 +29,8 @@ typedef struct fs_method {
     const char *name;
     const char *description; /* one line */
     const char *paper;       /* "" for our own */
+    const char *appearance;  /* its own look, for `methods` (NULL: only the shared shading) */
+    const char *exports;     /* what export_file writes, for `methods` (NULL: nothing) */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
     int writes_color;        /* 1: fills out->color when the particles carry colour */
     int writes_own;          /* 1: fills out->own and out->caustics when they are allocated */

@@ -344,6 +344,8 @@ const fs_method fs_method_volume_raycast = {
     .name = "volume_raycast",
     .description = "single-pass layered density volume (geometry shader), bounding-box ray casting, transfer functions",
     .paper = "inacio2010",
+    .appearance = "its transfer function: the opaque iso-surface, or translucent with mode=translucent (inacio2010)",
+    .exports = ".vdb density volume (OpenVDB FloatGrid)",
     .needs_gl = 1,
     .writes_own = 1,
     .params = params,
