@@ -403,6 +403,126 @@ static int read_text(const char *path, char **out)
     return FS_OK;
 }
 
+/* The parsed command line. */
+typedef struct view_options {
+    const char *input, *simulate, *script, *events;
+    const char *const *sets;
+    int nsets, W, H, gpu, paused, verbose, max_frames, particles, method;
+    float scale, radius, dt;
+} view_options;
+
+/* Everything the user typed is checked before a window opens: the scene, the
+ * settings (for every method, so a bad --set fails now, not on a key press),
+ * the script, the simulator's scene name. */
+static int check_input(viewer *w, const view_options *o)
+{
+    int rc;
+    if (o->simulate) fs_scene_defaults(&w->scene);
+    else if ((rc = cli_scene_from_arg(&w->scene, o->input))) return rc;
+    for (int i = 0; i < o->nsets; i++)
+        if ((rc = fs_scene_add_set(&w->scene, o->sets[i]))) return rc;
+    double check[FS_MAX_PARAMS];
+    for (int i = 0; i < fs_method_count(); i++)
+        if ((rc = fs_method_params_resolve(fs_method_at(i), &w->scene, check))) return rc;
+    if (o->script || o->events) {
+        char *text = NULL;
+        if (o->script && (rc = read_text(o->script, &text))) return rc;
+        if (!o->script && !(text = strdup(o->events))) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+        rc = view_script_parse(&w->script, text, o->script ? o->script : "--events");
+        free(text);
+        if (rc) return rc;
+    }
+    if (!o->simulate) return FS_OK;
+    for (int i = 0; fs_sph_scene_names[i]; i++)
+        if (!strcmp(fs_sph_scene_names[i], o->simulate)) return FS_OK;
+    return fs_fail(FS_ERR_INPUT, "--simulate %s: unknown scene (try 'fluidsurf view --help')", o->simulate);
+}
+
+/* A scene's first frame, which settles r and the camera. */
+static int load_scene(viewer *w, const view_options *o)
+{
+    fs_scene_frames(&w->scene, &w->first, &w->last);
+    w->cur = w->first;
+    if (o->radius > 0) w->scene.radius = o->radius; /* before a synthetic scene is generated */
+    int rc = next_particles(w, 0);
+    if (!rc) fs_scene_adopt_frame(&w->scene, &w->p, o->radius);
+    return rc;
+}
+
+/* The simulator, after the window: its GPU path needs the context. */
+static int start_simulator(viewer *w, const view_options *o, int win_w, int win_h)
+{
+    fs_sph_params prm;
+    fs_sph_params_default(&prm);
+    if (o->radius > 0) prm.r = o->radius;
+    int rc = fs_sph_create(&w->sim, o->simulate, (size_t)o->particles, &prm, o->gpu);
+    if (rc) return rc;
+    w->scene.radius = prm.r;
+    float lo[3], hi[3];
+    fs_sph_box(w->sim, lo, hi);
+    w->scene.camera.width = win_w;
+    w->scene.camera.height = win_h;
+    fs_scene_finish_camera(&w->scene, lo, hi);
+    if ((rc = next_particles(w, 0))) return rc;
+    w->v.can_move_box = 1;
+    w->v.box_step = 0.05f * (hi[0] - lo[0]);
+    return FS_OK;
+}
+
+static void start_view(viewer *w, const view_options *o)
+{
+    fs_orbit_from_camera(&w->v.orbit, &w->scene.camera, w->scene.up_axis);
+    w->v.home = w->v.orbit;
+    w->v.nmethods = fs_method_count() < 9 ? fs_method_count() : 9;
+    w->v.method = o->method;
+    w->v.scale = o->scale;
+    w->v.playing = !o->paused;
+    fprintf(stderr, "fluidsurf: view: %s on %s (%s); %s\n", o->simulate ? o->simulate : o->input, w->ctx.renderer,
+            o->simulate ? (o->gpu ? "GPU simulation" : "CPU simulation") : "playing the scene",
+            "keys: 1-9 method, space play, N step, S screenshot, +/- scale, O appearance, Esc quit");
+}
+
+/* The run (its GL objects) and the window's objects go in the window's context. */
+static void free_viewer(viewer *w)
+{
+    fs_run_close(w->run);
+    fs_sph_destroy(w->sim);
+    if (w->ctx.handle) {
+        if (w->tex) glDeleteTextures(1, &w->tex);
+        if (w->vao) glDeleteVertexArrays(1, &w->vao);
+        if (w->prog) glDeleteProgram(w->prog);
+        if (w->box_prog) glDeleteProgram(w->box_prog);
+        if (w->depth_tex) glDeleteTextures(1, &w->depth_tex);
+    }
+    fs_gl_context_destroy(&w->ctx);
+    fs_run_image_free(&w->im);
+    fs_particles_free(&w->p);
+    view_script_free(&w->script);
+}
+
+/* The plan: check the input, the first frame, the window, the simulator, the loop. */
+static int view_main(const view_options *o)
+{
+    static viewer w;
+    memset(&w, 0, sizeof w);
+    w.mi = -1;
+    w.dt = o->dt;
+    w.verbose = o->verbose;
+    int rc = check_input(&w, o);
+    if (!rc && !o->simulate) rc = load_scene(&w, o);
+    int win_w = o->W ? o->W : o->simulate ? 800 : w.scene.camera.width;
+    int win_h = o->H ? o->H : o->simulate ? 600 : w.scene.camera.height;
+    if (!rc) rc = fs_gl_context_create(&w.ctx, FS_CTX_GLFW, win_w, win_h);
+    if (!rc && o->simulate) rc = start_simulator(&w, o, win_w, win_h);
+    if (!rc) {
+        start_view(&w, o);
+        rc = run(&w, o->max_frames, o->script || o->events || o->max_frames); /* scripted runs never idle */
+    }
+    if (rc) cli_error(rc);
+    free_viewer(&w);
+    return rc;
+}
+
 int cmd_view(int argc, char **argv)
 {
     const char *input = NULL, *simulate = NULL, *mname = NULL, *script = NULL, *events = NULL;
@@ -440,80 +560,7 @@ int cmd_view(int argc, char **argv)
         for (mi = 0; mi < fs_method_count() && strcmp(fs_method_at(mi)->name, mname); mi++) {}
         if (mi == fs_method_count()) return cli_usage("view", "unknown method '%s' (see 'fluidsurf methods')", mname);
     }
-
-    /* everything the user typed is checked before a window opens */
-    static viewer w;
-    memset(&w, 0, sizeof w);
-    w.mi = -1;
-    w.dt = dt;
-    w.verbose = verbose;
-    if (simulate) fs_scene_defaults(&w.scene);
-    else if ((rc = cli_scene_from_arg(&w.scene, input))) return cli_error(rc);
-    for (int i = 0; i < nsets; i++)
-        if ((rc = fs_scene_add_set(&w.scene, sets[i]))) return cli_error(rc);
-    double check[FS_MAX_PARAMS];
-    for (int i = 0; i < fs_method_count(); i++) /* a bad --set fails now, not on a key press */
-        if ((rc = fs_method_params_resolve(fs_method_at(i), &w.scene, check))) return cli_error(rc);
-    if (script || events) {
-        char *text = NULL;
-        if (script && (rc = read_text(script, &text))) return cli_error(rc);
-        if (!script && !(text = strdup(events))) return cli_error(fs_fail(FS_ERR_RUNTIME, "out of memory"));
-        rc = view_script_parse(&w.script, text, script ? script : "--events");
-        free(text);
-        if (rc) return cli_error(rc);
-    }
-    if (simulate) {
-        int known = 0;
-        for (int i = 0; fs_sph_scene_names[i]; i++) known |= !strcmp(fs_sph_scene_names[i], simulate);
-        if (!known) { view_script_free(&w.script); return cli_usage("view", "--simulate %s: unknown scene", simulate); }
-    } else {
-        fs_scene_frames(&w.scene, &w.first, &w.last);
-        w.cur = w.first;
-        if (radius > 0) w.scene.radius = radius; /* before a synthetic scene is generated */
-        if ((rc = next_particles(&w, 0))) { view_script_free(&w.script); return cli_error(rc); }
-        fs_scene_adopt_frame(&w.scene, &w.p, radius);
-    }
-    int win_w = W ? W : simulate ? 800 : w.scene.camera.width, win_h = H ? H : simulate ? 600 : w.scene.camera.height;
-    if ((rc = fs_gl_context_create(&w.ctx, FS_CTX_GLFW, win_w, win_h))) goto done;
-    if (simulate) { /* the GPU path needs the context: the simulator starts after the window */
-        fs_sph_params prm;
-        fs_sph_params_default(&prm);
-        if (radius > 0) prm.r = radius;
-        if ((rc = fs_sph_create(&w.sim, simulate, (size_t)particles, &prm, gpu))) goto done;
-        w.scene.radius = prm.r;
-        float lo[3], hi[3];
-        fs_sph_box(w.sim, lo, hi);
-        w.scene.camera.width = win_w;
-        w.scene.camera.height = win_h;
-        fs_scene_finish_camera(&w.scene, lo, hi);
-        if ((rc = next_particles(&w, 0))) goto done;
-        w.v.can_move_box = 1;
-        w.v.box_step = 0.05f * (hi[0] - lo[0]);
-    }
-    fs_orbit_from_camera(&w.v.orbit, &w.scene.camera, w.scene.up_axis);
-    w.v.home = w.v.orbit;
-    w.v.nmethods = fs_method_count() < 9 ? fs_method_count() : 9;
-    w.v.method = mi;
-    w.v.scale = scale;
-    w.v.playing = !paused;
-    fprintf(stderr, "fluidsurf: view: %s on %s (%s); %s\n", simulate ? simulate : input, w.ctx.renderer,
-            simulate ? (gpu ? "GPU simulation" : "CPU simulation") : "playing the scene",
-            "keys: 1-9 method, space play, N step, S screenshot, +/- scale, O appearance, Esc quit");
-    rc = run(&w, max_frames, script || events || max_frames); /* scripted runs never idle */
-done:
-    if (rc) cli_error(rc);
-    fs_run_close(w.run); /* in the context its GL objects live in */
-    fs_sph_destroy(w.sim);
-    if (w.ctx.handle) {
-        if (w.tex) glDeleteTextures(1, &w.tex);
-        if (w.vao) glDeleteVertexArrays(1, &w.vao);
-        if (w.prog) glDeleteProgram(w.prog);
-        if (w.box_prog) glDeleteProgram(w.box_prog);
-        if (w.depth_tex) glDeleteTextures(1, &w.depth_tex);
-    }
-    fs_gl_context_destroy(&w.ctx);
-    fs_run_image_free(&w.im);
-    fs_particles_free(&w.p);
-    view_script_free(&w.script);
-    return rc;
+    const view_options o = {input, simulate, script, events, sets, nsets, W, H, gpu, paused, verbose, max_frames,
+                            particles, mi, scale, radius, dt};
+    return view_main(&o);
 }
