@@ -1,5 +1,7 @@
-/* The method interface (docs/DESIGN.md): a struct of function pointers, one static
- * registry (registry.c). A method turns particles + camera into a G-buffer. */
+/* The method interface (docs/DESIGN.md, "Adding a method"): a struct of function
+ * pointers, registered in one registry (registry.c; the built-in table is
+ * methods/registry.c). A method turns particles + camera into a G-buffer; only the
+ * run layer (common/run/run.h) calls its functions. */
 #ifndef FS_METHOD_H
 #define FS_METHOD_H
 #include "camera.h"
@@ -39,7 +41,9 @@ typedef struct fs_method {
     size_t params_size;         /* sizeof that struct */
     /* Returns NULL on failure with fs_fail() set. */
     void *(*create)(const fs_method_setup *setup);
-    /* Particles (and a grid built with cell >= field.H) stay valid until destroy. */
+    /* The frame and a grid with cell >= field.H. Called by the run layer only (run.h),
+     * which keeps both (structs and arrays) valid and in place until the next upload
+     * or destroy, so a method may keep these pointers until then. */
     int (*upload)(void *self, const fs_particles *p, const fs_grid *g);
     /* Renders one view into out (already sized to the camera); adds stage times. */
     int (*render)(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t);
