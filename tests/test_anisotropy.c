@@ -1,4 +1,4 @@
-/* common/anisotropy.c on a synthetic slab: a particle on the flat top is
+/* common/field/anisotropy.c on a synthetic slab: a particle on the flat top is
  * flattened along the normal (y), one in the middle of a thick block is nearly
  * isotropic, one with few neighbours is exactly isotropic; per-particle
  * normalisation keeps det A = scale^3; the bulk lattice maps to stretch 1. */

@@ -1,4 +1,4 @@
-/* The viewer's orbit camera (common/orbit_camera.c): it reproduces the camera
+/* The viewer's orbit camera (common/scene/orbit_camera.c): it reproduces the camera
  * it starts from for each up axis; rotating keeps the target and distance,
  * pitch stops short of the pole; panning moves the target across the view
  * only, by the pixel size; zooming scales the distance. */

@@ -23,7 +23,7 @@ typedef struct fs_metrics {
 
 /* rgba_a/rgba_b: linear RGBA of the shaded images (PSNR/SSIM; either NULL -> both
  * NAN); r: particle radius. Metrics without any pixel to average over are NAN.
- * Percentiles are nearest-rank; see common/metrics.c for the exact definitions.
+ * Percentiles are nearest-rank; see common/eval/metrics.c for the exact definitions.
  * Sizes that differ or r <= 0: FS_ERR_INPUT; out of memory: FS_ERR_RUNTIME. */
 int fs_metrics_compute(const fs_gbuffer *a, const float *rgba_a, const fs_gbuffer *b, const float *rgba_b, float r,
                        fs_metrics *out);

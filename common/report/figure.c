@@ -1,5 +1,5 @@
 /* Figure building blocks (figure.h): RGBA buffers, heatmaps with a colour bar,
- * panels of labelled tiles. Text comes from common/image_text.cpp. */
+ * panels of labelled tiles. Text comes from common/report/image_text.cpp. */
 #include "figure.h"
 #include "fs_error.h"
 #include <math.h>

@@ -1,4 +1,4 @@
-/* Image files through OpenImageIO (common/image_oiio.cpp): PNG (sRGB 8-bit) and
+/* Image files through OpenImageIO (common/report/image_oiio.cpp): PNG (sRGB 8-bit) and
  * EXR (linear float, RGBA plus named AOV channels and string attributes). */
 #ifndef FS_IMAGE_IO_H
 #define FS_IMAGE_IO_H

@@ -4,7 +4,7 @@
  * proven not to cross the iso-surface, a sign change is bisected to 1e-4 r and
  * the normal is the analytic -grad phi. See README.md for why the steps are safe.
  * field=anisotropic: Yu & Turk's kernel W(|A_j^-1 (x - c_j)|, H) / det A_j with
- * the centres c_j and stretches A_j of common/anisotropy.c. */
+ * the centres c_j and stretches A_j of common/field/anisotropy.c. */
 #include "anisotropy.h"
 #include "eigen3.h"
 #include "fs_error.h"
@@ -106,7 +106,7 @@ static void *create(const fs_method_setup *setup)
     return R;
 }
 
-/* field=anisotropic: the kernel centres and stretches of common/anisotropy.c,
+/* field=anisotropic: the kernel centres and stretches of common/field/anisotropy.c,
  * a grid of the centres with cells of at least H times the largest axis (so
  * the 27-cell argument of upload still holds), A^-1 and 1/det A per slot, and
  * the Lipschitz unit V max|W'| max_j (1 / (det A_j a_min,j)): the gradient of
