@@ -109,7 +109,7 @@ static double since_s(double t0) { return (fs_now_ms() - t0) / 1000.0; }
 /* The analytic reference of frame f: the ideal shape's exact G-buffer. */
 static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v)
 {
-    int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height, 0);
+    int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height);
     if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
     if (!rc) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
     if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, p), v->rgba);
@@ -174,12 +174,13 @@ static int write_view(const cmp_run *r, const char *label, int frame, const cmp_
         int rc = fs_write_render(path, &v->g, v->rgba, prov);
         if (rc) return rc;
     }
-    if (!v->g.own) return FS_OK;
+    const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
+    if (!own) return FS_OK;
     /* the method's own appearance beside the shared shading */
     if (r->sequence) snprintf(name, sizeof name, "%s_own_f%04d.png", label, frame);
     else snprintf(name, sizeof name, "%s_own.png", label);
     cmp_path(r, name, path, sizeof path);
-    return fs_write_render(path, &v->g, v->g.own, prov);
+    return fs_write_render(path, &v->g, own, prov);
 }
 
 static void progress(const cmp_run *r, const cmp_entry *e, int index, int total, int f, double t_start)

@@ -4,6 +4,19 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The AOVs m declares, as their EXR channels. */
+static void print_aovs(const fs_method *m)
+{
+    if (!m->naovs) return;
+    printf("  AOVs (EXR channels):");
+    for (int k = 0; k < m->naovs; k++) {
+        const fs_aov_def *d = &m->aovs[k];
+        printf("%s %s%s%s", k ? "," : "", d->name, d->ncomp == 4 ? ".R/G/B/A" : "",
+               d->needs_color ? " (when the particles carry colour)" : "");
+    }
+    printf("\n");
+}
+
 int cmd_methods(int argc, char **argv)
 {
     const char *name = NULL;
@@ -21,6 +34,7 @@ int cmd_methods(int argc, char **argv)
                m->needs_gl ? "OpenGL 4.5" : "CPU");
         if (m->appearance) printf("  own appearance (--appearance own): %s\n", m->appearance);
         if (m->exports) printf("  exports (--export): %s\n", m->exports);
+        print_aovs(m);
         for (int k = 0; k < m->nparams; k++) {
             const fs_param_def *p = &m->params[k];
             char def[64], range[96];

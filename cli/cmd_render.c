@@ -12,8 +12,8 @@
 
 /* what --help says after the options */
 static const char epilogue[] =
-    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage (+ own.R/G/B/A caustics\n"
-    "for a method with its own appearance) and the provenance.\n";
+    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage, the AOVs the method\n"
+    "writes (fluidsurf methods lists them) and the provenance.\n";
 
 /* What to do with the loaded frame. */
 typedef struct render_job {
@@ -105,7 +105,7 @@ int cmd_render(int argc, char **argv)
     if (nexports && !m->export_file) return cli_usage("render", "--export: method '%s' exports nothing", mname);
     for (int i = 0; i < nexports; i++)
         if (cli_same_file(input, exports[i])) return cli_usage("render", "%s: export would overwrite the input", exports[i]);
-    if (own_look && !m->writes_own)
+    if (own_look && !fs_method_aov(m, FS_AOV_OWN))
         return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", mname);
     if (out && cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
 

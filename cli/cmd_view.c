@@ -248,7 +248,7 @@ static int render_frame(viewer *w, int fw, int fh)
     fs_stages st = {0};
     if (fs_run_render(w->run, &cam, &w->im, &st)) method_failed(w);
     else w->why[0] = 0;
-    int own = w->v.own && fs_run_method(w->run)->writes_own && w->p.n && !w->why[0];
+    int own = w->v.own && fs_method_aov(fs_run_method(w->run), FS_AOV_OWN) && w->p.n && !w->why[0];
     int rc = fs_run_shade(w->run, &cam, &w->im, own ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED, NULL);
     if (rc) return rc;
     present(w, cam.width, cam.height, fw, fh);
@@ -299,7 +299,7 @@ static void set_title(viewer *w, int frame, int fw, int fh)
     char why[600] = "";
     if (w->why[0]) snprintf(why, sizeof why, " | cannot render: %s", w->why);
     snprintf(title, sizeof title, "fluidsurf view | %s (%s) | %s | %s | scale %.2f (%dx%d) | %s | #%d%s", m->name,
-             w->v.own && m->writes_own ? "own" : "shared", ms, w->ctx.renderer, w->v.scale,
+             w->v.own && fs_method_aov(m, FS_AOV_OWN) ? "own" : "shared", ms, w->ctx.renderer, w->v.scale,
              (int)lroundf(fw * w->v.scale), (int)lroundf(fh * w->v.scale), where, frame, why);
     glfwSetWindowTitle(w->ctx.handle, title);
     if (w->verbose) fprintf(stderr, "%s\n", title);

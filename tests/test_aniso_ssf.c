@@ -101,7 +101,7 @@ static void sprite_depth(void)
     patch(&p, 9);
     fs_camera cam = {{0.1f, -0.15f, 0.6f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 96, 96, 0.05f, 5.0f};
     fs_gbuffer gb;
-    fs_gbuffer_alloc(&gb, 96, 96, 0);
+    fs_gbuffer_alloc(&gb, 96, 96);
     const char *sets[] = {"filter=none", "thickness=off", NULL};
     CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
     fs_grid g;
@@ -159,7 +159,7 @@ static void filters(void)
         snprintf(set, sizeof set, "filter=%s", names[k]);
         const char *sets[] = {set, NULL};
         fs_stages st = {0};
-        fs_gbuffer_alloc(&gb[k], 128, 128, 0);
+        fs_gbuffer_alloc(&gb[k], 128, 128);
         CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
         const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback", NULL};
         const char *missing = fs_test_missing_stage(&st, want);
@@ -259,7 +259,7 @@ static void narrow_discontinuity(void)
         char set[64];
         snprintf(set, sizeof set, "filter=%s", names[k]);
         const char *sets[] = {set, "anisotropy=off", NULL};
-        fs_gbuffer_alloc(&gb[k], 128, 128, 0);
+        fs_gbuffer_alloc(&gb[k], 128, 128);
         CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], NULL) == FS_OK, "%s: %s", names[k],
               fs_error_message());
     }
@@ -285,7 +285,7 @@ static void plane_normals(void)
     patch(&p, 17);
     fs_camera cam = {{0.1f, -0.2f, 0.8f}, {0, 0, 0}, {0, 1, 0}, 40.0f, 128, 128, 0.05f, 5.0f};
     fs_gbuffer gb;
-    fs_gbuffer_alloc(&gb, 128, 128, 0);
+    fs_gbuffer_alloc(&gb, 128, 128);
     const char *sets[] = {"filter=none", "kappa=50", NULL};
     CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb, NULL) == FS_OK, "render: %s", fs_error_message());
     float nz[3] = {0, 0, 1}, nv[3];
@@ -319,8 +319,8 @@ static void aniso_reference(void)
     CHECK(fs_synthetic_generate(&s, 0, &p) == FS_OK, "box: %s", fs_error_message());
     fs_camera cam = {{0.5f, 0.6f, 0.7f}, {0, 5 * R_, 0}, {0, 1, 0}, 40.0f, 64, 64, 0.05f, 10.0f};
     fs_gbuffer iso, ani;
-    fs_gbuffer_alloc(&iso, 64, 64, 0);
-    fs_gbuffer_alloc(&ani, 64, 64, 0);
+    fs_gbuffer_alloc(&iso, 64, 64);
+    fs_gbuffer_alloc(&ani, 64, 64);
     const char *sets[] = {"field=anisotropic", NULL};
     CHECK(fs_test_render("reference", NULL, &p, field(), &cam, &iso, NULL) == FS_OK, "iso: %s", fs_error_message());
     CHECK(fs_test_render("reference", sets, &p, field(), &cam, &ani, NULL) == FS_OK, "aniso: %s", fs_error_message());

@@ -17,7 +17,7 @@ static const float R_PART = 0.25f; /* particle radius r */
 static fs_gbuffer new_gbuf(void)
 {
     fs_gbuffer g;
-    if (fs_gbuffer_alloc(&g, W, H, 0) != FS_OK) {
+    if (fs_gbuffer_alloc(&g, W, H) != FS_OK) {
         fprintf(stderr, "%s\n", fs_error_message());
         exit(1);
     }
@@ -432,7 +432,7 @@ static void test_psnr(void)
 static void test_bad_input(void)
 {
     fs_gbuffer a = new_gbuf(), c;
-    CHECK(fs_gbuffer_alloc(&c, W, H / 2, 0) == FS_OK, "alloc");
+    CHECK(fs_gbuffer_alloc(&c, W, H / 2) == FS_OK, "alloc");
     fs_metrics m;
     memset(&m, 0x55, sizeof m);
     fs_metrics before = m;

@@ -25,8 +25,8 @@ static void against_reference(void)
     CHECK(rc == FS_OK, "read: %s", fs_error_message());
     if (rc) return;
     fs_gbuffer a, b;
-    fs_gbuffer_alloc(&a, 128, 128, 0);
-    fs_gbuffer_alloc(&b, 128, 128, 0);
+    fs_gbuffer_alloc(&a, 128, 128);
+    fs_gbuffer_alloc(&b, 128, 128);
     fs_stages st = {0};
     CHECK(fs_test_render("raycast_pca", NULL, &p, f, &s.camera, &a, &st) == FS_OK, "raycast_pca: %s", fs_error_message());
     CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &b, NULL) == FS_OK, "reference: %s", fs_error_message());
@@ -95,13 +95,13 @@ static void normal_switches(void)
     fs_camera cam = {{0, 50 * r, 45 * r}, {0, 12 * r, 0}, {0, 1, 0}, 40.0f, 128, 128, 0.1f, 10.0f};
     fs_field f = fs_scene_field(&s);
     fs_gbuffer ana, g[4];
-    fs_gbuffer_alloc(&ana, 128, 128, 0);
+    fs_gbuffer_alloc(&ana, 128, 128);
     fs_synthetic_analytic(&s, 0, &cam, &ana);
     const char *basic[] = {"normals=basic", "normal_filter=off", NULL}, *pca[] = {"normals=pca", "normal_filter=off", NULL};
     const char *blend[] = {"normals=blend", "normal_filter=off", NULL}, *filt[] = {"normals=blend", NULL};
     const char *const *sets[4] = {basic, pca, blend, filt};
     for (int k = 0; k < 4; k++) {
-        fs_gbuffer_alloc(&g[k], 128, 128, 0);
+        fs_gbuffer_alloc(&g[k], 128, 128);
         CHECK(fs_test_render("raycast_pca", sets[k], &p, f, &cam, &g[k], NULL) == FS_OK, "render %d: %s", k, fs_error_message());
     }
     unsigned char *in = malloc(128 * 128);
@@ -148,7 +148,7 @@ static void colour_tracking(void)
     fs_field f = {r, 0.8f * 8 * r * r * r, FS_KERNEL_CUBIC, 4 * r, 0.6f};
     fs_camera cam = {{0, 8 * r, 60 * r}, {0, 8 * r, 0}, {0, 1, 0}, 40.0f, 128, 64, 0.1f, 10.0f};
     fs_gbuffer g;
-    fs_gbuffer_alloc(&g, 128, 64, 1);
+    fs_gbuffer_alloc(&g, 128, 64);
     CHECK(fs_test_render("raycast_pca", NULL, &p, f, &cam, &g, NULL) == FS_OK, "render: %s", fs_error_message());
     float rt[3], up[3], fwd[3];
     fs_camera_basis(&cam, rt, up, fwd);
@@ -160,7 +160,7 @@ static void colour_tracking(void)
             float d[3];
             fs_camera_ray(&cam, x + 0.5f, y + 0.5f, d);
             float wx = cam.eye[0] + g.depth[i] / (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]) * d[0];
-            const float *c = g.color + 4 * i;
+            const float *c = fs_gbuffer_aov(&g, FS_AOV_COLOR) + 4 * i;
             if (wx < -5 * r) { red++; wrong += !(c[0] > 0.999f && c[2] < 0.001f && c[3] == 1); }
             else if (wx > 5 * r) { blue++; wrong += !(c[2] > 0.999f && c[0] < 0.001f && c[3] == 1); }
             else if (fabsf(wx) < 0.3f * r) mixed += c[0] > 0.2f && c[2] > 0.2f;

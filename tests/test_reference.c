@@ -70,8 +70,8 @@ static void flat_normals(void)
     float r = s.radius;
     fs_camera cam = {{0, 50 * r, 45 * r}, {0, 12 * r, 0}, {0, 1, 0}, 40.0f, 96, 96, 0.1f, 10.0f};
     fs_gbuffer ref, ana;
-    fs_gbuffer_alloc(&ref, 96, 96, 0);
-    fs_gbuffer_alloc(&ana, 96, 96, 0);
+    fs_gbuffer_alloc(&ref, 96, 96);
+    fs_gbuffer_alloc(&ana, 96, 96);
     CHECK(render(&s, &cam, NULL, &ref) == FS_OK, "render: %s", fs_error_message());
     fs_synthetic_analytic(&s, 0, &cam, &ana);
     float rt[3], up[3], fwd[3];
@@ -158,8 +158,8 @@ static void against_analytic(void)
             fs_scene s = scene(shapes[si], 0.1f, seeds[k]);
             fs_camera cam = framing(&s);
             fs_gbuffer ref, ana;
-            fs_gbuffer_alloc(&ref, cam.width, cam.height, 0);
-            fs_gbuffer_alloc(&ana, cam.width, cam.height, 0);
+            fs_gbuffer_alloc(&ref, cam.width, cam.height);
+            fs_gbuffer_alloc(&ana, cam.width, cam.height);
             CHECK(render(&s, &cam, NULL, &ref) == FS_OK, "render %s: %s", names[si], fs_error_message());
             CHECK(fs_synthetic_analytic(&s, 0, &cam, &ana) == FS_OK, "analytic %s", names[si]);
             stats st = compare(&ref, &ana, s.radius);
@@ -190,8 +190,8 @@ static void thickness_and_params(void)
     float r = s.radius;
     fs_camera cam = {{0.3f * r, 60 * r, 0.7f * r}, {0.3f * r, 0, 0.7f * r}, {0, 0, -1}, 20.0f, 17, 17, 0.1f, 10.0f};
     fs_gbuffer on, off;
-    fs_gbuffer_alloc(&on, 17, 17, 0);
-    fs_gbuffer_alloc(&off, 17, 17, 0);
+    fs_gbuffer_alloc(&on, 17, 17);
+    fs_gbuffer_alloc(&off, 17, 17);
     CHECK(render(&s, &cam, NULL, &on) == FS_OK, "thickness on");
     CHECK(render(&s, &cam, "reference.thickness=off", &off) == FS_OK, "thickness off");
     size_t mid = 8 * 17 + 8;

@@ -1,6 +1,7 @@
 /* The run layer with a test-only method registered through the same API as the
  * built-in table (fs_method_register, hidden from the listing): render, shade,
- * provenance, an EXR written and read back; the particle-lifetime rule (the
+ * provenance, an EXR written and read back with the AOV the method declares (and
+ * none for a method that declares none); the particle-lifetime rule (the
  * method keeps the pointers it was given while the caller's struct goes out of
  * scope); a failed upload; an empty frame; a GL method without a context.
  * Links the run and report layers only, not methods/. */
@@ -17,7 +18,8 @@
 
 /* "flat": every pixel whose ray passes within the particles' box (seen along
  * the view axis) is covered, at the depth of the box's nearest face; it keeps
- * the particle set it was given, as surfels and volume_raycast do. */
+ * the particle set it was given, as surfels and volume_raycast do. It declares
+ * one AOV, "test_aov", holding each pixel's index. */
 typedef struct flat_params { double depth_scale; } flat_params;
 static const fs_param_def flat_table[] = {
     {"depth_scale", offsetof(flat_params, depth_scale), FS_PARAM_FLOAT, 1.0, 0.1, 10, NULL, "scales the depth"},
@@ -37,13 +39,16 @@ static int flat_upload(void *self, const fs_particles *p, const fs_grid *g)
     ((flat *)self)->p = p; /* read again in render */
     return FS_OK;
 }
+static float aov_value(size_t i) { return (float)i + 0.25f; }
 static int flat_render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
 {
     flat *F = self;
     F->renders++;
     const fs_particles *p = F->p;
+    float *aov = fs_gbuffer_aov(out, "test_aov"); /* NULL for the copy that declares none */
     for (int y = 0; y < out->h; y++)
         for (int x = 0; x < out->w; x++) {
+            if (aov) aov[(size_t)y * out->w + x] = aov_value((size_t)y * out->w + x);
             float d[3];
             fs_camera_ray(cam, x + 0.5f, y + 0.5f, d);
             float t = (p->bmax[2] - cam->eye[2]) / d[2], hx = cam->eye[0] + t * d[0], hy = cam->eye[1] + t * d[1];
@@ -58,10 +63,13 @@ static int flat_render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_sta
 }
 static void flat_destroy(void *self) { ((flat *)self)->p = NULL; }
 
+static const fs_aov_def flat_aovs[] = {{"test_aov", 1, 0}};
 static const fs_method flat_method = {
     .name = "test_flat",
     .description = "test-only: the particles' box as a flat face",
     .paper = "",
+    .aovs = flat_aovs,
+    .naovs = 1,
     .params = flat_table,
     .nparams = 1,
     .params_size = sizeof(flat_params),
@@ -126,7 +134,29 @@ static void registry(void)
     for (int i = 0; i < fs_method_count(); i++) CHECK(fs_method_at(i) != &flat_method, "listed at %d", i);
 }
 
-/* Render, shade, provenance, EXR written and read back. */
+/* The EXR at path holds the core channels plus "test_aov" when want_aov, and
+ * reads back with exactly that AOV and its values. */
+static void check_exr_aovs(const char *path, int want_aov)
+{
+    fs_image img;
+    CHECK(fs_read_image(path, &img) == FS_OK, "read %s: %s", path, fs_error_message());
+    CHECK(img.nch == 10 + want_aov && (fs_image_channel(&img, "test_aov") >= 0) == want_aov,
+          "%s: %d channels, test_aov %s", path, img.nch, want_aov ? "missing" : "there");
+    fs_image_free(&img);
+    fs_gbuffer back;
+    float *rgba = NULL, r = 0;
+    CHECK(fs_read_render(path, &back, &rgba, &r) == FS_OK, "read back: %s", fs_error_message());
+    if (!rgba) return;
+    const float *aov = fs_gbuffer_aov(&back, "test_aov");
+    CHECK(back.naovs == want_aov && (aov != NULL) == want_aov, "%s: %d AOVs read back", path, back.naovs);
+    size_t same = 0, n = (size_t)back.w * back.h;
+    for (size_t i = 0; aov && i < n; i++) same += aov[i] == aov_value(i);
+    CHECK(!aov || same == n, "%zu of %zu test_aov pixels read back as written", same, n);
+    fs_gbuffer_free(&back);
+    free(rgba);
+}
+
+/* Render, shade, provenance, EXR written and read back (with the declared AOV). */
 static void render_and_read_back(void)
 {
     fs_scene_defaults(&scene);
@@ -154,6 +184,8 @@ static void render_and_read_back(void)
     }
     size_t n = covered(&im.g);
     CHECK(n > 200 && n < 64 * 64 / 2, "the face covers %zu px", n);
+    CHECK(im.g.naovs == 1 && fs_gbuffer_aov(&im.g, "test_aov"), "the run allocated the declared AOV (%d AOVs)",
+          im.g.naovs);
     fs_provenance prov;
     fs_run_provenance(run, NULL, 7, &prov);
     const char *path = FS_TEST_OUT "/test_run_flat.exr";
@@ -173,6 +205,7 @@ static void render_and_read_back(void)
         CHECK(fabsf(r - 0.05f) < 1e-7f, "r in the provenance: %g", r);
     }
     char attr[64];
+    check_exr_aovs(path, 1);
     CHECK(fs_read_image_attr(path, "fluidsurf:method", attr, sizeof attr) == 1 && !strcmp(attr, "test_flat"),
           "method in the EXR: %s", attr);
     CHECK(fs_read_image_attr(path, "fluidsurf:frame", attr, sizeof attr) == 1 && !strcmp(attr, "7"), "frame: %s", attr);
@@ -183,6 +216,69 @@ static void render_and_read_back(void)
     fs_run_image_free(&im);
     fs_run_close(run);
     fs_particles_free(&p);
+}
+
+/* The same method declaring no AOV: the G-buffer and the EXR have none. */
+static void without_aovs(void)
+{
+    static fs_method plain;
+    plain = flat_method;
+    plain.name = "test_flat_plain";
+    plain.aovs = NULL, plain.naovs = 0;
+    fs_particles p;
+    square(&p, 8, 0.3f);
+    fs_run *run = NULL;
+    fs_run_image im = {0};
+    fs_camera cam = camera();
+    int rc = fs_run_open(&run, &plain, &scene, NULL, NULL);
+    if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
+    if (!rc) rc = fs_run_render(run, &cam, &im, NULL);
+    if (!rc) rc = fs_run_shade(run, &cam, &im, FS_APPEARANCE_SHARED, NULL);
+    CHECK(rc == FS_OK, "render: %s", fs_error_message());
+    if (!rc) {
+        CHECK(im.g.naovs == 0 && !fs_gbuffer_aov(&im.g, "test_aov"), "%d AOVs without a declaration", im.g.naovs);
+        fs_provenance prov;
+        fs_run_provenance(run, NULL, 0, &prov);
+        const char *path = FS_TEST_OUT "/test_run_plain.exr";
+        unlink(path);
+        CHECK(fs_write_render(path, &im.g, im.rgba, &prov) == FS_OK, "write: %s", fs_error_message());
+        check_exr_aovs(path, 0);
+    }
+    fs_run_image_free(&im);
+    fs_run_close(run);
+    fs_particles_free(&p);
+}
+
+/* The G-buffer's AOV list: added once, shapes checked, cleared; a 4-component
+ * AOV written as NAME.R/G/B/A and read back by name. */
+static void aov_list(void)
+{
+    fs_gbuffer g;
+    CHECK(fs_gbuffer_alloc(&g, 4, 2) == FS_OK && g.naovs == 0 && !fs_gbuffer_aov(&g, FS_AOV_OWN), "none at first");
+    CHECK(fs_gbuffer_add_aov(&g, FS_AOV_OWN, 4) == FS_OK && fs_gbuffer_add_aov(&g, "extra", 1) == FS_OK &&
+              fs_gbuffer_add_aov(&g, FS_AOV_OWN, 4) == FS_OK && g.naovs == 2, "added once each: %d", g.naovs);
+    CHECK(fs_gbuffer_add_aov(&g, FS_AOV_COLOR, 1) == FS_ERR_INPUT, "color has 4 components");
+    CHECK(fs_gbuffer_add_aov(&g, "a.b", 1) == FS_ERR_INPUT && fs_gbuffer_add_aov(&g, "x", 3) == FS_ERR_INPUT,
+          "no '.' in a name, 1 or 4 components");
+    float *own = fs_gbuffer_aov(&g, FS_AOV_OWN), *extra = fs_gbuffer_aov(&g, "extra");
+    for (int i = 0; i < 8; i++) extra[i] = (float)i, own[4 * i + 3] = 0.5f;
+    float rgba[32] = {0};
+    fs_provenance prov = {0};
+    const char *path = FS_TEST_OUT "/test_run_aovs.exr";
+    CHECK(fs_write_render(path, &g, rgba, &prov) == FS_OK, "write: %s", fs_error_message());
+    fs_gbuffer back;
+    float *brgba = NULL, r;
+    CHECK(fs_read_render(path, &back, &brgba, &r) == FS_OK, "read back: %s", fs_error_message());
+    if (brgba) {
+        CHECK(back.naovs == 2, "%d AOVs read back", back.naovs); /* in the file's order: EXR sorts channels */
+        const float *bo = fs_gbuffer_aov(&back, FS_AOV_OWN), *be = fs_gbuffer_aov(&back, "extra");
+        CHECK(bo && be && bo[4 * 7 + 3] == 0.5f && bo[4 * 7] == 0 && be[7] == 7, "values read back");
+        fs_gbuffer_free(&back);
+        free(brgba);
+    }
+    fs_gbuffer_clear(&g);
+    CHECK(extra[7] == 0 && own[3] == 0, "clear zeroes the AOVs");
+    fs_gbuffer_free(&g);
 }
 
 /* The method keeps the pointer it was given at upload; the caller's struct is
@@ -239,6 +335,8 @@ int main(void)
 {
     registry();
     render_and_read_back();
+    without_aovs();
+    aov_list();
     lifetime_and_failures();
     gl_without_context();
     TEST_DONE();

@@ -136,9 +136,11 @@ static void test_opaque_light(fs_gbuffer *g, float *img)
 
     /* G-buffer colour replaces the material colour. */
     fs_gbuffer gc;
-    CHECK(fs_gbuffer_alloc(&gc, W, H, 1) == FS_OK, "alloc: %s", fs_error_message());
+    CHECK(fs_gbuffer_alloc(&gc, W, H) == FS_OK && fs_gbuffer_add_aov(&gc, FS_AOV_COLOR, 4) == FS_OK, "alloc: %s",
+          fs_error_message());
     patch(&gc, toward, toward, 0.2f);
-    for (int i = 0; i < W * H; i++) { gc.color[4 * i] = 0.9f; gc.color[4 * i + 3] = 1; }
+    float *color = fs_gbuffer_aov(&gc, FS_AOV_COLOR);
+    for (int i = 0; i < W * H; i++) { color[4 * i] = 0.9f; color[4 * i + 3] = 1; }
     fs_shade(&s, &cam, &gc, 0, img);
     const float *p = img + 4 * (H / 2 * W + 10);
     CHECK(p[0] > 0.5f && p[0] > 3 * p[1] && p[0] > 3 * p[2], "G-buffer colour ignored: %g %g %g", p[0], p[1], p[2]);
@@ -253,7 +255,7 @@ static void test_golden_ball(fs_gbuffer *g, float *img)
 int main(void)
 {
     fs_gbuffer g;
-    if (fs_gbuffer_alloc(&g, W, H, 0) != FS_OK) { fprintf(stderr, "%s\n", fs_error_message()); return 1; }
+    if (fs_gbuffer_alloc(&g, W, H) != FS_OK) { fprintf(stderr, "%s\n", fs_error_message()); return 1; }
     float *a = malloc(sizeof(float) * 4 * W * H), *b = malloc(sizeof(float) * 4 * W * H);
     test_coverage(&g, a, b);
     test_background(a, &g);

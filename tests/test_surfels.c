@@ -81,9 +81,9 @@ static void against_reference(void)
     fs_field f;
     if (load_dam(&p, &s, &f)) return;
     fs_gbuffer a, b, c;
-    fs_gbuffer_alloc(&a, 128, 128, 0);
-    fs_gbuffer_alloc(&b, 128, 128, 0);
-    fs_gbuffer_alloc(&c, 128, 128, 0);
+    fs_gbuffer_alloc(&a, 128, 128);
+    fs_gbuffer_alloc(&b, 128, 128);
+    fs_gbuffer_alloc(&c, 128, 128);
     fs_stages st = {0};
     const char *splat[] = {"grid_res=128", NULL}, *exact[] = {"grid_res=128", "grid_build=exact", NULL};
     CHECK(fs_test_render("surfels", splat, &p, f, &s.camera, &a, &st) == FS_OK, "surfels: %s", fs_error_message());
@@ -135,16 +135,19 @@ static void own_appearance_and_exports(void)
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
     if (rc) { fs_run_close(run); fs_run_image_free(&im); fs_particles_free(&p); return; }
     const fs_gbuffer g = im.g;
+    const float *own = fs_gbuffer_aov(&g, FS_AOV_OWN), *caustics = fs_gbuffer_aov(&g, FS_AOV_CAUSTICS);
+    CHECK(own && caustics, "the declared AOVs own and caustics are there");
+    if (!own || !caustics) { fs_run_close(run); fs_run_image_free(&im); fs_particles_free(&p); return; }
     size_t water = 0, caustic_water = 0, sky = 0, sky_caustic = 0;
     for (int i = 0; i < 128 * 128; i++) {
-        const float *o = g.own + 4 * i;
+        const float *o = own + 4 * i;
         CHECK(isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]) && o[3] == 1.0f, "pixel %d not finite", i);
         if (g.coverage[i] > 0) {
             water++;
-            caustic_water += g.caustics[i] > 0;
+            caustic_water += caustics[i] > 0;
         } else if (i < 128 * 8) { /* the top rows see the sky */
             sky++;
-            sky_caustic += g.caustics[i] != 0;
+            sky_caustic += caustics[i] != 0;
         }
     }
     printf("(c) own appearance: %zu water px (%zu see caustic light), %zu sky px\n", water, caustic_water, sky);
@@ -160,9 +163,10 @@ static void own_appearance_and_exports(void)
     if (!rc) rc = fs_run_render(plain, &s.camera, &him, NULL);
     CHECK(rc == FS_OK, "render without object: %s", fs_error_message());
     const fs_gbuffer h = him.g;
+    const float *hown = fs_gbuffer_aov(&h, FS_AOV_OWN);
     size_t changed = 0, gdiff = 0;
     for (int i = 0; !rc && i < 128 * 128; i++) {
-        float d = fabsf(g.own[4 * i] - h.own[4 * i]) + fabsf(g.own[4 * i + 2] - h.own[4 * i + 2]);
+        float d = fabsf(own[4 * i] - hown[4 * i]) + fabsf(own[4 * i + 2] - hown[4 * i + 2]);
         changed += d > 0.02f;
         gdiff += g.coverage[i] != h.coverage[i] || (g.coverage[i] > 0 && g.depth[i] != h.depth[i]);
     }

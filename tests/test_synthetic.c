@@ -105,7 +105,7 @@ static void analytic(void)
     float r = s.radius, top = 12 * r, eye = 100 * r;
     fs_camera cam = down_camera(eye);
     fs_gbuffer gb;
-    fs_gbuffer_alloc(&gb, cam.width, cam.height, 0);
+    fs_gbuffer_alloc(&gb, cam.width, cam.height);
     CHECK(fs_synthetic_analytic(&s, 0, &cam, &gb) == FS_OK, "analytic: %s", fs_error_message());
     size_t mid = 64 * 129 + 64; /* the centre pixel's ray is vertical */
     CHECK(gb.coverage[mid] == 1, "centre covered");
@@ -141,7 +141,7 @@ static void analytic(void)
     fs_camera in = down_camera(4 * r);
     in.width = in.height = 16;
     fs_gbuffer small;
-    fs_gbuffer_alloc(&small, 16, 16, 0);
+    fs_gbuffer_alloc(&small, 16, 16);
     CHECK(fs_synthetic_analytic(&s, 0, &in, &small) == FS_OK, "inside camera");
     float cov = 0;
     for (int i = 0; i < 256; i++) cov += small.coverage[i];

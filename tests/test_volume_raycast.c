@@ -101,10 +101,10 @@ static void against_reference(void)
     fs_field f;
     if (load_dam(&p, &s, &f)) return;
     fs_gbuffer a, b, c, e;
-    fs_gbuffer_alloc(&a, 128, 128, 0);
-    fs_gbuffer_alloc(&b, 128, 128, 0);
-    fs_gbuffer_alloc(&c, 128, 128, 0);
-    fs_gbuffer_alloc(&e, 128, 128, 0);
+    fs_gbuffer_alloc(&a, 128, 128);
+    fs_gbuffer_alloc(&b, 128, 128);
+    fs_gbuffer_alloc(&c, 128, 128);
+    fs_gbuffer_alloc(&e, 128, 128);
     fs_stages st = {0};
     const char *layered[] = {"grid_res=128", NULL}, *slice[] = {"grid_res=128", "build=slice", NULL},
                *exact[] = {"grid_res=128", "build=exact", NULL};
@@ -170,6 +170,9 @@ static void transfer_and_export(void)
         if (!rc) rc = fs_run_upload(runs[k], &p, NULL, NULL);
         if (!rc) rc = fs_run_render(runs[k], &s.camera, &im[k], NULL);
     }
+    for (int k = 0; k < 2 && !rc; k++)
+        if (!fs_gbuffer_aov(&im[k].g, FS_AOV_OWN) || !fs_gbuffer_aov(&im[k].g, FS_AOV_CAUSTICS))
+            rc = fs_fail(FS_ERR_RUNTIME, "the declared AOVs own and caustics are missing");
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
     if (rc) {
         for (int k = 0; k < 2; k++) { fs_run_close(runs[k]); fs_run_image_free(&im[k]); }
@@ -177,29 +180,34 @@ static void transfer_and_export(void)
         return;
     }
     const fs_gbuffer g[2] = {im[0].g, im[1].g};
+    const float *own[2], *caustics[2];
+    for (int k = 0; k < 2; k++) {
+        own[k] = fs_gbuffer_aov(&g[k], FS_AOV_OWN);
+        caustics[k] = fs_gbuffer_aov(&g[k], FS_AOV_CAUSTICS);
+    }
     fs_run *opaque = runs[0];
     size_t water = 0, differ = 0, gdiff = 0, bad = 0;
     double lum[2] = {0, 0};
     for (int i = 0; i < 128 * 128; i++) {
         for (int k = 0; k < 2; k++) {
-            const float *o = g[k].own + 4 * i;
-            bad += !(isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]) && o[3] == 1.0f && g[k].caustics[i] == 0.0f);
+            const float *o = own[k] + 4 * i;
+            bad += !(isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2]) && o[3] == 1.0f && caustics[k][i] == 0.0f);
         }
         gdiff += g[0].coverage[i] != g[1].coverage[i] || (g[0].coverage[i] > 0 && g[0].depth[i] != g[1].depth[i]);
         if (!g[0].coverage[i]) {
             /* the top rows see the sky past the water: the same background in both modes
              * (elsewhere the translucent skin below iso may tint pixels next to the water) */
             if (i < 128 * 8)
-                for (int c = 0; c < 3; c++) differ += fabsf(g[0].own[4 * i + c] - g[1].own[4 * i + c]) > 1e-5f;
+                for (int c = 0; c < 3; c++) differ += fabsf(own[0][4 * i + c] - own[1][4 * i + c]) > 1e-5f;
             continue;
         }
         water++;
-        for (int k = 0; k < 2; k++) lum[k] += g[k].own[4 * i] + g[k].own[4 * i + 1] + g[k].own[4 * i + 2];
+        for (int k = 0; k < 2; k++) lum[k] += own[k][4 * i] + own[k][4 * i + 1] + own[k][4 * i + 2];
     }
     size_t changed = 0;
     for (int i = 0; i < 128 * 128; i++)
         if (g[0].coverage[i])
-            changed += fabsf(g[0].own[4 * i] - g[1].own[4 * i]) + fabsf(g[0].own[4 * i + 2] - g[1].own[4 * i + 2]) > 0.02f;
+            changed += fabsf(own[0][4 * i] - own[1][4 * i]) + fabsf(own[0][4 * i + 2] - own[1][4 * i + 2]) > 0.02f;
     printf("(c) %zu water px; own surface vs translucent: %zu water px differ, mean rgb sum %.3f vs %.3f\n", water,
            changed, lum[0] / (water ? water : 1), lum[1] / (water ? water : 1));
     CHECK(bad == 0, "%zu own pixels not finite / not opaque / with caustics", bad);

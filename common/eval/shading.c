@@ -163,6 +163,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
     /* The G-buffer may be smaller or larger than the camera's image: scale pixel positions. */
     float sx = (float)cam->width / g->w, sy = (float)cam->height / g->h;
     int w = g->w, h = g->h;
+    const float *color = fs_gbuffer_aov(g, FS_AOV_COLOR); /* NULL: the material's colour */
 
 #pragma omp parallel for schedule(static)
     for (int y = 0; y < h; y++) {
@@ -184,7 +185,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
                     for (int i = 0; i < 3; i++) n[i] -= (0.02f - nv) * d[i];
                     normalize3(n);
                 }
-                const float *albedo = g->color ? g->color + 4 * idx : s->material_color;
+                const float *albedo = color ? color + 4 * idx : s->material_color;
                 float v[3] = {-d[0], -d[1], -d[2]};
                 if (s->material == FS_MATERIAL_OPAQUE) {
                     shade_opaque(&c, n, v, albedo, col);

@@ -23,9 +23,17 @@ typedef struct fs_method_setup {
      * create() copies what it keeps, so it need only live during create(). */
     const void *params;
     /* Light, material, floor and up axis, for methods with their own appearance
-     * (writes_own); NULL means fs_scene_defaults(). */
+     * (the "own" AOV); NULL means fs_scene_defaults(). */
     const struct fs_scene *scene;
 } fs_method_setup;
+
+/* An optional G-buffer layer a method writes (gbuffer.h): the run layer
+ * allocates each declared one, the EXR writer and reader keep it by name. */
+typedef struct fs_aov_def {
+    const char *name; /* FS_AOV_COLOR, FS_AOV_OWN, ... or a method's own */
+    int ncomp;        /* 1 or 4 */
+    int needs_color;  /* 1: written only when the particles carry colour */
+} fs_aov_def;
 
 typedef struct fs_method {
     const char *name;
@@ -34,8 +42,10 @@ typedef struct fs_method {
     const char *appearance;  /* its own look, for `methods` (NULL: only the shared shading) */
     const char *exports;     /* what export_file writes, for `methods` (NULL: nothing) */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
-    int writes_color;        /* 1: fills out->color when the particles carry colour */
-    int writes_own;          /* 1: fills out->own and out->caustics when they are allocated */
+    /* The AOVs render() fills (render finds each in out by name); a method with
+     * its own appearance declares FS_AOV_OWN. */
+    const fs_aov_def *aovs;
+    int naovs;
     const fs_param_def *params; /* one entry per field of its parameter struct */
     int nparams;
     size_t params_size;         /* sizeof that struct */
@@ -64,8 +74,11 @@ const fs_method *fs_method_find(const char *name);
 /* The listed (not hidden) methods, in registration order. */
 int fs_method_count(void);
 const fs_method *fs_method_at(int i);
-/* 1 when the G-buffer for m on particles p needs a colour layer. */
-int fs_method_wants_color(const fs_method *m, const fs_particles *p);
+/* m's declaration of the AOV called name, NULL when it writes none such
+ * (fs_method_aov(m, FS_AOV_OWN): whether m has its own appearance). */
+const fs_aov_def *fs_method_aov(const fs_method *m, const char *name);
+/* 1 when m writes AOV d for particles p (a colour layer needs particle colours). */
+int fs_method_aov_wanted(const fs_aov_def *d, const fs_particles *p);
 /* Index of a parameter in m->params, or -1. */
 int fs_method_param_index(const fs_method *m, const char *name);
 /* For create(): FS_OK when r, H, V and iso are all positive, else FS_ERR_INPUT

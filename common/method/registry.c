@@ -49,7 +49,14 @@ int fs_method_param_index(const fs_method *m, const char *name)
     return -1;
 }
 
-int fs_method_wants_color(const fs_method *m, const fs_particles *p) { return m->writes_color && p->color != NULL; }
+const fs_aov_def *fs_method_aov(const fs_method *m, const char *name)
+{
+    for (int i = 0; i < m->naovs; i++)
+        if (!strcmp(m->aovs[i].name, name)) return &m->aovs[i];
+    return NULL;
+}
+
+int fs_method_aov_wanted(const fs_aov_def *d, const fs_particles *p) { return !d->needs_color || p->color != NULL; }
 
 int fs_method_check_field(const char *method, const fs_field *f)
 {

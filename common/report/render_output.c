@@ -3,6 +3,7 @@
 #include "output_file.h"
 #include "fs_error.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -13,47 +14,127 @@ int fs_check_render_path(const char *path)
     return fs_fail(FS_ERR_INPUT, "%s: output must end in .png or .exr", path);
 }
 
+/* The suffixes of a 4-component AOV's channels: NAME.R NAME.G NAME.B NAME.A. */
+static const char *const rgba_suffix[4] = {"R", "G", "B", "A"};
+
+/* The core layers' channels, in the order they are written. */
+enum { CORE_CHANNELS = 10 };
+static const char *const core_names[CORE_CHANNELS] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z",
+                                                      "thickness", "coverage"};
+
+/* An AOV's EXR channel names into names (from names[0]); returns how many. */
+static int aov_channel_names(const fs_aov *a, char names[][FS_AOV_NAME_MAX + 2])
+{
+    if (a->ncomp == 1) {
+        snprintf(names[0], FS_AOV_NAME_MAX + 2, "%s", a->name);
+        return 1;
+    }
+    for (int k = 0; k < 4; k++) snprintf(names[k], FS_AOV_NAME_MAX + 2, "%s.%s", a->name, rgba_suffix[k]);
+    return 4;
+}
+
+/* One pixel of the EXR: the core channels, then every AOV's components. */
+static void pack_pixel(const fs_gbuffer *g, const float *rgba, size_t i, float *o)
+{
+    memcpy(o, rgba + 4 * i, 4 * sizeof(float));
+    o[4] = g->depth[i];
+    memcpy(o + 5, g->normal + 3 * i, 3 * sizeof(float));
+    o[8] = g->thickness[i];
+    o[9] = g->coverage[i];
+    o += CORE_CHANNELS;
+    for (int a = 0; a < g->naovs; a++) {
+        int c = g->aov[a].ncomp;
+        memcpy(o, g->aov[a].data + c * i, c * sizeof(float));
+        o += c;
+    }
+}
+
+static int write_exr(const char *path, const fs_gbuffer *g, const float *rgba, const fs_provenance *prov)
+{
+    char aov_names[4 * FS_GBUFFER_MAX_AOVS][FS_AOV_NAME_MAX + 2];
+    const char *names[CORE_CHANNELS + 4 * FS_GBUFFER_MAX_AOVS];
+    int nch = 0, naov = 0;
+    for (; nch < CORE_CHANNELS; nch++) names[nch] = core_names[nch];
+    for (int a = 0; a < g->naovs; a++) naov += aov_channel_names(&g->aov[a], aov_names + naov);
+    for (int k = 0; k < naov; k++) names[nch++] = aov_names[k];
+    size_t n = (size_t)g->w * g->h;
+    float *pix = malloc(n * nch * sizeof(float));
+    if (!pix) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    for (size_t i = 0; i < n; i++) pack_pixel(g, rgba, i, pix + i * nch);
+    fs_image img = {g->w, g->h, nch, names, pix};
+    int rc = fs_write_exr(path, &img, prov->attr, prov->n);
+    free(pix);
+    return rc;
+}
+
 int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, const fs_provenance *prov)
 {
     int rc = fs_check_render_path(path);
     if (rc) return rc;
-    size_t n = (size_t)g->w * g->h;
-    if (fs_path_ends_with(path, ".png")) {
-        const char *names[4] = {"R", "G", "B", "A"};
-        fs_image img = {g->w, g->h, 4, names, (float *)rgba};
-        return fs_write_png(path, &img);
+    if (fs_path_ends_with(path, ".exr")) return write_exr(path, g, rgba, prov);
+    const char *names[4] = {"R", "G", "B", "A"};
+    fs_image img = {g->w, g->h, 4, names, (float *)rgba};
+    return fs_write_png(path, &img);
+}
+
+static int is_core_channel(const char *name)
+{
+    for (int k = 0; k < CORE_CHANNELS; k++)
+        if (!strcmp(name, core_names[k])) return 1;
+    return 0;
+}
+
+/* The channels of the 4-component AOV called base (NAME.R NAME.G NAME.B NAME.A)
+ * into ch: 1 when all four are there. */
+static int rgba_group(const fs_image *img, const char *base, int ch[4])
+{
+    char name[FS_AOV_NAME_MAX + 3];
+    for (int k = 0; k < 4; k++) {
+        snprintf(name, sizeof name, "%s.%s", base, rgba_suffix[k]);
+        if ((ch[k] = fs_image_channel(img, name)) < 0) return 0;
     }
-    const char *names[19] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z", "thickness", "coverage"};
-    int nch = 10, col = -1, own = -1;
-    if (g->color) {
-        static const char *cn[] = {"color.R", "color.G", "color.B", "color.A"};
-        col = nch;
-        for (int k = 0; k < 4; k++) names[nch++] = cn[k];
-    }
-    if (g->own) {
-        static const char *on[] = {"own.R", "own.G", "own.B", "own.A", "caustics"};
-        own = nch;
-        for (int k = 0; k < 5; k++) names[nch++] = on[k];
-    }
-    float *pix = malloc(n * nch * sizeof(float));
-    if (!pix) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
-    for (size_t i = 0; i < n; i++) {
-        float *o = pix + i * nch;
-        memcpy(o, rgba + 4 * i, 4 * sizeof(float));
-        o[4] = g->depth[i];
-        memcpy(o + 5, g->normal + 3 * i, 3 * sizeof(float));
-        o[8] = g->thickness[i];
-        o[9] = g->coverage[i];
-        if (col >= 0) memcpy(o + col, g->color + 4 * i, 4 * sizeof(float));
-        if (own >= 0) {
-            memcpy(o + own, g->own + 4 * i, 4 * sizeof(float));
-            o[own + 4] = g->caustics[i];
+    return 1;
+}
+
+/* Adds to g an AOV for every channel group beyond the core: a channel NAME
+ * without a '.' (1 component), a complete group NAME.R/G/B/A (4); src gets the
+ * image channel of each component. Other channels (another tool's) are skipped. */
+static int add_read_aovs(const char *path, const fs_image *img, fs_gbuffer *g, int src[][4])
+{
+    for (int c = 0; c < img->nch; c++) {
+        const char *nm = img->chnames[c], *dot = strrchr(nm, '.');
+        char base[FS_AOV_NAME_MAX + 1]; /* room for one character too many: a long name is refused, not cut short */
+        int ncomp = 1, ch[4] = {c};
+        if (is_core_channel(nm)) continue;
+        if (dot) { /* its group is added at its .R channel */
+            if (strcmp(dot, ".R")) continue;
+            snprintf(base, sizeof base, "%.*s", (int)(dot - nm), nm);
+            if (!rgba_group(img, base, ch)) continue;
+            ncomp = 4;
+        } else snprintf(base, sizeof base, "%s", nm);
+        int rc = fs_gbuffer_add_aov(g, base, ncomp);
+        if (rc) {
+            char why[256]; /* fs_fail must not format its own message into itself */
+            snprintf(why, sizeof why, "%s", fs_error_message());
+            return fs_fail(rc, "%s: %s", path, why);
         }
+        memcpy(src[g->naovs - 1], ch, sizeof ch);
     }
-    fs_image img = {g->w, g->h, nch, names, pix};
-    rc = fs_write_exr(path, &img, prov->attr, prov->n);
-    free(pix);
-    return rc;
+    return FS_OK;
+}
+
+/* Pixel i of the image into g and rgba (depth and normal only where covered). */
+static void unpack_pixel(const float *px, const int core[CORE_CHANNELS], const int src[][4], size_t i, fs_gbuffer *g,
+                         float *rgba)
+{
+    for (int k = 0; k < 4; k++) rgba[4 * i + k] = px[core[k]];
+    float cov = px[core[9]] > 0.5f ? 1.0f : 0.0f;
+    g->coverage[i] = cov;
+    g->depth[i] = cov ? px[core[4]] : INFINITY;
+    for (int k = 0; k < 3; k++) g->normal[3 * i + k] = cov ? px[core[5 + k]] : 0.0f;
+    g->thickness[i] = core[8] >= 0 ? px[core[8]] : 0.0f;
+    for (int a = 0; a < g->naovs; a++)
+        for (int k = 0; k < g->aov[a].ncomp; k++) g->aov[a].data[g->aov[a].ncomp * i + k] = px[src[a][k]];
 }
 
 int fs_read_render(const char *path, fs_gbuffer *g, float **rgba, float *r_out)
@@ -63,35 +144,23 @@ int fs_read_render(const char *path, fs_gbuffer *g, float **rgba, float *r_out)
     *rgba = NULL;
     int rc = fs_read_image(path, &img);
     if (rc) return rc;
-    static const char *need[] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z", "coverage"};
-    int ch[9];
-    for (int k = 0; k < 9; k++)
-        if ((ch[k] = fs_image_channel(&img, need[k])) < 0) {
+    int core[CORE_CHANNELS], src[FS_GBUFFER_MAX_AOVS][4];
+    for (int k = 0; k < CORE_CHANNELS; k++)
+        if ((core[k] = fs_image_channel(&img, core_names[k])) < 0 && k != 8) { /* thickness is optional */
             fs_image_free(&img);
-            return fs_fail(FS_ERR_INPUT, "%s: no channel '%s' (not a fluidsurf G-buffer EXR)", path, need[k]);
+            return fs_fail(FS_ERR_INPUT, "%s: no channel '%s' (not a fluidsurf G-buffer EXR)", path, core_names[k]);
         }
-    int th = fs_image_channel(&img, "thickness"), col[4];
-    static const char *cn[] = {"color.R", "color.G", "color.B", "color.A"};
-    int has_color = 1;
-    for (int k = 0; k < 4; k++) has_color &= (col[k] = fs_image_channel(&img, cn[k])) >= 0;
     size_t n = (size_t)img.w * img.h;
-    if ((rc = fs_gbuffer_alloc(g, img.w, img.h, has_color)) || !(*rgba = malloc(n * 4 * sizeof(float)))) {
-        fs_gbuffer_free(g);
-        fs_image_free(&img);
-        return rc ? rc : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
-    }
-    for (size_t i = 0; i < n; i++) {
-        const float *px = img.pix + i * img.nch;
-        for (int k = 0; k < 4; k++) (*rgba)[4 * i + k] = px[ch[k]];
-        float cov = px[ch[8]] > 0.5f ? 1.0f : 0.0f;
-        g->coverage[i] = cov;
-        g->depth[i] = cov ? px[ch[4]] : INFINITY;
-        for (int k = 0; k < 3; k++) g->normal[3 * i + k] = cov ? px[ch[5 + k]] : 0.0f;
-        g->thickness[i] = th >= 0 ? px[th] : 0.0f;
-        if (has_color)
-            for (int k = 0; k < 4; k++) g->color[4 * i + k] = px[col[k]];
-    }
+    if (!(rc = fs_gbuffer_alloc(g, img.w, img.h))) rc = add_read_aovs(path, &img, g, src);
+    if (!rc && !(*rgba = malloc(n * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    for (size_t i = 0; i < n && !rc; i++) unpack_pixel(img.pix + i * img.nch, core, src, i, g, *rgba);
     fs_image_free(&img);
+    if (rc) {
+        fs_gbuffer_free(g);
+        free(*rgba);
+        *rgba = NULL;
+        return rc;
+    }
     char buf[64];
     *r_out = 0;
     if (fs_read_image_attr(path, "fluidsurf:r", buf, sizeof buf) == 1) *r_out = strtof(buf, NULL);

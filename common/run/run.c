@@ -153,18 +153,34 @@ int fs_run_export(fs_run *r, const char *path)
     return r->m->export_file(r->self, path);
 }
 
-/* im->g at the camera size with the layers the method writes for this frame. */
+/* 1 when g holds exactly the AOVs m writes for frame p, in its order. */
+static int has_aovs(const fs_gbuffer *g, const fs_method *m, const fs_particles *p)
+{
+    int k = 0;
+    for (int i = 0; i < m->naovs; i++) {
+        const fs_aov_def *d = &m->aovs[i];
+        if (!fs_method_aov_wanted(d, p)) continue;
+        if (k == g->naovs || strcmp(g->aov[k].name, d->name) || g->aov[k].ncomp != d->ncomp) return 0;
+        k++;
+    }
+    return k == g->naovs;
+}
+
+/* im->g at the camera size with the AOVs the method writes for this frame. */
 static int size_gbuffer(const fs_run *r, const fs_camera *cam, fs_run_image *im)
 {
-    int color = fs_method_wants_color(r->m, &r->frame[r->cur]), own = r->m->writes_own;
+    const fs_particles *p = &r->frame[r->cur];
     fs_gbuffer *g = &im->g;
-    if (g->depth && g->w == cam->width && g->h == cam->height && !g->color == !color && !g->own == !own) {
+    if (g->depth && g->w == cam->width && g->h == cam->height && has_aovs(g, r->m, p)) {
         fs_gbuffer_clear(g);
         return FS_OK;
     }
     fs_run_image_free(im);
-    int rc = fs_gbuffer_alloc(g, cam->width, cam->height, color);
-    if (!rc && own) rc = fs_gbuffer_alloc_own(g);
+    int rc = fs_gbuffer_alloc(g, cam->width, cam->height);
+    for (int i = 0; i < r->m->naovs && !rc; i++) {
+        const fs_aov_def *d = &r->m->aovs[i];
+        if (fs_method_aov_wanted(d, p)) rc = fs_gbuffer_add_aov(g, d->name, d->ncomp);
+    }
     return rc;
 }
 
@@ -185,13 +201,14 @@ void fs_run_set_floor(fs_run *r, float y)
 
 int fs_run_shade(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_appearance a, fs_stages *st)
 {
-    if (a == FS_APPEARANCE_OWN && !im->g.own)
+    const float *own = fs_gbuffer_aov(&im->g, FS_AOV_OWN);
+    if (a == FS_APPEARANCE_OWN && !own)
         return fs_fail(FS_ERR_INPUT, "%s: no own appearance (only the shared shading)", r->m->name);
     size_t n = (size_t)im->g.w * im->g.h;
     if (!im->rgba && !(im->rgba = malloc(n * 4 * sizeof(float))))
         return fs_fail(FS_ERR_RUNTIME, "out of memory for a %dx%d image", im->g.w, im->g.h);
     double t0 = fs_now_ms();
-    if (a == FS_APPEARANCE_OWN) memcpy(im->rgba, im->g.own, n * 4 * sizeof(float));
+    if (a == FS_APPEARANCE_OWN) memcpy(im->rgba, own, n * 4 * sizeof(float));
     else fs_shade(r->scene, cam, &im->g, r->floor_y, im->rgba);
     if (st) fs_stages_add(st, "shade", fs_now_ms() - t0);
     return FS_OK;

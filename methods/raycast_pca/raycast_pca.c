@@ -268,12 +268,16 @@ static void thickness_pass(rpca *s, const fs_camera *cam, float splat_r, fs_stag
     }
 }
 
+/* the particles' colours, interpolated like the normals */
+static const fs_aov_def aovs[] = {{FS_AOV_COLOR, 4, 1}};
+
 const fs_method fs_method_raycast_pca = {
     .name = "raycast_pca",
     .description = "splatted entry, narrow-band ray casting of the SPH iso-surface, PCA/SPH-gradient blended normals",
     .paper = "xiao2017",
     .needs_gl = 1,
-    .writes_color = 1,
+    .aovs = aovs,
+    .naovs = sizeof aovs / sizeof *aovs,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(rpca_params),

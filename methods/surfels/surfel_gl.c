@@ -218,11 +218,12 @@ static int read_back(const surfel_gl *s, int w, int h, fs_gbuffer *out, fs_stage
 {
     double t0 = fs_now_ms();
     int rc = fs_gl_target_read(&s->target, out);
-    if (!rc && out->own) {
-        rc = fs_gl_read_texture(s->own_tex, 4, w, h, out->own);
+    float *own = fs_gbuffer_aov(out, FS_AOV_OWN), *caustics = fs_gbuffer_aov(out, FS_AOV_CAUSTICS);
+    if (!rc && own) {
+        rc = fs_gl_read_texture(s->own_tex, 4, w, h, own);
         for (size_t i = 0, n = (size_t)w * h; !rc && i < n; i++) {
-            out->caustics[i] = out->own[4 * i + 3];
-            out->own[4 * i + 3] = 1.0f;
+            if (caustics) caustics[i] = own[4 * i + 3];
+            own[4 * i + 3] = 1.0f;
         }
     }
     fs_stages_add(t, "readback", fs_now_ms() - t0);

@@ -48,7 +48,7 @@ typedef struct surfel_draw_opts {
     float grid_origin[3], grid_spacing;
 } surfel_draw_opts;
 
-/* Renders the surfels into out (and out->own / out->caustics when allocated). */
+/* Renders the surfels into out (and its "own" / "caustics" AOVs when it has them). */
 int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look, const surfel_draw_opts *o,
                      fs_gbuffer *out, fs_stages *t);
 

@@ -283,6 +283,9 @@ static int export_file(void *self, const char *path)
     return vdb ? fs_density_grid_write_vdb(&s->dg, path, "density") : fs_surfels_write_ply(&s->set, path);
 }
 
+/* the own appearance (5.3) and the caustic irradiance it used (5.1-5.2) */
+static const fs_aov_def aovs[] = {{FS_AOV_OWN, 4, 0}, {FS_AOV_CAUSTICS, 1, 0}};
+
 const fs_method fs_method_surfels = {
     .name = "surfels",
     .description = "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
@@ -290,7 +293,8 @@ const fs_method fs_method_surfels = {
     .appearance = "environment reflection, refraction of the floor and a sunken box, caustics (iwasaki2006)",
     .exports = ".vdb density grid (OpenVDB FloatGrid), .ply surfels",
     .needs_gl = 1,
-    .writes_own = 1,
+    .aovs = aovs,
+    .naovs = sizeof aovs / sizeof *aovs,
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(surfels_params),

@@ -286,19 +286,20 @@ static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
     }
     /* shaded every frame: it follows the camera (the viewer orbits at a fixed size) */
     fs_gbuffer empty;
-    int rc = fs_gbuffer_alloc(&empty, w, h, 0);
+    int rc = fs_gbuffer_alloc(&empty, w, h);
     if (rc) return rc;
     fs_shade(&s->scene, cam, &empty, fs_scene_floor(&s->scene, s->p), s->background);
     fs_gbuffer_free(&empty);
-    rc = fs_gl_read_texture(s->own_tex, 4, w, h, out->own);
+    float *own = fs_gbuffer_aov(out, FS_AOV_OWN), *caustics = fs_gbuffer_aov(out, FS_AOV_CAUSTICS);
+    rc = fs_gl_read_texture(s->own_tex, 4, w, h, own);
     if (rc) return rc;
     /* premultiplied over the background */
     for (size_t i = 0; i < n; i++) {
-        float *o = out->own + 4 * i, a = o[3];
+        float *o = own + 4 * i, a = o[3];
         for (int c = 0; c < 3; c++) o[c] += (1.0f - a) * s->background[4 * i + c];
         o[3] = 1.0f;
     }
-    if (out->caustics) memset(out->caustics, 0, n * sizeof(float));
+    if (caustics) memset(caustics, 0, n * sizeof(float));
     return FS_OK;
 }
 
@@ -311,7 +312,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (rc) return rc;
     float ext[3];
     for (int a = 0; a < 3; a++) ext[a] = (float)(s->dg.dim[a] - 1) * s->dg.spacing;
-    int own = out->own != NULL; /* the harness allocates it when it wants the own image */
+    int own = fs_gbuffer_aov(out, FS_AOV_OWN) != NULL; /* the caller allocates it when it wants the own image */
     glFinish();
     double t0 = fs_now_ms();
     draw_faces(s, cam, ext);
@@ -340,6 +341,10 @@ static int export_file(void *self, const char *path)
     return rc ? rc : fs_density_grid_write_vdb(&s->dg, path, "density");
 }
 
+/* the transfer function's image; caustics stay 0 (the model has none), declared
+ * so its EXRs keep the channels every own-appearance method's have had */
+static const fs_aov_def aovs[] = {{FS_AOV_OWN, 4, 0}, {FS_AOV_CAUSTICS, 1, 0}};
+
 const fs_method fs_method_volume_raycast = {
     .name = "volume_raycast",
     .description = "single-pass layered density volume (geometry shader), bounding-box ray casting, transfer functions",
@@ -347,7 +352,8 @@ const fs_method fs_method_volume_raycast = {
     .appearance = "its transfer function: the opaque iso-surface, or translucent with mode=translucent (inacio2010)",
     .exports = ".vdb density volume (OpenVDB FloatGrid)",
     .needs_gl = 1,
-    .writes_own = 1,
+    .aovs = aovs,
+    .naovs = sizeof aovs / sizeof *aovs,
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(volume_raycast_params),
