@@ -20,11 +20,6 @@ int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p)
     return rc ? rc : fs_particles_read(p, path, s->format);
 }
 
-float fs_scene_floor(const fs_scene *s, const fs_particles *p)
-{
-    return p->bmin[s->up_axis] - s->radius;
-}
-
 int fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt)
 {
     int fallback = 0;

@@ -18,8 +18,6 @@ int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
  * (a scene file's r stays); the camera frames the particles unless the scene
  * places it. Returns 1 when r is the default because nothing gave one. */
 int fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt);
-/* Height of the checker floor: the particles' lowest point minus r, along up. */
-float fs_scene_floor(const fs_scene *s, const fs_particles *p);
 
 #ifdef __cplusplus
 }

@@ -66,6 +66,11 @@ void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3
     fs_camera_fit_clip(&s->camera, lo, hi);
 }
 
+float fs_scene_floor(const fs_scene *s, const fs_particles *p)
+{
+    return p->bmin[s->up_axis] - s->radius;
+}
+
 void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
 {
     if (!s->has_camera) {

@@ -9,7 +9,7 @@
 int aniso_gl_init(aniso_gl *a)
 {
     memset(a, 0, sizeof *a);
-    const char *st[] = {"common/field/anisotropy.comp.glsl", NULL};
+    const char *st[] = {"common/anisotropy.comp.glsl", NULL};
     a->prog = fs_program_build(st, NULL);
     return a->prog ? FS_OK : FS_ERR_RUNTIME;
 }

@@ -1,12 +1,11 @@
 /* surfels: Iwasaki, Dobashi, Yoshimoto & Nishita 2006. Per frame: the density
- * grid by slice splatting (section 4, common/slice_splat.c), surfels on its
+ * grid by slice splatting (section 4, common/gl/slice_splat.c), surfels on its
  * iso-surface (4.2, surfel_extract.c), caustics through illumination volumes
  * (5.1-5.2, caustics.c), then three-pass surfel splatting with reflection,
  * refraction and the caustics (5.3, surfel_gl.c). See README.md. */
 #include "caustics.h"
 #include "output_file.h"
 #include "density_splat.h"
-#include "frame_source.h"
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_target.h"

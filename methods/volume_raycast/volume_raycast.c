@@ -1,6 +1,6 @@
 /* volume_raycast: Inacio, Nobrega, Carvalho & von Wangenheim 2010. Per frame:
  * the density volume as an R32F 3D texture (section IV-A: single-pass layered
- * splatting, common/layered_splat.c; or, for comparison, iwasaki2006's slice
+ * splatting, common/gl/layered_splat.c; or, for comparison, iwasaki2006's slice
  * splatting or the exact CPU grid, uploaded), then ray casting (IV-B): the front
  * and back faces of the volume's bounding box rasterised into two float
  * textures give each ray's entry and exit, and a compute pass marches between
@@ -8,7 +8,6 @@
  * transfer-function image. See README.md. */
 #include "density_splat.h"
 #include "output_file.h"
-#include "frame_source.h"
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_sprites.h"
