@@ -64,6 +64,54 @@ static int render_one(const fs_scene *scene, const fs_particles *p, const render
     return rc;
 }
 
+/* The outputs asked for fit the method and overwrite no input. */
+static int check_outputs(const fs_method *m, const char *input, const char *out, const char *const *exports,
+                         int nexports, int own_look)
+{
+    int rc;
+    if (out && (rc = fs_check_render_path(out))) return cli_error(rc);
+    if (nexports && !m->export_file) return cli_usage("render", "--export: method '%s' exports nothing", m->name);
+    for (int i = 0; i < nexports; i++)
+        if (cli_same_file(input, exports[i])) return cli_usage("render", "%s: export would overwrite the input", exports[i]);
+    if (own_look && !fs_method_aov(m, FS_AOV_OWN))
+        return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", m->name);
+    if (out && cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
+    return FS_OK;
+}
+
+/* --frame N (-1: the scene's first) checked against the scene's frames. */
+static int frame_to_render(const fs_scene *scene, int frame, int *first)
+{
+    int last;
+    fs_scene_frames(scene, first, &last);
+    if (frame < 0) return FS_OK;
+    if (scene->frame_first < 0 && !scene->synth.shape) return cli_usage("render", "--frame: the scene is not a sequence");
+    if (scene->frame_first >= 0 && (frame < scene->frame_first || frame > scene->frame_last))
+        return cli_usage("render", "--frame %d: the scene has frames %d..%d", frame, scene->frame_first, scene->frame_last);
+    *first = frame;
+    return FS_OK;
+}
+
+/* Loads the frame (timed as "load"), settles r and the camera, runs the job. */
+static int load_and_render(fs_scene *scene, const render_job *job, float radius, int quiet, fs_ctx_kind kind,
+                           const char *input)
+{
+    fs_particles p;
+    fs_stages st = {0};
+    double tl = fs_now_ms();
+    if (radius > 0) scene->radius = radius; /* before a synthetic scene is generated */
+    int rc = fs_scene_load_frame(scene, job->frame, &p);
+    if (rc) return cli_error(rc);
+    fs_stages_add(&st, "load", fs_now_ms() - tl);
+    int radius_note = fs_scene_adopt_frame(scene, &p, radius) && !quiet;
+    rc = render_one(scene, &p, job, kind, &st);
+    /* after success only, so a failing run prints exactly one line */
+    if (!rc && radius_note) fprintf(stderr, "fluidsurf: note: %s: used r = %g (set --radius)\n", input, scene->radius);
+    if (rc) cli_error(rc);
+    fs_particles_free(&p);
+    return rc;
+}
+
 int cmd_render(int argc, char **argv)
 {
     const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL;
@@ -101,14 +149,7 @@ int cmd_render(int argc, char **argv)
     if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);
     if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
-    if (out && (rc = fs_check_render_path(out))) return cli_error(rc);
-    if (nexports && !m->export_file) return cli_usage("render", "--export: method '%s' exports nothing", mname);
-    for (int i = 0; i < nexports; i++)
-        if (cli_same_file(input, exports[i])) return cli_usage("render", "%s: export would overwrite the input", exports[i]);
-    if (own_look && !fs_method_aov(m, FS_AOV_OWN))
-        return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", mname);
-    if (out && cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
-
+    if ((rc = check_outputs(m, input, out, exports, nexports, own_look))) return rc;
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
     for (int i = 0; i < nsets; i++)
@@ -119,27 +160,8 @@ int cmd_render(int argc, char **argv)
         return cli_usage("render", "%dx%d pixels is too large", scene.camera.width, scene.camera.height);
     double params[FS_MAX_PARAMS];
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
-
-    int first, last;
-    fs_scene_frames(&scene, &first, &last);
-    if (frame >= 0) {
-        if (scene.frame_first < 0 && !scene.synth.shape) return cli_usage("render", "--frame: the scene is not a sequence");
-        if (scene.frame_first >= 0 && (frame < scene.frame_first || frame > scene.frame_last))
-            return cli_usage("render", "--frame %d: the scene has frames %d..%d", frame, scene.frame_first, scene.frame_last);
-        first = frame;
-    }
-    fs_particles p;
-    fs_stages st = {0};
-    double tl = fs_now_ms();
-    if (radius > 0) scene.radius = radius; /* before a synthetic scene is generated */
-    if ((rc = fs_scene_load_frame(&scene, first, &p))) return cli_error(rc);
-    fs_stages_add(&st, "load", fs_now_ms() - tl);
-    int radius_note = fs_scene_adopt_frame(&scene, &p, radius) && !quiet;
+    int first;
+    if ((rc = frame_to_render(&scene, frame, &first))) return rc;
     const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED, timings};
-    rc = render_one(&scene, &p, &job, ctx_kind, &st);
-    /* after success only, so a failing run prints exactly one line */
-    if (!rc && radius_note) fprintf(stderr, "fluidsurf: note: %s: used r = %g (set --radius)\n", input, scene.radius);
-    if (rc) cli_error(rc);
-    fs_particles_free(&p);
-    return rc;
+    return load_and_render(&scene, &job, radius, quiet, ctx_kind, input);
 }
