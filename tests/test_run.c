@@ -306,6 +306,14 @@ static void lifetime_and_failures(void)
     CHECK(fs_run_upload(run, &big, NULL, NULL) == FS_ERR_INPUT, "upload refused");
     CHECK(fs_run_render(run, &cam, &im, NULL) == FS_ERR_RUNTIME && strstr(fs_error_message(), "too many"),
           "after a failed upload, render refuses with the reason: %s", fs_error_message());
+    CHECK(im.g.w == cam.width && im.g.h == cam.height && covered(&im.g) == 0, "and leaves an empty image to show");
+    fs_run *fresh = NULL; /* a first upload that fails: the image is still sized to the camera */
+    fs_run_image im2 = {0};
+    CHECK(fs_run_open(&fresh, &flat_method, &scene, NULL, NULL) == FS_OK && fs_run_upload(fresh, &big, NULL, NULL) != FS_OK &&
+              fs_run_render(fresh, &cam, &im2, NULL) != FS_OK && im2.g.w == cam.width && covered(&im2.g) == 0,
+          "a failed first upload: %dx%d image", im2.g.w, im2.g.h);
+    fs_run_close(fresh);
+    fs_run_image_free(&im2);
     CHECK(fs_run_upload(run, &b, NULL, NULL) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK &&
               covered(&im.g) == large, "the next upload recovers: %s", fs_error_message());
 

@@ -150,6 +150,7 @@ int fs_run_export(fs_run *r, const char *path)
 {
     if (!r->m->export_file) return fs_fail(FS_ERR_INPUT, "%s: method '%s' exports nothing", path, r->m->name);
     if (r->cur < 0) return fs_fail(FS_ERR_RUNTIME, "%s", r->why);
+    if (!r->frame[r->cur].n) return fs_fail(FS_ERR_INPUT, "%s: the frame holds no particles: nothing to export", path);
     return r->m->export_file(r->self, path);
 }
 
@@ -166,10 +167,10 @@ static int has_aovs(const fs_gbuffer *g, const fs_method *m, const fs_particles 
     return k == g->naovs;
 }
 
-/* im->g at the camera size with the AOVs the method writes for this frame. */
-static int size_gbuffer(const fs_run *r, const fs_camera *cam, fs_run_image *im)
+/* im->g at the camera size with the AOVs the method writes for frame p (none
+ * that need the particles' colour when there is no frame), cleared. */
+static int size_gbuffer(const fs_run *r, const fs_camera *cam, const fs_particles *p, fs_run_image *im)
 {
-    const fs_particles *p = &r->frame[r->cur];
     fs_gbuffer *g = &im->g;
     if (g->depth && g->w == cam->width && g->h == cam->height && has_aovs(g, r->m, p)) {
         fs_gbuffer_clear(g);
@@ -186,11 +187,16 @@ static int size_gbuffer(const fs_run *r, const fs_camera *cam, fs_run_image *im)
 
 int fs_run_render(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_stages *st)
 {
+    static const fs_particles none; /* no frame: no colour, no particles */
+    const fs_particles *p = r->cur >= 0 ? &r->frame[r->cur] : &none;
+    int rc = size_gbuffer(r, cam, p, im); /* so that a failure still leaves an empty image to show */
+    if (rc) return rc;
     if (r->cur < 0) return fs_fail(FS_ERR_RUNTIME, "%s", r->why);
-    int rc = size_gbuffer(r, cam, im);
-    if (rc || !r->frame[r->cur].n) return rc;
+    if (!p->n) return FS_OK;
     fs_stages local = {0};
-    return r->m->render(r->self, cam, &im->g, st ? st : &local);
+    rc = r->m->render(r->self, cam, &im->g, st ? st : &local);
+    if (rc) fs_gbuffer_clear(&im->g); /* nothing half-drawn */
+    return rc;
 }
 
 void fs_run_set_floor(fs_run *r, float y)

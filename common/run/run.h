@@ -62,7 +62,8 @@ int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages 
 int fs_run_export(fs_run *r, const char *path);
 
 /* Renders the current frame: (re)allocates im->g to the camera size with the
- * layers the method writes, clears it, renders; adds the method's stages. */
+ * layers the method writes, clears it, renders; adds the method's stages. On
+ * failure im->g is still sized and empty, so a viewer can show the empty scene. */
 int fs_run_render(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_stages *st);
 /* Fills im->rgba (allocated here): the shared shading over the scene's floor,
  * or the method's own appearance (FS_ERR_INPUT when it has none); adds "shade". */
