@@ -127,7 +127,7 @@ static int fill_slot(fs_run *r, int k, const fs_particles *p, const fs_grid *g, 
 
 int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages *st)
 {
-    int k = r->cur == 0 ? 1 : 0; /* never the slot the method holds now */
+    int k = r->cur == 0 ? 1 : 0; /* not the current frame's slot (after a failure, none is current) */
     int rc = fill_slot(r, k, p, g, st);
     if (!rc && p->n) {
         double t0 = fs_now_ms();
@@ -208,6 +208,7 @@ void fs_run_set_floor(fs_run *r, float y)
 int fs_run_shade(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_appearance a, fs_stages *st)
 {
     const float *own = fs_gbuffer_aov(&im->g, FS_AOV_OWN);
+    if (!im->g.depth) return fs_fail(FS_ERR_RUNTIME, "%s: no image to shade", r->m->name);
     if (a == FS_APPEARANCE_OWN && !own)
         return fs_fail(FS_ERR_INPUT, "%s: no own appearance (only the shared shading)", r->m->name);
     size_t n = (size_t)im->g.w * im->g.h;
@@ -222,8 +223,13 @@ int fs_run_shade(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_appearanc
 
 void fs_run_provenance(const fs_run *r, const fs_provenance *base, int frame, fs_provenance *out)
 {
-    if (base) *out = *base;
-    else fs_provenance_init(out, r->scene, r->renderer, r->gl_version);
+    if (base) {
+        *out = *base;
+        for (int i = 0; i < out->n; i++) { /* the entries point into their own struct */
+            out->attr[i].name = out->name[i];
+            out->attr[i].value = out->value[i];
+        }
+    } else fs_provenance_init(out, r->scene, r->renderer, r->gl_version);
     char pstr[600], fstr[32];
     fs_method_params_string(r->m, r->values, pstr, sizeof pstr);
     fs_provenance_set(out, "method", r->m->name);

@@ -8,11 +8,11 @@
  *   fs_run_provenance, fs_run_export, fs_run_close
  *
  * Particle lifetime: the caller owns the particle arrays it uploads and keeps
- * them valid until the next successful upload or fs_run_close (the fs_particles
+ * them valid until the next upload or fs_run_close (the fs_particles
  * struct itself may go: the method gets the run's copy); a grid passed to
  * fs_run_upload follows the same rule, a grid the run builds is the run's.
- * After a failed upload the run holds no frame: fs_run_render then fails with
- * the reason. An empty frame renders an empty G-buffer without calling the
+ * After a failed upload the run holds no frame (the arrays of the frame before
+ * may be freed then too): fs_run_render and fs_run_export fail with the reason. An empty frame renders an empty G-buffer without calling the
  * method. Errors are codes with one message (fs_error.h), never exit(). */
 #ifndef FS_RUN_H
 #define FS_RUN_H
