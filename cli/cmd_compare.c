@@ -26,7 +26,11 @@ static const char epilogue[] =
     "--set M.P=v1,v2,... sweeps the parameter over the values.\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
     "<label>_own.png for a method with its own appearance (fluidsurf methods says which),\n"
-    "report.md (and temporal.csv for a sequence).\n";
+    "report.md (and temporal.csv for a sequence).\n"
+    "Reference G-buffers are cached (--cache DIR, default $XDG_CACHE_HOME/fluidsurf or\n"
+    "~/.cache/fluidsurf), keyed by a hash of the particles, field, camera, image size,\n"
+    "the reference's parameters and fluidsurf's commit; a hit is named in report.md and\n"
+    "timed as the stage 'cache' in timings.csv. Method variants are always rendered.\n";
 
 static void free_view(cmp_view *v) { fs_run_image_free(v); }
 
@@ -107,30 +111,34 @@ static int parse_import(cmp_run *r, const char *spec)
 static double since_s(double t0) { return (fs_now_ms() - t0) / 1000.0; }
 
 /* The analytic reference of frame f: the ideal shape's exact G-buffer. */
-static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v)
+static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v, fs_stages *st)
 {
+    double t0 = fs_now_ms();
     int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height);
     if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
     if (!rc) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
     if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, p), v->rgba);
+    if (!rc) fs_stages_add(st, "analytic", fs_now_ms() - t0);
     return rc;
 }
 
-/* One reference on every frame; frame_ms times the first. */
+/* One reference on every frame, from the cache where it holds the frame;
+ * frame_ms and stages time the first. */
 static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, const fs_grid *grids)
 {
     fs_run *run = NULL;
     int rc = ref->analytic ? FS_OK : fs_run_open(&run, ref->v.m, &r->scene, ref->v.params, NULL);
     for (int f = 0; f < r->nframes && !rc; f++) {
         cmp_view *v = &ref->frames[f];
+        cli_cache_view *made = &ref->made[f];
+        fs_stages st = {0};
         double t0 = fs_now_ms();
-        if (ref->analytic) rc = render_analytic(r, f, &frames_p[f], v);
-        else {
-            rc = fs_run_upload(run, &frames_p[f], &grids[f], NULL);
-            if (!rc) rc = fs_run_render(run, &r->scene.camera, v, NULL);
-            if (!rc) rc = fs_run_shade(run, &r->scene.camera, v, FS_APPEARANCE_SHARED, NULL);
-        }
-        if (f == 0) ref->frame_ms = fs_now_ms() - t0;
+        if (ref->analytic) rc = render_analytic(r, f, &frames_p[f], v, &st);
+        else rc = cli_cache_render(&r->cache, run, &r->scene, &frames_p[f], &grids[f], &r->prov, r->first_frame + f, v,
+                                   &st, made);
+        ref->hits += made->hit;
+        if (!rc && made->hit && !r->quiet) fprintf(stderr, "compare: %s, frame %d: from the cache, %s\n", ref->spec, r->first_frame + f, made->entry);
+        if (f == 0) { ref->frame_ms = fs_now_ms() - t0; ref->stages = st; }
     }
     fs_run_close(run);
     return rc;
@@ -143,7 +151,8 @@ static int render_refs(cmp_run *r, const fs_particles *frames_p, const fs_grid *
     for (int k = 0; k < r->nrefs; k++) {
         cmp_ref *ref = &r->refs[k];
         ref->frames = calloc(r->nframes, sizeof *ref->frames);
-        if (!ref->frames) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+        ref->made = calloc(r->nframes, sizeof *ref->made);
+        if (!ref->frames || !ref->made) return fs_fail(FS_ERR_RUNTIME, "out of memory");
         int rc = render_ref(r, ref, frames_p, grids);
         if (rc) return rc;
     }
@@ -291,6 +300,8 @@ typedef struct cmp_options {
     int nsets, w, h;
     float radius, nscale, dscale;
     fs_ctx_kind ctx_kind;
+    const char *cache_dir; /* NULL: the default folder */
+    int no_cache;
 } cmp_options;
 
 /* The variants of every method of the comma list (all registered when NULL). */
@@ -480,6 +491,7 @@ static void free_results(cmp_run *r, fs_particles *frames_p, fs_grid *grids)
     for (int k = 0; k < r->nrefs; k++) {
         for (int f = 0; r->refs[k].frames && f < r->nframes; f++) free_view(&r->refs[k].frames[f]);
         free(r->refs[k].frames);
+        free(r->refs[k].made);
     }
     for (int f = 0; frames_p && f < r->nframes; f++) { fs_particles_free(&frames_p[f]); fs_grid_free(&grids[f]); }
     free(frames_p);
@@ -500,6 +512,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     int rc = plan_variants(r, o);
     if (!rc) rc = plan_references(r, o);
     if (rc) return rc;
+    cli_cache_open(&r->cache, o->cache_dir, !o->no_cache, r->quiet);
     fs_particles *frames_p = calloc(r->nframes, sizeof *frames_p);
     fs_grid *grids = calloc(r->nframes, sizeof *grids);
     fs_gl_context ctx = {0};
@@ -523,9 +536,9 @@ int cmd_compare(int argc, char **argv)
     static cmp_run run;
     cmp_run *r = &run;
     memset(r, 0, sizeof *r);
-    const char *input = NULL, *out = NULL, *methods = NULL;
+    const char *input = NULL, *out = NULL, *methods = NULL, *cache_dir = NULL;
     const char *refspecs[CMP_MAX_REFS + 1], *imports[CMP_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
-    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, rc;
+    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, rc;
     float radius = 0, nscale = 0, dscale = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     r->repeat = 3;
@@ -542,6 +555,9 @@ int cmd_compare(int argc, char **argv)
         CLI_INT_OPT("--repeat", r->repeat, 1, CMP_MAX_RUNS, "N", "timed runs per variant after one warm-up (default 3)"),
         CLI_FLOAT_OPT("--normal-scale", nscale, 1e-6, 180, "DEG", "heatmap scale of the normal error (default: from the data)"),
         CLI_FLOAT_OPT("--depth-scale", dscale, 1e-9, 1e9, "R", "heatmap scale of the depth error, in r (default: from the data)"),
+        CLI_OPT_CACHE(cache_dir, "the folder of cached reference G-buffers (default\n"
+                      "$XDG_CACHE_HOME/fluidsurf, else ~/.cache/fluidsurf)"),
+        CLI_FLAG_OPT("--no-cache", no_cache, "render every reference; read and write no cache"),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
         CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
         CLI_OPT_GL(ctx_kind),
@@ -553,10 +569,11 @@ int cmd_compare(int argc, char **argv)
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
+    if (no_cache && cache_dir) return cli_usage("compare", "--cache and --no-cache: choose one");
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
     snprintf(r->outdir, sizeof r->outdir, "%s", out);
     quote_command(r->command, sizeof r->command, argc, argv);
     const cmp_options o = {input, methods, refspecs, nrefspecs, imports, nimports, sets, nsets, w, h, radius, nscale,
-                           dscale, ctx_kind};
+                           dscale, ctx_kind, cache_dir, no_cache};
     return compare(r, &o);
 }

@@ -4,6 +4,7 @@
 #include "gl_context.h"
 #include "method_params.h"
 #include "options.h"
+#include "ref_cache.h"
 #include "render_output.h"
 #include "run.h"
 #include <stdio.h>
@@ -25,6 +26,7 @@ typedef struct render_job {
     int nexports;
     fs_appearance look;
     int timings;                /* print the stage times */
+    cli_cache *cache;           /* --cache: the reference's view from it; NULL: none */
 } render_job;
 
 static void print_timings(const fs_run *run, const fs_stages *st)
@@ -33,9 +35,24 @@ static void print_timings(const fs_run *run, const fs_stages *st)
     for (int i = 0; i < st->n; i++) printf("%s,%.3f,%s\n", st->name[i], st->ms[i], fs_run_stage_renderer(run, st->name[i]));
 }
 
+/* The reference's view from the cache, or rendered and stored; the output file. */
+static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st)
+{
+    fs_run_image im = {0};
+    fs_provenance prov;
+    cli_cache_view made;
+    int rc = cli_cache_render(job->cache, run, scene, p, NULL, NULL, job->frame, &im, st, &made);
+    fs_run_provenance(run, NULL, job->frame, &prov);
+    if (!rc) rc = fs_write_render(job->out, &im.g, im.rgba, &prov);
+    if (!rc && made.hit && !job->cache->quiet) fprintf(stderr, "fluidsurf: note: %s from the cache, %s\n", job->m->name, made.entry);
+    fs_run_image_free(&im);
+    return rc;
+}
+
 /* Runs the method on one frame: exports, render, shading, the output file. */
 static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st)
 {
+    if (job->cache && job->cache->on) return run_cached(run, scene, p, job, st);
     int rc = fs_run_upload(run, p, NULL, st);
     for (int i = 0; !rc && i < job->nexports; i++) rc = fs_run_export(run, job->exports[i]);
     if (rc || !job->out) return rc;
@@ -112,9 +129,18 @@ static int load_and_render(fs_scene *scene, const render_job *job, float radius,
     return rc;
 }
 
+/* --cache DIR: only the reference is cached, and only into a file output. */
+static int check_cache(const fs_method *m, const char *dir, const char *out)
+{
+    if (!dir) return FS_OK;
+    if (m != fs_method_find("reference")) return cli_usage("render", "--cache: only the reference method is cached, not '%s'", m->name);
+    if (!out) return cli_usage("render", "--cache needs an output (-o OUT.png|OUT.exr)");
+    return FS_OK;
+}
+
 int cmd_render(int argc, char **argv)
 {
-    const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL;
+    const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL, *cache_dir = NULL;
     int w = 0, h = 0, frame = -1, timings = 0, quiet = 0, own_look = 0, rc;
     float radius = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
@@ -139,6 +165,8 @@ int cmd_render(int argc, char **argv)
                        "shared (default): the harness's shading, the same for\n"
                        "every method; own: the method's own, where its paper\n"
                        "defines one (fluidsurf methods NAME says)"),
+        CLI_OPT_CACHE(cache_dir, "read and write the reference's G-buffer in this cache\n"
+                      "folder, as compare does (default: no cache)"),
         CLI_OPT_QUIET(quiet),
         CLI_END,
     };
@@ -150,6 +178,7 @@ int cmd_render(int argc, char **argv)
     const fs_method *m = fs_method_find(mname);
     if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
     if ((rc = check_outputs(m, input, out, exports, nexports, own_look))) return rc;
+    if ((rc = check_cache(m, cache_dir, out))) return rc;
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
     for (int i = 0; i < nsets; i++)
@@ -162,6 +191,9 @@ int cmd_render(int argc, char **argv)
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
     int first;
     if ((rc = frame_to_render(&scene, frame, &first))) return rc;
-    const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED, timings};
+    static cli_cache cache;
+    if (cache_dir) cli_cache_open(&cache, cache_dir, 0, quiet);
+    const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED,
+                            timings, cache_dir ? &cache : NULL};
     return load_and_render(&scene, &job, radius, quiet, ctx_kind, input);
 }

@@ -5,6 +5,7 @@
 #include "gbuffer.h"
 #include "metrics.h"
 #include "provenance.h"
+#include "ref_cache.h"
 #include "run.h"
 #include "scene.h"
 #include "sweep.h"
@@ -27,6 +28,9 @@ typedef struct cmp_ref {
     fs_variant v;        /* the reference method's parameters */
     cmp_view *frames;    /* nframes */
     double frame_ms;     /* median render time of the first frame */
+    fs_stages stages;    /* the first frame's (timings.csv) */
+    cli_cache_view *made; /* nframes: loaded from the cache or rendered, and the entry */
+    int hits;            /* frames loaded from the cache */
 } cmp_ref;
 
 /* A method variant or an imported EXR. */
@@ -55,6 +59,7 @@ typedef struct cmp_run {
     double normal_scale_deg, depth_scale_r; /* heatmap scales, the same for every entry */
     double ref_temporal_deg;
     fs_provenance prov;
+    cli_cache cache;     /* for the references */
 } cmp_run;
 
 /* Writers (compare_outputs.c); each writes DIR/NAME atomically. */

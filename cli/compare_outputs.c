@@ -85,6 +85,18 @@ int cmp_write_metrics(const cmp_run *r)
     return cmp_close(&cf);
 }
 
+/* A reference's rows: its first frame, one run (stage "cache" when it came
+ * from the cache), named by its spec with the variant "ground truth". */
+static void ref_timings(const cmp_ref *ref, FILE *f)
+{
+    const fs_stages *st = &ref->stages;
+    for (int s = 0; s <= st->n; s++) {
+        double v = s < st->n ? st->ms[s] : fs_stages_total(st);
+        csv_text(f, ref->spec);
+        fprintf(f, ",ground truth,%s,%.3f,%.3f,%.3f,1,CPU\n", s < st->n ? st->name[s] : "total", v, v, v);
+    }
+}
+
 int cmp_write_timings(const cmp_run *r)
 {
     cmp_file cf;
@@ -93,6 +105,7 @@ int cmp_write_timings(const cmp_run *r)
     FILE *f = cf.f;
     provenance_header(r, f);
     fputs("method,variant,stage,ms_median,ms_min,ms_max,runs,renderer\n", f);
+    for (int k = 0; k < r->nrefs; k++) ref_timings(&r->refs[k], f);
     for (int i = 0; i < r->nentries; i++) {
         const cmp_entry *e = &r->entries[i];
         if (e->imported || !e->nruns) continue;
@@ -300,7 +313,8 @@ int cmp_write_panel(const cmp_run *r)
     if (!rc && gt) {
         wrap_view(&r->refs[0].frames[0], &img[0]);
         tiles[0] = &img[0];
-        snprintf(cap[0], sizeof cap[0], "%s (ground truth)  %.1f ms", r->refs[0].spec, r->refs[0].frame_ms);
+        if (r->refs[0].made[0].hit) snprintf(cap[0], sizeof cap[0], "%s (ground truth, from the cache)", r->refs[0].spec);
+        else snprintf(cap[0], sizeof cap[0], "%s (ground truth)  %.1f ms", r->refs[0].spec, r->refs[0].frame_ms);
         capp[0] = cap[0];
     }
     for (int i = 0; i < r->nentries && !rc; i++) {
@@ -341,6 +355,30 @@ static void md_num(FILE *f, double v, const char *fmt)
     else fprintf(f, fmt, v);
 }
 
+/* Where each reference came from: rendered, or which cache entry. */
+static void write_ref_sources(const cmp_run *r, FILE *f)
+{
+    fputs("## References\n\n", f);
+    for (int k = 0; k < r->nrefs; k++) {
+        const cmp_ref *ref = &r->refs[k];
+        if (ref->analytic) { fprintf(f, "- `%s`: the ideal shape of the synthetic scene\n", ref->spec); continue; }
+        int stored = 0;
+        for (int fr = 0; fr < r->nframes; fr++) stored += ref->made[fr].entry[0] != 0;
+        if (!stored) fprintf(f, "- `%s`: rendered; no cache (%s)\n", ref->spec, r->cache.why);
+        else fprintf(f, "- `%s`: %d of %d frame(s) from the cache\n", ref->spec, ref->hits, r->nframes);
+        for (int fr = 0; fr < r->nframes; fr++) {
+            const cli_cache_view *m = &ref->made[fr];
+            if (!m->entry[0]) continue;
+            fprintf(f, "  - ");
+            if (r->sequence) fprintf(f, "frame %d: ", r->first_frame + fr);
+            fprintf(f, "%s `%s`\n", m->hit ? "from the cache:" : "rendered, stored as", m->entry);
+        }
+    }
+    fputs("\nA reference from the cache is a stored G-buffer whose key (a hash of the particles, field, camera, "
+          "image size, the reference's parameters and fluidsurf's commit) and contents checked out; its time in "
+          "`timings.csv` is the stage `cache` (loading the entry) in place of rendering.\n\n", f);
+}
+
 int cmp_write_report(const cmp_run *r)
 {
     cmp_file cf;
@@ -376,6 +414,7 @@ int cmp_write_report(const cmp_run *r)
                "are on sRGB luminance over the union of the coverage masks. Frame times are medians of %d runs after a "
                "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",
             r->scene.radius, r->repeat, r->normal_scale_deg, r->depth_scale_r);
+    write_ref_sources(r, f);
     fputs("## Renderers\n\n", f);
     for (int i = 0; i < r->nentries; i++) fprintf(f, "- %s: %s\n", r->entries[i].label, r->entries[i].renderer);
     fputs("\nOn OSMesa (llvmpipe) the OpenGL stages run on the same CPU cores as the C code: these timings say nothing "

@@ -59,6 +59,7 @@ typedef struct cli_opt {
                    "OpenGL context (default osmesa, or FLUIDSURF_GL)")
 #define CLI_OPT_SET(arr, cnt) \
     CLI_LIST_OPT("--set", arr, cnt, FS_MAX_SETS, "M.P=V", "set a method parameter (repeatable)")
+#define CLI_OPT_CACHE(var, hlp) CLI_STRING_OPT("--cache", var, "DIR", hlp)
 #define CLI_OPT_QUIET(var) CLI_FLAG_OPT("-q", var, "quiet: no notes or progress on stderr")
 #define CLI_OPT_RADIUS_IN(var, l, h, dflt) CLI_FLOAT_OPT("--radius", var, l, h, "R", "particle radius r (default: " dflt ")")
 #define CLI_OPT_RADIUS(var, dflt) CLI_OPT_RADIUS_IN(var, 1e-9, 1e9, dflt)

@@ -1,0 +1,96 @@
+#include "ref_cache.h"
+#include "fs_error.h"
+#include "render_key.h"
+#include "timing.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* $XDG_CACHE_HOME/fluidsurf (an absolute one, as the XDG spec asks), else ~/.cache/fluidsurf. */
+static int default_dir(char *buf, int size)
+{
+    const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
+    if (xdg && xdg[0] == '/') return snprintf(buf, size, "%s/fluidsurf", xdg) < size ? FS_OK : FS_ERR_RUNTIME;
+    if (home && *home) return snprintf(buf, size, "%s/.cache/fluidsurf", home) < size ? FS_OK : FS_ERR_RUNTIME;
+    return fs_fail(FS_ERR_RUNTIME, "no cache folder: neither XDG_CACHE_HOME nor HOME is set");
+}
+
+static void turn_off(cli_cache *c)
+{
+    snprintf(c->why, sizeof c->why, "%s", fs_error_message());
+    fprintf(stderr, "fluidsurf: warning: %s; continuing without the cache\n", c->why);
+    c->on = 0;
+}
+
+void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet)
+{
+    char buf[FS_GCACHE_PATH];
+    memset(c, 0, sizeof *c);
+    c->quiet = quiet;
+    if (!dir && !use_default) {
+        snprintf(c->why, sizeof c->why, "turned off");
+        return;
+    }
+    int rc = dir ? FS_OK : default_dir(buf, sizeof buf);
+    if (!rc) rc = fs_gcache_open(&c->gc, dir ? dir : buf);
+    c->on = 1;
+    if (rc) turn_off(c);
+}
+
+/* Upload, render, shade: the run's own stages. */
+static int render_view(fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g, fs_run_image *im,
+                       fs_stages *st)
+{
+    int rc = fs_run_upload(run, p, g, st);
+    if (!rc) rc = fs_run_render(run, &s->camera, im, st);
+    if (!rc) rc = fs_run_shade(run, &s->camera, im, FS_APPEARANCE_SHARED, st);
+    return rc;
+}
+
+/* The entry of key into im->g: 1 on a hit; a bad entry is named on stderr. */
+static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im)
+{
+    fs_gbuffer g;
+    fs_gcache_result res = fs_gcache_load(&c->gc, key, s->camera.width, s->camera.height, &g);
+    if (res == FS_GCACHE_BAD && !c->quiet)
+        fprintf(stderr, "fluidsurf: warning: %s; rendering it again\n", fs_error_message());
+    if (res != FS_GCACHE_HIT) return 0;
+    fs_gbuffer_free(&im->g);
+    im->g = g;
+    return 1;
+}
+
+static void store_entry(cli_cache *c, fs_digest key, fs_run *run, const fs_provenance *base, int frame,
+                        const fs_run_image *im)
+{
+    fs_provenance prov;
+    fs_run_provenance(run, base, frame, &prov);
+    if (fs_gcache_store(&c->gc, key, &im->g, im->rgba, &prov)) turn_off(c);
+}
+
+int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
+                     const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out)
+{
+    fs_stages local = {0};
+    if (!st) st = &local;
+    memset(out, 0, sizeof *out);
+    if (!c->on) return render_view(run, s, p, g, im, st);
+    double t0 = fs_now_ms();
+    fs_field f = fs_scene_field(s);
+    fs_digest key = fs_render_key(fs_run_method(run), fs_run_values(run), &f, &s->camera, p);
+    fs_gcache_entry(&c->gc, key, out->entry, sizeof out->entry);
+    if ((out->hit = load_entry(c, key, s, im))) {
+        fs_stages_add(st, "cache", fs_now_ms() - t0);
+        fs_run_set_floor(run, p->n ? fs_scene_floor(s, p) : 0); /* what an upload would set */
+        return fs_run_shade(run, &s->camera, im, FS_APPEARANCE_SHARED, st);
+    }
+    double lookup = fs_now_ms() - t0;
+    fs_run_set_floor(run, p->n ? fs_scene_floor(s, p) : 0); /* a hit before may have set another frame's */
+    int rc = render_view(run, s, p, g, im, st);
+    if (rc) return rc;
+    double t1 = fs_now_ms();
+    store_entry(c, key, run, base, frame, im);
+    if (!c->on) out->entry[0] = 0;
+    fs_stages_add(st, "cache_store", lookup + fs_now_ms() - t1);
+    return FS_OK;
+}

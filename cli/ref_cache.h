@@ -1,0 +1,35 @@
+/* The reference cache as the commands use it (docs/DESIGN.md, "Reference
+ * cache"): the folder from --cache / --no-cache, one-line warnings, and one
+ * frame's reference view loaded from the cache or rendered and stored. */
+#ifndef FS_REF_CACHE_H
+#define FS_REF_CACHE_H
+#include "gbuffer_cache.h"
+#include "run.h"
+
+typedef struct cli_cache {
+    fs_gcache gc;
+    int on;          /* 0: no cache (turned off, or its folder is unusable) */
+    int quiet;       /* no note about a bad entry */
+    char why[1200];  /* why it is off, for the report */
+} cli_cache;
+
+/* dir: the --cache folder, or NULL for the default ($XDG_CACHE_HOME/fluidsurf,
+ * else ~/.cache/fluidsurf) when use_default, else off. A folder that cannot be
+ * made or written gives one warning line naming it, and the cache stays off. */
+void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet);
+
+/* One view and how it was made. */
+typedef struct cli_cache_view {
+    int hit;                     /* loaded from the cache */
+    char entry[FS_GCACHE_PATH];  /* the entry file; "" without a cache */
+} cli_cache_view;
+
+/* Frame p's view of run into im: from the cache (stage "cache", the time to
+ * hash the key and load and check the entry, then "shade"), or uploaded
+ * (grid g, or NULL to build one), rendered and shaded (the run's stages),
+ * then stored (stage "cache_store"). base and frame give the entry's
+ * provenance (fs_run_provenance). A bad entry is re-rendered and replaced. */
+int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
+                     const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out);
+
+#endif
