@@ -53,7 +53,7 @@ static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_ima
     fs_gbuffer g;
     fs_gcache_result res = fs_gcache_load(&c->gc, key, s->camera.width, s->camera.height, &g);
     if (res == FS_GCACHE_BAD && !c->quiet)
-        fprintf(stderr, "fluidsurf: warning: %s; rendering it again\n", fs_error_message());
+        fprintf(stderr, "fluidsurf: warning: bad cache entry, rendering it again: %s\n", fs_error_message());
     if (res != FS_GCACHE_HIT) return 0;
     fs_gbuffer_free(&im->g);
     im->g = g;

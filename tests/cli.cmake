@@ -4,13 +4,17 @@ add_test(NAME cli_bad_input COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_inp
 add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
 set_tests_properties(cli_bad_input cli_render PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")
 add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")
+# The reference cache of compare and render: hits, misses, corrupt entries, unusable folders.
+add_test(NAME cli_cache COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_cache.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_cache)
+set_tests_properties(cli_cache PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 # Every command's --help comes from its option table and lists all its options; unknown options exit 2, one line.
 add_test(NAME cli_help COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_BINARY_DIR}/test-out/cli_help)
 set_tests_properties(cli_help PROPERTIES
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")

@@ -12,7 +12,7 @@ size() { iinfo "$1" 2>/dev/null | sed -n 's/.* : *\([0-9]*\) x *\([0-9]*\),.*/\1
 col() { awk -F, -v c="$1" -v m="$2" -v r="$3" '!/^#/ && $1 == m && $3 == r {print $c; exit}' "$4"; }
 
 # 1. two methods, two references
-"$BIN" compare "$box" --methods spheres,reference --reference reference --reference analytic -W 64 -H 64 --repeat 2 -q -o "$T/a" 2> "$T/a.err"; rc=$?
+"$BIN" compare "$box" --methods spheres,reference --reference reference --reference analytic -W 64 -H 64 --repeat 2 -q --no-cache -o "$T/a" 2> "$T/a.err"; rc=$?
 check '[ $rc -eq 0 ]' "compare runs"
 for f in spheres.png spheres.exr reference.png reference.exr analytic.png diff_spheres.png diff_reference.png metrics.csv timings.csv panel.png report.md; do
   check '[ -s "$T/a/$f" ]' "writes $f"
@@ -24,12 +24,13 @@ check '[ "$(col 5 reference reference "$T/a/metrics.csv")" = 1 ] && [ "$(col 9 r
 check 'awk -F, "!/^#/ && \$1==\"spheres\" && \$3==\"reference\" {exit !(\$9 > 5)}" "$T/a/metrics.csv"' "spheres differ from the reference"
 check 'grep -v "^#" "$T/a/timings.csv" | head -1 | grep -qx "method,variant,stage,ms_median,ms_min,ms_max,runs,renderer"' "timings.csv columns"
 check 'grep -q "^spheres,,splat,.*,2,.*llvmpipe" "$T/a/timings.csv" && grep -q "^reference,,march,.*,2,CPU" "$T/a/timings.csv"' "timings name stages, runs and renderer"
+check 'grep -q "^reference,ground truth,march,.*,1,CPU$" "$T/a/timings.csv" && grep -q "^analytic,ground truth,analytic,.*,1,CPU$" "$T/a/timings.csv" && ! grep -q ",cache" "$T/a/timings.csv"' "timings.csv has each reference's first frame as its ground truth rows (--no-cache: rendered)"
 read -r pw ph <<< "$(size "$T/a/panel.png")"
 check '[ "${pw:-0}" -ge $((2 * 64)) ] && [ "${pw:-0}" -le 600 ] && [ "${ph:-0}" -ge $((2 * 64)) ] && [ "${ph:-0}" -le 300 ]' "panel is 2 columns (ground truth first) x 2 rows of 64 px tiles (${pw}x${ph})"
 check 'grep -q "fluidsurf compare" "$T/a/report.md" && grep -q "| spheres |" "$T/a/report.md" && grep -q "fluidsurf:commit" "$T/a/report.md"' "report has the command, the table and the provenance"
 
 # 2. a two-parameter sweep
-"$BIN" compare "$box" --methods spheres --set spheres.radius_scale=0.8,1.2 --set spheres.thickness=on,off -W 48 -H 48 --repeat 1 -q -o "$T/sweep" 2>/dev/null; rc=$?
+"$BIN" compare "$box" --methods spheres --set spheres.radius_scale=0.8,1.2 --set spheres.thickness=on,off -W 48 -H 48 --repeat 1 -q --no-cache -o "$T/sweep" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ]' "two-parameter sweep runs"
 check '[ "$(grep -vc "^#" "$T/sweep/metrics.csv")" -eq 5 ]' "sweep gives 4 rows"
 check 'grep -q "^spheres,radius_scale=1.2;thickness=off,reference," "$T/sweep/metrics.csv"' "variant column p=v;q=w"
@@ -38,13 +39,13 @@ read -r sw sh <<< "$(size "$T/sweep/panel.png")"
 check '[ "${sh:-0}" -ge $((2 * 48)) ] && [ "${sh:-0}" -le $((2 * 48 + 150)) ] && [ "${sw:-0}" -ge $((4 * 48)) ]' "sweep panel is a 2-row grid (${sw}x${sh})"
 
 # 3. --import of a written EXR gives zero error against itself
-"$BIN" compare "$box" --methods spheres --import mine="$T/a/reference.exr" -W 64 -H 64 --repeat 1 -q -o "$T/imp" 2>/dev/null; rc=$?
+"$BIN" compare "$box" --methods spheres --import mine="$T/a/reference.exr" -W 64 -H 64 --repeat 1 -q --no-cache -o "$T/imp" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ]' "import runs"
 check '[ "$(col 5 mine reference "$T/imp/metrics.csv")" = 1 ] && [ "$(col 9 mine reference "$T/imp/metrics.csv")" = 0 ] && [ "$(col 6 mine reference "$T/imp/metrics.csv")" = 0 ]' "imported reference: zero error"
 
 # 4. a sequence: per-frame rows and temporal.csv
 printf '{"particles": {"synthetic": "slab", "size": [12, 4, 12], "first": 0, "last": 2}, "radius": 0.025}' > "$T/seq.json"
-"$BIN" compare "$T/seq.json" --methods spheres -W 40 -H 40 --repeat 1 -q -o "$T/seq" 2>/dev/null; rc=$?
+"$BIN" compare "$T/seq.json" --methods spheres -W 40 -H 40 --repeat 1 -q --no-cache -o "$T/seq" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ]' "sequence runs"
 check '[ "$(grep -vc "^#" "$T/seq/metrics.csv")" -eq 4 ] && grep -q "^spheres,,reference,2," "$T/seq/metrics.csv"' "per-frame rows"
 check 'grep -v "^#" "$T/seq/temporal.csv" | head -1 | grep -qx "method,variant,frames,normal_change_deg,reference_normal_change_deg" && grep -q "^spheres,,3,[0-9.]*,[0-9.]*$" "$T/seq/temporal.csv"' "temporal.csv with the reference's own change"

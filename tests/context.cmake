@@ -7,7 +7,7 @@ add_executable(test_context_glfw test_context_glfw.c)
 target_link_libraries(test_context_glfw PRIVATE fs_run fs_report fs_methods fs_sph)
 target_compile_definitions(test_context_glfw PRIVATE FS_TEST_DATA="${CMAKE_SOURCE_DIR}/experiments/data"
   FS_TEST_OUT="${CMAKE_BINARY_DIR}/test-out")
-set(_ctx_lsan "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+set(_ctx_lsan "${FS_TEST_ENV}")
 # OSMesa, a GLFW window (GLX on Xvfb) and EGL render the same block; OSMesa survives the switches.
 add_test(NAME test_context_glfw
   COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" $<TARGET_FILE:test_context_glfw>)

@@ -5,4 +5,4 @@ set_tests_properties(test_sph PROPERTIES TIMEOUT 120)
 add_test(NAME cli_simulate COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_simulate.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_BINARY_DIR}/test-out/cli_simulate)
 set_tests_properties(cli_simulate PROPERTIES TIMEOUT 120
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")

@@ -6,7 +6,7 @@ endif()
 add_test(NAME cli_view COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24"
          bash ${CMAKE_CURRENT_SOURCE_DIR}/view.sh $<TARGET_FILE:fluidsurf> ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/view)
 set_tests_properties(cli_view PROPERTIES TIMEOUT 180
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")
 # Every registered method shows the fluid in both viewer modes (tests/view_methods.sh;
 # 19 viewer runs, ~40 s wall on 2 shared cores in a release build: the timeout leaves room
 # for the sanitizer build).
@@ -18,5 +18,5 @@ add_test(NAME cli_view_methods COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24"
          env PYTHON3=${PYTHON3} bash ${CMAKE_CURRENT_SOURCE_DIR}/view_methods.sh $<TARGET_FILE:fluidsurf> ${CMAKE_SOURCE_DIR}
          ${CMAKE_BINARY_DIR}/test-out/view_methods)
 set_tests_properties(cli_view_methods PROPERTIES TIMEOUT 300
-  ENVIRONMENT "LSAN_OPTIONS=suppressions=${CMAKE_SOURCE_DIR}/tests/lsan.supp:print_suppressions=0")
+  ENVIRONMENT "${FS_TEST_ENV}")
 fs_add_test(test_orbit_camera fs_scene test_orbit_camera.c)
