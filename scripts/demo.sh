@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh build
-./build/fluidsurf compare experiments/scenes/dam_break.json -o results/demo "$@"
+./build/fluidsurf compare --no-cache experiments/scenes/dam_break.json -o results/demo "$@"
 # the half-size copy that the repository keeps (results/demo/ is otherwise not committed)
 oiiotool results/demo/panel.png --resize 50% -o results/demo/panel_small.png
 echo "see results/demo/panel.png and results/demo/report.md"

@@ -56,7 +56,7 @@ summarize() {
 
 # 1. the bar (SKIP_BAR=1 leaves its files as they are)
 if [ "${SKIP_BAR:-0}" != 1 ]; then
-"$BIN" compare experiments/scenes/dam_break.json --methods volume_raycast \
+"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods volume_raycast \
   --set volume_raycast.grid_res="$GRID" --set volume_raycast.mode=surface,translucent \
   -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/dam"
 { echo "# volume_raycast vs reference, experiments/scenes/dam_break.json (24389 particles), ${SIZE}x${SIZE}, grid $GRID; fluidsurf compare metrics.csv"
@@ -89,11 +89,11 @@ for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
 }
 JSON
   # volume generation alone (its time does not depend on the image): 64x64, VRUNS runs
-  "$BIN" compare "$tmp/box_$n.json" --methods volume_raycast \
+  "$BIN" compare --no-cache "$tmp/box_$n.json" --methods volume_raycast \
     --set volume_raycast.grid_res="$res" --set volume_raycast.build=layered,slice,exact --set volume_raycast.thickness=off \
     -W 64 -H 64 --repeat "$VRUNS" -q -o "$tmp/vol_$n"
   # ray casting (layered volume) against spheres at SIZE^2
-  "$BIN" compare "$tmp/box_$n.json" --methods volume_raycast,spheres \
+  "$BIN" compare --no-cache "$tmp/box_$n.json" --methods volume_raycast,spheres \
     --set volume_raycast.grid_res="$res" --set volume_raycast.thickness=on,off --set spheres.thickness=on,off \
     -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/box_$n"
   # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,renderer

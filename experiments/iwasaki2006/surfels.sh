@@ -19,7 +19,7 @@ echo "# surfels (iwasaki2006 defaults) at ${SIZE}x${SIZE}; medians of $RUNS runs
 echo "scene,particles,surfels,caustics,stage,ms_median,renderer" >> "$csv.new"
 for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/xu2022/double_dam_break.json; do
   name=${scene%%:*} json=${scene#*:}
-  "$BIN" compare "$json" --methods surfels --set surfels.caustics=on,off -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/$name"
+  "$BIN" compare --no-cache "$json" --methods surfels --set surfels.caustics=on,off -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/$name"
   "$BIN" render "$json" --method surfels -q --export "$tmp/$name.ply"
   surfels=$(grep -a -m1 '^element vertex' "$tmp/$name.ply" | awk '{print $3}')
   particles=$("$BIN" info "$(awk -F'"' '/"particles"/ {print $4}' "$json" | sed "s|^|$(dirname "$json")/|")" | awk '/^particles:/ {print $2}')

@@ -25,7 +25,7 @@ small() { oiiotool "$1" --resize "$2" -o "$3"; } # downscaled copy for the repos
 
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic -W "$SIZE" -H "$SIZE" \
+  "$BIN" compare --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic -W "$SIZE" -H "$SIZE" \
       --repeat 1 -o "$d" 2> "$TMP/$shape.log"
   cp "$d/metrics.csv" "$OUT/fig3_${shape}_metrics.csv"
   exrs=()
@@ -43,7 +43,7 @@ for shape in slab box; do
 done
 
 d=$TMP/dam
-"$BIN" compare experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
+"$BIN" compare --no-cache experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
 cp "$d/metrics.csv" "$OUT/fig3_dam_metrics.csv"
 small "$d/panel.png" 640x0 "$OUT/fig3_dam_panel.png"
 echo "fig3: dam break done; wrote $OUT/fig3_*"

@@ -14,7 +14,7 @@ mkdir -p "$OUT"
 methods=spheres
 "$BIN" methods aniso_ssf > /dev/null 2>&1 && methods=$methods,aniso_ssf
 methods=$methods,raycast_pca
-"$BIN" compare experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
+"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
     -o "$TMP" 2> out/xiao2017/fig5.log
 cp "$TMP/metrics.csv" "$OUT/fig5_metrics.csv"
 oiiotool "$TMP/panel.png" --resize 640x0 -o "$OUT/fig5_panel.png"

@@ -17,7 +17,7 @@ csv=$OUT/radius_sweep.csv
 echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.new"
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
+  "$BIN" compare --no-cache "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
       --set raycast_pca.pca_radius=3,4,5,6 --reference analytic -W 512 -H 512 --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/raycast_pca_*.exr |
     awk -F, -v s="$shape" '!/^#/ && $1 != "file" {

@@ -41,7 +41,7 @@ grid() {
 for spec in "dam:experiments/scenes/dam_break.json:400x400+50+30" "double_dam:experiments/xu2022/double_dam_break.json:400x400+56+100"; do
   IFS=: read -r label scene crop <<< "$spec"
   d=$TMP/$label
-  "$BIN" compare "$scene" "${SWEEP[@]}" --reference reference --reference reference:field=anisotropic \
+  "$BIN" compare --no-cache "$scene" "${SWEEP[@]}" --reference reference --reference reference:field=anisotropic \
       -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/$label.log"
   cp "$d/metrics.csv" "$OUT/fig6_${label}_metrics.csv"
   small "$d/panel.png" 640x0 "$OUT/fig6_${label}_panel.png"
@@ -52,7 +52,7 @@ done
 for spec in slab:440x300+30+150 box:460x460+26+10; do
   IFS=: read -r shape crop <<< "$spec"
   d=$TMP/$shape
-  "$BIN" compare "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic \
+  "$BIN" compare --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic \
       -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/$shape.log"
   cp "$d/metrics.csv" "$OUT/fig6_${shape}_metrics.csv"
   exrs=()

@@ -18,7 +18,7 @@ csv=$OUT/sigma_sweep.csv
 echo "scene,filter,sigma_r,anisotropy,interior_deg,face_deg,edge_band_deg" > "$csv.new"
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare "experiments/scenes/$shape.json" --methods aniso_ssf --set aniso_ssf.filter=gaussian,narrow \
+  "$BIN" compare --no-cache "experiments/scenes/$shape.json" --methods aniso_ssf --set aniso_ssf.filter=gaussian,narrow \
       --set aniso_ssf.sigma=0.5,1.0,1.5 --set aniso_ssf.anisotropy=off,on --reference analytic \
       -W 512 -H 512 --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/aniso_ssf_*.exr |
