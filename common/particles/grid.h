@@ -53,6 +53,16 @@ typedef struct fs_grid {
     float bulk_lo[3], bulk_hi[3]; /* robust bounds: the box of the clusters that make the bulk */
 } fs_grid;
 
+/* The bulk: the largest cluster and every cluster with at least 1% of the
+ * particles make the core; any other cluster whose box lies within one core
+ * extent (the core box's longest side, in cells) of the core box joins it, so
+ * spray thrown off the body stays in the bulk while strays far away do not.
+ * bulk_lo/hi is the box of the positions of the bulk clusters' particles (the
+ * bounding box when nothing is far). */
+
+/* Refuses (FS_ERR_INPUT) a non-finite position, and a set spanning more than
+ * 2^29 cells on an axis (a particle so far away that cell coordinates would
+ * overflow), naming the particle. origin is the lowest particle minus one cell. */
 int fs_grid_build(fs_grid *g, const fs_particles *p, float cell);
 void fs_grid_free(fs_grid *g);
 /* *out = given when it was built on p with cells of at least `cell`; else a grid
@@ -99,6 +109,23 @@ static inline void fs_grid_cell_run(const fs_grid *g, int i, int j, int k, uint3
     if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return; }
     *s0 = g->start[c];
     *s1 = g->start[c + 1];
+}
+/* Sorted slots [*s0, *s1) of the cells i0..e of row (j, k), where e <= i1 is
+ * the last of them in i0's block; returns e. Walk a row of cells as
+ *   for (int i = i0, e; i <= i1; i = e + 1) {
+ *       e = fs_grid_row_run(g, i, i1, j, k, &s0, &s1);
+ *       for (uint32_t s = s0; s < s1; s++) ...
+ *   }
+ * which visits the particles in the same order as cell by cell. */
+static inline int fs_grid_row_run(const fs_grid *g, int i0, int i1, int j, int k, uint32_t *s0, uint32_t *s1)
+{
+    int bi = fs_grid_floordiv(i0), e = bi * FS_GRID_B + FS_GRID_B - 1;
+    if (e > i1) e = i1;
+    uint32_t c = fs_grid_slot(g, i0, j, k);
+    if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return e; }
+    *s0 = g->start[c];
+    *s1 = g->start[c + (uint32_t)(e - i0) + 1];
+    return e;
 }
 /* 1 when a particle lies in one of the 27 cells around cell (i, j, k). */
 static inline int fs_grid_near_occupied(const fs_grid *g, int i, int j, int k)
