@@ -39,7 +39,8 @@ typedef struct reference {
     float step_min;      /* scene units */
     int thickness, max_layers;
     const fs_grid *g;
-    uint32_t *count27;   /* particles in the 27 cells around each cell */
+    int dim[3];          /* rays traverse cells [0, dim): the box of the former dense grid */
+    uint32_t *count27;   /* particles in the 27 cells around each cell slot */
     uint32_t max27;
     float lip_unit;      /* V max|W'|: the cell's Lipschitz bound is lip_unit * count27 */
     int aniso;
@@ -170,6 +171,17 @@ static int upload_aniso(reference *R, const fs_particles *p, const fs_grid *g)
     return FS_OK;
 }
 
+/* The cell range of the former dense grid (the lowest particle is in cell 1,
+ * one empty cell beyond the highest), so rays walk the same cells as before. */
+static void box_dim(const fs_grid *g, int dim[3])
+{
+    for (int a = 0; a < 3; a++) {
+        float hi = -INFINITY;
+        for (size_t s = 0; s < g->n; s++) hi = fmaxf(hi, g->pos4[4 * s + a]);
+        dim[a] = g->n ? (int)(floor(((double)hi - g->origin[a]) / g->cell) + 2) : 1;
+    }
+}
+
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     reference *R = self;
@@ -188,23 +200,25 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     R->count27 = malloc(g->ncells * sizeof *R->count27);
     if (!R->count27) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     R->g = g;
+    box_dim(g, R->dim);
     uint32_t mx = 0;
-    int nk = g->dim[2];
+    long nb = (long)g->nblocks;
 #pragma omp parallel for reduction(max : mx) schedule(static)
-    for (int k = 0; k < nk; k++)
-        for (int j = 0; j < g->dim[1]; j++)
-            for (int i = 0; i < g->dim[0]; i++) {
-                uint32_t c = 0;
-                int i0 = i > 0 ? i - 1 : 0, i1 = i < g->dim[0] - 1 ? i + 1 : i;
-                for (int kk = k - 1; kk <= k + 1; kk++)
-                    for (int jj = j - 1; jj <= j + 1; jj++) {
-                        if (kk < 0 || jj < 0 || kk >= g->dim[2] || jj >= g->dim[1]) continue;
-                        size_t row = fs_grid_cell_id(g, 0, jj, kk);
-                        c += g->start[row + i1 + 1] - g->start[row + i0];
+    for (long b = 0; b < nb; b++)
+        for (int l = 0; l < FS_GRID_B3; l++) {
+            const int32_t *key = g->bkey + 3 * b;
+            int i = key[0] * FS_GRID_B + l % FS_GRID_B, j = key[1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
+                k = key[2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B);
+            uint32_t c = 0, s0, s1;
+            for (int kk = k - 1; kk <= k + 1; kk++)
+                for (int jj = j - 1; jj <= j + 1; jj++)
+                    for (int ii = i - 1, e; ii <= i + 1; ii = e + 1) {
+                        e = fs_grid_row_run(g, ii, i + 1, jj, kk, &s0, &s1);
+                        c += s1 - s0;
                     }
-                R->count27[fs_grid_cell_id(g, i, j, k)] = c;
-                if (c > mx) mx = c;
-            }
+            R->count27[(size_t)b * FS_GRID_B3 + l] = c;
+            if (c > mx) mx = c;
+        }
     R->max27 = mx;
     return FS_OK;
 }
@@ -281,13 +295,15 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
         lo[a] = lo[a] < c[a] - 1 ? c[a] - 1 : lo[a];
         hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
         lo[a] = lo[a] < 0 ? 0 : lo[a];
-        hi[a] = hi[a] > g->dim[a] - 1 ? g->dim[a] - 1 : hi[a];
+        hi[a] = hi[a] > R->dim[a] - 1 ? R->dim[a] - 1 : hi[a];
     }
     int n = 0;
+    uint32_t s0, s1;
     for (int k = lo[2]; k <= hi[2]; k++)
-        for (int j = lo[1]; j <= hi[1]; j++) {
-            size_t row = fs_grid_cell_id(g, 0, j, k);
-            for (uint32_t s = g->start[row + lo[0]]; s < g->start[row + hi[0] + 1]; s++) {
+        for (int j = lo[1]; j <= hi[1]; j++)
+            for (int i = lo[0], ie; i <= hi[0]; i = ie + 1) { /* cells i..ie: one run of slots */
+            ie = fs_grid_row_run(g, i, hi[0], j, k, &s0, &s1);
+            for (uint32_t s = s0; s < s1; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
                 float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
                 float a, b, k = 1, ws = 1;
@@ -409,6 +425,21 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
     return 0;
 }
 
+/* The last block a ray looked up, so a walk through an empty block costs no lookups. */
+typedef struct block_cache { int key[3]; uint32_t b; } block_cache;
+
+static uint32_t count_at(const reference *R, const int c[3], block_cache *bc)
+{
+    int k[3] = {fs_grid_floordiv(c[0]), fs_grid_floordiv(c[1]), fs_grid_floordiv(c[2])};
+    if (k[0] != bc->key[0] || k[1] != bc->key[1] || k[2] != bc->key[2]) {
+        memcpy(bc->key, k, sizeof k);
+        bc->b = fs_grid_block(R->g, k[0], k[1], k[2]);
+    }
+    if (bc->b == FS_GRID_NONE) return 0;
+    int l = ((c[2] - k[2] * FS_GRID_B) * FS_GRID_B + (c[1] - k[1] * FS_GRID_B)) * FS_GRID_B + (c[0] - k[0] * FS_GRID_B);
+    return R->count27[(size_t)bc->b * FS_GRID_B3 + l];
+}
+
 /* Casts one ray from o along unit d through the grid. */
 static void cast(const reference *R, const float o[3], const float d[3], near_particle *buf, ray_result *res)
 {
@@ -416,7 +447,7 @@ static void cast(const reference *R, const float o[3], const float d[3], near_pa
     memset(res, 0, sizeof *res);
     float te = 0, tx = INFINITY; /* start at the eye: the reference is not clipped */
     for (int a = 0; a < 3; a++) {
-        float lo = g->origin[a], hi = g->origin[a] + g->cell * g->dim[a];
+        float lo = g->origin[a], hi = g->origin[a] + g->cell * R->dim[a];
         if (d[a] == 0) {
             if (o[a] < lo || o[a] > hi) return;
             continue;
@@ -430,7 +461,7 @@ static void cast(const reference *R, const float o[3], const float d[3], near_pa
     int c[3], step[3];
     float tmax[3], tdelta[3];
     for (int a = 0; a < 3; a++) {
-        c[a] = fs_grid_clampi(fs_grid_coord(g, a, o[a] + te * d[a]), g->dim[a] - 1);
+        c[a] = fs_grid_clampi(fs_grid_coord(g, a, o[a] + te * d[a]), R->dim[a] - 1);
         if (d[a] > 0) {
             step[a] = 1;
             tmax[a] = (g->origin[a] + (c[a] + 1) * g->cell - o[a]) / d[a];
@@ -445,11 +476,12 @@ static void cast(const reference *R, const float o[3], const float d[3], near_pa
         }
     }
     march m = {0, 0, 0, 0, -R->f.iso, 0, R->step_min};
+    block_cache cache = {{INT32_MIN, 0, 0}, FS_GRID_NONE};
     float t = te;
     for (;;) {
         float t_out = fminf(fminf(tmax[0], tmax[1]), fminf(tmax[2], tx));
         if (t_out < t) t_out = t;
-        uint32_t cnt = R->count27[fs_grid_cell_id(g, c[0], c[1], c[2])];
+        uint32_t cnt = count_at(R, c, &cache);
         stretch S = {R, buf, 0, {d[0], d[1], d[2]}};
         float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
         if (cnt && t_out > t) S.n = gather(R, c, o_loc, d, t_out - t, buf);
@@ -465,7 +497,7 @@ static void cast(const reference *R, const float o[3], const float d[3], near_pa
         if (t_out >= tx) break;
         int a = tmax[0] < tmax[1] ? (tmax[0] < tmax[2] ? 0 : 2) : (tmax[1] < tmax[2] ? 1 : 2);
         c[a] += step[a];
-        if (c[a] < 0 || c[a] >= g->dim[a]) break;
+        if (c[a] < 0 || c[a] >= R->dim[a]) break;
         tmax[a] += tdelta[a];
         t = t_out;
     }
