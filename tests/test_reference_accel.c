@@ -24,7 +24,7 @@ static void compare_paths(const char *what, const fs_particles *p, fs_field f, c
     fs_gbuffer a = {0}, b = {0};
     int rc = fs_test_render("reference", off, p, f, cam, &a, NULL);
     if (!rc) rc = fs_test_render("reference", on, p, f, cam, &b, NULL);
-    CHECK(!rc, "%s: renders (%s)", what, fs_last_error());
+    CHECK(!rc, "%s: renders (%s)", what, fs_error_message());
     if (rc) { fs_gbuffer_free(&a); fs_gbuffer_free(&b); return; }
     size_t n = (size_t)a.w * a.h, both = 0, either = 0;
     double dd = 0, dt = 0, dn = 0;
@@ -39,9 +39,11 @@ static void compare_paths(const char *what, const fs_particles *p, fs_field f, c
         if (!ca) continue;
         both++;
         double d = fabs(a.depth[i] - b.depth[i]) / f.r, t = fabs(a.thickness[i] - b.thickness[i]) / f.r;
-        double c = a.normal[3 * i] * b.normal[3 * i] + a.normal[3 * i + 1] * b.normal[3 * i + 1] +
-                   a.normal[3 * i + 2] * b.normal[3 * i + 2];
-        double ang = acos(c > 1 ? 1 : c) * 180.0 / FS_PI;
+        const float *na = a.normal + 3 * i, *nb = b.normal + 3 * i;
+        double cx = (double)na[1] * nb[2] - (double)na[2] * nb[1], cy = (double)na[2] * nb[0] - (double)na[0] * nb[2],
+               cz = (double)na[0] * nb[1] - (double)na[1] * nb[0];
+        double dot = (double)na[0] * nb[0] + (double)na[1] * nb[1] + (double)na[2] * nb[2];
+        double ang = atan2(sqrt(cx * cx + cy * cy + cz * cz), dot) * 180.0 / FS_PI; /* exact for small angles */
         dd = d > dd ? d : dd;
         dt = t > dt ? t : dt;
         dn = ang > dn ? ang : dn;
@@ -99,7 +101,7 @@ int main(void)
     fs_scene s;
     fs_field f;
     int rc = fs_test_load_dam(&p, &s, &f);
-    CHECK(!rc, "dam break loads (%s)", fs_last_error());
+    CHECK(!rc, "dam break loads (%s)", fs_error_message());
     if (!rc) {
         compare_paths("dam break", &p, f, &s.camera);
         rc = add_strays(&p, &q);
@@ -111,7 +113,7 @@ int main(void)
 
     fs_camera cam;
     rc = load_frame(FS_TEST_DATA "/splashsurf/dam_break_frame_23_24389_particles.vtk", 0.025f, 0.8f, &p, &f, &cam);
-    CHECK(!rc, "splash frame loads (%s)", fs_last_error());
+    CHECK(!rc, "splash frame loads (%s)", fs_error_message());
     if (!rc) compare_paths("splash frame", &p, f, &cam);
     fs_particles_free(&p);
 
@@ -120,7 +122,7 @@ int main(void)
     box.synth.shape = FS_SYNTH_BOX;
     box.camera.width = box.camera.height = 128;
     rc = fs_synthetic_generate(&box, 0, &p);
-    CHECK(!rc, "box generates (%s)", fs_last_error());
+    CHECK(!rc, "box generates (%s)", fs_error_message());
     if (!rc) {
         fs_scene_frame_particles(&box, &p);
         compare_paths("box", &p, fs_scene_field(&box), &box.camera);

@@ -215,6 +215,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     if (R->accel) {
         rc = fs_ref_bounds_build(R);
         if (!rc) rc = fs_ref_interior_build(R);
+        if (!rc && R->sub) rc = fs_ref_cell_classes(R);
         if (rc) { R->g = NULL; return rc; }
     }
     return FS_OK;

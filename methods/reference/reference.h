@@ -10,6 +10,10 @@
 #include "kernels.h"
 #include <stdint.h>
 
+/* max and min that compile to one instruction (fmaxf's NaN rules keep it a call). */
+static inline float fs_maxf(float a, float b) { return a > b ? a : b; }
+static inline float fs_minf(float a, float b) { return a < b ? a : b; }
+
 /* Sub-cell classes of reference_bounds.c: phi < iso on the whole sub-cell,
  * phi >= iso on the whole sub-cell, or neither proven. */
 enum { FS_REF_OUT = 0, FS_REF_IN = 1, FS_REF_EDGE = 2 };
@@ -34,6 +38,7 @@ typedef struct reference {
     uint32_t *fine_off;  /* accel: per cell slot, its entry in fine, or FS_GRID_NONE */
     uint8_t *fine;       /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
     size_t nfine;
+    uint8_t *cell_cls;   /* accel: per cell slot, FS_REF_OUT/IN when every sub-cell is, else FS_REF_EDGE */
 } reference;
 
 /* Fine sub-cells per cell edge for the interior bounds (reference_interior.c);
@@ -94,6 +99,8 @@ void fs_ref_bounds_free(reference *R);
 /* Builds R->fine_off/fine for the cells that may hold inside sub-cells (after
  * fs_ref_bounds_build); frees them first. Nothing is built where it does not apply. */
 int fs_ref_interior_build(reference *R);
+/* R->cell_cls from the sub-cell bounds (after both builds). */
+int fs_ref_cell_classes(reference *R);
 void fs_ref_interior_free(reference *R);
 /* Class of sub-cell (si, sj, sk) of cell slot. */
 static inline int fs_ref_class(const reference *R, uint32_t slot, int si, int sj, int sk)

@@ -17,7 +17,8 @@ void fs_ref_bounds_free(reference *R)
 {
     free(R->lo);
     free(R->hi);
-    R->lo = R->hi = NULL;
+    free(R->cell_cls);
+    R->lo = R->hi = R->cell_cls = NULL;
 }
 
 /* Sub-cells per cell edge: about 2r on a side, at most 4 (and none for the
@@ -108,6 +109,27 @@ int fs_ref_bounds_build(reference *R)
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
                 cell_bounds(R, c, slot, up, dn);
             }
+    }
+    return FS_OK;
+}
+
+int fs_ref_cell_classes(reference *R)
+{
+    const fs_grid *g = R->g;
+    free(R->cell_cls);
+    R->cell_cls = malloc(g->ncells ? g->ncells : 1);
+    if (!R->cell_cls) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
+    size_t nsub = (size_t)R->sub * R->sub * R->sub;
+    long nc = (long)g->ncells;
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < nc; c++) {
+        int in = 1, out = 1;
+        for (size_t q = (size_t)c * nsub; q < (size_t)(c + 1) * nsub; q++) {
+            in &= R->lo[q] >= FS_REF_Q;
+            out &= R->hi[q] < FS_REF_Q;
+        }
+        int fine = R->fine_off && R->fine_off[c] != FS_GRID_NONE;
+        R->cell_cls[c] = (uint8_t)(fine ? FS_REF_EDGE : (in ? FS_REF_IN : (out ? FS_REF_OUT : FS_REF_EDGE)));
     }
     return FS_OK;
 }

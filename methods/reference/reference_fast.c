@@ -12,10 +12,13 @@
 #include <math.h>
 #include <string.h>
 
-/* The near particles of one cell stretch, relative to its start point o. */
+/* The near particles of one cell stretch, relative to its start point o:
+ * foot a and squared distance b from the ray line (and, anisotropic only,
+ * the metric's k and the weight ws), and the sorted slot. */
 typedef struct near_soa {
-    float *a, *b, *k, *ws, *rx, *ry, *rz;
+    float *a, *b, *k, *ws, *keep;
     uint32_t *slot;
+    float o[3];
     int n;
 } near_soa;
 
@@ -31,7 +34,7 @@ size_t fs_ref_fast_buf_size(const reference *R)
 {
     size_t cap = R->max27 ? R->max27 : 1;
     cap = (cap + 15) & ~(size_t)15;
-    return cap * (7 * sizeof(float) + sizeof(uint32_t)) + 64;
+    return cap * (5 * sizeof(float) + sizeof(uint32_t)) + 64;
 }
 
 static void soa_bind(near_soa *N, void *buf, const reference *R)
@@ -39,9 +42,8 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
     size_t cap = R->max27 ? R->max27 : 1;
     cap = (cap + 15) & ~(size_t)15;
     float *f = buf;
-    N->a = f; N->b = f + cap; N->k = f + 2 * cap; N->ws = f + 3 * cap;
-    N->rx = f + 4 * cap; N->ry = f + 5 * cap; N->rz = f + 6 * cap;
-    N->slot = (uint32_t *)(f + 7 * cap);
+    N->a = f; N->b = f + cap; N->k = f + 2 * cap; N->ws = f + 3 * cap; N->keep = f + 4 * cap;
+    N->slot = (uint32_t *)(f + 5 * cap);
     N->n = 0;
 }
 
@@ -49,30 +51,30 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
  * applied once per sum). They equal fs_kernel_w(d, H) / C to float rounding. */
 static inline float shape_cubic(float q)
 {
-    float t = fmaxf(1.0f - q, 0.0f), inner = (6.0f * q - 6.0f) * q * q + 1.0f, outer = 2.0f * t * t * t;
+    float t = fs_maxf(1.0f - q, 0.0f), inner = (6.0f * q - 6.0f) * q * q + 1.0f, outer = 2.0f * t * t * t;
     return q <= 0.5f ? inner : outer;
 }
 static inline float shape_poly6(float q)
 {
-    float t = fmaxf(1.0f - q * q, 0.0f);
+    float t = fs_maxf(1.0f - q * q, 0.0f);
     return t * t * t;
 }
 static inline float shape_spiky(float q)
 {
-    float t = fmaxf(1.0f - q, 0.0f);
+    float t = fs_maxf(1.0f - q, 0.0f);
     return t * t * t;
 }
 static inline float shape_wyvill(float q)
 {
-    float a2 = fminf(q * q, 1.0f); /* the polynomial is 0 at a = 1 */
+    float a2 = fs_minf(q * q, 1.0f); /* the polynomial is 0 at a = 1 */
     return 1.0f + a2 * (-22.0f / 9.0f + a2 * (17.0f / 9.0f - a2 * (4.0f / 9.0f)));
 }
 
 /* Distance along the ray from particle foot u (relative to t) to: the point
  * t (AT), the nearest point of [t, t+s] (NEAR), its farther end (FAR). */
 #define FS_REF_AT(u, s) (u)
-#define FS_REF_NEAR(u, s) ((u) - fminf(fmaxf((u), 0.0f), (s)))
-#define FS_REF_FAR(u, s) fmaxf(fabsf(u), fabsf((u) - (s)))
+#define FS_REF_NEAR(u, s) ((u) - fs_minf(fs_maxf((u), 0.0f), (s)))
+#define FS_REF_FAR(u, s) fs_maxf(fabsf(u), fabsf((u) - (s)))
 
 /* sum_j ws_j shape(sqrt(b_j + k_j e_j^2) / H): a loop the compiler vectorises. */
 #define FS_REF_SUM(SHAPE, E)                                                                       \
@@ -81,8 +83,19 @@ static inline float shape_wyvill(float q)
         float u = a[j] - t, e = E(u, s);                                                           \
         sum += ws[j] * SHAPE(sqrtf(b[j] + k[j] * (e * e)) * inv_h);                                \
     }
+/* The isotropic kernel: k = ws = 1. */
+#define FS_REF_SUM_ISO(SHAPE, E)                                                                   \
+    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                             \
+    {                                                                                              \
+        float u = a[j] - t, e = E(u, s);                                                           \
+        sum += SHAPE(sqrtf(b[j] + e * e) * inv_h);                                                 \
+    }
 #define FS_REF_SUMS(SHAPE)                                                                         \
-    if (mode == 0) { FS_REF_SUM(SHAPE, FS_REF_AT) }                                                \
+    if (!aniso) {                                                                                  \
+        if (mode == 0) { FS_REF_SUM_ISO(SHAPE, FS_REF_AT) }                                        \
+        else if (mode == 1) { FS_REF_SUM_ISO(SHAPE, FS_REF_NEAR) }                                 \
+        else { FS_REF_SUM_ISO(SHAPE, FS_REF_FAR) }                                                 \
+    } else if (mode == 0) { FS_REF_SUM(SHAPE, FS_REF_AT) }                                         \
     else if (mode == 1) { FS_REF_SUM(SHAPE, FS_REF_NEAR) }                                         \
     else { FS_REF_SUM(SHAPE, FS_REF_FAR) }
 
@@ -108,7 +121,7 @@ static float field_sum(const reference *R, const near_soa *N, float t, float s, 
     const fs_field *f = &R->f;
     const float *restrict a = N->a, *restrict b = N->b, *restrict k = N->k, *restrict ws = N->ws;
     float inv_h = 1.0f / f->H, sum = 0;
-    int n = N->n;
+    int n = N->n, aniso = R->inv != NULL;
     switch (f->kernel) {
     case FS_KERNEL_POLY6: FS_REF_SUMS(shape_poly6) break;
     case FS_KERNEL_SPIKY: FS_REF_SUMS(shape_spiky) break;
@@ -125,7 +138,8 @@ static void grad_at(const reference *R, const near_soa *N, const float d[3], flo
     float H2 = f->H * f->H;
     gr[0] = gr[1] = gr[2] = 0;
     for (int j = 0; j < N->n; j++) {
-        float x[3] = {t * d[0] - N->rx[j], t * d[1] - N->ry[j], t * d[2] - N->rz[j]};
+        uint32_t q = N->slot[j];
+        float x[3] = {N->o[0] + t * d[0] - R->sx[q], N->o[1] + t * d[1] - R->sy[q], N->o[2] + t * d[2] - R->sz[q]};
         float d2, w;
         if (R->inv) {
             const float *M = R->inv + 9 * (size_t)N->slot[j];
@@ -146,11 +160,63 @@ static void grad_at(const reference *R, const near_soa *N, const float d[3], flo
     for (int a = 0; a < 3; a++) gr[a] *= f->volume;
 }
 
+/* Isotropic: the particles of slots [s0, s1) within H of the stretch, appended
+ * to N. The distances are computed in a vectorised loop; the survivors are
+ * then packed without branches. */
+static int gather_run_iso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len, near_soa *N,
+                          int n)
+{
+    const float *restrict x = R->sx + s0, *restrict y = R->sy + s0, *restrict z = R->sz + s0;
+    float *restrict a = N->a + n, *restrict b = N->b + n, *restrict keep = N->keep;
+    float H2 = R->f.H * R->f.H, o0 = N->o[0], o1 = N->o[1], o2 = N->o[2];
+    int m = (int)(s1 - s0);
+#pragma omp simd
+    for (int j = 0; j < m; j++) {
+        float rx = x[j] - o0, ry = y[j] - o1, rz = z[j] - o2;
+        float aj = rx * d[0] + ry * d[1] + rz * d[2], bj = fs_maxf(rx * rx + ry * ry + rz * rz - aj * aj, 0.0f);
+        float e = aj - fs_minf(fs_maxf(aj, 0.0f), len); /* foot outside the stretch */
+        a[j] = aj;
+        b[j] = bj;
+        keep[j] = bj + e * e < H2 ? 1.0f : 0.0f;
+    }
+    int k = 0;
+    for (int j = 0; j < m; j++) { /* pack: a[k] <= a[j] for k <= j, so in place */
+        a[k] = a[j];
+        b[k] = b[j];
+        N->slot[n + k] = s0 + (uint32_t)j;
+        k += keep[j] != 0.0f;
+    }
+    return n + k;
+}
+
+/* Anisotropic: the metric |A^-1 (o + u d - q)|^2 = k (u - a)^2 + b per particle. */
+static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len,
+                            near_soa *N, int n)
+{
+    float H2 = R->f.H * R->f.H;
+    for (uint32_t s = s0; s < s1; s++) {
+        float rel[3] = {R->sx[s] - N->o[0], R->sy[s] - N->o[1], R->sz[s] - N->o[2]}, md[3], mr[3];
+        const float *M = R->inv + 9 * (size_t)s;
+        for (int x = 0; x < 3; x++) {
+            md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
+            mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
+        }
+        float k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
+        float a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
+        float b = fs_maxf(mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a, 0.0f);
+        float e = a < 0 ? a : (a > len ? a - len : 0);
+        if (b + k * (e * e) >= H2) continue;
+        N->a[n] = a; N->b[n] = b; N->k[n] = k; N->ws[n] = R->wscale[s];
+        N->slot[n++] = s;
+    }
+    return n;
+}
+
 /* Gathers the particles within reach of the stretch o + u d, u in [0, len], of cell c. */
 static void gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_soa *N)
 {
     const fs_grid *g = R->g;
-    float H = R->reach, H2 = R->f.H * R->f.H;
+    float H = R->reach;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         float e = o[a] + len * d[a], x0 = o[a] < e ? o[a] : e, x1 = o[a] < e ? e : o[a];
@@ -158,36 +224,13 @@ static void gather(const reference *R, const int c[3], const float o[3], const f
         hi[a] = fs_grid_coord(g, a, x1 + H);
         lo[a] = lo[a] < c[a] - 1 ? c[a] - 1 : lo[a];
         hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
+        N->o[a] = o[a];
     }
     uint32_t runs[FS_REF_MAX_RUNS][2];
     int nr = fs_ref_runs(g, lo, hi, runs), n = 0;
     for (int r = 0; r < nr; r++)
-        for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
-            float rel[3] = {R->sx[s] - o[0], R->sy[s] - o[1], R->sz[s] - o[2]};
-            float a, b, k = 1, ws = 1;
-            if (R->inv) { /* |A^-1 (o + u d - q)|^2 = k (u - a)^2 + b */
-                const float *M = R->inv + 9 * (size_t)s;
-                float md[3], mr[3];
-                for (int x = 0; x < 3; x++) {
-                    md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
-                    mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
-                }
-                k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
-                a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
-                b = mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a;
-                ws = R->wscale[s];
-            } else {
-                a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
-                b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
-            }
-            float e = a < 0 ? a : (a > len ? a - len : 0);
-            b = b > 0 ? b : 0;
-            if (b + k * (e * e) >= H2) continue;
-            N->a[n] = a; N->b[n] = b; N->k[n] = k; N->ws[n] = ws;
-            N->rx[n] = rel[0]; N->ry[n] = rel[1]; N->rz[n] = rel[2];
-            N->slot[n] = s;
-            n++;
-        }
+        n = R->inv ? gather_run_aniso(R, runs[r][0], runs[r][1], d, len, N, n)
+                   : gather_run_iso(R, runs[r][0], runs[r][1], d, len, N, n);
     N->n = n;
 }
 
@@ -240,12 +283,46 @@ static int crossing(fast_ray *F, float t0, float tc)
     return 0;
 }
 
+/* Shrinks the bracket [*lo, *hi] of a sign change of phi - iso (g_lo on the
+ * march's current side at *lo, g_hi on the other at *hi) to at most tol:
+ * regula falsi with the Illinois correction, which needs a handful of phi
+ * evaluations where bisection needs about 15, and a bisection step whenever
+ * two steps did not halve the bracket. Only signs of phi decide the bracket,
+ * so the crossing is as certain as with bisection. */
+static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, float tol)
+{
+    const reference *R = F->R;
+    int keep = 0, inside = F->m.inside;
+    float a = *lo, b = *hi, width = b - a;
+    for (int it = 0; b - a > tol; it++) {
+        float t = g_lo != g_hi ? (g_lo * b - g_hi * a) / (g_lo - g_hi) : 0.5f * (a + b);
+        if (it % 2 == 1) {
+            if (b - a > 0.5f * width) t = 0.5f * (a + b); /* slow progress: bisect */
+            width = b - a;
+        }
+        float q = 0.25f * tol; /* stay inside the bracket */
+        t = t < a + q ? a + q : (t > b - q ? b - q : t);
+        float g = field_sum(R, &F->N, t, 0, 0) - R->f.iso;
+        if ((g >= 0) == inside) {
+            a = t; g_lo = g;
+            if (keep == 1) g_hi *= 0.5f;
+            keep = 1;
+        } else {
+            b = t; g_hi = g;
+            if (keep == -1) g_lo *= 0.5f;
+            keep = -1;
+        }
+    }
+    *lo = a;
+    *hi = b;
+}
+
 /* Marches local [u0, u1] of the cell stretch that starts at ray distance t0. */
 static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
 {
     const reference *R = F->R;
     march *m = &F->m;
-    float iso = R->f.iso, tol = 1e-4f * R->f.r;
+    float iso = R->f.iso, tol = 1e-5f * R->f.r; /* finer than the plain path: halves the gap between them */
     if (!m->started) {
         m->g = field_sum(R, &F->N, u0, 0, 0) - iso;
         m->inside = m->g >= 0;
@@ -259,10 +336,7 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
         if (!proven) gn = field_sum(R, &F->N, tn, 0, 0) - iso;
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         float lo = t, hi = tn;
-        while (hi - lo > tol) {
-            float mid = 0.5f * (lo + hi);
-            if ((field_sum(R, &F->N, mid, 0, 0) - iso >= 0) == m->inside) lo = mid; else hi = mid;
-        }
+        locate(F, &lo, &hi, m->g, gn, tol);
         if (crossing(F, t0, 0.5f * (lo + hi))) return 1;
         t = tn;
         m->g = gn;
@@ -338,7 +412,7 @@ static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, f
     int gathered = 0, cls = sub_class(R, slot, res, w.c, &v);
     float edge0 = -1; /* start of a pending run of edge sub-cells, -1 when none */
     for (float ts = t;;) {
-        float te = fminf(fminf(w.tmax[0], w.tmax[1]), fminf(w.tmax[2], t_out));
+        float te = fs_minf(fs_minf(w.tmax[0], w.tmax[1]), fs_minf(w.tmax[2], t_out));
         if (te < ts) te = ts;
         int a = w.tmax[0] < w.tmax[1] ? (w.tmax[0] < w.tmax[2] ? 0 : 2) : (w.tmax[1] < w.tmax[2] ? 1 : 2);
         int last = te >= t_out, next_cls = FS_REF_EDGE;
@@ -379,7 +453,11 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
     }
     uint32_t cnt = R->count27[slot];
     float lip = R->lip_unit * (float)cnt;
-    if (cnt && R->sub) return visit_subcells(F, c, slot, t, t_out, lip);
+    if (cnt && R->sub) {
+        int cls = R->cell_cls[slot];
+        if (cls != FS_REF_EDGE && skip_proven(&F->m, cls, 0)) return 0; /* the whole cell is proven */
+        return visit_subcells(F, c, slot, t, t_out, lip);
+    }
     if (cnt) {
         const float *o = F->o, *d = F->d;
         float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};

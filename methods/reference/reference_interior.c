@@ -30,71 +30,98 @@ void fs_ref_interior_free(reference *R)
     R->nfine = 0;
 }
 
-typedef struct fine_acc {
-    float phi[FS_REF_FINE3], gx[FS_REF_FINE3], gy[FS_REF_FINE3], gz[FS_REF_FINE3], m[FS_REF_FINE3];
-} fine_acc;
+/* Candidate particles of one cell, relative to its corner (capacity cap). */
+typedef struct fine_cand { float *x, *y, *z; int n, cap; } fine_cand;
 
-/* Adds one particle at p (relative to the cell's corner) to the boxes within reach. */
-static void add_particle(fine_acc *A, const float p[3], float e, float H, float hd)
+/* Constants of the bound: phi = kw sum shape, grad = kg sum wd (x - p), M = km sum (1 - d_near/H). */
+typedef struct fine_k { float e, hd, H, kw, kg, km, iso; } fine_k;
+
+/* Proves the FS_REF_FINE boxes of the row at (y, z) inside or not, over the
+ * candidates c; the sums of a row stay in registers. Sets bits of row `row`. */
+#if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default"))) /* one AVX2 vector a row */
+#endif
+static void row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint8_t *bits, int row)
 {
-    float reach = H + hd, inv_h = 1.0f / H;
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; a++) { /* boxes whose centre (i + 0.5) e lies within reach of p */
-        lo[a] = (int)ceilf((p[a] - reach) / e - 0.5f);
-        hi[a] = (int)floorf((p[a] + reach) / e - 0.5f);
-        lo[a] = lo[a] < 0 ? 0 : lo[a];
-        hi[a] = hi[a] > FS_REF_FINE - 1 ? FS_REF_FINE - 1 : hi[a];
-    }
-    for (int k = lo[2]; k <= hi[2]; k++)
-        for (int j = lo[1]; j <= hi[1]; j++) {
-            float dy = ((float)j + 0.5f) * e - p[1], dz = ((float)k + 0.5f) * e - p[2], r2 = dy * dy + dz * dz;
-            if (r2 >= reach * reach) continue;
-            int row = (k * FS_REF_FINE + j) * FS_REF_FINE;
-            float *phi = A->phi + row, *gx = A->gx + row, *gy = A->gy + row, *gz = A->gz + row, *m = A->m + row;
+    float ph[FS_REF_FINE] = {0}, gx[FS_REF_FINE] = {0}, gy[FS_REF_FINE] = {0}, gz[FS_REF_FINE] = {0};
+    float m[FS_REF_FINE] = {0}, reach2 = (K->H + K->hd) * (K->H + K->hd), inv_h = 1.0f / K->H, e = K->e, hd = K->hd;
+    for (int j = 0; j < c->n; j++) {
+        float dy = y - c->y[j], dz = z - c->z[j], r2 = dy * dy + dz * dz, px = c->x[j];
+        if (r2 >= reach2) continue;
 #pragma omp simd
-            for (int i = 0; i < FS_REF_FINE; i++) {
-                float dx = ((float)i + 0.5f) * e - p[0], d = sqrtf(dx * dx + r2), q = d * inv_h;
-                float t = fmaxf(1.0f - q, 0.0f);
-                float w = q <= 0.5f ? (6.0f * q - 6.0f) * q * q + 1.0f : 2.0f * t * t * t;
-                /* W'/d / (s / H^2): 18 q - 12 inside, -6 t^2 / q outside (0 beyond the support) */
-                float wd = q <= 0.5f ? 18.0f * q - 12.0f : -6.0f * t * t / fmaxf(q, 0.5f);
-                phi[i] += w;
-                gx[i] += wd * dx;
-                gy[i] += wd * dy;
-                gz[i] += wd * dz;
-                m[i] += fmaxf(1.0f - fmaxf(d - hd, 0.0f) * inv_h, 0.0f);
-            }
+        for (int i = 0; i < FS_REF_FINE; i++) {
+            float dx = ((float)i + 0.5f) * e - px, d = sqrtf(dx * dx + r2), q = d * inv_h;
+            float t = fs_maxf(1.0f - q, 0.0f), near = fs_maxf(d - hd, 0.0f), inv_q = 1.0f / fs_maxf(q, 0.5f);
+            float w_in = (6.0f * q - 6.0f) * q * q + 1.0f, w_out = 2.0f * t * t * t;
+            /* W'/d in units of s / H^2: 18 q - 12 inside, -6 t^2 / q outside, 0 beyond the support
+             * (both branches computed: a division inside a condition keeps the loop scalar) */
+            float wd_in = 18.0f * q - 12.0f, wd_out = -6.0f * t * t * inv_q;
+            float w = q <= 0.5f ? w_in : w_out, wd = q <= 0.5f ? wd_in : wd_out;
+            ph[i] += w;
+            gx[i] += wd * dx;
+            gy[i] += wd * dy;
+            gz[i] += wd * dz;
+            m[i] += fs_maxf(1.0f - near * inv_h, 0.0f);
         }
+    }
+    for (int i = 0; i < FS_REF_FINE; i++) {
+        float grad1 = K->kg * (fabsf(gx[i]) + fabsf(gy[i]) + fabsf(gz[i]));
+        float lower = K->kw * ph[i] - grad1 * 0.5f * e - 0.5f * K->km * m[i] * hd * hd;
+        int k = row * FS_REF_FINE + i;
+        if (lower >= K->iso * 1.001f + 1e-4f) bits[k >> 3] |= (uint8_t)(1u << (k & 7)); /* margin over float error */
+    }
 }
 
-/* The interior bits of the cell c (slot) into bits (FS_REF_FINE3 / 8 bytes). */
-static void cell_interior(const reference *R, const int c[3], fine_acc *A, uint8_t *bits)
+/* The interior bits of cell c into bits (FS_REF_FINE3 / 8 bytes); all and
+ * slab are candidate buffers of R->max27 entries. */
+static void cell_interior(const reference *R, const int c[3], fine_cand *all, fine_cand *slab, uint8_t *bits)
 {
     const fs_grid *g = R->g;
     const fs_field *f = &R->f;
-    float e = g->cell / FS_REF_FINE, hd = 0.5f * e * sqrtf(3.0f), H = f->H, corner[3];
+    double s = 8.0 / FS_PI / ((double)f->H * f->H * f->H), H2 = (double)f->H * f->H;
+    fine_k K = {g->cell / FS_REF_FINE, 0, f->H, (float)(f->volume * s), (float)(f->volume * s / H2),
+                (float)(f->volume * 12.0 * s / H2), f->iso};
+    K.hd = 0.5f * K.e * sqrtf(3.0f);
+    float corner[3], reach = K.H + K.hd;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         lo[a] = c[a] - 1;
         hi[a] = c[a] + 1;
         corner[a] = g->origin[a] + g->cell * (float)c[a];
     }
-    memset(A, 0, sizeof *A);
     uint32_t runs[FS_REF_MAX_RUNS][2];
     int nr = fs_ref_runs(g, lo, hi, runs);
+    all->n = 0;
     for (int r = 0; r < nr; r++)
-        for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
-            float p[3] = {R->sx[s] - corner[0], R->sy[s] - corner[1], R->sz[s] - corner[2]};
-            add_particle(A, p, e, H, hd);
+        for (uint32_t q = runs[r][0]; q < runs[r][1] && all->n < all->cap; q++) {
+            all->x[all->n] = R->sx[q] - corner[0];
+            all->y[all->n] = R->sy[q] - corner[1];
+            all->z[all->n] = R->sz[q] - corner[2];
+            all->n++;
         }
-    double s = 8.0 / FS_PI / ((double)H * H * H), V = f->volume;
-    float cw = (float)(V * s), cg = (float)(V * s / ((double)H * H)), cm = (float)(V * 12.0 * s / ((double)H * H));
     memset(bits, 0, FS_REF_FINE3 / 8);
-    for (int k = 0; k < FS_REF_FINE3; k++) {
-        float grad1 = cg * (fabsf(A->gx[k]) + fabsf(A->gy[k]) + fabsf(A->gz[k]));
-        float lower = cw * A->phi[k] - grad1 * 0.5f * e - 0.5f * cm * A->m[k] * hd * hd;
-        if (lower >= f->iso * 1.001f + 1e-4f) bits[k >> 3] |= (uint8_t)(1u << (k & 7)); /* margin over float error */
+    for (int k = 0; k < FS_REF_FINE; k++) {
+        float z = ((float)k + 0.5f) * K.e;
+        slab->n = 0;
+        for (int j = 0; j < all->n; j++)
+            if (fabsf(all->z[j] - z) < reach) {
+                slab->x[slab->n] = all->x[j];
+                slab->y[slab->n] = all->y[j];
+                slab->z[slab->n] = all->z[j];
+                slab->n++;
+            }
+        for (int j = 0; j < FS_REF_FINE; j++) row_bits(slab, ((float)j + 0.5f) * K.e, z, &K, bits, k * FS_REF_FINE + j);
     }
+}
+
+static int cand_alloc(fine_cand *c, size_t cap)
+{
+    c->x = malloc(3 * (cap ? cap : 1) * sizeof *c->x);
+    c->y = c->x ? c->x + cap : NULL;
+    c->z = c->x ? c->x + 2 * cap : NULL;
+    c->n = 0;
+    c->cap = (int)cap;
+    return c->x != NULL;
 }
 
 /* Cells worth the fine level: some coarse sub-cell of theirs may be inside. */
@@ -107,11 +134,32 @@ static int wants_fine(const reference *R, uint32_t slot)
     return 0;
 }
 
+/* A coarse sub-cell whose fine sub-cells are all proven inside is proven
+ * inside itself; a cell whose coarse sub-cells all are needs no fine level. */
+static void promote(reference *R, uint32_t slot)
+{
+    int sub = R->sub, f = FS_REF_FINE / sub, all = 1;
+    const uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    size_t base = (size_t)slot * sub * sub * sub;
+    for (int q = 0; q < sub * sub * sub; q++) {
+        int ci = q % sub, cj = q / sub % sub, ck = q / (sub * sub), full = 1;
+        for (int z = ck * f; z < ck * f + f; z++)
+            for (int y = cj * f; y < cj * f + f; y++)
+                for (int x = ci * f; x < ci * f + f; x++) {
+                    int k = (z * FS_REF_FINE + y) * FS_REF_FINE + x;
+                    full &= bits[k >> 3] >> (k & 7) & 1;
+                }
+        if (full && R->lo[base + q] < FS_REF_Q) R->lo[base + q] = FS_REF_Q;
+        all &= R->lo[base + q] >= FS_REF_Q;
+    }
+    if (all) R->fine_off[slot] = FS_GRID_NONE;
+}
+
 int fs_ref_interior_build(reference *R)
 {
     fs_ref_interior_free(R);
     const fs_grid *g = R->g;
-    if (R->aniso || R->f.kernel != FS_KERNEL_CUBIC || !R->sub) return FS_OK;
+    if (R->aniso || R->f.kernel != FS_KERNEL_CUBIC || !R->sub || !R->thickness) return FS_OK; /* only thickness walks the inside */
     R->fine_off = malloc((g->ncells ? g->ncells : 1) * sizeof *R->fine_off);
     if (!R->fine_off) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     size_t n = 0;
@@ -122,19 +170,23 @@ int fs_ref_interior_build(reference *R)
     long nb = (long)g->nblocks;
 #pragma omp parallel
     {
-        fine_acc *A = malloc(sizeof *A);
+        fine_cand all, slab;
+        int ok = cand_alloc(&all, R->max27) & cand_alloc(&slab, R->max27);
 #pragma omp for schedule(dynamic, 2)
         for (long b = 0; b < nb; b++)
-            for (int l = 0; l < FS_GRID_B3 && A; l++) {
+            for (int l = 0; l < FS_GRID_B3; l++) {
                 uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l, off = R->fine_off[slot];
                 if (off == FS_GRID_NONE) continue;
+                uint8_t *bits = R->fine + (size_t)off * (FS_REF_FINE3 / 8);
+                if (!ok) { memset(bits, 0, FS_REF_FINE3 / 8); continue; } /* nothing proven: still exact */
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                cell_interior(R, c, A, R->fine + (size_t)off * (FS_REF_FINE3 / 8));
+                cell_interior(R, c, &all, &slab, bits);
+                promote(R, slot);
             }
-        if (!A) memset(R->fine, 0, n * (FS_REF_FINE3 / 8)); /* nothing proven: still exact */
-        free(A);
+        free(all.x);
+        free(slab.x);
     }
     return FS_OK;
 }

@@ -26,8 +26,8 @@ static int clip_box(const fs_grid *g, const cell_box *b, const float o[3], const
         }
         float u = (lo - o[a]) / d[a], v = (hi - o[a]) / d[a];
         if (u > v) { float w = u; u = v; v = w; }
-        t0 = fmaxf(t0, u);
-        t1 = fminf(t1, v);
+        t0 = fs_maxf(t0, u);
+        t1 = fs_minf(t1, v);
     }
     *te = t0;
     *tx = t1;
@@ -86,7 +86,7 @@ static int walk_box(const reference *R, const cell_box *b, const float o[3], con
     int bkey[3] = {INT32_MIN, 0, 0}, far = 0;
     uint32_t blk = FS_GRID_NONE;
     for (float t = te;;) {
-        float t_out = fminf(fminf(w.tmax[0], w.tmax[1]), fminf(w.tmax[2], tx));
+        float t_out = fs_minf(fs_minf(w.tmax[0], w.tmax[1]), fs_minf(w.tmax[2], tx));
         if (t_out < t) t_out = t;
         int bk[3] = {fs_grid_floordiv(w.c[0]), fs_grid_floordiv(w.c[1]), fs_grid_floordiv(w.c[2])};
         if (bk[0] != bkey[0] || bk[1] != bkey[1] || bk[2] != bkey[2]) {
