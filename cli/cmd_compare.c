@@ -107,12 +107,12 @@ static int parse_import(cmp_run *r, const char *spec)
 static double since_s(double t0) { return (fs_now_ms() - t0) / 1000.0; }
 
 /* The analytic reference of frame f: the ideal shape's exact G-buffer. */
-static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v)
+static int render_analytic(cmp_run *r, int f, const fs_grid *g, cmp_view *v)
 {
     int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height);
     if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
     if (!rc) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
-    if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, p), v->rgba);
+    if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, g), v->rgba);
     return rc;
 }
 
@@ -124,7 +124,7 @@ static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, co
     for (int f = 0; f < r->nframes && !rc; f++) {
         cmp_view *v = &ref->frames[f];
         double t0 = fs_now_ms();
-        if (ref->analytic) rc = render_analytic(r, f, &frames_p[f], v);
+        if (ref->analytic) rc = render_analytic(r, f, &grids[f], v);
         else {
             rc = fs_run_upload(run, &frames_p[f], &grids[f], NULL);
             if (!rc) rc = fs_run_render(run, &r->scene.camera, v, NULL);
@@ -551,6 +551,7 @@ int cmd_compare(int argc, char **argv)
     const cli_command cmd = {"compare", "SCENE.json|PARTICLES -o DIR [options]", opts,
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
+    fs_note_quiet(r->quiet);
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
