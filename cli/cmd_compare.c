@@ -111,13 +111,13 @@ static int parse_import(cmp_run *r, const char *spec)
 static double since_s(double t0) { return (fs_now_ms() - t0) / 1000.0; }
 
 /* The analytic reference of frame f: the ideal shape's exact G-buffer. */
-static int render_analytic(cmp_run *r, int f, const fs_particles *p, cmp_view *v, fs_stages *st)
+static int render_analytic(cmp_run *r, int f, const fs_grid *g, cmp_view *v, fs_stages *st)
 {
     double t0 = fs_now_ms();
     int rc = fs_gbuffer_alloc(&v->g, r->scene.camera.width, r->scene.camera.height);
     if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float)))) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
     if (!rc) rc = fs_synthetic_analytic(&r->scene, r->first_frame + f, &r->scene.camera, &v->g);
-    if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, p), v->rgba);
+    if (!rc) fs_shade(&r->scene, &r->scene.camera, &v->g, fs_scene_floor(&r->scene, g), v->rgba);
     if (!rc) fs_stages_add(st, "analytic", fs_now_ms() - t0);
     return rc;
 }
@@ -133,7 +133,7 @@ static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, co
         cli_cache_view *made = &ref->made[f];
         fs_stages st = {0};
         double t0 = fs_now_ms();
-        if (ref->analytic) rc = render_analytic(r, f, &frames_p[f], v, &st);
+        if (ref->analytic) rc = render_analytic(r, f, &grids[f], v, &st);
         else rc = cli_cache_render(&r->cache, run, &r->scene, &frames_p[f], &grids[f], &r->prov, r->first_frame + f, v,
                                    &st, made);
         ref->hits += made->hit;
@@ -567,6 +567,7 @@ int cmd_compare(int argc, char **argv)
     const cli_command cmd = {"compare", "SCENE.json|PARTICLES -o DIR [options]", opts,
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
+    fs_note_quiet(r->quiet);
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (no_cache && cache_dir) return cli_usage("compare", "--cache and --no-cache: choose one");

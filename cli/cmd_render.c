@@ -173,6 +173,7 @@ int cmd_render(int argc, char **argv)
     const cli_command cmd = {"render", "SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]", opts,
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
+    fs_note_quiet(quiet);
     if (!input) return cli_usage("render", "no scene or particle file given");
     if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);

@@ -68,6 +68,13 @@ static void store_entry(cli_cache *c, fs_digest key, fs_run *run, const fs_prove
     if (fs_gcache_store(&c->gc, key, &im->g, im->rgba, &prov)) turn_off(c);
 }
 
+/* The floor an upload of p would set (the grid's bulk, or the particles'). */
+static float floor_y(const fs_scene *s, const fs_particles *p, const fs_grid *g)
+{
+    if (!p->n) return 0;
+    return g ? fs_scene_floor(s, g) : fs_scene_floor_of(s, p);
+}
+
 int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
                      const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out)
 {
@@ -81,11 +88,11 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     fs_gcache_entry(&c->gc, key, out->entry, sizeof out->entry);
     if ((out->hit = load_entry(c, key, s, im))) {
         fs_stages_add(st, "cache", fs_now_ms() - t0);
-        fs_run_set_floor(run, p->n ? fs_scene_floor(s, p) : 0); /* what an upload would set */
+        fs_run_set_floor(run, floor_y(s, p, g)); /* what an upload would set */
         return fs_run_shade(run, &s->camera, im, FS_APPEARANCE_SHARED, st);
     }
     double lookup = fs_now_ms() - t0;
-    fs_run_set_floor(run, p->n ? fs_scene_floor(s, p) : 0); /* a hit before may have set another frame's */
+    fs_run_set_floor(run, floor_y(s, p, g)); /* a hit before may have set another frame's */
     int rc = render_view(run, s, p, g, im, st);
     if (rc) return rc;
     double t1 = fs_now_ms();

@@ -7,6 +7,7 @@
 #include "particle_io.h"
 #include "particle_stats.h"
 #include "timing.h"
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -28,6 +29,90 @@ static void on_visit(void *user, uint32_t slot, float d2)
     v->sum += (uint64_t)orig * 2654435761u + 1;
 }
 
+/* Cell coordinates of cell slot c. */
+static void slot_cell(const fs_grid *g, size_t c, int cc[3])
+{
+    const int32_t *k = g->bkey + 3 * (c / FS_GRID_B3);
+    int l = (int)(c % FS_GRID_B3);
+    cc[0] = k[0] * FS_GRID_B + l % FS_GRID_B;
+    cc[1] = k[1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B;
+    cc[2] = k[2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B);
+}
+
+static int cell_occupied(const fs_grid *g, int i, int j, int k)
+{
+    uint32_t s0, s1;
+    fs_grid_cell_run(g, i, j, k, &s0, &s1);
+    return s1 > s0;
+}
+
+/* Every particle sits in the slot of its cell, once, in original order. */
+static int check_slots(const fs_grid *g, const fs_particles *p)
+{
+    char *seen = calloc(p->n ? p->n : 1, 1);
+    int bad = 0;
+    for (size_t c = 0; c < g->ncells; c++) {
+        if (g->start[c] > g->start[c + 1]) bad++;
+        int cc[3];
+        slot_cell(g, c, cc);
+        if (fs_grid_slot(g, cc[0], cc[1], cc[2]) != c) bad++;
+        for (uint32_t s = g->start[c]; s < g->start[c + 1]; s++) {
+            uint32_t o = g->index[s];
+            if (o >= p->n || seen[o]++) { bad++; continue; }
+            const float *q = g->pos4 + 4 * (size_t)s;
+            if (q[0] != p->x[o] || q[1] != p->y[o] || q[2] != p->z[o]) bad++;
+            for (int a = 0; a < 3; a++)
+                if (fs_grid_coord(g, a, q[a]) != cc[a]) bad++;
+            if (s > g->start[c] && g->index[s - 1] > o) bad++; /* original order kept inside a cell */
+        }
+    }
+    free(seen);
+    return bad;
+}
+
+/* Stored blocks are exactly those with a cell next to an occupied cell, and
+ * the near bits say which cells have a particle in their 27 neighbours. */
+static int check_blocks(const fs_grid *g, const fs_particles *p)
+{
+    int bad = 0;
+    for (size_t i = 0; i < p->n; i++) {
+        int c[3] = {fs_grid_coord(g, 0, p->x[i]), fs_grid_coord(g, 1, p->y[i]), fs_grid_coord(g, 2, p->z[i])};
+        for (int d = 0; d < 27; d++)
+            if (!fs_grid_near_occupied(g, c[0] + d % 3 - 1, c[1] + d / 3 % 3 - 1, c[2] + d / 9 - 1)) bad++;
+    }
+    for (size_t c = 0; c < g->ncells; c++) {
+        int cc[3], near = 0;
+        slot_cell(g, c, cc);
+        for (int d = 0; d < 27; d++) near |= cell_occupied(g, cc[0] + d % 3 - 1, cc[1] + d / 3 % 3 - 1, cc[2] + d / 9 - 1);
+        if (near != fs_grid_near_occupied(g, cc[0], cc[1], cc[2])) bad++;
+    }
+    for (size_t b = 0; b < g->nblocks; b++) { /* no block without a near cell */
+        uint32_t w0 = g->near[2 * b], w1 = g->near[2 * b + 1];
+        if (!w0 && !w1) bad++;
+        for (int a = 0; a < 3; a++)
+            if (g->bkey[3 * b + a] * FS_GRID_B < g->lo[a] || g->bkey[3 * b + a] * FS_GRID_B + 3 > g->hi[a]) bad++;
+    }
+    size_t size = g->table_mask + 1, used = 0;
+    for (size_t h = 0; h < size; h++) used += g->table[h] != FS_GRID_NONE;
+    if ((size & (size - 1)) || used != g->nblocks || 2 * used > size) bad++;
+    return bad;
+}
+
+/* Clusters: every particle counted once, largest first, bulk box inside the box. */
+static int check_clusters(const fs_grid *g, const fs_particles *p)
+{
+    int bad = 0;
+    size_t sum = 0;
+    for (int c = 0; c < g->nclusters; c++) {
+        sum += g->clusters[c].n;
+        if (c && g->clusters[c].n > g->clusters[c - 1].n) bad++;
+    }
+    if (sum != p->n) bad++;
+    for (int a = 0; a < 3 && p->n; a++)
+        if (g->bulk_lo[a] < p->bmin[a] || g->bulk_hi[a] > p->bmax[a] || g->bulk_lo[a] > g->bulk_hi[a]) bad++;
+    return bad;
+}
+
 /* Structure of the grid, then every query against brute force. */
 static void check_grid(const fs_particles *p, float cell, const float *radii, int nr, int nq, const char *what)
 {
@@ -36,22 +121,11 @@ static void check_grid(const fs_particles *p, float cell, const float *radii, in
     CHECK(rc == FS_OK, "%s: build: %s", what, fs_error_message());
     if (rc) return;
     CHECK(g.start[0] == 0 && g.start[g.ncells] == p->n, "%s: prefix sums", what);
-    char *seen = calloc(p->n, 1);
-    int bad = 0;
-    for (size_t c = 0; c < g.ncells; c++) {
-        if (g.start[c] > g.start[c + 1]) bad++;
-        int i = (int)(c % g.dim[0]), j = (int)(c / g.dim[0] % g.dim[1]), k = (int)(c / g.dim[0] / g.dim[1]);
-        for (uint32_t s = g.start[c]; s < g.start[c + 1]; s++) {
-            uint32_t o = g.index[s];
-            if (o >= p->n || seen[o]++) { bad++; continue; }
-            const float *q = g.pos4 + 4 * (size_t)s;
-            if (q[0] != p->x[o] || q[1] != p->y[o] || q[2] != p->z[o]) bad++;
-            if (fs_grid_coord(&g, 0, q[0]) != i || fs_grid_coord(&g, 1, q[1]) != j || fs_grid_coord(&g, 2, q[2]) != k) bad++;
-            if (s > g.start[c] && g.index[s - 1] > o) bad++; /* original order kept inside a cell */
-        }
-    }
+    CHECK(g.ncells == g.nblocks * FS_GRID_B3, "%s: ncells", what);
+    int bad = check_slots(&g, p), bad_blocks = check_blocks(&g, p), bad_clusters = check_clusters(&g, p);
     CHECK(bad == 0, "%s: %d structural errors", what, bad);
-    free(seen);
+    CHECK(bad_blocks == 0, "%s: %d errors in the blocks, near bits or table", what, bad_blocks);
+    CHECK(bad_clusters == 0, "%s: %d errors in the clusters", what, bad_clusters);
     int mismatches = 0;
     size_t total = 0;
     for (int ri = 0; ri < nr; ri++)
@@ -76,8 +150,8 @@ static void check_grid(const fs_particles *p, float cell, const float *radii, in
             if (count != v.count || sum != v.sum || v.bad) mismatches++;
             total += count;
         }
-    printf("%s: %zu particles, %dx%dx%d cells, %d radii x %d queries, %zu neighbours found, %d mismatches\n", what,
-           p->n, g.dim[0], g.dim[1], g.dim[2], nr, nq, total, mismatches);
+    printf("%s: %zu particles, %zu blocks, %d clusters, %d radii x %d queries, %zu neighbours found, %d mismatches\n",
+           what, p->n, g.nblocks, g.nclusters, nr, nq, total, mismatches);
     CHECK(mismatches == 0, "%s: %d queries differ from brute force", what, mismatches);
     CHECK(total > 0, "%s: queries found nothing", what);
     fs_grid_free(&g);
@@ -156,10 +230,19 @@ static void refusals(void)
     fs_particles p;
     if (random_set(&p, 1000)) { CHECK(0, "alloc"); return; }
     fs_grid g;
+    /* A tiny cell over a 2 m box: memory follows the particles (at most 8
+     * blocks each), where the dense grid refused 10^13 cells. */
     int rc = fs_grid_build(&g, &p, 1e-4f);
-    CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "too many, raise the cell size"), "tiny cell refused: %s",
+    CHECK(rc == FS_OK && g.nblocks <= 8 * p.n, "tiny cell: %s, %zu blocks", fs_error_message(), g.nblocks);
+    fs_grid_free(&g);
+    /* A particle so far away that cell coordinates would overflow. */
+    float keep = p.x[42];
+    p.x[42] = 1e9f;
+    rc = fs_grid_build(&g, &p, 0.05f);
+    CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "particle 42 "), "overflowing stray refused: %s",
           fs_error_message());
-    CHECK(g.start == NULL && g.pos4 == NULL, "nothing left allocated after a refusal");
+    CHECK(g.start == NULL && g.pos4 == NULL && g.table == NULL, "nothing left allocated after a refusal");
+    p.x[42] = keep;
     rc = fs_grid_build(&g, &p, 0);
     CHECK(rc == FS_ERR_INPUT, "zero cell refused");
     p.y[17] = NAN;
@@ -180,6 +263,90 @@ static void refusals(void)
     fs_particles_free(&p);
 }
 
+/* A bulk with spray next to it and three strays thousands of metres away:
+ * memory stays small, the strays make their own clusters outside the bulk, the
+ * near spray stays in it, and queries around everything are still exact. */
+static void strays(void)
+{
+    fs_particles p;
+    if (random_set(&p, 5000)) { CHECK(0, "alloc"); return; }
+    fs_particles clean = p;
+    float lo[3], hi[3];
+    memcpy(lo, p.bmin, sizeof lo);
+    memcpy(hi, p.bmax, sizeof hi);
+    fs_particles q;
+    if (fs_particles_alloc(&q, p.n + 5, 0)) { CHECK(0, "alloc"); fs_particles_free(&p); return; }
+    memcpy(q.x, p.x, p.n * sizeof *q.x);
+    memcpy(q.y, p.y, p.n * sizeof *q.y);
+    memcpy(q.z, p.z, p.n * sizeof *q.z);
+    /* Two spray particles 0.6 m above the 2 m bulk (separate blocks, within its extent). */
+    for (int s = 0; s < 2; s++) { q.x[p.n + s] = 0.5f + 0.1f * s; q.y[p.n + s] = hi[1] + 0.6f; q.z[p.n + s] = -2.0f; }
+    const float far[3][3] = {{2000, 0, 0}, {-3000, 1.5f, -2}, {100, 4000, -4000}};
+    for (int s = 0; s < 3; s++) { q.x[p.n + 2 + s] = far[s][0]; q.y[p.n + 2 + s] = far[s][1]; q.z[p.n + 2 + s] = far[s][2]; }
+    fs_particles_bounds(&q);
+    fs_grid g, gc;
+    int rc = fs_grid_build(&g, &q, 0.05f);
+    CHECK(rc == FS_OK, "stray build: %s", fs_error_message());
+    rc = fs_grid_build(&gc, &clean, 0.05f);
+    CHECK(rc == FS_OK, "clean build: %s", fs_error_message());
+    if (rc == FS_OK) {
+        printf("strays: %zu blocks (%zu without), %d clusters, bulk y %g..%g\n", g.nblocks, gc.nblocks, g.nclusters,
+               g.bulk_lo[1], g.bulk_hi[1]);
+        CHECK(g.nblocks <= gc.nblocks + 5 * 8, "strays cost at most 8 blocks each: %zu vs %zu", g.nblocks, gc.nblocks);
+        for (int s = 0; s < 3; s++) {
+            int c[3] = {fs_grid_coord(&g, 0, far[s][0]), fs_grid_coord(&g, 1, far[s][1]), fs_grid_coord(&g, 2, far[s][2])};
+            int found = 0;
+            for (int k = 0; k < g.nclusters; k++) {
+                const fs_grid_cluster *cl = &g.clusters[k];
+                found |= cl->n == 1 && cl->lo[0] <= c[0] && c[0] <= cl->hi[0] && cl->lo[1] <= c[1] &&
+                         c[1] <= cl->hi[1] && cl->lo[2] <= c[2] && c[2] <= cl->hi[2];
+            }
+            CHECK(found, "stray %d is a cluster of its own", s);
+        }
+        for (int a = 0; a < 3; a++) {
+            float want_hi = a == 1 ? hi[1] + 0.6f : hi[a];
+            CHECK(g.bulk_lo[a] == lo[a] && g.bulk_hi[a] == want_hi, "bulk box axis %d: %g..%g, want %g..%g", a,
+                  g.bulk_lo[a], g.bulk_hi[a], lo[a], want_hi);
+            CHECK(gc.bulk_lo[a] == lo[a] && gc.bulk_hi[a] == hi[a], "clean bulk box = bounding box, axis %d", a);
+        }
+        fs_grid_free(&gc);
+        fs_grid_free(&g);
+        const float radii[] = {0.05f, 0.12f};
+        check_grid(&q, 0.05f, radii, 2, 100, "bulk + strays");
+        /* Queries at the strays themselves. */
+        rc = fs_grid_build(&g, &q, 0.05f);
+        for (int s = 0; s < 3 && rc == FS_OK; s++) {
+            visit v = {&g, 0, 0, 0, far[s], 0.01f};
+            fs_grid_query(&g, far[s], 0.1f, on_visit, &v);
+            CHECK(v.count == 1 && !v.bad, "query at stray %d found %zu", s, v.count);
+        }
+        if (rc == FS_OK) fs_grid_free(&g);
+    }
+    fs_particles_free(&q);
+    fs_particles_free(&p);
+}
+
+/* The sorted order and every array are the same on 1 and 2 threads. */
+static void thread_independence(void)
+{
+    fs_particles p;
+    if (random_set(&p, 300000)) { CHECK(0, "alloc"); return; }
+    fs_grid g[2];
+    for (int t = 0; t < 2; t++) {
+        omp_set_num_threads(t + 1);
+        CHECK(fs_grid_build(&g[t], &p, 0.05f) == FS_OK, "build on %d threads", t + 1);
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    CHECK(g[0].nblocks == g[1].nblocks && !memcmp(g[0].bkey, g[1].bkey, 3 * g[0].nblocks * sizeof *g[0].bkey) &&
+              !memcmp(g[0].start, g[1].start, (g[0].ncells + 1) * sizeof *g[0].start) &&
+              !memcmp(g[0].near, g[1].near, (g[0].ncells / 32 + 1) * sizeof *g[0].near) &&
+              !memcmp(g[0].index, g[1].index, p.n * sizeof *g[0].index),
+          "grids built on 1 and 2 threads differ");
+    fs_grid_free(&g[0]);
+    fs_grid_free(&g[1]);
+    fs_particles_free(&p);
+}
+
 int main(void)
 {
     fs_particles p;
@@ -195,6 +362,8 @@ int main(void)
     real_file("dam_break_frame_23_24389_particles.vtk", 0);
     lattice_density();
     refusals();
+    strays();
+    thread_independence();
 
     /* Build time for one million particles (reported, not asserted). */
     if (random_set(&p, 1000000) == 0) {

@@ -12,6 +12,10 @@ enum { FS_OK = 0, FS_ERR_RUNTIME = 1, FS_ERR_INPUT = 2, FS_ERR_DIFF = 3 };
 int fs_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 const char *fs_error_message(void);
 void fs_error_clear(void);
+/* A one-line note on stderr ("fluidsurf: note: ..."), for what a run leaves out
+ * on purpose (far stray particles); silenced by fs_note_quiet(1) (the CLI's -q). */
+void fs_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void fs_note_quiet(int quiet);
 
 #ifdef __cplusplus
 }

@@ -97,35 +97,56 @@ int fs_density_grid_exact(fs_density_grid *g, const fs_particles *p, const fs_gr
             float y = g->origin[1] + g->spacing * j;
             int jlo = fs_grid_coord(ng, 1, y - H), jhi = fs_grid_coord(ng, 1, y + H);
             float *row = g->data + fs_density_grid_index(g, 0, j, k);
-            /* the support ball misses the neighbour grid: the whole row is zero */
-            if (khi < 0 || klo > ng->dim[2] - 1 || jhi < 0 || jlo > ng->dim[1] - 1) {
+            /* the support ball misses every stored cell: the whole row is zero */
+            if (khi < ng->lo[2] || klo > ng->hi[2] || jhi < ng->lo[1] || jlo > ng->hi[1]) {
                 memset(row, 0, (size_t)g->dim[0] * sizeof(float));
                 continue;
             }
-            int kc0 = fs_grid_clampi(klo, ng->dim[2] - 1), kc1 = fs_grid_clampi(khi, ng->dim[2] - 1);
-            int jc0 = fs_grid_clampi(jlo, ng->dim[1] - 1), jc1 = fs_grid_clampi(jhi, ng->dim[1] - 1);
             for (int i = 0; i < g->dim[0]; i++) {
                 float x = g->origin[0] + g->spacing * i;
                 int ilo = fs_grid_coord(ng, 0, x - H), ihi = fs_grid_coord(ng, 0, x + H);
-                if (ihi < 0 || ilo > ng->dim[0] - 1) { row[i] = 0.0f; continue; }
-                ilo = fs_grid_clampi(ilo, ng->dim[0] - 1);
-                ihi = fs_grid_clampi(ihi, ng->dim[0] - 1);
                 double sum = 0.0;
-                for (int kc = kc0; kc <= kc1; kc++)
-                    for (int jc = jc0; jc <= jc1; jc++) {
-                        /* cells ilo..ihi of one row are one run of sorted slots */
-                        size_t c = fs_grid_cell_id(ng, 0, jc, kc);
-                        for (uint32_t s = ng->start[c + ilo], e = ng->start[c + ihi + 1]; s < e; s++) {
-                            const float *q = ng->pos4 + 4 * (size_t)s;
-                            float dx = q[0] - x, dy = q[1] - y, dz = q[2] - z;
-                            float d2 = dx * dx + dy * dy + dz * dz;
-                            if (d2 < H2) sum += fs_kernel_w(kern, sqrtf(d2), H);
+                for (int kc = klo; kc <= khi; kc++)
+                    for (int jc = jlo; jc <= jhi; jc++) {
+                        uint32_t s0, s1;
+                        for (int ic = ilo, e; ic <= ihi; ic = e + 1) { /* one run of sorted slots per block */
+                            e = fs_grid_row_run(ng, ic, ihi, jc, kc, &s0, &s1);
+                            for (uint32_t s = s0; s < s1; s++) {
+                                const float *q = ng->pos4 + 4 * (size_t)s;
+                                float dx = q[0] - x, dy = q[1] - y, dz = q[2] - z;
+                                float d2 = dx * dx + dy * dy + dz * dz;
+                                if (d2 < H2) sum += fs_kernel_w(kern, sqrtf(d2), H);
+                            }
                         }
                     }
                 row[i] = (float)(V * sum);
             }
         }
     }
+    return FS_OK;
+}
+
+static int inside(const fs_particles *p, size_t i, const float lo[3], const float hi[3])
+{
+    return p->x[i] >= lo[0] && p->x[i] <= hi[0] && p->y[i] >= lo[1] && p->y[i] <= hi[1] && p->z[i] >= lo[2] &&
+           p->z[i] <= hi[2];
+}
+
+int fs_density_grid_keep(const fs_particles *p, const float lo[3], const float hi[3], float pad, fs_particles *out,
+                         size_t *dropped)
+{
+    float l[3], h[3];
+    for (int a = 0; a < 3; a++) { l[a] = lo[a] - pad; h[a] = hi[a] + pad; }
+    size_t keep = 0;
+    for (size_t i = 0; i < p->n; i++) keep += inside(p, i, l, h);
+    *dropped = p->n - keep;
+    if (!*dropped) { *out = *p; return FS_OK; }
+    if (fs_particles_alloc(out, keep, 0))
+        return fs_fail(FS_ERR_RUNTIME, "density grid: out of memory for %zu particles", keep);
+    for (size_t i = 0, k = 0; i < p->n; i++)
+        if (inside(p, i, l, h)) { out->x[k] = p->x[i]; out->y[k] = p->y[i]; out->z[k] = p->z[i]; k++; }
+    out->radius = p->radius;
+    fs_particles_bounds(out);
     return FS_OK;
 }
 

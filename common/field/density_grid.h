@@ -47,6 +47,14 @@ float fs_density_grid_sample(const fs_density_grid *g, const float x[3]);
  * with cell >= f->H); OpenMP over planes. Written independently of the splat code. */
 int fs_density_grid_exact(fs_density_grid *g, const fs_particles *p, const fs_grid *ng, const fs_field *f);
 
+/* The particles a fixed-resolution grid over the bulk box keeps: those inside
+ * [lo - pad, hi + pad] (docs/DESIGN.md, "Neighbour grid"; pass the grid's bulk box
+ * and pad H). When none is outside, *out = *p (it shares p's arrays: do not free
+ * it) and *dropped = 0; else *out is a copy of the positions inside, with its
+ * bounds (free it with fs_particles_free), and *dropped says how many were left. */
+int fs_density_grid_keep(const fs_particles *p, const float lo[3], const float hi[3], float pad, fs_particles *out,
+                         size_t *dropped);
+
 /* Relative L2 difference ||a - b|| / ||b|| over all points (grids of equal shape). */
 double fs_density_grid_rel_l2(const fs_density_grid *a, const fs_density_grid *b);
 

@@ -7,43 +7,29 @@
 
 void fs_gl_grid_free(fs_gl_grid *gg)
 {
-    if (gg->start) glDeleteBuffers(1, &gg->start);
-    if (gg->near) glDeleteBuffers(1, &gg->near);
+    unsigned bufs[4] = {gg->start, gg->near, gg->bkey, gg->table};
+    for (int b = 0; b < 4; b++)
+        if (bufs[b]) glDeleteBuffers(1, &bufs[b]);
     if (gg->nchunks) glDeleteBuffers(gg->nchunks, gg->pos);
     if (gg->has_attr) glDeleteBuffers(gg->nchunks, gg->attr);
     memset(gg, 0, sizeof *gg);
 }
 
-/* Bit c of the result: one of the 27 cells around c holds a particle. */
-static uint32_t *near_bits(const fs_grid *g)
+/* An immutable buffer of `bytes` from data (at least 4 bytes, so every binding has storage). */
+static unsigned buffer(const void *data, size_t bytes)
 {
-    size_t words = g->ncells / 32 + 1;
-    uint32_t *bits = calloc(words, sizeof *bits);
-    if (!bits) return NULL;
-    int nk = g->dim[2];
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < nk; k++)
-        for (int j = 0; j < g->dim[1]; j++)
-            for (int i = 0; i < g->dim[0]; i++) {
-                size_t c = fs_grid_cell_id(g, i, j, k);
-                if (g->start[c + 1] == g->start[c]) continue;
-                for (int kk = k - 1; kk <= k + 1; kk++)
-                    for (int jj = j - 1; jj <= j + 1; jj++)
-                        for (int ii = i - 1; ii <= i + 1; ii++) {
-                            if (ii < 0 || jj < 0 || kk < 0 || ii >= g->dim[0] || jj >= g->dim[1] || kk >= g->dim[2])
-                                continue;
-                            size_t d = fs_grid_cell_id(g, ii, jj, kk);
-                            __atomic_fetch_or(&bits[d / 32], 1u << (d % 32), __ATOMIC_RELAXED);
-                        }
-            }
-    return bits;
+    static const uint32_t none = UINT32_MAX;
+    unsigned b;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, (GLsizeiptr)(bytes ? bytes : sizeof none), bytes ? data : &none, 0);
+    return b;
 }
 
 int fs_gl_grid_upload(fs_gl_grid *gg, const fs_grid *g)
 {
     fs_gl_grid_free(gg);
-    size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
-    if (g->ncells + 1 > fs_gl_ssbo_chunk(sizeof(uint32_t)))
+    size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float)), words = fs_gl_ssbo_chunk(sizeof(uint32_t));
+    if (g->ncells + 1 > words || g->table_mask + 1 > words || 3 * g->nblocks > words)
         return fs_fail(FS_ERR_INPUT, "grid: %zu cells do not fit one shader storage buffer: raise the cell size",
                        g->ncells);
     size_t n = g->n ? g->n : 1;
@@ -51,15 +37,14 @@ int fs_gl_grid_upload(fs_gl_grid *gg, const fs_grid *g)
     if (nb < 0) return -nb;
     gg->nchunks = nb;
     gg->chunk = chunk;
-    uint32_t *bits = near_bits(g);
-    if (!bits) { fs_gl_grid_free(gg); return fs_fail(FS_ERR_RUNTIME, "grid: out of memory for %zu cells", g->ncells); }
-    glCreateBuffers(1, &gg->start);
-    glNamedBufferStorage(gg->start, (GLsizeiptr)((g->ncells + 1) * sizeof(uint32_t)), g->start, 0);
-    glCreateBuffers(1, &gg->near);
-    glNamedBufferStorage(gg->near, (GLsizeiptr)((g->ncells / 32 + 1) * sizeof(uint32_t)), bits, 0);
-    free(bits);
+    gg->start = buffer(g->start, (g->ncells + 1) * sizeof *g->start);
+    gg->near = buffer(g->near, (g->ncells / 32 + 1) * sizeof *g->near);
+    gg->bkey = buffer(g->bkey, 3 * g->nblocks * sizeof *g->bkey);
+    gg->table = buffer(g->table, g->table ? (g->table_mask + 1) * sizeof *g->table : 0);
     memcpy(gg->origin, g->origin, sizeof gg->origin);
-    memcpy(gg->dim, g->dim, sizeof gg->dim);
+    memcpy(gg->lo, g->lo, sizeof gg->lo);
+    memcpy(gg->hi, g->hi, sizeof gg->hi);
+    gg->table_mask = g->table ? (unsigned)g->table_mask : 0;
     gg->cell = g->cell;
     if (glGetError() != GL_NO_ERROR) {
         fs_gl_grid_free(gg);
@@ -86,6 +71,8 @@ void fs_gl_grid_bind(const fs_gl_grid *gg, unsigned prog)
 {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_START, gg->start);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_NEAR, gg->near);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_BKEY, gg->bkey);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_TABLE, gg->table);
     /* Unused chunk bindings get chunk 0, so every declared block has a buffer. */
     for (int b = 0; b < FS_GL_GRID_MAX_CHUNKS; b++) {
         int src = b < gg->nchunks ? b : 0;
@@ -95,6 +82,8 @@ void fs_gl_grid_bind(const fs_gl_grid *gg, unsigned prog)
     glUseProgram(prog);
     glUniform3f(glGetUniformLocation(prog, "u_grid_origin"), gg->origin[0], gg->origin[1], gg->origin[2]);
     glUniform1f(glGetUniformLocation(prog, "u_grid_cell"), gg->cell);
-    glUniform3iv(glGetUniformLocation(prog, "u_grid_dim"), 1, gg->dim);
+    glUniform3iv(glGetUniformLocation(prog, "u_grid_lo"), 1, gg->lo);
+    glUniform3iv(glGetUniformLocation(prog, "u_grid_hi"), 1, gg->hi);
+    glUniform1ui(glGetUniformLocation(prog, "u_grid_table_mask"), gg->table_mask);
     glUniform1ui(glGetUniformLocation(prog, "u_grid_chunk"), (unsigned)gg->chunk);
 }

@@ -1,8 +1,9 @@
-/* The neighbour grid (grid.h) as shader storage buffers, read by
- * shaders/common/grid.glsl: start[ncells + 1] (uint), the sorted positions in
- * chunks of at most fs_gl_ssbo_chunk() vec4s, a bit per cell set when any of
- * the 27 cells around it holds a particle (empty-space skipping), and optional
- * per-particle vec4 attributes in sorted order, chunked the same way. */
+/* The block-sparse neighbour grid (grid.h) as shader storage buffers, read by
+ * shaders/common/grid.glsl: the block keys (3 ints per stored block), the hash
+ * table, start[ncells + 1] (uint) over cell slots, the near bits (a bit per cell
+ * slot set when any of the 27 cells around it holds a particle: empty-space
+ * skipping), the sorted positions in chunks of at most fs_gl_ssbo_chunk() vec4s,
+ * and optional per-particle vec4 attributes in sorted order, chunked the same way. */
 #ifndef FS_GL_GRID_H
 #define FS_GL_GRID_H
 #include "grid.h"
@@ -16,18 +17,21 @@ extern "C" {
 #define FS_GL_GRID_BINDING_NEAR 9
 #define FS_GL_GRID_BINDING_POS 10   /* 10 .. 13 */
 #define FS_GL_GRID_BINDING_ATTR 14  /* 14 .. 17 */
+#define FS_GL_GRID_BINDING_BKEY 18
+#define FS_GL_GRID_BINDING_TABLE 19
 
 typedef struct fs_gl_grid {
-    unsigned start, near;
+    unsigned start, near, bkey, table;
     unsigned pos[FS_GL_GRID_MAX_CHUNKS], attr[FS_GL_GRID_MAX_CHUNKS];
     int nchunks, has_attr;
     size_t chunk; /* particles per chunk */
     float origin[3], cell;
-    int dim[3];
+    int lo[3], hi[3];     /* range of the stored cells */
+    unsigned table_mask;
 } fs_gl_grid;
 
 /* Uploads g (replacing what gg held). FS_ERR_INPUT when the set needs more
- * than FS_GL_GRID_MAX_CHUNKS chunks or start[] exceeds one SSBO. */
+ * than FS_GL_GRID_MAX_CHUNKS chunks or start[] or the table exceeds one SSBO. */
 int fs_gl_grid_upload(fs_gl_grid *gg, const fs_grid *g);
 /* Uploads one vec4 per particle given in the ORIGINAL particle order (4n floats);
  * it is stored in the grid's sorted order. */

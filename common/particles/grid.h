@@ -1,8 +1,18 @@
-/* Uniform neighbour grid built by counting sort. The same arrays are uploaded
- * as SSBOs (see gl_grid.h), so CPU code and shaders walk one layout:
- *   cell id   = (k * dim[1] + j) * dim[0] + i
- *   particles of cell c are pos4[start[c] .. start[c+1]) (sorted order),
- *   index[s] is the original particle index of sorted slot s. */
+/* Block-sparse neighbour grid built by counting sort (docs/DESIGN.md, Neighbour
+ * grid). Space is cut into cells of edge `cell`; cells are grouped into blocks
+ * of FS_GRID_B^3 cells, and only the blocks that hold a particle, or touch a
+ * cell next to one, are stored, found through a hash of their block
+ * coordinates. Memory follows the particles, not the bounding box, so a few
+ * particles thousands of metres away cost a few blocks.
+ *
+ *   stored block b covers cells (bkey[3b..3b+2] * FS_GRID_B + local);
+ *   cell slot    = b * FS_GRID_B3 + (lk * FS_GRID_B + lj) * FS_GRID_B + li
+ *   particles of a cell slot c are pos4[start[c] .. start[c+1]) (sorted order);
+ *   index[s] is the original particle index of sorted slot s.
+ * Inside a block a row of cells (li = 0..B-1 at fixed lj, lk) is one run of
+ * slots. The same arrays are uploaded as SSBOs (gl_grid.h), so CPU code and
+ * shaders walk one layout. A cell with no stored block is empty and has no
+ * particle in its 27 neighbours ("far": with cell >= the support, phi = 0 there). */
 #ifndef FS_GRID_H
 #define FS_GRID_H
 #include <math.h>
@@ -13,21 +23,46 @@
 extern "C" {
 #endif
 
+#define FS_GRID_B 4
+#define FS_GRID_B3 (FS_GRID_B * FS_GRID_B * FS_GRID_B)
+#define FS_GRID_NONE UINT32_MAX
+
+/* A connected group of stored blocks (26-neighbours): an axis-aligned box of
+ * cell coordinates lo..hi (inclusive) and the particles in it. */
+typedef struct fs_grid_cluster {
+    int lo[3], hi[3];
+    size_t n;
+} fs_grid_cluster;
+
 typedef struct fs_grid {
-    float origin[3];  /* corner of cell (0,0,0) */
+    float origin[3];  /* corner of cell (0,0,0); cell coordinates may be negative */
     float cell;       /* cell edge length; at least the largest support a pass uses */
-    int dim[3];
-    size_t ncells;
+    int lo[3], hi[3]; /* range of the stored cells' coordinates (inclusive) */
     size_t n;         /* particle count */
-    uint32_t *start;  /* ncells + 1 prefix sums */
+    size_t nblocks;   /* stored blocks */
+    size_t ncells;    /* nblocks * FS_GRID_B3: cell slots */
+    int32_t *bkey;    /* 3 * nblocks: block coordinates of stored block b */
+    uint32_t *start;  /* ncells + 1 prefix sums over cell slots */
+    uint32_t *near;   /* ncells / 32 + 1 bits: one of the 27 cells around the slot holds a particle */
+    uint32_t *table;  /* hash slots (a power of two): stored block index, or FS_GRID_NONE */
+    size_t table_mask;
     uint32_t *index;  /* n: sorted slot -> original particle */
     float *pos4;      /* 4n: sorted positions, w = original index as float bits */
+    fs_grid_cluster *clusters; /* nclusters, largest first */
+    int nclusters;
+    float bulk_lo[3], bulk_hi[3]; /* robust bounds: the box of the clusters that make the bulk */
 } fs_grid;
 
-/* Grids larger than this many cells are refused (FS_ERR_INPUT) rather than
- * exhausting memory on a scene with far-flung spray. */
-#define FS_GRID_MAX_CELLS ((size_t)1 << 27)
+/* The bulk: the largest cluster and every cluster with at least 1% of the
+ * particles make the core; any other cluster whose box lies within one core
+ * extent (the core box's longest side, in cells) of the core box joins it, so
+ * spray thrown off the body stays in the bulk while strays far away do not.
+ * bulk_lo/hi is the box of the positions of the bulk clusters' particles (the
+ * bounding box when nothing is far). */
 
+/* Refuses (FS_ERR_INPUT) a non-finite position, and a set spanning more than
+ * 2^29 cells on an axis (a particle so far away that cell coordinates would
+ * overflow), naming the particle. origin is the lowest particle minus one cell. */
 int fs_grid_build(fs_grid *g, const fs_particles *p, float cell);
 void fs_grid_free(fs_grid *g);
 /* *out = given when it was built on p with cells of at least `cell`; else a grid
@@ -36,15 +71,67 @@ int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid
                 const fs_grid **out);
 
 static inline int fs_grid_clampi(int v, int hi) { return v < 0 ? 0 : (v > hi ? hi : v); }
-/* Cell coordinate of x along axis a, not clamped. */
+/* Cell coordinate of x along axis a (saturated to +-1e9). */
 static inline int fs_grid_coord(const fs_grid *g, int a, float x)
 {
     float t = (x - g->origin[a]) / g->cell;
     return t < -1e9f ? -1000000000 : (t > 1e9f ? 1000000000 : (int)floorf(t));
 }
-static inline size_t fs_grid_cell_id(const fs_grid *g, int i, int j, int k)
+static inline int fs_grid_floordiv(int v) { return v >= 0 ? v / FS_GRID_B : -((-v + FS_GRID_B - 1) / FS_GRID_B); }
+static inline uint32_t fs_grid_hash(int bi, int bj, int bk)
 {
-    return ((size_t)k * g->dim[1] + j) * g->dim[0] + i;
+    return ((uint32_t)bi * 73856093u) ^ ((uint32_t)bj * 19349663u) ^ ((uint32_t)bk * 83492791u);
+}
+/* Stored block index of block coordinates (bi, bj, bk), or FS_GRID_NONE. */
+static inline uint32_t fs_grid_block(const fs_grid *g, int bi, int bj, int bk)
+{
+    if (!g->table) return FS_GRID_NONE;
+    for (uint32_t h = fs_grid_hash(bi, bj, bk) & (uint32_t)g->table_mask;; h = (h + 1) & (uint32_t)g->table_mask) {
+        uint32_t b = g->table[h];
+        if (b == FS_GRID_NONE) return FS_GRID_NONE;
+        const int32_t *k = g->bkey + 3 * (size_t)b;
+        if (k[0] == bi && k[1] == bj && k[2] == bk) return b;
+    }
+}
+/* Cell slot of cell (i, j, k), or FS_GRID_NONE when its block is not stored. */
+static inline uint32_t fs_grid_slot(const fs_grid *g, int i, int j, int k)
+{
+    int bi = fs_grid_floordiv(i), bj = fs_grid_floordiv(j), bk = fs_grid_floordiv(k);
+    uint32_t b = fs_grid_block(g, bi, bj, bk);
+    if (b == FS_GRID_NONE) return b;
+    int li = i - bi * FS_GRID_B, lj = j - bj * FS_GRID_B, lk = k - bk * FS_GRID_B;
+    return b * FS_GRID_B3 + (uint32_t)((lk * FS_GRID_B + lj) * FS_GRID_B + li);
+}
+/* Sorted slots [*s0, *s1) of the particles in cell (i, j, k) (empty when not stored). */
+static inline void fs_grid_cell_run(const fs_grid *g, int i, int j, int k, uint32_t *s0, uint32_t *s1)
+{
+    uint32_t c = fs_grid_slot(g, i, j, k);
+    if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return; }
+    *s0 = g->start[c];
+    *s1 = g->start[c + 1];
+}
+/* Sorted slots [*s0, *s1) of the cells i0..e of row (j, k), where e <= i1 is
+ * the last of them in i0's block; returns e. Walk a row of cells as
+ *   for (int i = i0, e; i <= i1; i = e + 1) {
+ *       e = fs_grid_row_run(g, i, i1, j, k, &s0, &s1);
+ *       for (uint32_t s = s0; s < s1; s++) ...
+ *   }
+ * which visits the particles in the same order as cell by cell. */
+static inline int fs_grid_row_run(const fs_grid *g, int i0, int i1, int j, int k, uint32_t *s0, uint32_t *s1)
+{
+    int bi = fs_grid_floordiv(i0), e = bi * FS_GRID_B + FS_GRID_B - 1;
+    if (e > i1) e = i1;
+    uint32_t c = fs_grid_slot(g, i0, j, k);
+    if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return e; }
+    *s0 = g->start[c];
+    *s1 = g->start[c + (uint32_t)(e - i0) + 1];
+    return e;
+}
+/* 1 when a particle lies in one of the 27 cells around cell (i, j, k). */
+static inline int fs_grid_near_occupied(const fs_grid *g, int i, int j, int k)
+{
+    uint32_t c = fs_grid_slot(g, i, j, k);
+    return c != FS_GRID_NONE && (g->near[c >> 5] >> (c & 31) & 1u);
 }
 
 /* Calls fn(user, sorted_slot, dist2) for every particle within radius of x.

@@ -94,19 +94,33 @@ static int cmp_float(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3])
+void fs_particles_core_bounds_in(const fs_particles *p, float frac, const float in_lo[3], const float in_hi[3],
+                                 float lo[3], float hi[3])
 {
-    size_t m = p->n < 65536 ? p->n : 65536;
+    size_t m = p->n < 65536 ? p->n : 65536, k = 0;
     float *v = m ? malloc(m * sizeof *v) : NULL;
+    size_t *pick = m ? malloc(m * sizeof *pick) : NULL;
     const float *axis[3] = {p->x, p->y, p->z};
+    for (size_t i = 0; v && pick && i < m; i++) {
+        size_t j = i * (p->n / m);
+        int in = 1;
+        for (int a = 0; a < 3; a++) in &= axis[a][j] >= in_lo[a] && axis[a][j] <= in_hi[a];
+        if (in) pick[k++] = j;
+    }
     for (int a = 0; a < 3; a++) {
-        lo[a] = p->bmin[a];
-        hi[a] = p->bmax[a];
-        if (!v) continue;
-        for (size_t i = 0; i < m; i++) v[i] = axis[a][i * (p->n / m)];
-        qsort(v, m, sizeof *v, cmp_float);
-        lo[a] = v[(size_t)(frac * (m - 1))];
-        hi[a] = v[(size_t)((1 - frac) * (m - 1))];
+        lo[a] = in_lo[a];
+        hi[a] = in_hi[a];
+        if (!k) continue;
+        for (size_t i = 0; i < k; i++) v[i] = axis[a][pick[i]];
+        qsort(v, k, sizeof *v, cmp_float);
+        lo[a] = v[(size_t)(frac * (k - 1))];
+        hi[a] = v[(size_t)((1 - frac) * (k - 1))];
     }
     free(v);
+    free(pick);
+}
+
+void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3])
+{
+    fs_particles_core_bounds_in(p, frac, p->bmin, p->bmax, lo, hi);
 }

@@ -142,7 +142,7 @@ int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages 
     r->cur = k;
     if (r->grid_owned[1 - k]) fs_grid_free(&r->grid[1 - k]); /* the previous frame's: no longer held */
     r->grid_owned[1 - k] = 0;
-    if (!r->floor_set) r->floor_y = p->n ? fs_scene_floor(r->scene, p) : 0;
+    if (!r->floor_set) r->floor_y = p->n ? fs_scene_floor(r->scene, &r->grid[k]) : 0;
     return FS_OK;
 }
 

@@ -1,6 +1,7 @@
 #include "scene.h"
 #include "fs_error.h"
 #include "params.h"
+#include "grid.h"
 #include "particles.h"
 #include <math.h>
 #include <stdio.h>
@@ -66,21 +67,43 @@ void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3
     fs_camera_fit_clip(&s->camera, lo, hi);
 }
 
-float fs_scene_floor(const fs_scene *s, const fs_particles *p)
+float fs_scene_floor(const fs_scene *s, const fs_grid *g)
 {
-    return p->bmin[s->up_axis] - s->radius;
+    return g->bulk_lo[s->up_axis] - s->radius;
+}
+
+/* The bulk box of p (grid.h) with cells of the scene's support; the bounding
+ * box when the grid cannot be built (the run reports why later). */
+static void bulk_box(const fs_scene *s, const fs_particles *p, float lo[3], float hi[3])
+{
+    memcpy(lo, p->bmin, 3 * sizeof *lo);
+    memcpy(hi, p->bmax, 3 * sizeof *hi);
+    fs_grid g;
+    if (!p->n || fs_grid_build(&g, p, fs_scene_field(s).H)) return;
+    memcpy(lo, g.bulk_lo, 3 * sizeof *lo);
+    memcpy(hi, g.bulk_hi, 3 * sizeof *hi);
+    fs_grid_free(&g);
+}
+
+float fs_scene_floor_of(const fs_scene *s, const fs_particles *p)
+{
+    float lo[3], hi[3];
+    bulk_box(s, p, lo, hi);
+    return lo[s->up_axis] - s->radius;
 }
 
 void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
 {
+    float blo[3], bhi[3];
+    bulk_box(s, p, blo, bhi);
     if (!s->has_camera) {
         float lo[3], hi[3];
-        fs_particles_core_bounds(p, 0.01f, lo, hi);
+        fs_particles_core_bounds_in(p, 0.01f, blo, bhi, lo, hi);
         for (int i = 0; i < 3; i++) { lo[i] -= s->radius; hi[i] += s->radius; }
         fs_camera_frame_box(&s->camera, lo, hi, s->up_axis);
         s->has_camera = 1;
     }
-    fs_scene_finish_camera(s, p->bmin, p->bmax);
+    fs_scene_finish_camera(s, blo, bhi);
 }
 
 /* ---- JSON scene files ---- */

@@ -67,10 +67,15 @@ fs_field fs_scene_field(const fs_scene *s);
 /* Completes the camera: frames the box when has_camera is 0, sets clip planes. */
 void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3]);
 struct fs_particles;
-/* Height of the checker floor: the particles' lowest point minus r, along up. */
-float fs_scene_floor(const fs_scene *s, const struct fs_particles *p);
-/* The same for a particle set: frames the 1%..99% quantile box grown by r (so
- * spray does not shrink the fluid to a corner), clips with the full bounds. */
+struct fs_grid;
+/* Height of the checker floor: the bulk's lowest point minus r, along up (the
+ * grid's bulk box, so a far stray below the fluid does not sink the floor). */
+float fs_scene_floor(const fs_scene *s, const struct fs_grid *g);
+/* The same floor from the particles, when no grid is at hand (builds one). */
+float fs_scene_floor_of(const fs_scene *s, const struct fs_particles *p);
+/* The same for a particle set: frames the 1%..99% quantile box, grown by r, of
+ * the particles in the bulk box (so neither spray nor far strays shrink the fluid
+ * to a corner), and clips with the bulk box (docs/DESIGN.md, "Neighbour grid"). */
 void fs_scene_frame_particles(fs_scene *s, const struct fs_particles *p);
 
 #ifdef __cplusplus

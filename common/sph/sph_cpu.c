@@ -24,19 +24,21 @@
  * save: a step is a few milliseconds and each loop ends in a barrier. */
 #define FS_SPH_PARALLEL_MIN 16384
 
-/* Calls BODY for every slot t of the cells around x within one support. */
+/* Calls BODY for every slot t of the cells around x within one support, cells
+ * in (k, j, i) order as the GPU path's dense grid visits them. */
 #define FOR_NEIGHBOUR_SLOTS(g, x, H, t, ...) do { \
     int lo_[3], hi_[3]; \
     for (int a_ = 0; a_ < 3; a_++) { \
-        lo_[a_] = fs_grid_clampi(fs_grid_coord(g, a_, (x)[a_] - (H)), (g)->dim[a_] - 1); \
-        hi_[a_] = fs_grid_clampi(fs_grid_coord(g, a_, (x)[a_] + (H)), (g)->dim[a_] - 1); \
+        lo_[a_] = fs_grid_coord(g, a_, (x)[a_] - (H)); \
+        hi_[a_] = fs_grid_coord(g, a_, (x)[a_] + (H)); \
     } \
     for (int k_ = lo_[2]; k_ <= hi_[2]; k_++) \
-        for (int j_ = lo_[1]; j_ <= hi_[1]; j_++) { \
-            size_t row_ = fs_grid_cell_id(g, 0, j_, k_); \
-            uint32_t s1_ = (g)->start[row_ + hi_[0] + 1]; \
-            for (uint32_t t = (g)->start[row_ + lo_[0]]; t < s1_; t++) { __VA_ARGS__ } \
-        } \
+        for (int j_ = lo_[1]; j_ <= hi_[1]; j_++) \
+            for (int i_ = lo_[0], e_; i_ <= hi_[0]; i_ = e_ + 1) { \
+                uint32_t s0_, s1_; \
+                e_ = fs_grid_row_run(g, i_, hi_[0], j_, k_, &s0_, &s1_); \
+                for (uint32_t t = s0_; t < s1_; t++) { __VA_ARGS__ } \
+            } \
 } while (0)
 
 /* The constants of a step: support H, poly6 and spiky normalisations, dynamic

@@ -52,7 +52,11 @@ typedef struct surfels {
     fs_field f;
     surfels_params params;
     fs_scene scene;
-    const fs_particles *p;
+    const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
+    const fs_particles *all;
+    fs_particles bulk;
+    size_t dropped;      /* far strays left out of the density grid; bulk is then a copy */
+    float floor_h;
     const fs_grid *ng;
     fs_grid own;
     int has_own;
@@ -78,6 +82,7 @@ static void destroy(void *self)
     if (s->slice_tex) glDeleteTextures(1, &s->slice_tex);
     free(s->slices);
     if (s->has_own) fs_grid_free(&s->own);
+    if (s->dropped) fs_particles_free(&s->bulk);
     fs_density_grid_free(&s->dg);
     fs_surfel_set_free(&s->set);
     free(s);
@@ -102,7 +107,14 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     surfels *s = self;
-    s->p = p;
+    if (s->dropped) fs_particles_free(&s->bulk);
+    s->p = s->all = NULL;
+    int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
+    if (rc) { s->dropped = 0; return rc; }
+    if (s->dropped) fs_note("surfels: %zu far stray particle(s) outside the bulk are left out of the density grid", s->dropped);
+    s->p = &s->bulk;
+    s->all = p;
+    s->floor_h = fs_scene_floor(&s->scene, g);
     /* the exact build walks cells of at least H */
     return fs_grid_fit(g, p, s->f.H, &s->own, &s->has_own, &s->ng);
 }
@@ -119,7 +131,7 @@ static int build_surface(surfels *s, fs_stages *t)
     if (s->params.grid_build == 0)
         rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters);
     else
-        rc = fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
+        rc = fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
     if (rc) return rc;
     double t1 = fs_now_ms();
     fs_stages_add(t, "density_grid", t1 - t0);
@@ -192,7 +204,7 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     memcpy(l->tint, sc->material_color, sizeof l->tint);
     l->up_axis = up;
     l->checker = sc->background == FS_BACKGROUND_CHECKER;
-    l->floor_h = fs_scene_floor(sc, s->p);
+    l->floor_h = s->floor_h;
     l->check = sc->radius > 0 ? 8.0f * sc->radius : 1.0f;
     if (!l->checker) return FS_OK; /* no floor: nothing under the water */
     /* The maps span the grid's horizontal extent grown by the sideways reach

@@ -45,7 +45,11 @@ typedef struct vr {
     fs_field f;
     volume_raycast_params params;
     fs_scene scene;
-    const fs_particles *p;
+    const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
+    const fs_particles *all;
+    fs_particles bulk;
+    size_t dropped;      /* far strays left out of the volume; bulk is then a copy */
+    float floor_h;
     const fs_grid *ng;
     fs_grid own_ng;
     int has_own_ng;
@@ -79,6 +83,7 @@ static void destroy(void *self)
     if (s->own_tex) glDeleteTextures(1, &s->own_tex);
     fs_gl_target_destroy(&s->target);
     if (s->has_own_ng) fs_grid_free(&s->own_ng);
+    if (s->dropped) fs_particles_free(&s->bulk);
     fs_density_grid_free(&s->dg);
     free(s->background);
     free(s);
@@ -138,13 +143,21 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     vr *s = self;
-    s->p = p;
+    if (s->dropped) fs_particles_free(&s->bulk);
+    s->p = s->all = NULL;
+    int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
+    if (rc) { s->dropped = 0; return rc; }
+    if (s->dropped)
+        fs_note("volume_raycast: %zu far stray particle(s) outside the bulk are left out of the volume", s->dropped);
+    s->p = &s->bulk;
+    s->all = p;
+    s->floor_h = fs_scene_floor(&s->scene, g);
     s->ng = g;
     if (s->params.build != BUILD_EXACT) return FS_OK; /* only the exact build walks the neighbour grid */
     return fs_grid_fit(g, p, s->f.H, &s->own_ng, &s->has_own_ng, &s->ng);
 }
 
-/* IV-A: the volume texture over the particles' box grown by H. */
+/* IV-A: the volume texture over the bulk's box grown by H. */
 static int build_volume(vr *s, fs_stages *t)
 {
     const fs_particles *p = s->p;
@@ -164,7 +177,7 @@ static int build_volume(vr *s, fs_stages *t)
     } else {
         /* the CPU-side builds end in main memory: the upload is part of their cost */
         rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters)
-                              : fs_density_grid_exact(&s->dg, p, s->ng, &s->f);
+                              : fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
         if (!rc) rc = fs_density_texture_upload(s->tex3d, &s->dg);
     }
     if (rc) return rc;
@@ -287,7 +300,7 @@ static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
     fs_gbuffer empty;
     int rc = fs_gbuffer_alloc(&empty, w, h);
     if (rc) return rc;
-    fs_shade(&s->scene, cam, &empty, fs_scene_floor(&s->scene, s->p), s->background);
+    fs_shade(&s->scene, cam, &empty, s->floor_h, s->background);
     fs_gbuffer_free(&empty);
     float *own = fs_gbuffer_aov(out, FS_AOV_OWN), *caustics = fs_gbuffer_aov(out, FS_AOV_CAUSTICS);
     rc = fs_gl_read_texture(s->own_tex, 4, w, h, own);

@@ -28,17 +28,20 @@ void main()
     if (fs_grid_range(x, u_R, lo, hi))
         for (int k = lo.z; k <= hi.z; k++)
             for (int j = lo.y; j <= hi.y; j++) {
-                uvec2 run = fs_grid_row(lo.x, hi.x, j, k);
-                for (uint s = run.x; s < run.y; s++) {
-                    vec3 e = fs_grid_pos(s).xyz - x;
-                    float d2 = dot(e, e);
-                    if (d2 >= R2) continue;
-                    float w = fs_kernel_w(u_kernel, sqrt(d2), u_R);
-                    if (d2 > 0.0) n++;
-                    sw += w;
-                    se += w * e;
-                    sd += w * e * e;
-                    so += w * vec3(e.x * e.y, e.x * e.z, e.y * e.z);
+                for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
+                    uvec2 run;
+                    ce = fs_grid_row_run(ci, hi.x, j, k, run);
+                    for (uint s = run.x; s < run.y; s++) {
+                        vec3 e = fs_grid_pos(s).xyz - x;
+                        float d2 = dot(e, e);
+                        if (d2 >= R2) continue;
+                        float w = fs_kernel_w(u_kernel, sqrt(d2), u_R);
+                        if (d2 > 0.0) n++;
+                        sw += w;
+                        se += w * e;
+                        sd += w * e * e;
+                        so += w * vec3(e.x * e.y, e.x * e.z, e.y * e.z);
+                    }
                 }
             }
     vec3 c = x;

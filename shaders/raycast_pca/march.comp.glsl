@@ -26,11 +26,14 @@ float phi(vec3 x)
     float s = 0.0, H2 = u_H * u_H;
     for (int k = lo.z; k <= hi.z; k++)
         for (int j = lo.y; j <= hi.y; j++) {
-            uvec2 run = fs_grid_row(lo.x, hi.x, j, k);
-            for (uint i = run.x; i < run.y; i++) {
-                vec3 e = fs_grid_pos(i).xyz - x;
-                float d2 = dot(e, e);
-                if (d2 < H2) s += fs_kernel_w(u_kernel, sqrt(d2), u_H);
+            for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
+                uvec2 run;
+                ce = fs_grid_row_run(ci, hi.x, j, k, run);
+                for (uint i = run.x; i < run.y; i++) {
+                    vec3 e = fs_grid_pos(i).xyz - x;
+                    float d2 = dot(e, e);
+                    if (d2 < H2) s += fs_kernel_w(u_kernel, sqrt(d2), u_H);
+                }
             }
         }
     return s * u_V;
@@ -55,8 +58,9 @@ void main()
     vec3 dv = fs_view_ray(vec2(px) + 0.5, vec2(size), u_proj);
     vec3 d = transpose(u_view_rot) * dv;
     float t0 = imageLoad(u_entry, px).x / -dv.z;
-    // Far limit: where the ray leaves the grid (phi is zero beyond).
-    vec3 b0 = (u_grid_origin - u_eye) / d, b1 = (u_grid_origin + vec3(u_grid_dim) * u_grid_cell - u_eye) / d;
+    // Far limit: where the ray leaves the range of the stored cells (phi is zero beyond).
+    vec3 b0 = (u_grid_origin + vec3(u_grid_lo) * u_grid_cell - u_eye) / d;
+    vec3 b1 = (u_grid_origin + vec3(u_grid_hi + 1) * u_grid_cell - u_eye) / d;
     vec3 tfar3 = mix(max(b0, b1), vec3(1e30), equal(d, vec3(0.0)));
     float t_far = min(tfar3.x, min(tfar3.y, tfar3.z));
 

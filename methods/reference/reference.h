@@ -1,0 +1,113 @@
+/* Internals of the reference ray caster shared by its files (README.md):
+ * reference.c (method entry, upload, render), reference_walk.c (a ray's walk
+ * through the sparse grid), reference_plain.c (accel=off: the per-cell march
+ * as it always was), reference_fast.c (accel=on) and reference_bounds.c
+ * (sub-cell bounds of phi). */
+#ifndef FS_REFERENCE_H
+#define FS_REFERENCE_H
+#include "anisotropy.h"
+#include "grid.h"
+#include "kernels.h"
+#include <stdint.h>
+
+/* max and min that compile to one instruction (fmaxf's NaN rules keep it a call). */
+static inline float fs_maxf(float a, float b) { return a > b ? a : b; }
+static inline float fs_minf(float a, float b) { return a < b ? a : b; }
+
+/* Sub-cell classes of reference_bounds.c: phi < iso on the whole sub-cell,
+ * phi >= iso on the whole sub-cell, or neither proven. */
+enum { FS_REF_OUT = 0, FS_REF_IN = 1, FS_REF_EDGE = 2 };
+
+typedef struct reference {
+    fs_field f;
+    float step_min;      /* scene units */
+    int thickness, max_layers, accel;
+    const fs_grid *g;
+    uint32_t *count27;   /* per cell slot: particles in the 27 cells around it */
+    uint32_t max27;
+    float lip_unit;      /* V max|W'|: a cell's Lipschitz bound is lip_unit * count27 */
+    int aniso;
+    fs_aniso_params ap;
+    float reach;         /* largest distance at which a particle's kernel is nonzero: H (times the largest axis) */
+    fs_grid own;         /* anisotropic: grid of the kernel centres, cell >= reach */
+    float *inv;          /* anisotropic: A^-1 per sorted slot of own (9 floats) */
+    float *wscale;       /* anisotropic: 1 / det A per sorted slot */
+    float *sx, *sy, *sz; /* accel: sorted positions as structure of arrays */
+    int sub;             /* accel: sub-cells per cell edge (0: no sub-cell bounds) */
+    uint8_t *lo, *hi;    /* accel: per sub-cell, phi bounds quantised in units of iso / FS_REF_Q, rounded outward */
+    uint32_t *fine_off;  /* accel: per cell slot, its entry in fine, or FS_GRID_NONE */
+    uint8_t *fine;       /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
+    size_t nfine;
+    uint8_t *cell_cls;   /* accel: per cell slot, FS_REF_OUT/IN when every sub-cell is, else FS_REF_EDGE */
+} reference;
+
+/* Fine sub-cells per cell edge for the interior bounds (reference_interior.c);
+ * a multiple of every coarse count (1, 2, 4), and one vector row. */
+#define FS_REF_FINE 8
+#define FS_REF_FINE3 (FS_REF_FINE * FS_REF_FINE * FS_REF_FINE)
+
+/* Quantisation of the sub-cell bounds: value v is stored as v / (iso / FS_REF_Q). */
+#define FS_REF_Q 64
+
+typedef struct ray_result {
+    int hit;
+    float t;        /* ray distance of the first hit */
+    float n[3];     /* world normal, -grad phi normalised */
+    float thick;
+} ray_result;
+
+/* The march state carried from cell to cell along one ray. */
+typedef struct march {
+    int started;       /* phi has been sampled once */
+    int inside;        /* phi >= iso at the current point */
+    int counting;      /* the inside interval was entered from outside */
+    int layers;
+    float g;           /* phi - iso at the current point (or a bound of it with the same sign) */
+    float t_enter;     /* ray distance where the current inside interval began */
+    float s_prev;
+} march;
+
+/* One stretch of a ray inside one stored cell: cell coordinates c, slot, and
+ * ray distances [t0, t1]. The visitor returns 1 when the ray is finished. */
+typedef int (*fs_ref_visit)(void *ctx, const int c[3], uint32_t slot, float t0, float t1);
+
+/* Walks the ray o + t d (t >= 0) through the cells of R's grid that can see a
+ * particle, in order, calling visit for each; cells whose block is not stored
+ * and clusters the ray misses are skipped. *t_last gets where the walk ended. */
+void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx,
+                 float *t_last);
+
+/* Runs of sorted slots [runs[i][0], runs[i][1]) of the particles in the cells
+ * lo..hi (inclusive; at most 4 cells an axis, so at most 2 blocks an axis and
+ * FS_REF_MAX_RUNS runs). Returns the number of runs. */
+#define FS_REF_MAX_RUNS 32
+int fs_ref_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_t runs[][2]);
+
+/* The march's state changes shared by both paths. */
+void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R);
+
+/* accel=off: one ray, per-cell march of the original implementation. buf holds max27 entries. */
+void fs_ref_cast_plain(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);
+size_t fs_ref_plain_buf_size(const reference *R);
+/* accel=on. */
+void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);
+size_t fs_ref_fast_buf_size(const reference *R);
+
+/* Builds R->lo/hi for every near cell slot (R->sub set); frees them first. */
+int fs_ref_bounds_build(reference *R);
+void fs_ref_bounds_free(reference *R);
+/* Builds R->fine_off/fine for the cells that may hold inside sub-cells (after
+ * fs_ref_bounds_build); frees them first. Nothing is built where it does not apply. */
+int fs_ref_interior_build(reference *R);
+/* R->cell_cls from the sub-cell bounds (after both builds). */
+int fs_ref_cell_classes(reference *R);
+void fs_ref_interior_free(reference *R);
+/* Class of sub-cell (si, sj, sk) of cell slot. */
+static inline int fs_ref_class(const reference *R, uint32_t slot, int si, int sj, int sk)
+{
+    size_t s = ((size_t)slot * R->sub + sk) * R->sub * R->sub + (size_t)sj * R->sub + si;
+    if (R->hi[s] < FS_REF_Q) return FS_REF_OUT;
+    if (R->lo[s] >= FS_REF_Q) return FS_REF_IN;
+    return FS_REF_EDGE;
+}
+#endif

@@ -1,0 +1,135 @@
+/* Sub-cell bounds of phi for the accelerated reference (README.md, "Sub-cell
+ * bounds"). Each near cell is cut into sub^3 sub-cells; every kernel decreases
+ * with distance, so over a sub-cell particle j contributes at most V W(d_near)
+ * and at least V W(d_far), its nearest and farthest distances to the box.
+ * Summed, they bound phi on the whole closed sub-cell. The sums are stored
+ * in units of iso / FS_REF_Q, the upper rounded up and the lower down (with a
+ * margin far above the float error of the sums), so the classes they give are
+ * proven: hi < FS_REF_Q means phi < iso everywhere, lo >= FS_REF_Q phi >= iso.
+ * Built by gathering, in parallel over blocks: no locks, no atomics. */
+#include "fs_error.h"
+#include "reference.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void fs_ref_bounds_free(reference *R)
+{
+    free(R->lo);
+    free(R->hi);
+    free(R->cell_cls);
+    R->lo = R->hi = R->cell_cls = NULL;
+}
+
+/* Sub-cells per cell edge: about 2r on a side, at most 4 (and none for the
+ * anisotropic field, whose metric distances this box bound does not cover). */
+static int sub_count(const reference *R)
+{
+    if (R->aniso) return 0;
+    int s = (int)floorf(R->g->cell / (2.0f * R->f.r) + 0.5f);
+    return s < 1 ? 1 : (s > 4 ? 4 : s);
+}
+
+/* Nearest and farthest squared distances from p to the box [b0, b0 + e]^3. */
+static void box_dist2(const float p[3], const float b0[3], float e, float *near2, float *far2)
+{
+    float n2 = 0, f2 = 0;
+    for (int a = 0; a < 3; a++) {
+        float u = p[a] - b0[a], v = b0[a] + e - p[a];
+        float dn = u < 0 ? -u : (v < 0 ? -v : 0), df = u > v ? u : v;
+        n2 += dn * dn;
+        f2 += df * df;
+    }
+    *near2 = n2;
+    *far2 = f2;
+}
+
+/* Bounds of the sub-cells of cell (i, j, k), slot `slot`. */
+static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, float *dn)
+{
+    const fs_grid *g = R->g;
+    const fs_field *f = &R->f;
+    int sub = R->sub, nsub = sub * sub * sub, lo[3], hi[3];
+    float e = g->cell / (float)sub, H2 = f->H * f->H, corner[3];
+    for (int a = 0; a < 3; a++) {
+        lo[a] = c[a] - 1;
+        hi[a] = c[a] + 1;
+        corner[a] = g->origin[a] + g->cell * (float)c[a];
+    }
+    memset(up, 0, (size_t)nsub * sizeof *up);
+    memset(dn, 0, (size_t)nsub * sizeof *dn);
+    uint32_t runs[FS_REF_MAX_RUNS][2];
+    int nr = fs_ref_runs(g, lo, hi, runs);
+    for (int r = 0; r < nr; r++)
+        for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
+            float p[3] = {R->sx[s], R->sy[s], R->sz[s]}, n2, f2;
+            box_dist2(p, corner, g->cell, &n2, &f2);
+            if (n2 >= H2) continue; /* cannot reach the cell */
+            for (int q = 0; q < nsub; q++) {
+                float b0[3] = {corner[0] + e * (float)(q % sub), corner[1] + e * (float)(q / sub % sub),
+                               corner[2] + e * (float)(q / (sub * sub))};
+                box_dist2(p, b0, e, &n2, &f2);
+                if (n2 < H2) up[q] += fs_kernel_w(f->kernel, sqrtf(n2), f->H);
+                if (f2 < H2) dn[q] += fs_kernel_w(f->kernel, sqrtf(f2), f->H);
+            }
+        }
+    float q = f->iso / FS_REF_Q;
+    size_t base = (size_t)slot * (size_t)nsub;
+    for (int k = 0; k < nsub; k++) {
+        float u = ceilf(up[k] * f->volume / q + 0.01f), l = floorf(dn[k] * f->volume / q - 0.01f);
+        R->hi[base + k] = (uint8_t)(u > 255 ? 255 : (u < 0 ? 0 : u));
+        R->lo[base + k] = (uint8_t)(l > 255 ? 255 : (l < 0 ? 0 : l));
+    }
+}
+
+int fs_ref_bounds_build(reference *R)
+{
+    fs_ref_bounds_free(R);
+    const fs_grid *g = R->g;
+    R->sub = sub_count(R);
+    if (!R->sub) return FS_OK;
+    size_t nsub = (size_t)R->sub * R->sub * R->sub, total = g->ncells * nsub;
+    R->lo = calloc(total ? total : 1, 1);
+    R->hi = calloc(total ? total : 1, 1); /* hi = 0: phi < iso, right for cells no particle sees */
+    if (!R->lo || !R->hi) {
+        fs_ref_bounds_free(R);
+        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu sub-cell bounds", total);
+    }
+    long nb = (long)g->nblocks;
+#pragma omp parallel
+    {
+        float up[64], dn[64];
+#pragma omp for schedule(dynamic, 4)
+        for (long b = 0; b < nb; b++)
+            for (int l = 0; l < FS_GRID_B3; l++) {
+                uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l;
+                if (!R->count27[slot]) continue;
+                int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
+                            g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
+                            g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
+                cell_bounds(R, c, slot, up, dn);
+            }
+    }
+    return FS_OK;
+}
+
+int fs_ref_cell_classes(reference *R)
+{
+    const fs_grid *g = R->g;
+    free(R->cell_cls);
+    R->cell_cls = malloc(g->ncells ? g->ncells : 1);
+    if (!R->cell_cls) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
+    size_t nsub = (size_t)R->sub * R->sub * R->sub;
+    long nc = (long)g->ncells;
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < nc; c++) {
+        int in = 1, out = 1;
+        for (size_t q = (size_t)c * nsub; q < (size_t)(c + 1) * nsub; q++) {
+            in &= R->lo[q] >= FS_REF_Q;
+            out &= R->hi[q] < FS_REF_Q;
+        }
+        int fine = R->fine_off && R->fine_off[c] != FS_GRID_NONE;
+        R->cell_cls[c] = (uint8_t)(fine ? FS_REF_EDGE : (in ? FS_REF_IN : (out ? FS_REF_OUT : FS_REF_EDGE)));
+    }
+    return FS_OK;
+}

@@ -1,0 +1,479 @@
+/* accel=on: the same march as reference_plain.c (same proven steps, same
+ * bisection, same normals), made fast three ways (README.md, "Accelerated path"):
+ *  - sub-cells that reference_bounds.c proved outside (phi < iso) or inside
+ *    (phi >= iso) are crossed without gathering or sampling, an inside one
+ *    adding its chord to the thickness;
+ *  - the particles near a cell's stretch are gathered once, as structure of
+ *    arrays, and phi and its bound are summed in loops the compiler vectorises
+ *    (omp simd; the kernels written without branches);
+ *  - a sub-cell is skipped only when that agrees with the march's state, so a
+ *    crossing is always found by sampling, never assumed at a sub-cell face. */
+#include "reference.h"
+#include <math.h>
+#include <string.h>
+
+/* The near particles of one cell stretch, relative to its start point o:
+ * foot a and squared distance b from the ray line (and, anisotropic only,
+ * the metric's k and the weight ws), and the sorted slot. */
+typedef struct near_soa {
+    float *a, *b, *k, *ws, *keep;
+    uint32_t *slot;
+    float o[3];
+    int n;
+} near_soa;
+
+typedef struct fast_ray {
+    const reference *R;
+    const float *o, *d;
+    near_soa N;
+    march m;
+    ray_result *res;
+} fast_ray;
+
+size_t fs_ref_fast_buf_size(const reference *R)
+{
+    size_t cap = R->max27 ? R->max27 : 1;
+    cap = (cap + 15) & ~(size_t)15;
+    return cap * (5 * sizeof(float) + sizeof(uint32_t)) + 64;
+}
+
+static void soa_bind(near_soa *N, void *buf, const reference *R)
+{
+    size_t cap = R->max27 ? R->max27 : 1;
+    cap = (cap + 15) & ~(size_t)15;
+    float *f = buf;
+    N->a = f; N->b = f + cap; N->k = f + 2 * cap; N->ws = f + 3 * cap; N->keep = f + 4 * cap;
+    N->slot = (uint32_t *)(f + 5 * cap);
+    N->n = 0;
+}
+
+/* Kernel shapes without branches, q = d / H (the constants of kernels.h are
+ * applied once per sum). They equal fs_kernel_w(d, H) / C to float rounding. */
+static inline float shape_cubic(float q)
+{
+    float t = fs_maxf(1.0f - q, 0.0f), inner = (6.0f * q - 6.0f) * q * q + 1.0f, outer = 2.0f * t * t * t;
+    return q <= 0.5f ? inner : outer;
+}
+static inline float shape_poly6(float q)
+{
+    float t = fs_maxf(1.0f - q * q, 0.0f);
+    return t * t * t;
+}
+static inline float shape_spiky(float q)
+{
+    float t = fs_maxf(1.0f - q, 0.0f);
+    return t * t * t;
+}
+static inline float shape_wyvill(float q)
+{
+    float a2 = fs_minf(q * q, 1.0f); /* the polynomial is 0 at a = 1 */
+    return 1.0f + a2 * (-22.0f / 9.0f + a2 * (17.0f / 9.0f - a2 * (4.0f / 9.0f)));
+}
+
+/* Distance along the ray from particle foot u (relative to t) to: the point
+ * t (AT), the nearest point of [t, t+s] (NEAR), its farther end (FAR). */
+#define FS_REF_AT(u, s) (u)
+#define FS_REF_NEAR(u, s) ((u) - fs_minf(fs_maxf((u), 0.0f), (s)))
+#define FS_REF_FAR(u, s) fs_maxf(fabsf(u), fabsf((u) - (s)))
+
+/* sum_j ws_j shape(sqrt(b_j + k_j e_j^2) / H): a loop the compiler vectorises. */
+#define FS_REF_SUM(SHAPE, E)                                                                       \
+    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                             \
+    {                                                                                              \
+        float u = a[j] - t, e = E(u, s);                                                           \
+        sum += ws[j] * SHAPE(sqrtf(b[j] + k[j] * (e * e)) * inv_h);                                \
+    }
+/* The isotropic kernel: k = ws = 1. */
+#define FS_REF_SUM_ISO(SHAPE, E)                                                                   \
+    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                             \
+    {                                                                                              \
+        float u = a[j] - t, e = E(u, s);                                                           \
+        sum += SHAPE(sqrtf(b[j] + e * e) * inv_h);                                                 \
+    }
+#define FS_REF_SUMS(SHAPE)                                                                         \
+    if (!aniso) {                                                                                  \
+        if (mode == 0) { FS_REF_SUM_ISO(SHAPE, FS_REF_AT) }                                        \
+        else if (mode == 1) { FS_REF_SUM_ISO(SHAPE, FS_REF_NEAR) }                                 \
+        else { FS_REF_SUM_ISO(SHAPE, FS_REF_FAR) }                                                 \
+    } else if (mode == 0) { FS_REF_SUM(SHAPE, FS_REF_AT) }                                         \
+    else if (mode == 1) { FS_REF_SUM(SHAPE, FS_REF_NEAR) }                                         \
+    else { FS_REF_SUM(SHAPE, FS_REF_FAR) }
+
+static float kernel_c(const fs_field *f)
+{
+    double H = f->H, H3 = H * H * H;
+    switch (f->kernel) {
+    case FS_KERNEL_POLY6: return (float)(315.0 / (64.0 * FS_PI) / H3);
+    case FS_KERNEL_SPIKY: return (float)(15.0 / FS_PI / H3);
+    case FS_KERNEL_WYVILL: return (float)(2835.0 / (736.0 * FS_PI) / H3);
+    default: return (float)(8.0 / FS_PI / H3);
+    }
+}
+
+/* phi at local t (mode 0), or its upper (1) or lower (2) monotone-kernel
+ * bound on [t, t+s]: every kernel decreases with distance. */
+/* One build for AVX2 machines, one for any x86-64; picked at load time. */
+#if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static float field_sum(const reference *R, const near_soa *N, float t, float s, int mode)
+{
+    const fs_field *f = &R->f;
+    const float *restrict a = N->a, *restrict b = N->b, *restrict k = N->k, *restrict ws = N->ws;
+    float inv_h = 1.0f / f->H, sum = 0;
+    int n = N->n, aniso = R->inv != NULL;
+    switch (f->kernel) {
+    case FS_KERNEL_POLY6: FS_REF_SUMS(shape_poly6) break;
+    case FS_KERNEL_SPIKY: FS_REF_SUMS(shape_spiky) break;
+    case FS_KERNEL_WYVILL: FS_REF_SUMS(shape_wyvill) break;
+    default: FS_REF_SUMS(shape_cubic) break;
+    }
+    return sum * kernel_c(f) * f->volume;
+}
+
+/* grad phi at local t (world axes), as reference_plain.c's grad_at. */
+static void grad_at(const reference *R, const near_soa *N, const float d[3], float t, float gr[3])
+{
+    const fs_field *f = &R->f;
+    float H2 = f->H * f->H;
+    gr[0] = gr[1] = gr[2] = 0;
+    for (int j = 0; j < N->n; j++) {
+        uint32_t q = N->slot[j];
+        float x[3] = {N->o[0] + t * d[0] - R->sx[q], N->o[1] + t * d[1] - R->sy[q], N->o[2] + t * d[2] - R->sz[q]};
+        float d2, w;
+        if (R->inv) {
+            const float *M = R->inv + 9 * (size_t)N->slot[j];
+            float u[3], g2[3];
+            for (int a = 0; a < 3; a++) u[a] = M[3 * a] * x[0] + M[3 * a + 1] * x[1] + M[3 * a + 2] * x[2];
+            for (int a = 0; a < 3; a++) g2[a] = M[3 * a] * u[0] + M[3 * a + 1] * u[1] + M[3 * a + 2] * u[2];
+            d2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+            memcpy(x, g2, sizeof x);
+            if (d2 >= H2 || d2 <= 0) continue;
+            w = N->ws[j] * fs_kernel_dw(f->kernel, sqrtf(d2), f->H) / sqrtf(d2);
+        } else {
+            d2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+            if (d2 >= H2 || d2 <= 0) continue;
+            w = fs_kernel_dw(f->kernel, sqrtf(d2), f->H) / sqrtf(d2);
+        }
+        for (int a = 0; a < 3; a++) gr[a] += w * x[a];
+    }
+    for (int a = 0; a < 3; a++) gr[a] *= f->volume;
+}
+
+/* Isotropic: the particles of slots [s0, s1) within H of the stretch, appended
+ * to N. The distances are computed in a vectorised loop; the survivors are
+ * then packed without branches. */
+static int gather_run_iso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len, near_soa *N,
+                          int n)
+{
+    const float *restrict x = R->sx + s0, *restrict y = R->sy + s0, *restrict z = R->sz + s0;
+    float *restrict a = N->a + n, *restrict b = N->b + n, *restrict keep = N->keep;
+    float H2 = R->f.H * R->f.H, o0 = N->o[0], o1 = N->o[1], o2 = N->o[2];
+    int m = (int)(s1 - s0);
+#pragma omp simd
+    for (int j = 0; j < m; j++) {
+        float rx = x[j] - o0, ry = y[j] - o1, rz = z[j] - o2;
+        float aj = rx * d[0] + ry * d[1] + rz * d[2], bj = fs_maxf(rx * rx + ry * ry + rz * rz - aj * aj, 0.0f);
+        float e = aj - fs_minf(fs_maxf(aj, 0.0f), len); /* foot outside the stretch */
+        a[j] = aj;
+        b[j] = bj;
+        keep[j] = bj + e * e < H2 ? 1.0f : 0.0f;
+    }
+    int k = 0;
+    for (int j = 0; j < m; j++) { /* pack: a[k] <= a[j] for k <= j, so in place */
+        a[k] = a[j];
+        b[k] = b[j];
+        N->slot[n + k] = s0 + (uint32_t)j;
+        k += keep[j] != 0.0f;
+    }
+    return n + k;
+}
+
+/* Anisotropic: the metric |A^-1 (o + u d - q)|^2 = k (u - a)^2 + b per particle. */
+static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len,
+                            near_soa *N, int n)
+{
+    float H2 = R->f.H * R->f.H;
+    for (uint32_t s = s0; s < s1; s++) {
+        float rel[3] = {R->sx[s] - N->o[0], R->sy[s] - N->o[1], R->sz[s] - N->o[2]}, md[3], mr[3];
+        const float *M = R->inv + 9 * (size_t)s;
+        for (int x = 0; x < 3; x++) {
+            md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
+            mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
+        }
+        float k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
+        float a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
+        float b = fs_maxf(mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a, 0.0f);
+        float e = a < 0 ? a : (a > len ? a - len : 0);
+        if (b + k * (e * e) >= H2) continue;
+        N->a[n] = a; N->b[n] = b; N->k[n] = k; N->ws[n] = R->wscale[s];
+        N->slot[n++] = s;
+    }
+    return n;
+}
+
+/* Gathers the particles within reach of the stretch o + u d, u in [0, len], of cell c. */
+static void gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_soa *N)
+{
+    const fs_grid *g = R->g;
+    float H = R->reach;
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        float e = o[a] + len * d[a], x0 = o[a] < e ? o[a] : e, x1 = o[a] < e ? e : o[a];
+        lo[a] = fs_grid_coord(g, a, x0 - H);
+        hi[a] = fs_grid_coord(g, a, x1 + H);
+        lo[a] = lo[a] < c[a] - 1 ? c[a] - 1 : lo[a];
+        hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
+        N->o[a] = o[a];
+    }
+    uint32_t runs[FS_REF_MAX_RUNS][2];
+    int nr = fs_ref_runs(g, lo, hi, runs), n = 0;
+    for (int r = 0; r < nr; r++)
+        n = R->inv ? gather_run_aniso(R, runs[r][0], runs[r][1], d, len, N, n)
+                   : gather_run_iso(R, runs[r][0], runs[r][1], d, len, N, n);
+    N->n = n;
+}
+
+/* As reference_plain.c's safe_step, on the gathered arrays. */
+static int safe_step(const reference *R, const near_soa *N, const march *m, float t, float rem, float lip,
+                     float *s_out, float *g_end)
+{
+    float s_lip = fabsf(m->g) / lip, floor_s = s_lip > R->step_min ? s_lip : R->step_min;
+    float s = 2.0f * m->s_prev > floor_s ? 2.0f * m->s_prev : floor_s;
+    s = s < rem ? s : rem;
+    while (s > floor_s) {
+        float b = field_sum(R, N, t, s, m->inside ? 2 : 1);
+        if (m->inside ? b >= R->f.iso : b < R->f.iso) {
+            *s_out = s;
+            *g_end = b - R->f.iso;
+            return 1;
+        }
+        s = 0.5f * s > floor_s ? 0.5f * s : floor_s;
+    }
+    *s_out = s < rem ? s : rem;
+    return 0;
+}
+
+/* A crossing at local tc (ray distance t0 + tc); returns 1 when the ray is finished. */
+static int crossing(fast_ray *F, float t0, float tc)
+{
+    const reference *R = F->R;
+    march *m = &F->m;
+    ray_result *res = F->res;
+    if (!m->inside) {
+        if (!res->hit) {
+            float gr[3];
+            grad_at(R, &F->N, F->d, tc, gr);
+            float l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
+            for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -F->d[a];
+            res->hit = 1;
+            res->t = t0 + tc;
+            if (!R->thickness) return 1;
+        }
+        m->t_enter = t0 + tc;
+        m->counting = 1;
+        m->layers++;
+    } else {
+        if (m->counting) res->thick += t0 + tc - m->t_enter;
+        m->counting = 0;
+        if (m->layers >= R->max_layers) return 1;
+    }
+    m->inside = !m->inside;
+    m->s_prev = R->step_min;
+    return 0;
+}
+
+/* Shrinks the bracket [*lo, *hi] of a sign change of phi - iso (g_lo on the
+ * march's current side at *lo, g_hi on the other at *hi) to at most tol:
+ * regula falsi with the Illinois correction, which needs a handful of phi
+ * evaluations where bisection needs about 15, and a bisection step whenever
+ * two steps did not halve the bracket. Only signs of phi decide the bracket,
+ * so the crossing is as certain as with bisection. */
+static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, float tol)
+{
+    const reference *R = F->R;
+    int keep = 0, inside = F->m.inside;
+    float a = *lo, b = *hi, width = b - a;
+    for (int it = 0; b - a > tol; it++) {
+        float t = g_lo != g_hi ? (g_lo * b - g_hi * a) / (g_lo - g_hi) : 0.5f * (a + b);
+        if (it % 2 == 1) {
+            if (b - a > 0.5f * width) t = 0.5f * (a + b); /* slow progress: bisect */
+            width = b - a;
+        }
+        float q = 0.25f * tol; /* stay inside the bracket */
+        t = t < a + q ? a + q : (t > b - q ? b - q : t);
+        float g = field_sum(R, &F->N, t, 0, 0) - R->f.iso;
+        if ((g >= 0) == inside) {
+            a = t; g_lo = g;
+            if (keep == 1) g_hi *= 0.5f;
+            keep = 1;
+        } else {
+            b = t; g_hi = g;
+            if (keep == -1) g_lo *= 0.5f;
+            keep = -1;
+        }
+    }
+    *lo = a;
+    *hi = b;
+}
+
+/* Marches local [u0, u1] of the cell stretch that starts at ray distance t0. */
+static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
+{
+    const reference *R = F->R;
+    march *m = &F->m;
+    float iso = R->f.iso, tol = 1e-5f * R->f.r; /* finer than the plain path: halves the gap between them */
+    if (!m->started) {
+        m->g = field_sum(R, &F->N, u0, 0, 0) - iso;
+        m->inside = m->g >= 0;
+        m->counting = 0;
+        m->started = 1;
+    }
+    for (float t = u0; t < u1;) {
+        float rem = u1 - t, s, gn;
+        int proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn);
+        float tn = s >= rem ? u1 : t + s;
+        if (!proven) gn = field_sum(R, &F->N, tn, 0, 0) - iso;
+        if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
+        float lo = t, hi = tn;
+        locate(F, &lo, &hi, m->g, gn, tol);
+        if (crossing(F, t0, 0.5f * (lo + hi))) return 1;
+        t = tn;
+        m->g = gn;
+    }
+    return 0;
+}
+
+/* A proven sub-cell of class cls, with v a bound of phi - iso on it (at least
+ * v inside, at most v outside): 1 when skipping it agrees with the march's
+ * state (the state is updated), 0 when it must be marched. */
+static int skip_proven(march *m, int cls, float v)
+{
+    if (cls == FS_REF_EDGE) return 0;
+    int in = cls == FS_REF_IN;
+    if (m->started && m->inside != in) return 0; /* a crossing lies before: find it by sampling */
+    if (!m->started) { m->started = 1; m->inside = in; m->counting = 0; }
+    m->g = v;
+    return 1;
+}
+
+/* Class of sub-cell c at resolution res (R->sub, or FS_REF_FINE where the cell
+ * has interior bits), and *v its bound of phi - iso. */
+static int sub_class(const reference *R, uint32_t slot, int res, const int c[3], float *v)
+{
+    int f = res / R->sub;
+    size_t s = ((size_t)slot * R->sub + c[2] / f) * R->sub * R->sub + (size_t)(c[1] / f) * R->sub + c[0] / f;
+    float q = R->f.iso / FS_REF_Q;
+    if (R->hi[s] < FS_REF_Q) { *v = (float)R->hi[s] * q - R->f.iso; return FS_REF_OUT; }
+    if (R->lo[s] >= FS_REF_Q) { *v = (float)R->lo[s] * q - R->f.iso; return FS_REF_IN; }
+    *v = 0;
+    if (res == R->sub) return FS_REF_EDGE;
+    size_t k = ((size_t)c[2] * FS_REF_FINE + c[1]) * FS_REF_FINE + c[0];
+    const uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    return bits[k >> 3] >> (k & 7) & 1u ? FS_REF_IN : FS_REF_EDGE;
+}
+
+typedef struct subwalk {
+    int c[3], step[3];
+    float tmax[3], tdelta[3];
+} subwalk;
+
+static void sub_start(const reference *R, int res, const int cell[3], const float o[3], const float d[3], float t,
+                      subwalk *w)
+{
+    const fs_grid *g = R->g;
+    float e = g->cell / (float)res;
+    for (int a = 0; a < 3; a++) {
+        float base = g->origin[a] + g->cell * (float)cell[a];
+        int c = (int)floorf((o[a] + t * d[a] - base) / e);
+        w->c[a] = c < 0 ? 0 : (c > res - 1 ? res - 1 : c);
+        float face = base + e * (float)(w->c[a] + (d[a] > 0));
+        if (d[a] != 0) {
+            w->step[a] = d[a] > 0 ? 1 : -1;
+            w->tmax[a] = (face - o[a]) / d[a];
+            w->tdelta[a] = e / fabsf(d[a]);
+        } else {
+            w->step[a] = 0;
+            w->tmax[a] = w->tdelta[a] = INFINITY;
+        }
+    }
+}
+
+/* Marches the cell stretch [t, t_out] sub-cell by sub-cell; edge sub-cells
+ * in a row are marched as one range, over the particles gathered once. */
+static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, float t_out, float lip)
+{
+    const reference *R = F->R;
+    const float *o = F->o, *d = F->d;
+    int res = R->fine_off && R->fine_off[slot] != FS_GRID_NONE ? FS_REF_FINE : R->sub;
+    subwalk w;
+    sub_start(R, res, c, o, d, t, &w);
+    float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}, v;
+    int gathered = 0, cls = sub_class(R, slot, res, w.c, &v);
+    float edge0 = -1; /* start of a pending run of edge sub-cells, -1 when none */
+    for (float ts = t;;) {
+        float te = fs_minf(fs_minf(w.tmax[0], w.tmax[1]), fs_minf(w.tmax[2], t_out));
+        if (te < ts) te = ts;
+        int a = w.tmax[0] < w.tmax[1] ? (w.tmax[0] < w.tmax[2] ? 0 : 2) : (w.tmax[1] < w.tmax[2] ? 1 : 2);
+        int last = te >= t_out, next_cls = FS_REF_EDGE;
+        float next_v = 0;
+        if (!last) {
+            w.c[a] += w.step[a];
+            last = w.c[a] < 0 || w.c[a] >= res;
+            if (!last) next_cls = sub_class(R, slot, res, w.c, &next_v);
+        }
+        if (edge0 >= 0 || !skip_proven(&F->m, cls, v)) {
+            if (edge0 < 0) edge0 = ts;
+            if (last || next_cls != FS_REF_EDGE) { /* the run of marched sub-cells ends here */
+                float end = last ? t_out : te;
+                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N); gathered = 1; }
+                if (F->N.n) {
+                    if (march_range(F, t, edge0 - t, end - t, lip)) return 1;
+                } else {
+                    fs_ref_leave_fluid(&F->m, F->res, edge0, R);
+                }
+                edge0 = -1;
+            }
+        }
+        if (last) return 0;
+        w.tmax[a] += w.tdelta[a];
+        ts = te;
+        cls = next_cls;
+        v = next_v;
+    }
+}
+
+static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t_out)
+{
+    fast_ray *F = ctx;
+    const reference *R = F->R;
+    if (slot == FS_GRID_NONE) {
+        fs_ref_leave_fluid(&F->m, F->res, t, R);
+        return 0;
+    }
+    uint32_t cnt = R->count27[slot];
+    float lip = R->lip_unit * (float)cnt;
+    if (cnt && R->sub) {
+        int cls = R->cell_cls[slot];
+        if (cls != FS_REF_EDGE && skip_proven(&F->m, cls, 0)) return 0; /* the whole cell is proven */
+        return visit_subcells(F, c, slot, t, t_out, lip);
+    }
+    if (cnt) {
+        const float *o = F->o, *d = F->d;
+        float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+        gather(R, c, o_loc, d, t_out - t, &F->N);
+        if (F->N.n) return march_range(F, t, 0, t_out - t, lip);
+    }
+    fs_ref_leave_fluid(&F->m, F->res, t, R);
+    return 0;
+}
+
+void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res)
+{
+    memset(res, 0, sizeof *res);
+    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res};
+    soa_bind(&F.N, buf, R);
+    float t_last;
+    fs_ref_walk(R, o, d, fast_visit, &F, &t_last);
+    if (F.m.inside && F.m.counting) res->thick += t_last - F.m.t_enter;
+}
