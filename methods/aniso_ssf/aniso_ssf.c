@@ -296,6 +296,7 @@ const fs_method fs_method_aniso_ssf = {
                    "depth filter, normals from depth",
     .paper = "xu2022",
     .needs_gl = 1,
+    .grid_use = FS_GRID_AT_UPLOAD,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(aniso_ssf_params),

@@ -284,6 +284,7 @@ const fs_method fs_method_raycast_pca = {
     .description = "splatted entry, narrow-band ray casting of the SPH iso-surface, PCA/SPH-gradient blended normals",
     .paper = "xiao2017",
     .needs_gl = 1,
+    .grid_use = FS_GRID_AT_UPLOAD,
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

@@ -120,6 +120,7 @@ const fs_method fs_method_spheres = {
     .description = "particles as opaque spheres of radius r (sprites with exact depth replacement)",
     .paper = "inacio2010 (Table II baseline)",
     .needs_gl = 1,
+    .grid_use = FS_GRID_UNUSED, /* the sprites are drawn in the particles' order */
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(spheres_params),
