@@ -5,7 +5,8 @@
 # (100^3) particles, plus any larger counts given as arguments (rounded down to
 # a cube), and for spheres and raycast_pca also from a binary PLY file of the
 # same boxes (a file reader's buffers count). Median of RUNS runs (default 3;
-# REF_RUNS for the slow CPU reference, default RUNS).
+# REF_RUNS for the slow CPU reference, default RUNS; LARGE_METHODS picks the
+# methods for the larger counts, default all).
 #
 # Usage: experiments/bench/memory.sh [N ...]   with STATE=before|after|... (default
 # "current") naming the rows: results/bench/memory.csv keeps the rows of every
@@ -20,6 +21,7 @@ SIZE=${SIZE:-1024}
 STATE=${STATE:-current}
 METHODS=${METHODS:-"reference spheres raycast_pca"}
 FILE_METHODS=${FILE_METHODS:-"spheres raycast_pca"}
+LARGE_METHODS=${LARGE_METHODS:-$METHODS} # for the counts given as arguments (the reference takes minutes a run)
 OUT=results/bench
 TMP=out/bench/memory
 csv=$OUT/memory.csv
@@ -77,8 +79,9 @@ sides="46 100"
 for n in "$@"; do sides="$sides $(python3 -c "import sys; print(int(round(int(sys.argv[1]) ** (1/3))))" "$n")"; done
 : > "$csv.rows"
 for side in $sides; do
-  n=$((side * side * side))
-  for m in $METHODS; do measure synthetic "$n" "$m" "$(box "$side")"; done
+  n=$((side * side * side)) methods=$METHODS
+  [ "$side" -gt 100 ] && methods=$LARGE_METHODS
+  for m in $methods; do measure synthetic "$n" "$m" "$(box "$side")"; done
   for m in $FILE_METHODS; do measure ply "$n" "$m" "$(ply "$side")"; done
 done
 
