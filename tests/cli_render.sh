@@ -11,7 +11,11 @@ n=$(($(grep -c '|| fail' "$0") - 1)) # minus this line
 cube=$SRC/experiments/data/splashsurf/cube_2366_particles.vtk
 "$BIN" render "$cube" --method spheres -W 96 -H 64 -q --timings -o "$T/cube.exr" > "$T/timings.csv" || fail "spheres exr render"
 grep -q '^splat,.*llvmpipe\|^splat,.*,' "$T/timings.csv" || fail "timings lack the splat stage: $(cat "$T/timings.csv")"
-grep -q '^grid,.*,CPU$' "$T/timings.csv" || fail "grid stage not marked CPU"
+grep -q '^load,.*,CPU$' "$T/timings.csv" || fail "load stage not marked CPU"
+# spheres reads no neighbour grid (FS_GRID_UNUSED), so none is built; a method that reads one times it on the CPU
+! grep -q '^grid,' "$T/timings.csv" || fail "spheres built a grid nobody reads"
+"$BIN" render "$cube" --method reference -W 24 -H 16 -q --timings -o "$T/cube_ref.png" > "$T/timings_ref.csv" || fail "reference render"
+grep -q '^grid,.*,CPU$' "$T/timings_ref.csv" || fail "grid stage not marked CPU"
 if command -v iinfo >/dev/null; then
   iinfo -v "$T/cube.exr" > "$T/iinfo.txt" 2>&1
   for ch in depth normal.X normal.Y normal.Z thickness coverage; do grep -q "$ch" "$T/iinfo.txt" || fail "EXR lacks channel $ch"; done

@@ -3,7 +3,8 @@
  * provenance, an EXR written and read back with the AOV the method declares (and
  * none for a method that declares none); the particle-lifetime rule (the
  * method keeps the pointers it was given while the caller's struct goes out of
- * scope); a failed upload; an empty frame; a GL method without a context.
+ * scope); a failed upload; an empty frame; the grid built only for a method
+ * that reads it; a GL method without a context.
  * Links the run and report layers only, not methods/. */
 #include "fs_error.h"
 #include "fs_test.h"
@@ -78,6 +79,16 @@ static const fs_method flat_method = {
     .render = flat_render,
     .destroy = flat_destroy,
 };
+
+/* What the grid_use variants saw at upload: the grid pointer and its count. */
+static const fs_grid *seen_grid;
+static size_t seen_grid_n;
+static int grid_upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    seen_grid = g;
+    seen_grid_n = g ? g->n : 0;
+    return flat_upload(self, p, g);
+}
 
 static const fs_method gl_method = {.name = "test_needs_gl", .needs_gl = 1, .params_size = 0,
                                     .create = flat_create, .destroy = flat_destroy};
@@ -331,6 +342,40 @@ static void lifetime_and_failures(void)
     fs_particles_free(&big);
 }
 
+/* The run builds a grid only for a method that reads it, and hands it over
+ * whole; an FS_GRID_AT_UPLOAD method still renders once the run has freed it. */
+static void grid_use(void)
+{
+    static const int uses[] = {FS_GRID_KEPT, FS_GRID_AT_UPLOAD, FS_GRID_UNUSED};
+    fs_particles p;
+    square(&p, 8, 0.3f);
+    fs_camera cam = camera();
+    for (int u = 0; u < 3; u++) {
+        fs_method m = flat_method;
+        m.name = "test_flat_grid";
+        m.grid_use = uses[u];
+        m.upload = grid_upload;
+        fs_run *run = NULL;
+        fs_run_image im = {0};
+        fs_stages st = {0};
+        seen_grid = (const fs_grid *)&p; /* anything but NULL */
+        int rc = fs_run_open(&run, &m, &scene, NULL, NULL);
+        if (!rc) rc = fs_run_upload(run, &p, NULL, &st);
+        if (!rc) rc = fs_run_render(run, &cam, &im, NULL);
+        CHECK(rc == FS_OK && covered(&im.g) > 200, "grid_use %d renders: %s", uses[u], fs_error_message());
+        int timed = 0;
+        for (int i = 0; i < st.n; i++) timed |= !strcmp(st.name[i], "grid");
+        if (uses[u] == FS_GRID_UNUSED)
+            CHECK(seen_grid == NULL && !timed, "unused: no grid built (%p, stage %d)", (const void *)seen_grid, timed);
+        else
+            CHECK(seen_grid && seen_grid_n == p.n && timed, "grid_use %d: a grid of all %zu particles (%zu)", uses[u],
+                  p.n, seen_grid_n);
+        fs_run_close(run);
+        fs_run_image_free(&im);
+    }
+    fs_particles_free(&p);
+}
+
 static void gl_without_context(void)
 {
     fs_run *run = NULL;
@@ -346,6 +391,7 @@ int main(void)
     without_aovs();
     aov_list();
     lifetime_and_failures();
+    grid_use();
     gl_without_context();
     TEST_DONE();
 }

@@ -1,5 +1,6 @@
 #include "gl_sprites.h"
 #include "gl.h"
+#include <stdint.h>
 
 void fs_gl_camera_uniforms(unsigned prog, const fs_camera *cam)
 {
@@ -17,12 +18,34 @@ void fs_gl_camera_uniforms(unsigned prog, const fs_camera *cam)
     glUniform2f(glGetUniformLocation(prog, "u_viewport"), (float)cam->width, (float)cam->height);
 }
 
-void fs_gl_draw_sprites(unsigned vao, const unsigned *bufs, int nbufs, size_t chunk, size_t n)
+/* Waits until the GPU has finished the commands before fence f (none: 0). */
+static void wait_fence(GLsync f)
 {
+    if (!f) return;
+    glClientWaitSync(f, GL_SYNC_FLUSH_COMMANDS_BIT, UINT64_MAX);
+    glDeleteSync(f);
+}
+
+void fs_gl_draw_sprites(unsigned vao, const unsigned *bufs, int nbufs, size_t chunk, size_t n, size_t stride)
+{
+    GLint align = 1;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
+    /* a batch starts at a multiple of the alignment (else draw whole chunks) */
+    size_t batch = (FS_GL_SPRITE_BATCH * stride) % (size_t)(align > 0 ? align : 1) ? chunk : FS_GL_SPRITE_BATCH;
+    GLsync prev = 0;
     glBindVertexArray(vao);
     for (int b = 0; b < nbufs; b++) {
         size_t first = (size_t)b * chunk, cnt = n - first < chunk ? n - first : chunk;
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bufs[b]);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
+        for (size_t o = 0; o < cnt; o += batch) {
+            size_t m = cnt - o < batch ? cnt - o : batch;
+            glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, bufs[b], (GLintptr)(o * stride), (GLsizeiptr)(m * stride));
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)m);
+            /* the fence flushes this batch; waiting on the one before keeps the
+             * binning of the next batch overlapped with rasterising this one */
+            GLsync f = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+            wait_fence(prev);
+            prev = f;
+        }
     }
+    if (prev) glDeleteSync(prev); /* the caller waits (glFinish) when it needs to */
 }

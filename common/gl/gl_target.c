@@ -114,6 +114,40 @@ int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *b
     return nb;
 }
 
+/* Fills buffer buf with particles [first, first + cnt) as float triples. */
+static void fill_xyz(unsigned buf, const float *x, const float *y, const float *z, size_t first, size_t cnt,
+                     float *stage, size_t stage_n)
+{
+    for (size_t o = 0; o < cnt; o += stage_n) {
+        size_t m = cnt - o < stage_n ? cnt - o : stage_n;
+        for (size_t i = 0; i < m; i++) {
+            stage[3 * i] = x[first + o + i];
+            stage[3 * i + 1] = y[first + o + i];
+            stage[3 * i + 2] = z[first + o + i];
+        }
+        glNamedBufferSubData(buf, (GLintptr)(o * 3 * sizeof(float)), (GLsizeiptr)(m * 3 * sizeof(float)), stage);
+    }
+}
+
+int fs_gl_upload_xyz(const float *x, const float *y, const float *z, size_t n, size_t chunk, unsigned *bufs,
+                     int maxbufs)
+{
+    enum { STAGE = 65536 };
+    int nb = (int)((n + chunk - 1) / chunk);
+    if (nb > maxbufs) return -fs_fail(FS_ERR_INPUT, "%zu particles need %d buffers of %zu: too many", n, nb, chunk);
+    float *stage = malloc(STAGE * 3 * sizeof *stage);
+    if (!stage) return -fs_fail(FS_ERR_RUNTIME, "out of memory uploading %zu particles", n);
+    for (int b = 0; b < nb; b++) {
+        size_t first = (size_t)b * chunk, cnt = n - first < chunk ? n - first : chunk;
+        glCreateBuffers(1, &bufs[b]);
+        glNamedBufferStorage(bufs[b], (GLsizeiptr)(cnt * 3 * sizeof(float)), NULL, GL_DYNAMIC_STORAGE_BIT);
+        fill_xyz(bufs[b], x, y, z, first, cnt, stage, STAGE);
+    }
+    free(stage);
+    if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
+    return nb;
+}
+
 unsigned fs_gl_texture_2d(unsigned format, int w, int h)
 {
     unsigned t = 0;

@@ -43,6 +43,13 @@ unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers);
 int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs);
 /* Elements of `elem_bytes` that fit one SSBO binding on this context. */
 size_t fs_gl_ssbo_chunk(size_t elem_bytes);
+/* Uploads the positions x, y, z (n each) as packed float triples (12 bytes a
+ * particle; std430 float[], since a vec3 array would have a 16-byte stride) in
+ * buffers of at most `chunk` particles, through a small staging block rather
+ * than a host copy of the whole set. Returns the buffer count, or minus an
+ * error code as fs_gl_upload_chunked does. */
+int fs_gl_upload_xyz(const float *x, const float *y, const float *z, size_t n, size_t chunk, unsigned *bufs,
+                     int maxbufs);
 
 #ifdef __cplusplus
 }

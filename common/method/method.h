@@ -42,6 +42,7 @@ typedef struct fs_method {
     const char *appearance;  /* its own look, for `methods` (NULL: only the shared shading) */
     const char *exports;     /* what export_file writes, for `methods` (NULL: nothing) */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
+    int grid_use;            /* FS_GRID_KEPT (0), FS_GRID_AT_UPLOAD or FS_GRID_UNUSED, below */
     /* The AOVs render() fills (render finds each in out by name); a method with
      * its own appearance declares FS_AOV_OWN. */
     const fs_aov_def *aovs;
@@ -51,7 +52,7 @@ typedef struct fs_method {
     size_t params_size;         /* sizeof that struct */
     /* Returns NULL on failure with fs_fail() set. */
     void *(*create)(const fs_method_setup *setup);
-    /* The frame and a grid with cell >= field.H. Called by the run layer only (run.h),
+    /* The frame and a grid with cell >= field.H (NULL for FS_GRID_UNUSED). Called by the run layer only (run.h),
      * which keeps both (structs and arrays) valid and in place until the next upload
      * or destroy, so a method may keep these pointers until then. */
     int (*upload)(void *self, const fs_particles *p, const fs_grid *g);
@@ -63,6 +64,13 @@ typedef struct fs_method {
      * grid, .ply surfels). FS_ERR_INPUT for an extension it does not write. */
     int (*export_file)(void *self, const char *path);
 } fs_method;
+
+/* What upload() does with the grid it is given, so that the run layer builds
+ * and keeps no grid that nobody reads (20 bytes a particle): KEPT, the default,
+ * keeps pointers into it until the next upload; AT_UPLOAD reads it only during
+ * upload (a grid the run built is freed right after); UNUSED ignores it (the run
+ * builds none and passes NULL). */
+enum { FS_GRID_KEPT = 0, FS_GRID_AT_UPLOAD = 1, FS_GRID_UNUSED = 2 };
 
 enum { FS_METHOD_HIDDEN = 1 }; /* registered, found by name, not listed */
 /* Adds m to the registry (again: no-op). FS_ERR_INPUT when another method has its name. */

@@ -109,16 +109,24 @@ static int build_grid(const fs_run *r, const fs_particles *p, fs_grid *g, fs_sta
     return rc;
 }
 
-/* Fills slot k with the frame and its grid (the caller's, or built). */
-static int fill_slot(fs_run *r, int k, const fs_particles *p, const fs_grid *g, fs_stages *st)
+/* Frees the grid of slot k when the run built it. */
+static void drop_own_grid(fs_run *r, int k)
 {
     if (r->grid_owned[k]) fs_grid_free(&r->grid[k]);
     r->grid_owned[k] = 0;
+}
+
+/* Fills slot k with the frame and its grid (the caller's, or built; none for
+ * a method that ignores it). */
+static int fill_slot(fs_run *r, int k, const fs_particles *p, const fs_grid *g, fs_stages *st)
+{
+    drop_own_grid(r, k);
     memset(&r->grid[k], 0, sizeof r->grid[k]);
     r->frame[k] = *p;
     if (!p->n) return FS_OK;
     int rc = check_bounds(r, p);
     if (rc) return rc;
+    if (r->m->grid_use == FS_GRID_UNUSED) return FS_OK;
     if (g) { r->grid[k] = *g; return FS_OK; }
     rc = build_grid(r, p, &r->grid[k], st);
     r->grid_owned[k] = !rc;
@@ -129,20 +137,22 @@ int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages 
 {
     int k = r->cur == 0 ? 1 : 0; /* not the current frame's slot (after a failure, none is current) */
     int rc = fill_slot(r, k, p, g, st);
+    if (!rc && !r->floor_set) /* from the grid's bulk (while it is held), so far strays do not lower the floor */
+        r->floor_y = !p->n ? 0 : (r->m->grid_use == FS_GRID_UNUSED ? fs_scene_floor_of(r->scene, p)
+                                                                   : fs_scene_floor(r->scene, &r->grid[k]));
     if (!rc && p->n) {
         double t0 = fs_now_ms();
-        rc = r->m->upload(r->self, &r->frame[k], &r->grid[k]);
+        rc = r->m->upload(r->self, &r->frame[k], r->m->grid_use == FS_GRID_UNUSED ? NULL : &r->grid[k]);
         if (!rc && st) fs_stages_add(st, "upload", fs_now_ms() - t0);
     }
+    if (r->m->grid_use == FS_GRID_AT_UPLOAD) drop_own_grid(r, k); /* read; not kept */
     if (rc) { /* the method may hold half a frame now: render nothing until the next upload */
         r->cur = -1;
         snprintf(r->why, sizeof r->why, "%s", fs_error_message());
         return rc;
     }
     r->cur = k;
-    if (r->grid_owned[1 - k]) fs_grid_free(&r->grid[1 - k]); /* the previous frame's: no longer held */
-    r->grid_owned[1 - k] = 0;
-    if (!r->floor_set) r->floor_y = p->n ? fs_scene_floor(r->scene, &r->grid[k]) : 0;
+    drop_own_grid(r, 1 - k); /* the previous frame's: no longer held */
     return FS_OK;
 }
 

@@ -135,7 +135,11 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
         g = &s->own;
     }
     s->n = p->n;
-    return fs_gl_grid_upload(&s->gg, g);
+    int rc = fs_gl_grid_upload(&s->gg, g);
+    /* every pass reads the GL copy: the host grid is not kept (FS_GRID_AT_UPLOAD) */
+    if (s->has_own) fs_grid_free(&s->own);
+    s->has_own = 0;
+    return rc;
 }
 
 /* Camera uniforms plus the splat radius. */
@@ -147,8 +151,8 @@ static void camera_uniforms(unsigned prog, const fs_camera *cam, float radius)
 
 static void draw_sprites(const assf *s, int aniso)
 {
-    if (aniso) fs_gl_draw_sprites(s->vao, s->an.bufs, s->an.nbufs, s->an.chunk, s->n);
-    else fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n);
+    if (aniso) fs_gl_draw_sprites(s->vao, s->an.bufs, s->an.nbufs, s->an.chunk, s->n, 12 * sizeof(float));
+    else fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n, 4 * sizeof(float));
 }
 
 static int ensure_targets(assf *s, int w, int h)
@@ -292,6 +296,7 @@ const fs_method fs_method_aniso_ssf = {
                    "depth filter, normals from depth",
     .paper = "xu2022",
     .needs_gl = 1,
+    .grid_use = FS_GRID_AT_UPLOAD,
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(aniso_ssf_params),

@@ -50,7 +50,7 @@ typedef struct rpca {
     unsigned prog_splat, prog_thick, prog_march, prog_normals, prog_filter, vao;
     unsigned tex_hit, tex_raw; /* world hit point; unfiltered view normal */
     int tex_w, tex_h;
-    fs_grid own;        /* built when the caller's grid is missing or too fine */
+    fs_grid own;        /* built when the caller's grid is missing or too fine; upload only */
     int has_own, use_color;
     size_t n;
     fs_gl_grid gg;
@@ -101,6 +101,22 @@ static void *create(const fs_method_setup *setup)
     return s;
 }
 
+/* The grid and, when the particles carry colour, the colours as GL buffers. */
+static int upload_gl(rpca *s, const fs_particles *p, const fs_grid *g)
+{
+    int rc = fs_gl_grid_upload(&s->gg, g);
+    if (rc || !s->use_color) return rc;
+    float *c = malloc((p->n ? p->n : 1) * 4 * sizeof *c);
+    if (!c) return fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory for %zu colours", p->n);
+    for (size_t i = 0; i < p->n; i++) {
+        memcpy(c + 4 * i, p->color + 3 * i, 3 * sizeof *c);
+        c[4 * i + 3] = 1;
+    }
+    rc = fs_gl_grid_upload_attr(&s->gg, g, c);
+    free(c);
+    return rc;
+}
+
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     rpca *s = self;
@@ -108,24 +124,16 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
      * particle that reaches a point); build one when not given. */
     int rc = fs_grid_fit(g, p, s->f.H, &s->own, &s->has_own, &g);
     if (rc) return rc;
-    rc = fs_gl_grid_upload(&s->gg, g);
-    if (rc) return rc;
     s->n = p->n;
     s->use_color = p->color != NULL;
-    if (s->use_color) {
-        float *c = malloc((p->n ? p->n : 1) * 4 * sizeof *c);
-        if (!c) return fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory for %zu colours", p->n);
-        for (size_t i = 0; i < p->n; i++) {
-            memcpy(c + 4 * i, p->color + 3 * i, 3 * sizeof *c);
-            c[4 * i + 3] = 1;
-        }
-        rc = fs_gl_grid_upload_attr(&s->gg, g, c);
-        free(c);
-    }
+    rc = upload_gl(s, p, g);
+    /* every pass reads the GL copy: the host grid is not kept (FS_GRID_AT_UPLOAD) */
+    if (s->has_own) fs_grid_free(&s->own);
+    s->has_own = 0;
     return rc;
 }
 
-static void draw_spheres(const rpca *s) { fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n); }
+static void draw_spheres(const rpca *s) { fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n, 4 * sizeof(float)); }
 
 static int ensure_targets(rpca *s, int w, int h)
 {
@@ -276,6 +284,7 @@ const fs_method fs_method_raycast_pca = {
     .description = "splatted entry, narrow-band ray casting of the SPH iso-surface, PCA/SPH-gradient blended normals",
     .paper = "xiao2017",
     .needs_gl = 1,
+    .grid_use = FS_GRID_AT_UPLOAD,
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

@@ -56,8 +56,8 @@ static void *create(const fs_method_setup *setup)
     s->radius = (float)p.radius_scale * setup->field.r;
     s->thickness = p.thickness != 0;
     const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
-    s->prog_surface = fs_program_build(surf, NULL);
-    if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "MODE_THICKNESS 1");
+    s->prog_surface = fs_program_build(surf, "POS_PACKED3 1");
+    if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "POS_PACKED3 1\nMODE_THICKNESS 1");
     if (!s->prog_thickness) { destroy(s); return NULL; }
     glCreateVertexArrays(1, &s->vao);
     return s;
@@ -67,18 +67,11 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     (void)g;
     spheres *s = self;
-    float *v = malloc(p->n * 4 * sizeof(float));
-    if (!v) return fs_fail(FS_ERR_RUNTIME, "out of memory uploading %zu particles", p->n);
-    for (size_t i = 0; i < p->n; i++) {
-        v[4 * i] = p->x[i];
-        v[4 * i + 1] = p->y[i];
-        v[4 * i + 2] = p->z[i];
-        v[4 * i + 3] = 0;
-    }
     if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
-    size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
-    int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, MAX_CHUNKS);
-    free(v);
+    s->nbufs = 0;
+    /* float triples: the shader reads exactly the positions, a quarter less than vec4 */
+    size_t chunk = fs_gl_ssbo_chunk(3 * sizeof(float));
+    int nb = fs_gl_upload_xyz(p->x, p->y, p->z, p->n, chunk, s->bufs, MAX_CHUNKS);
     if (nb < 0) return -nb;
     s->nbufs = nb;
     s->chunk = chunk;
@@ -92,7 +85,7 @@ static void set_uniforms(unsigned prog, const fs_camera *cam, float radius)
     glUniform1f(glGetUniformLocation(prog, "u_radius"), radius);
 }
 
-static void draw(const spheres *s) { fs_gl_draw_sprites(s->vao, s->bufs, s->nbufs, s->chunk, s->n); }
+static void draw(const spheres *s) { fs_gl_draw_sprites(s->vao, s->bufs, s->nbufs, s->chunk, s->n, 3 * sizeof(float)); }
 
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
@@ -127,6 +120,7 @@ const fs_method fs_method_spheres = {
     .description = "particles as opaque spheres of radius r (sprites with exact depth replacement)",
     .paper = "inacio2010 (Table II baseline)",
     .needs_gl = 1,
+    .grid_use = FS_GRID_UNUSED, /* the sprites are drawn in the particles' order */
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(spheres_params),
