@@ -44,17 +44,54 @@ static void box_dist2(const float p[3], const float b0[3], float e, float *near2
     *far2 = f2;
 }
 
-/* Bounds of the sub-cells of cell (i, j, k), slot `slot`. */
+/* Cubic spline W / (8 / (pi H^3)) at q = d / H, without branches (vectorises). */
+static inline float cubic_shape(float q)
+{
+    float t = q < 1.0f ? 1.0f - q : 0.0f;
+    return q <= 0.5f ? (6.0f * q - 6.0f) * q * q + 1.0f : 2.0f * t * t * t;
+}
+
+/* Adds particle p to the sums of the sub-cells with corners b[0..2][q], edge e:
+ * the cubic spline in a vectorised loop, other kernels one by one. */
+static void add_bounds(const fs_field *f, const float p[3], float b[3][64], int nsub, float e, float *up, float *dn)
+{
+    float H = f->H, H2 = H * H, inv_h = 1.0f / H, cs = (float)(8.0 / FS_PI) / (H * H * H);
+    int cubic = f->kernel == FS_KERNEL_CUBIC;
+#pragma omp simd
+    for (int q = 0; q < nsub; q++) {
+        float n2 = 0, f2 = 0;
+        for (int a = 0; a < 3; a++) {
+            float u = p[a] - b[a][q], v = b[a][q] + e - p[a];
+            float dn_a = u < 0 ? -u : (v < 0 ? -v : 0.0f), df_a = u > v ? u : v;
+            n2 += dn_a * dn_a;
+            f2 += df_a * df_a;
+        }
+        if (cubic) {
+            up[q] += n2 < H2 ? cs * cubic_shape(sqrtf(n2) * inv_h) : 0.0f;
+            dn[q] += f2 < H2 ? cs * cubic_shape(sqrtf(f2) * inv_h) : 0.0f;
+        } else {
+            if (n2 < H2) up[q] += fs_kernel_w(f->kernel, sqrtf(n2), H);
+            if (f2 < H2) dn[q] += fs_kernel_w(f->kernel, sqrtf(f2), H);
+        }
+    }
+}
+
+/* Bounds of the sub-cells of cell c, slot `slot`. */
 static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, float *dn)
 {
     const fs_grid *g = R->g;
     const fs_field *f = &R->f;
     int sub = R->sub, nsub = sub * sub * sub, lo[3], hi[3];
-    float e = g->cell / (float)sub, H2 = f->H * f->H, corner[3];
+    float e = g->cell / (float)sub, H2 = f->H * f->H, corner[3], b[3][64];
     for (int a = 0; a < 3; a++) {
         lo[a] = c[a] - 1;
         hi[a] = c[a] + 1;
         corner[a] = g->origin[a] + g->cell * (float)c[a];
+    }
+    for (int q = 0; q < nsub; q++) {
+        b[0][q] = corner[0] + e * (float)(q % sub);
+        b[1][q] = corner[1] + e * (float)(q / sub % sub);
+        b[2][q] = corner[2] + e * (float)(q / (sub * sub));
     }
     memset(up, 0, (size_t)nsub * sizeof *up);
     memset(dn, 0, (size_t)nsub * sizeof *dn);
@@ -64,14 +101,7 @@ static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, 
         for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
             float p[3] = {R->sx[s], R->sy[s], R->sz[s]}, n2, f2;
             box_dist2(p, corner, g->cell, &n2, &f2);
-            if (n2 >= H2) continue; /* cannot reach the cell */
-            for (int q = 0; q < nsub; q++) {
-                float b0[3] = {corner[0] + e * (float)(q % sub), corner[1] + e * (float)(q / sub % sub),
-                               corner[2] + e * (float)(q / (sub * sub))};
-                box_dist2(p, b0, e, &n2, &f2);
-                if (n2 < H2) up[q] += fs_kernel_w(f->kernel, sqrtf(n2), f->H);
-                if (f2 < H2) dn[q] += fs_kernel_w(f->kernel, sqrtf(f2), f->H);
-            }
+            if (n2 < H2) add_bounds(f, p, b, nsub, e, up, dn); /* else it cannot reach the cell */
         }
     float q = f->iso / FS_REF_Q;
     size_t base = (size_t)slot * (size_t)nsub;
