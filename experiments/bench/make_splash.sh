@@ -19,7 +19,7 @@ OUT=${1:-experiments/data/splash/dam_break_splash_100k.ply}
 BIN=${BIN:-./build/fluidsurf}
 PARTICLES=${PARTICLES:-100000}
 FPS=${FPS:-10}
-FRAMES=${FRAMES:-12}
+FRAMES=${FRAMES:-10}
 [ -x "$BIN" ] || bash scripts/build.sh "$(dirname "$BIN")"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
