@@ -83,6 +83,15 @@ done
 } > "$tmpd/plot.gp"
 gnuplot "$tmpd/plot.gp"
 
+# ---- the view check: fluidsurf's reference and vdb_tool's image of the splash frame, side by side
+IMG=${3:-out/bench/speed$([[ $CSV == *quick* ]] && echo _quick || true)}
+VIEW=$DIR/speed_view_splash.png
+if [ -s "$IMG/splash.reference.exr" ] && [ -s "$IMG/splash.vdb_tool.png" ]; then
+  oiiotool "$IMG/splash.reference.exr" --ch R,G,B --colorconvert linear sRGB --resize 400x400 -o "$tmpd/a.png" &&
+    oiiotool "$IMG/splash.vdb_tool.png" --resize 400x400 -o "$tmpd/b.png" &&
+    oiiotool "$tmpd/a.png" "$tmpd/b.png" --mosaic 2x1 -o "$VIEW" || rm -f "$VIEW"
+fi
+
 # ---- README
 {
   echo "# Speed benchmark (issue 13, section 6)"
@@ -144,5 +153,14 @@ gnuplot "$tmpd/plot.gp"
     ($16 != "\"\"" ? " " $16 : "")}' "$CSV"
   echo
   echo "![time and peak RSS against particles]($(basename "$PNG"))"
+  if [ -s "$VIEW" ]; then
+    echo
+    echo "The same view: the splash frame at $(awk -F, '!/^#/ && $1 == "splash" && $3 == "reference" && $4 > 8 {print $4 "x" $5; exit}' "$CSV"),"
+    echo "fluidsurf's \`reference\` (shared shading; left) and \`vdb_tool\` (its diffuse shader; right), both scaled to 400x400;"
+    echo "covered fractions $(awk -F, '!/^#/ && $1 == "splash" && $3 == "reference" && $4 > 8 {print $14; exit}' "$CSV") and"
+    echo "$(awk -F, '!/^#/ && $1 == "splash" && $3 == "vdb_tool" {print $14; exit}' "$CSV") (vdb_tool's points become spheres of radius 2r; the reference's iso-surface lies about r out from the centres)."
+    echo
+    echo "![the splash frame: reference and vdb_tool, same camera]($(basename "$VIEW"))"
+  fi
 } > "$MD"
 echo "speed_report.sh: wrote $RAT, $PNG, $MD" >&2
