@@ -19,7 +19,7 @@ SIZE=$(awk -F, '!/^#/ && NR > 1 && $2 ~ /^[0-9]+$/ {if ($4 > m) m = $4} END {pri
 # ---- ratios
 awk -F, -v base="reference@$BASE" -v size="$SIZE" -v g1="$G1" -v g2="$G2" -v g3="$G3" '
   /^#/ || $1 == "set" { next }
-  $15 == "ok" && $4 == size { t[$1, $3] = $8; m[$1, $3] = $11; s[$1, $3] = $13; n[$1] = $2; sets[$1] = 1; meth[$3] = 1 }
+  $15 == "ok" && $4 == size { t[$1, $3] = $8; m[$1, $3] = $11; s[$1, $3] = $13; n[$1] = $2; sets[$1] = 1; meth[$3] = 1; c[$1, $3] = $14 }
   $15 == "ok" && $4 == 8 && $3 == "reference" { fixed[$1] = $8 }
   $15 == "ok" && $4 == 8 && $3 == base { fixedb[$1] = $8 }
   function row(q, set, method, v, target, ok) {
@@ -37,6 +37,7 @@ awk -F, -v base="reference@$BASE" -v size="$SIZE" -v g1="$G1" -v g2="$G2" -v g3=
     for (i = 1; i <= ns; i++) for (j = i + 1; j <= ns; j++) if (n[order[j]] + 0 < n[order[i]] + 0) { x = order[i]; order[i] = order[j]; order[j] = x }
     for (i = 1; i <= ns; i++) {
       k = order[i]
+      if (c[k, "reference"] != "" && c[k, "reference"] + 0 == 0) continue # nothing covered: no ratio to speak of
       v = ratio(s[k, "reference"], s[k, "reference thickness=off"]); row("thickness cost on/off (march stage)", k, "reference", v, "<= 2", v <= 2)
       v = ratio(t[k, "reference"], t[k, "reference thickness=off"]); row("thickness cost on/off (whole process)", k, "reference", v, "", 0)
     }
@@ -143,6 +144,12 @@ fi
   tail -n +2 "$RAT" | awk -F, '{printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4 == "" ? "—" : $4, $5 == "" ? "—" : $5, $6}'
   echo
   echo "bytes per particle = (peak RSS of the larger set - peak RSS of the smaller) / (difference in particles)."
+  echo "Thickness ratios are left out for a set where the reference covers no pixel."
+  echo
+  echo "Reading it: the machine is shared, and its load changes during a run by a factor of 2 or more, so a"
+  echo "ratio of two rows measured minutes apart (the growth 1M -> 10M above all) carries that noise; the"
+  echo "min - max columns and the load average in the header show how much. Judge the targets by a run on"
+  echo "a quiet machine."
   echo
   echo "## All rows (\`speed.csv\`)"
   echo
