@@ -31,6 +31,10 @@ fi
 "$BIN" methods | grep -q 'step_min' || fail "methods does not list parameters"
 "$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
 "$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
+# a scene file converts too: its synthetic frame, with the scene's r
+printf '{"particles": {"synthetic": "box", "size": [4, 5, 6], "seed": 3}, "radius": 0.01}' > "$T/box120.json"
+"$BIN" convert "$T/box120.json" -o "$T/box120.ply" && "$BIN" info "$T/box120.ply" | grep -q 'particles: 120' || fail "convert a synthetic scene"
+grep -aq 'comment radius 0.0099999' "$T/box120.ply" || fail "convert a scene: r not written"
 # a frame sequence: a printf pattern with first/last, one frame picked by --frame
 mkdir -p "$T/seq"
 cp "$SRC/experiments/data/splashsurf/double_dam_break_frame_01_4732_particles.vtk" "$T/seq/frame_0001.vtk"
