@@ -18,9 +18,10 @@
 /* Most inside intervals a ray of these scenes crosses, for the thickness tolerance. */
 #define MAX_CROSSINGS 16
 
-static void compare_paths(const char *what, const fs_particles *p, fs_field f, const fs_camera *cam)
+static void compare_one(const char *what, const char *const *on, const fs_particles *p, fs_field f,
+                        const fs_camera *cam)
 {
-    const char *off[] = {"accel=off", NULL}, *on[] = {"accel=on", NULL};
+    const char *off[] = {"accel=off", NULL};
     fs_gbuffer a = {0}, b = {0};
     int rc = fs_test_render("reference", off, p, f, cam, &a, NULL);
     if (!rc) rc = fs_test_render("reference", on, p, f, cam, &b, NULL);
@@ -58,6 +59,17 @@ static void compare_paths(const char *what, const fs_particles *p, fs_field f, c
     CHECK(dn <= 0.01, "%s: normal differs by %.3g degrees", what, dn);
     fs_gbuffer_free(&a);
     fs_gbuffer_free(&b);
+}
+
+/* accel=on with and without the fine interior bounds, each against accel=off. */
+static void compare_paths(const char *what, const fs_particles *p, fs_field f, const fs_camera *cam)
+{
+    const char *with[] = {"accel=on", "interior=on", NULL}, *without[] = {"accel=on", "interior=off", NULL};
+    char name[128];
+    snprintf(name, sizeof name, "%s, interior on", what);
+    compare_one(name, with, p, f, cam);
+    snprintf(name, sizeof name, "%s, interior off", what);
+    compare_one(name, without, p, f, cam);
 }
 
 /* The bundled frame at path, framed at 128x128 by the scene defaults. */

@@ -15,7 +15,7 @@
 #include <string.h>
 
 typedef struct reference_params {
-    double step_min, thickness, max_layers, accel, field, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda;
+    double step_min, thickness, max_layers, accel, interior, field, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda;
 } reference_params;
 
 #define FIELD(f) FS_PARAM_FIELD(reference_params, f)
@@ -26,6 +26,8 @@ static const fs_param_def params[] = {
     {FIELD(max_layers), FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
     {FIELD(accel), FS_PARAM_BOOL, 1, 0, 1, NULL,
      "sub-cell bounds, gathered arrays and vectorised sums (on); off: the plain march, for comparison"},
+    {FIELD(interior), FS_PARAM_ENUM, 0, 0, 2, "auto|on|off",
+     "accel, thickness on: fine interior bounds; auto builds them when the rays per cell pay for them"},
     {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
     {FIELD(aniso_radius), FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "anisotropic: WPCA radius, multiples of r"},
     {FIELD(kappa), FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "anisotropic: largest/smallest eigenvalue limit"},
@@ -74,6 +76,7 @@ static void *create(const fs_method_setup *setup)
     R->step_min = (float)p.step_min * f->r;
     R->thickness = p.thickness != 0;
     R->accel = p.accel != 0;
+    R->interior = (int)p.interior;
     R->max_layers = (int)p.max_layers;
     R->lip_unit = f->volume * fs_kernel_max_dw(f->kernel, f->H);
     return R;
@@ -214,7 +217,8 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     R->sub = 0;
     if (R->accel) {
         rc = fs_ref_bounds_build(R);
-        if (!rc) rc = fs_ref_interior_build(R);
+        R->nwant = rc ? 0 : fs_ref_interior_cells(R);
+        R->interior_done = 0;
         if (!rc && R->sub) rc = fs_ref_cell_classes(R);
         if (rc) { R->g = NULL; return rc; }
     }
@@ -246,6 +250,35 @@ static void shade_pixel(const reference *R, const fs_camera *cam, const float fw
     out->coverage[id] = 1.0f;
 }
 
+/* Rays per interior cell at which the fine interior bounds pay for themselves:
+ * building a cell's costs about as much as marching its inside for ~100 rays
+ * (measured on the 1M-particle box, results/bench/speed.csv, interior=on/off). */
+#define FS_REF_VISITS 100.0
+
+/* Whether to build the fine interior bounds for this render: each of W x H rays
+ * crosses about cbrt(cells) of the nwant cells that may hold inside sub-cells. */
+static int want_interior(const reference *R, const fs_camera *cam)
+{
+    if (!R->accel || !R->thickness || !R->sub || !R->nwant || R->interior == 2) return 0;
+    if (R->interior == 1) return 1;
+    double cells = (double)R->nwant;
+    return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS;
+}
+
+/* Builds the fine interior bounds once per upload when they pay (stage "interior"). */
+static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
+{
+    if (R->interior_done) return FS_OK;
+    R->interior_done = 1;
+    if (!want_interior(R, cam)) return FS_OK;
+    double t0 = fs_now_ms();
+    int rc = fs_ref_interior_build(R);
+    if (!rc) rc = fs_ref_cell_classes(R);
+    if (rc) { fs_ref_interior_free(R); R->g = NULL; return rc; }
+    if (st) fs_stages_add(st, "interior", fs_now_ms() - t0);
+    return FS_OK;
+}
+
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
 {
     reference *R = self;
@@ -253,6 +286,8 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (out->w != cam->width || out->h != cam->height)
         return fs_fail(FS_ERR_RUNTIME, "reference: G-buffer %dx%d does not match the camera %dx%d", out->w, out->h,
                        cam->width, cam->height);
+    int rc = prepare_interior(R, cam, st);
+    if (rc) return rc;
     double t0 = fs_now_ms();
     int nth = omp_get_max_threads();
     size_t per = R->accel ? fs_ref_fast_buf_size(R) : fs_ref_plain_buf_size(R);

@@ -22,6 +22,9 @@ typedef struct reference {
     fs_field f;
     float step_min;      /* scene units */
     int thickness, max_layers, accel;
+    int interior;        /* 0 auto, 1 on, 2 off: the fine interior bits (reference_interior.c) */
+    int interior_done;   /* the interior decision was taken for the current upload */
+    size_t nwant;        /* cells that may hold inside sub-cells */
     const fs_grid *g;
     uint32_t *count27;   /* per cell slot: particles in the 27 cells around it */
     uint32_t max27;
@@ -99,6 +102,8 @@ void fs_ref_bounds_free(reference *R);
 /* Builds R->fine_off/fine for the cells that may hold inside sub-cells (after
  * fs_ref_bounds_build); frees them first. Nothing is built where it does not apply. */
 int fs_ref_interior_build(reference *R);
+/* The number of cells that may hold inside sub-cells (after fs_ref_bounds_build). */
+size_t fs_ref_interior_cells(const reference *R);
 /* R->cell_cls from the sub-cell bounds (after both builds). */
 int fs_ref_cell_classes(reference *R);
 void fs_ref_interior_free(reference *R);

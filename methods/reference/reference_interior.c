@@ -155,6 +155,14 @@ static void promote(reference *R, uint32_t slot)
     if (all) R->fine_off[slot] = FS_GRID_NONE;
 }
 
+size_t fs_ref_interior_cells(const reference *R)
+{
+    if (!R->sub) return 0;
+    size_t n = 0;
+    for (size_t c = 0; c < R->g->ncells; c++) n += (size_t)wants_fine(R, (uint32_t)c);
+    return n;
+}
+
 int fs_ref_interior_build(reference *R)
 {
     fs_ref_interior_free(R);
