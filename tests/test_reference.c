@@ -41,8 +41,11 @@ static int render(const fs_scene *scene0, const fs_camera *cam, const char *set,
     if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
     if (!rc) rc = fs_run_render(run, cam, &im, &st);
     if (!rc) {
-        CHECK(st.n == 1 && !strcmp(st.name[0], "march"), "stage named march");
-        g_ms += st.ms[0];
+        /* march, after the interior bounds when this render built them */
+        int k = st.n - 1;
+        CHECK(k >= 0 && k <= 1 && !strcmp(st.name[k], "march") && (k == 0 || !strcmp(st.name[0], "interior")),
+              "stages: [interior,] march");
+        if (k >= 0) g_ms += st.ms[k];
         fs_gbuffer_free(out);
         *out = im.g;
     } else fs_run_image_free(&im);
