@@ -116,6 +116,9 @@ int main(void)
     CHECK(!rc, "dam break loads (%s)", fs_error_message());
     if (!rc) {
         compare_paths("dam break", &p, f, &s.camera);
+        fs_field wide = f; /* cells of 6r: 4 coarse sub-cells an edge */
+        wide.H = 6.0f * f.r;
+        compare_paths("dam break, H = 6r", &p, wide, &s.camera);
         rc = add_strays(&p, &q);
         CHECK(!rc, "strays added");
         if (!rc) compare_paths("dam break with strays", &q, f, &s.camera);

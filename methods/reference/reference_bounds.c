@@ -21,13 +21,14 @@ void fs_ref_bounds_free(reference *R)
     R->lo = R->hi = R->cell_cls = NULL;
 }
 
-/* Sub-cells per cell edge: about 2r on a side, at most 4 (and none for the
- * anisotropic field, whose metric distances this box bound does not cover). */
+/* Sub-cells per cell edge: about 2r on a side, 1, 2 or 4 (divisors of
+ * FS_REF_FINE, so a fine sub-cell lies in one coarse one), and none for the
+ * anisotropic field, whose metric distances this box bound does not cover. */
 static int sub_count(const reference *R)
 {
     if (R->aniso) return 0;
-    int s = (int)floorf(R->g->cell / (2.0f * R->f.r) + 0.5f);
-    return s < 1 ? 1 : (s > 4 ? 4 : s);
+    float s = R->g->cell / (2.0f * R->f.r);
+    return s < 1.5f ? 1 : (s < 3.0f ? 2 : 4);
 }
 
 /* Nearest and farthest squared distances from p to the box [b0, b0 + e]^3. */
