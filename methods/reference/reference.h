@@ -107,12 +107,4 @@ size_t fs_ref_interior_cells(const reference *R);
 /* R->cell_cls from the sub-cell bounds (after both builds). */
 int fs_ref_cell_classes(reference *R);
 void fs_ref_interior_free(reference *R);
-/* Class of sub-cell (si, sj, sk) of cell slot. */
-static inline int fs_ref_class(const reference *R, uint32_t slot, int si, int sj, int sk)
-{
-    size_t s = ((size_t)slot * R->sub + sk) * R->sub * R->sub + (size_t)sj * R->sub + si;
-    if (R->hi[s] < FS_REF_Q) return FS_REF_OUT;
-    if (R->lo[s] >= FS_REF_Q) return FS_REF_IN;
-    return FS_REF_EDGE;
-}
 #endif

@@ -302,6 +302,8 @@ static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, fl
         }
         float q = 0.25f * tol; /* stay inside the bracket */
         t = t < a + q ? a + q : (t > b - q ? b - q : t);
+        if (t <= a || t >= b) t = 0.5f * (a + b); /* a + q rounded to a: tol is below the floats' spacing here */
+        if (t <= a || t >= b) break;             /* the bracket is two adjacent floats: as tight as it gets */
         float g = field_sum(R, &F->N, t, 0, 0) - R->f.iso;
         if ((g >= 0) == inside) {
             a = t; g_lo = g;

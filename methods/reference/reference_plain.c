@@ -174,6 +174,7 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
         float lo = t, hi = tn;
         while (hi - lo > tol) {
             float mid = 0.5f * (lo + hi);
+            if (mid <= lo || mid >= hi) break; /* floats cannot split it further (far along a huge cell) */
             if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
         }
         float tc = 0.5f * (lo + hi);
