@@ -41,10 +41,10 @@ static int render(const fs_scene *scene0, const fs_camera *cam, const char *set,
     if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
     if (!rc) rc = fs_run_render(run, cam, &im, &st);
     if (!rc) {
-        /* march, after the interior bounds when this render built them */
-        int k = st.n - 1;
-        CHECK(k >= 0 && k <= 1 && !strcmp(st.name[k], "march") && (k == 0 || !strcmp(st.name[0], "interior")),
-              "stages: [interior,] march");
+        /* march, after the sub-cell and interior bounds when this render built them */
+        int k = st.n - 1, ok = k >= 0 && !strcmp(st.name[k], "march");
+        for (int i = 0; i < k; i++) ok &= !strcmp(st.name[i], i == 0 ? "bounds" : "interior");
+        CHECK(ok && k <= 2, "stages: [bounds, [interior,]] march");
         if (k >= 0) g_ms += st.ms[k];
         fs_gbuffer_free(out);
         *out = im.g;

@@ -1,6 +1,7 @@
 /* The accelerated reference (accel=on: sub-cell bounds, gathered arrays,
  * vectorised sums, tiles) against the plain march it replaces (accel=off), on
- * the bundled dam break (also with H = 6r), a synthetic box, the bundled 24k
+ * the bundled dam break (also with H = 6r, and at 16x16, where no sub-cell
+ * bounds are built), a synthetic box, the bundled 24k
  * frame, the 97k splash frame of the benchmark and the dam break with three
  * strays thousands of metres away, thickness on, 128x128:
  * coverage IoU >= 0.9999, depth within 2e-4 r, thickness within 2e-4 r per
@@ -120,6 +121,9 @@ int main(void)
         fs_field wide = f; /* cells of 6r: 4 coarse sub-cells an edge */
         wide.H = 6.0f * f.r;
         compare_paths("dam break, H = 6r", &p, wide, &s.camera);
+        fs_camera small = s.camera; /* too few rays for the sub-cell bounds to pay: none are built */
+        small.width = small.height = 16;
+        compare_paths("dam break, 16x16", &p, f, &small);
         rc = add_strays(&p, &q);
         CHECK(!rc, "strays added");
         if (!rc) compare_paths("dam break with strays", &q, f, &s.camera);

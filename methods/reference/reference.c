@@ -155,8 +155,9 @@ static int count_neighbours(reference *R, const fs_grid *g)
     R->count27 = malloc((g->ncells ? g->ncells : 1) * sizeof *R->count27);
     if (!R->count27) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     uint32_t mx = 0;
+    size_t nn = 0;
     long nb = (long)g->nblocks;
-#pragma omp parallel for reduction(max : mx) schedule(static)
+#pragma omp parallel for reduction(max : mx) reduction(+ : nn) schedule(static)
     for (long b = 0; b < nb; b++)
         for (int l = 0; l < FS_GRID_B3; l++) {
             int lo[3], hi[3];
@@ -169,8 +170,10 @@ static int count_neighbours(reference *R, const fs_grid *g)
             for (int r = 0; r < nr; r++) c += runs[r][1] - runs[r][0];
             R->count27[(size_t)b * FS_GRID_B3 + l] = c;
             if (c > mx) mx = c;
+            nn += c > 0;
         }
     R->max27 = mx;
+    R->nnear = nn;
     return FS_OK;
 }
 
@@ -215,13 +218,8 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     fs_ref_bounds_free(R);
     fs_ref_interior_free(R);
     R->sub = 0;
-    if (R->accel) {
-        rc = fs_ref_bounds_build(R);
-        R->nwant = rc ? 0 : fs_ref_interior_cells(R);
-        R->interior_done = 0;
-        if (!rc && R->sub) rc = fs_ref_cell_classes(R);
-        if (rc) { R->g = NULL; return rc; }
-    }
+    R->bounds_done = R->interior_done = 0; /* built at the first render, when they pay (prepare_bounds) */
+    R->nwant = 0;
     return FS_OK;
 }
 
@@ -265,14 +263,37 @@ static int want_interior(const reference *R, const fs_camera *cam)
     return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS;
 }
 
+/* Rays per near cell at which the coarse sub-cell bounds pay: a cell's take
+ * about as long to build as ~10 gathers and marches of its stretch. */
+#define FS_REF_BOUNDS_VISITS 10.0
+
+/* Builds the coarse sub-cell bounds once per upload when the image is large
+ * enough for them to pay (stage "bounds"); a small image marches without. */
+static int prepare_bounds(reference *R, const fs_camera *cam, fs_stages *st)
+{
+    if (R->bounds_done) return FS_OK;
+    R->bounds_done = 1;
+    double n = (double)R->nnear;
+    if (!R->accel || !n || (double)cam->width * cam->height * cbrt(n) / n < FS_REF_BOUNDS_VISITS) return FS_OK;
+    double t0 = fs_now_ms();
+    int rc = fs_ref_bounds_build(R);
+    R->nwant = rc ? 0 : fs_ref_interior_cells(R);
+    if (!rc && R->sub) rc = fs_ref_cell_classes(R);
+    if (rc) { fs_ref_bounds_free(R); R->sub = 0; R->g = NULL; return rc; }
+    if (st) fs_stages_add(st, "bounds", fs_now_ms() - t0);
+    return FS_OK;
+}
+
 /* Builds the fine interior bounds once per upload when they pay (stage "interior"). */
 static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
 {
+    int rc = prepare_bounds(R, cam, st);
+    if (rc) return rc;
     if (R->interior_done) return FS_OK;
     R->interior_done = 1;
     if (!want_interior(R, cam)) return FS_OK;
     double t0 = fs_now_ms();
-    int rc = fs_ref_interior_build(R);
+    rc = fs_ref_interior_build(R);
     if (!rc) rc = fs_ref_cell_classes(R);
     if (rc) { fs_ref_interior_free(R); R->g = NULL; return rc; }
     if (st) fs_stages_add(st, "interior", fs_now_ms() - t0);

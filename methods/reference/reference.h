@@ -24,6 +24,8 @@ typedef struct reference {
     int thickness, max_layers, accel;
     int interior;        /* 0 auto, 1 on, 2 off: the fine interior bits (reference_interior.c) */
     int interior_done;   /* the interior decision was taken for the current upload */
+    int bounds_done;     /* the sub-cell bounds decision was taken for the current upload */
+    size_t nnear;        /* cell slots with a particle in their 27 neighbours */
     size_t nwant;        /* cells that may hold inside sub-cells */
     const fs_grid *g;
     uint32_t *count27;   /* per cell slot: particles in the 27 cells around it */
