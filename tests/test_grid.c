@@ -114,6 +114,37 @@ static int check_clusters(const fs_grid *g, const fs_particles *p)
 }
 
 /* Structure of the grid, then every query against brute force. */
+/* fs_grid_box_runs over 3x3x3 boxes around every stored cell holds exactly the
+ * slots of the cells one by one, in order. */
+static int check_box_runs(const fs_grid *g)
+{
+    int bad = 0;
+    for (size_t c = 0; c < g->ncells; c += 7) {
+        int cc[3], lo[3], hi[3];
+        slot_cell(g, c, cc);
+        for (int a = 0; a < 3; a++) { lo[a] = cc[a] - 1; hi[a] = cc[a] + 1; }
+        uint32_t runs[FS_GRID_MAX_RUNS][2], s0, s1, got = 0, want = 0;
+        int nr = fs_grid_box_runs(g, lo, hi, runs);
+        for (int r = 0; r < nr; r++) {
+            bad += runs[r][1] <= runs[r][0];
+            got += runs[r][1] - runs[r][0];
+        }
+        for (int k = lo[2]; k <= hi[2]; k++)
+            for (int j = lo[1]; j <= hi[1]; j++)
+                for (int i = lo[0]; i <= hi[0]; i++) {
+                    fs_grid_cell_run(g, i, j, k, &s0, &s1);
+                    want += s1 - s0;
+                    for (uint32_t s = s0; s < s1; s++) { /* each slot in exactly one run */
+                        int in = 0;
+                        for (int r = 0; r < nr; r++) in += s >= runs[r][0] && s < runs[r][1];
+                        bad += in != 1;
+                    }
+                }
+        bad += got != want;
+    }
+    return bad;
+}
+
 static void check_grid(const fs_particles *p, float cell, const float *radii, int nr, int nq, const char *what)
 {
     fs_grid g;
@@ -126,6 +157,8 @@ static void check_grid(const fs_particles *p, float cell, const float *radii, in
     CHECK(bad == 0, "%s: %d structural errors", what, bad);
     CHECK(bad_blocks == 0, "%s: %d errors in the blocks, near bits or table", what, bad_blocks);
     CHECK(bad_clusters == 0, "%s: %d errors in the clusters", what, bad_clusters);
+    int bad_runs = check_box_runs(&g);
+    CHECK(bad_runs == 0, "%s: %d errors in the box runs", what, bad_runs);
     int mismatches = 0;
     size_t total = 0;
     for (int ri = 0; ri < nr; ri++)

@@ -361,3 +361,30 @@ int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid
     *out = own;
     return FS_OK;
 }
+
+int fs_grid_box_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_t runs[][2])
+{
+    int n = 0;
+    for (int bk = fs_grid_floordiv(lo[2]); bk <= fs_grid_floordiv(hi[2]); bk++)
+        for (int bj = fs_grid_floordiv(lo[1]); bj <= fs_grid_floordiv(hi[1]); bj++)
+            for (int bi = fs_grid_floordiv(lo[0]); bi <= fs_grid_floordiv(hi[0]); bi++) {
+                uint32_t b = fs_grid_block(g, bi, bj, bk);
+                if (b == FS_GRID_NONE) continue;
+                int i0 = lo[0] - bi * FS_GRID_B, i1 = hi[0] - bi * FS_GRID_B;
+                i0 = i0 < 0 ? 0 : i0;
+                i1 = i1 > FS_GRID_B - 1 ? FS_GRID_B - 1 : i1;
+                int j0 = lo[1] - bj * FS_GRID_B, j1 = hi[1] - bj * FS_GRID_B;
+                j0 = j0 < 0 ? 0 : j0;
+                j1 = j1 > FS_GRID_B - 1 ? FS_GRID_B - 1 : j1;
+                int k0 = lo[2] - bk * FS_GRID_B, k1 = hi[2] - bk * FS_GRID_B;
+                k0 = k0 < 0 ? 0 : k0;
+                k1 = k1 > FS_GRID_B - 1 ? FS_GRID_B - 1 : k1;
+                for (int k = k0; k <= k1; k++)
+                    for (int j = j0; j <= j1; j++) {
+                        uint32_t row = b * FS_GRID_B3 + (uint32_t)((k * FS_GRID_B + j) * FS_GRID_B);
+                        uint32_t s0 = g->start[row + i0], s1 = g->start[row + i1 + 1];
+                        if (s1 > s0) { runs[n][0] = s0; runs[n][1] = s1; n++; }
+                    }
+            }
+    return n;
+}

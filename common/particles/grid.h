@@ -134,6 +134,12 @@ static inline int fs_grid_near_occupied(const fs_grid *g, int i, int j, int k)
     return c != FS_GRID_NONE && (g->near[c >> 5] >> (c & 31) & 1u);
 }
 
+/* Runs of sorted slots [runs[i][0], runs[i][1]) of the particles in the cells
+ * lo..hi (inclusive, at most 4 cells an axis: at most 2 blocks an axis and
+ * FS_GRID_MAX_RUNS runs), with one hash lookup per block. Returns the count. */
+#define FS_GRID_MAX_RUNS 32
+int fs_grid_box_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_t runs[][2]);
+
 /* Calls fn(user, sorted_slot, dist2) for every particle within radius of x.
  * radius may exceed the cell size (more cells are visited). */
 typedef void (*fs_grid_visit)(void *user, uint32_t slot, float dist2);

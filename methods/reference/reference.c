@@ -165,8 +165,8 @@ static int count_neighbours(reference *R, const fs_grid *g)
             lo[1] = g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B - 1;
             lo[2] = g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B) - 1;
             for (int a = 0; a < 3; a++) hi[a] = lo[a] + 2;
-            uint32_t runs[FS_REF_MAX_RUNS][2], c = 0;
-            int nr = fs_ref_runs(g, lo, hi, runs);
+            uint32_t runs[FS_GRID_MAX_RUNS][2], c = 0;
+            int nr = fs_grid_box_runs(g, lo, hi, runs);
             for (int r = 0; r < nr; r++) c += runs[r][1] - runs[r][0];
             R->count27[(size_t)b * FS_GRID_B3 + l] = c;
             if (c > mx) mx = c;

@@ -42,7 +42,6 @@ typedef struct reference {
     uint8_t *lo, *hi;    /* accel: per sub-cell, phi bounds quantised in units of iso / FS_REF_Q, rounded outward */
     uint32_t *fine_off;  /* accel: per cell slot, its entry in fine, or FS_GRID_NONE */
     uint8_t *fine;       /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
-    size_t nfine;
     uint8_t *cell_cls;   /* accel: per cell slot, FS_REF_OUT/IN when every sub-cell is, else FS_REF_EDGE */
 } reference;
 
@@ -82,11 +81,6 @@ typedef int (*fs_ref_visit)(void *ctx, const int c[3], uint32_t slot, float t0, 
 void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx,
                  float *t_last);
 
-/* Runs of sorted slots [runs[i][0], runs[i][1]) of the particles in the cells
- * lo..hi (inclusive; at most 4 cells an axis, so at most 2 blocks an axis and
- * FS_REF_MAX_RUNS runs). Returns the number of runs. */
-#define FS_REF_MAX_RUNS 32
-int fs_ref_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_t runs[][2]);
 
 /* The march's state changes shared by both paths. */
 void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R);

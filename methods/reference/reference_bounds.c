@@ -96,8 +96,8 @@ static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, 
     }
     memset(up, 0, (size_t)nsub * sizeof *up);
     memset(dn, 0, (size_t)nsub * sizeof *dn);
-    uint32_t runs[FS_REF_MAX_RUNS][2];
-    int nr = fs_ref_runs(g, lo, hi, runs);
+    uint32_t runs[FS_GRID_MAX_RUNS][2];
+    int nr = fs_grid_box_runs(g, lo, hi, runs);
     for (int r = 0; r < nr; r++)
         for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
             float p[3] = {R->sx[s], R->sy[s], R->sz[s]}, n2, f2;

@@ -226,8 +226,8 @@ static void gather(const reference *R, const int c[3], const float o[3], const f
         hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
         N->o[a] = o[a];
     }
-    uint32_t runs[FS_REF_MAX_RUNS][2];
-    int nr = fs_ref_runs(g, lo, hi, runs), n = 0;
+    uint32_t runs[FS_GRID_MAX_RUNS][2];
+    int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
     for (int r = 0; r < nr; r++)
         n = R->inv ? gather_run_aniso(R, runs[r][0], runs[r][1], d, len, N, n)
                    : gather_run_iso(R, runs[r][0], runs[r][1], d, len, N, n);

@@ -27,7 +27,6 @@ void fs_ref_interior_free(reference *R)
     free(R->fine);
     R->fine_off = NULL;
     R->fine = NULL;
-    R->nfine = 0;
 }
 
 /* Candidate particles of one cell, relative to its corner (capacity cap). */
@@ -89,8 +88,8 @@ static void cell_interior(const reference *R, const int c[3], fine_cand *all, fi
         hi[a] = c[a] + 1;
         corner[a] = g->origin[a] + g->cell * (float)c[a];
     }
-    uint32_t runs[FS_REF_MAX_RUNS][2];
-    int nr = fs_ref_runs(g, lo, hi, runs);
+    uint32_t runs[FS_GRID_MAX_RUNS][2];
+    int nr = fs_grid_box_runs(g, lo, hi, runs);
     all->n = 0;
     for (int r = 0; r < nr; r++)
         for (uint32_t q = runs[r][0]; q < runs[r][1] && all->n < all->cap; q++) {
@@ -172,7 +171,6 @@ int fs_ref_interior_build(reference *R)
     if (!R->fine_off) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     size_t n = 0;
     for (size_t c = 0; c < g->ncells; c++) R->fine_off[c] = wants_fine(R, (uint32_t)c) ? (uint32_t)n++ : FS_GRID_NONE;
-    R->nfine = n;
     R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8));
     if (!R->fine) { fs_ref_interior_free(R); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
     long nb = (long)g->nblocks;

@@ -90,8 +90,8 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
         lo[a] = lo[a] < c[a] - 1 ? c[a] - 1 : lo[a];
         hi[a] = hi[a] > c[a] + 1 ? c[a] + 1 : hi[a];
     }
-    uint32_t runs[FS_REF_MAX_RUNS][2];
-    int nr = fs_ref_runs(g, lo, hi, runs), n = 0;
+    uint32_t runs[FS_GRID_MAX_RUNS][2];
+    int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
     for (int r = 0; r < nr; r++)
             for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
