@@ -7,6 +7,7 @@
 #include "ref_cache.h"
 #include "render_output.h"
 #include "run.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,8 +32,12 @@ typedef struct render_job {
 
 static void print_timings(const fs_run *run, const fs_stages *st)
 {
-    printf("stage,ms,renderer\n");
-    for (int i = 0; i < st->n; i++) printf("%s,%.3f,%s\n", st->name[i], st->ms[i], fs_run_stage_renderer(run, st->name[i]));
+    printf("stage,ms,gpu_ms,renderer\n"); /* gpu_ms: the GL clock, empty for CPU stages */
+    for (int i = 0; i < st->n; i++) {
+        printf("%s,%.3f,", st->name[i], st->ms[i]);
+        if (!isnan(st->gpu_ms[i])) printf("%.3f", st->gpu_ms[i]);
+        printf(",%s\n", fs_run_stage_renderer(run, st->name[i]));
+    }
 }
 
 /* The reference's view from the cache, or rendered and stored; the output file. */

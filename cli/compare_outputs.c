@@ -93,8 +93,28 @@ static void ref_timings(const cmp_ref *ref, FILE *f)
     for (int s = 0; s <= st->n; s++) {
         double v = s < st->n ? st->ms[s] : fs_stages_total(st);
         csv_text(f, ref->spec);
-        fprintf(f, ",ground truth,%s,%.3f,%.3f,%.3f,1,CPU\n", s < st->n ? st->name[s] : "total", v, v, v);
+        fprintf(f, ",ground truth,%s,%.3f,%.3f,%.3f,1,,CPU\n", s < st->n ? st->name[s] : "total", v, v, v);
     }
+}
+
+/* The runs' wall times of stage name ("total": their sums) into v; the median
+ * GL time of the runs that have one into *gpu (NaN: none). Returns the median
+ * wall time, v sorted. */
+static double stage_runs(const cmp_entry *e, const char *name, int total, double *v, double *gpu)
+{
+    double g[CMP_MAX_RUNS];
+    int ng = 0;
+    for (int k = 0; k < e->nruns; k++) {
+        const fs_stages *st = &e->runs[k];
+        v[k] = total ? fs_stages_total(st) : 0;
+        for (int j = 0; !total && j < st->n; j++)
+            if (!strcmp(st->name[j], name)) {
+                v[k] = st->ms[j];
+                if (!isnan(st->gpu_ms[j])) g[ng++] = st->gpu_ms[j];
+            }
+    }
+    *gpu = ng ? fs_median(g, ng) : NAN;
+    return fs_median(v, e->nruns);
 }
 
 int cmp_write_timings(const cmp_run *r)
@@ -104,26 +124,22 @@ int cmp_write_timings(const cmp_run *r)
     if (rc) return rc;
     FILE *f = cf.f;
     provenance_header(r, f);
-    fputs("method,variant,stage,ms_median,ms_min,ms_max,runs,renderer\n", f);
+    /* gpu_ms_median: the GL clock (gl_stage.h), empty for CPU stages and totals */
+    fputs("method,variant,stage,ms_median,ms_min,ms_max,runs,gpu_ms_median,renderer\n", f);
     for (int k = 0; k < r->nrefs; k++) ref_timings(&r->refs[k], f);
     for (int i = 0; i < r->nentries; i++) {
         const cmp_entry *e = &r->entries[i];
         if (e->imported || !e->nruns) continue;
         /* every stage any run reported, then the total */
         for (int s = 0; s <= e->runs[0].n; s++) {
-            double v[CMP_MAX_RUNS];
+            double v[CMP_MAX_RUNS], gpu;
             const char *name = s < e->runs[0].n ? e->runs[0].name[s] : "total";
-            for (int k = 0; k < e->nruns; k++) {
-                v[k] = 0;
-                if (s == e->runs[0].n) v[k] = fs_stages_total(&e->runs[k]);
-                else
-                    for (int j = 0; j < e->runs[k].n; j++)
-                        if (!strcmp(e->runs[k].name[j], name)) v[k] = e->runs[k].ms[j];
-            }
-            double med = fs_median(v, e->nruns); /* sorts v */
+            double med = stage_runs(e, name, s == e->runs[0].n, v, &gpu);
             csv_text(f, e->name); fputc(',', f);
             csv_text(f, e->variant);
             fprintf(f, ",%s,%.3f,%.3f,%.3f,%d,", name, med, v[0], v[e->nruns - 1], e->nruns);
+            if (!isnan(gpu)) fprintf(f, "%.3f", gpu);
+            fputc(',', f);
             csv_text(f, e->renderer);
             fputc('\n', f);
         }

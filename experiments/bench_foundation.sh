@@ -36,7 +36,7 @@ bench() {
   local peak renderer
   peak=$(sort -g "$tmp.mems" | tail -1)
   for stage in $(cut -d, -f1 "$tmp.stages" | awk '!seen[$0]++'); do
-    renderer=$(grep "^$stage," "$tmp.stages" | head -1 | cut -d, -f3-)
+    renderer=$(grep "^$stage," "$tmp.stages" | head -1 | cut -d, -f4-)
     med=$(grep "^$stage," "$tmp.stages" | cut -d, -f2 | median)
     echo "$label,$method,$size,$stage,$med,$RUNS,$peak,\"$renderer\"" >> "$out.new"
     printf '%-28s %-10s %5s %-10s %10.2f ms  peak %s KiB  (%s)\n' "$label" "$method" "$size" "$stage" "$med" "$peak" "$renderer"

@@ -1,4 +1,5 @@
 #include "timing.h"
+#include <math.h>
 #include <string.h>
 #include <time.h>
 
@@ -9,13 +10,28 @@ double fs_now_ms(void)
     return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
 }
 
-void fs_stages_add(fs_stages *s, const char *name, double ms)
+void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms)
+{
+    int i = 0;
+    while (i < s->n && strcmp(s->name[i], name)) i++;
+    if (i == s->n) {
+        if (s->n == FS_MAX_STAGES) return;
+        s->name[i] = name;
+        s->ms[i] = 0;
+        s->gpu_ms[i] = NAN;
+        s->n++;
+    }
+    s->ms[i] += ms;
+    if (!isnan(gpu_ms)) s->gpu_ms[i] = isnan(s->gpu_ms[i]) ? gpu_ms : s->gpu_ms[i] + gpu_ms;
+}
+
+void fs_stages_add(fs_stages *s, const char *name, double ms) { fs_stages_add_gpu(s, name, ms, NAN); }
+
+double fs_stages_gpu(const fs_stages *s, const char *name)
 {
     for (int i = 0; i < s->n; i++)
-        if (!strcmp(s->name[i], name)) { s->ms[i] += ms; return; }
-    if (s->n == FS_MAX_STAGES) return;
-    s->name[s->n] = name;
-    s->ms[s->n++] = ms;
+        if (!strcmp(s->name[i], name)) return s->gpu_ms[i];
+    return NAN;
 }
 
 double fs_stages_total(const fs_stages *s)

@@ -1,5 +1,6 @@
-/* Per-stage wall-clock timings. GL stages are bracketed with glFinish() by the
- * caller (llvmpipe timer queries are not trustworthy, docs/DESIGN.md). */
+/* Per-stage wall-clock timings, and for GL stages the GL's own clock beside them
+ * (gl_stage.h). Wall times are bracketed with glFinish(): llvmpipe's timer
+ * queries are not trustworthy (docs/DESIGN.md), a real GPU's are. */
 #ifndef FS_TIMING_H
 #define FS_TIMING_H
 #ifdef __cplusplus
@@ -12,11 +13,16 @@ typedef struct fs_stages {
     int n;
     const char *name[FS_MAX_STAGES];
     double ms[FS_MAX_STAGES];
+    double gpu_ms[FS_MAX_STAGES]; /* GL timestamp difference; NaN for a stage without one */
 } fs_stages;
 
 double fs_now_ms(void); /* CLOCK_MONOTONIC in milliseconds */
 /* Adds ms to the stage called name (created on first use; names are static strings). */
 void fs_stages_add(fs_stages *s, const char *name, double ms);
+/* The same, with the GL clock's time of the stage (NaN: none; kept NaN until one comes). */
+void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms);
+/* The GL time of stage name; NaN when it has none or does not exist. */
+double fs_stages_gpu(const fs_stages *s, const char *name);
 double fs_stages_total(const fs_stages *s);
 
 #ifdef __cplusplus

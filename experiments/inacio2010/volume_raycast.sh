@@ -96,11 +96,11 @@ JSON
   "$BIN" compare --no-cache "$tmp/box_$n.json" --methods volume_raycast,spheres \
     --set volume_raycast.grid_res="$res" --set volume_raycast.thickness=on,off --set spheres.thickness=on,off \
     -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/box_$n"
-  # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,renderer
+  # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,gpu_ms_median,renderer
   for d in vol_$n box_$n; do
     awk -F, -v n="$n" -v g="$res" -v d="$d" '!/^#/ && $1 != "method" && $1 != "reference" {
         if (d ~ /^vol/) { if ($3 != "volume") next; sub(/;thickness=off/, "", $2) }
-        r = $8; for (i = 9; i <= NF; i++) r = r "," $i;
+        r = $9; for (i = 10; i <= NF; i++) r = r "," $i;
         print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/$d/timings.csv" >> "$csv.new"
   done
   [ "$n" = 8192 ] && cp "$tmp/box_$n/panel.png" "$R/volume_raycast_box_8192_panel.png"

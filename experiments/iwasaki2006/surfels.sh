@@ -23,9 +23,9 @@ for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/
   "$BIN" render "$json" --method surfels -q --export "$tmp/$name.ply"
   surfels=$(grep -a -m1 '^element vertex' "$tmp/$name.ply" | awk '{print $3}')
   particles=$("$BIN" info "$(awk -F'"' '/"particles"/ {print $4}' "$json" | sed "s|^|$(dirname "$json")/|")" | awk '/^particles:/ {print $2}')
-  # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,renderer
+  # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,gpu_ms_median,renderer
   awk -F, -v s="$name" -v n="$particles" -v k="$surfels" '!/^#/ && $1 == "surfels" {
-      split($2, v, "="); c = v[2]; r = $8; for (i = 9; i <= NF; i++) r = r "," $i;
+      split($2, v, "="); c = v[2]; r = $9; for (i = 10; i <= NF; i++) r = r "," $i;
       print s "," n "," k "," c "," $3 "," $4 "," r }' "$tmp/$name/timings.csv" >> "$csv.new"
   cp "$tmp/$name/metrics.csv" "$R/${name}_metrics.csv"
   cp "$tmp/$name/surfels_caustics=on_own.png" "$R/${name}_own.png"

@@ -44,7 +44,7 @@ PY
     done
     frame=$(for r in "$TMP"/run.*; do awk -F, -v st="$STAGES" 'index(st, " " $1 " ") {s += $2} END {print s}' "$r"; done | median)
     march=$(cat "$TMP"/run.* | grep '^march,' | cut -d, -f2 | median)
-    renderer=$(grep -h '^march,' "$TMP/run.1" | cut -d, -f3-)
+    renderer=$(grep -h '^march,' "$TMP/run.1" | cut -d, -f4-)
     echo "$label,$n,$iso,$frame,$march,$RUNS,\"$renderer\"" >> "$csv.new"
     printf '%-14s iso %.1f  frame %8.1f ms  march %8.1f ms\n' "$label" "$iso" "$frame" "$march"
   done

@@ -67,7 +67,7 @@ cell() {
     done
   fi
   local renderer frame=""
-  renderer=$(grep -h "^march," "$f".run1 | head -1 | cut -d, -f3-)
+  renderer=$(grep -h "^march," "$f".run1 | head -1 | cut -d, -f4-)
   for st in $stages; do
     local med
     med=$(cat "$f".run* | grep "^$st," | cut -d, -f2 | median)

@@ -47,7 +47,7 @@ while IFS=: read -r label n scene; do
       if awk -v a="$t0" -v b="$t1" -v big="$BIG" 'BEGIN {exit !(b - a <= big)}'; then
         for i in $(seq 2 "$RUNS"); do render "$c.run$i"; runs=$i; done
       fi
-      renderer=$(grep -h '^splat,' "$c.run1" | cut -d, -f3-)
+      renderer=$(grep -h '^splat,' "$c.run1" | cut -d, -f4-)
       for st in $STAGES; do
         med=$(cat "$c".run* | { grep "^$st," || true; } | cut -d, -f2 | median)
         [ -n "$med" ] || continue   # no anisotropy stage when it is off

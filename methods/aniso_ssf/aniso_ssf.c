@@ -6,6 +6,7 @@
 #include "aniso_ssf/aniso_gl.h"
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_stage.h"
 #include "gl_grid.h"
 #include "gl_sprites.h"
 #include "gl_gbuffer.h"
@@ -241,15 +242,12 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_camera_proj_matrix(cam, proj);
     float focal_px = proj[5] * 0.5f * (float)cam->height;
 
-    glFinish();
-    double t0 = fs_now_ms();
+    double t0 = fs_gl_stage_start(), t1 = t0;
     if (aniso) {
         rc = aniso_gl_run(&s->an, &s->gg, s->n, &s->ap);
         if (rc) return rc;
-        glFinish();
+        t1 = fs_gl_stage_end(t, "anisotropy", t0);
     }
-    double t1 = fs_now_ms();
-    if (aniso) fs_stages_add(t, "anisotropy", t1 - t0);
 
     fs_gl_target_clear(&s->target);
     fs_gl_target_begin_surface(&s->target);
@@ -257,14 +255,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     draw_sprites(s, aniso);
     fs_gl_target_end_pass();
     glDisable(GL_DEPTH_TEST);
-    glFinish();
-    double t2 = fs_now_ms();
-    fs_stages_add(t, "splat", t2 - t1);
+    double t2 = fs_gl_stage_end(t, "splat", t1);
 
     unsigned depth = run_filter(s, cam, focal_px);
-    glFinish();
-    double t3 = fs_now_ms();
-    fs_stages_add(t, "filter", t3 - t2);
+    double t3 = fs_gl_stage_end(t, "filter", t2);
 
     unsigned P = s->prog_normals;
     glUseProgram(P);
@@ -275,17 +269,14 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glBindImageTexture(2, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    glFinish();
-    double t4 = fs_now_ms();
-    fs_stages_add(t, "normals", t4 - t3);
+    double t4 = fs_gl_stage_end(t, "normals", t3);
 
     if (s->params.thickness != 0) {
         fs_gl_target_begin_thickness(&s->target);
         camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
         draw_sprites(s, aniso);
         fs_gl_target_end_pass();
-        glFinish();
-        fs_stages_add(t, "thickness", fs_now_ms() - t4);
+        fs_gl_stage_end(t, "thickness", t4);
     }
     return fs_gl_target_read_timed(&s->target, out, t);
 }

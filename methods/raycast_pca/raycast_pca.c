@@ -172,8 +172,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     float proj[16];
     fs_camera_proj_matrix(cam, proj);
 
-    glFinish();
-    double t0 = fs_now_ms();
+    double t0 = fs_gl_stage_start();
     entry_pass(s, cam, splat_r);
     double t1 = fs_gl_stage_end(t, "splat", t0);
     march_pass(s, cam);

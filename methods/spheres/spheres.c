@@ -3,6 +3,7 @@
  * Thickness is the sum of the view ray's chords through all spheres. */
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_stage.h"
 #include "gl_sprites.h"
 #include "gl_gbuffer.h"
 #include "method.h"
@@ -95,21 +96,17 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         int rc = fs_gl_target_create(&s->target, cam->width, cam->height);
         if (rc) return rc;
     }
-    glFinish();
-    double t0 = fs_now_ms();
+    double t0 = fs_gl_stage_start();
     fs_gl_target_clear(&s->target);
     fs_gl_target_begin_surface(&s->target);
     set_uniforms(s->prog_surface, cam, s->radius);
     draw(s);
-    glFinish();
-    double t1 = fs_now_ms();
-    fs_stages_add(t, "splat", t1 - t0);
+    double t1 = fs_gl_stage_end(t, "splat", t0);
     if (s->thickness) {
         fs_gl_target_begin_thickness(&s->target);
         set_uniforms(s->prog_thickness, cam, s->radius);
         draw(s);
-        glFinish();
-        fs_stages_add(t, "thickness", fs_now_ms() - t1);
+        fs_gl_stage_end(t, "thickness", t1);
     }
     fs_gl_target_end_pass();
     return fs_gl_target_read_timed(&s->target, out, t);

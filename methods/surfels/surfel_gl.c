@@ -235,8 +235,7 @@ int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look
 {
     int rc = resize(s, cam->width, cam->height);
     if (rc) return rc;
-    glFinish();
-    double t0 = fs_now_ms();
+    double t0 = fs_gl_stage_start();
     visibility_pass(s, cam, o->epsilon);
     double t1 = fs_gl_stage_end(t, "visibility", t0);
     blend_pass(s, cam, look, o->gauss);
