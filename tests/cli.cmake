@@ -18,3 +18,10 @@ add_test(NAME cli_help COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.sh $<TA
          ${CMAKE_BINARY_DIR}/test-out/cli_help)
 set_tests_properties(cli_help PROPERTIES
   ENVIRONMENT "${FS_TEST_ENV}")
+# experiments/gpu/run.sh --quick through EGL: the prepared GPU script works end to end
+# (about 15 s; not under the sanitizers, which only slow llvmpipe down).
+if(NOT FS_SANITIZE)
+  add_test(NAME gpu_quick COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/gpu_quick.sh ${CMAKE_SOURCE_DIR}
+           ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/gpu_quick)
+  set_tests_properties(gpu_quick PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+endif()

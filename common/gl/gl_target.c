@@ -91,13 +91,15 @@ int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst)
     return FS_OK;
 }
 
+/* The context's own limit (llvmpipe: 128 MiB; NVIDIA: about 2 GiB), at most
+ * 1 GiB so that byte offsets inside a block stay far from 32-bit overflow in
+ * any driver; 128 MiB when the context reports nothing. */
 size_t fs_gl_ssbo_chunk(size_t elem_bytes)
 {
     GLint64 max = 0;
-    GLint v = 0;
-    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &v);
-    max = v > 0 ? v : (128 << 20);
-    if (max > (GLint64)128 << 20) max = (GLint64)128 << 20;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max);
+    if (max <= 0) max = (GLint64)128 << 20;
+    if (max > (GLint64)1 << 30) max = (GLint64)1 << 30;
     return (size_t)max / elem_bytes;
 }
 

@@ -38,7 +38,7 @@ unsigned fs_gl_texture_2d(unsigned format, int w, int h);
 unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers);
 
 /* Uploads n vec4s as shader storage buffers of at most `chunk` elements each
- * (the 128 MiB SSBO limit, docs/DESIGN.md); returns the number of buffers made,
+ * (the context's SSBO limit, 128 MiB on llvmpipe, docs/DESIGN.md); returns the number of buffers made,
  * or minus the error code (fs_fail set). */
 int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs);
 /* Elements of `elem_bytes` that fit one SSBO binding on this context. */

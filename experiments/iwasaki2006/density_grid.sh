@@ -46,7 +46,7 @@ while IFS=: read -r label scene; do
       ms=$(echo "$rows" | cut -d, -f7 | median)
       l2=$(echo "$rows" | cut -d, -f8 | sort -g | tail -1) # worst run
       disks=$(echo "$rows" | head -1 | cut -d, -f9)
-      renderer=$(echo "$rows" | head -1 | cut -d, -f10- | sed 's/,[0-9]*$//')
+      renderer=$(echo "$rows" | head -1 | cut -d, -f10- | sed 's/,[0-9]*,[0-9.]*,"[^"]*"$//; s/,[0-9]*,,$//')
       [ "$method" = exact_cpu ] && l2=0
       echo "$label,$n,$res,$method,$ms,$l2,$disks,$renderer" >> "$csv.new"
       printf '%-14s %4s %-12s %10.1f ms  rel L2 %-9s disks %s\n' "$label" "$res" "$method" "$ms" "$l2" "${disks:--}"

@@ -7,15 +7,17 @@
  * The grid spans the particles' bounding box padded by the support H, with RES
  * points along its longest axis; planes are stacked along the scene's up axis.
  * Prints CSV rows without a header:
- *   label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads
+ *   label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads,gpu_ms,gl_version
  * method exact_cpu: neighbour grid build + exact sum (OpenMP over planes);
  * method slice_splat: clustering + upload + every 4-plane pass + read back, on
  * the OSMesa context (GL_RENDERER in the row). Each splat run is compared with
- * the first exact grid; each exact run with the first (should be 0). */
+ * the first exact grid; each exact run with the first (should be 0). gpu_ms: the
+ * GL clock (gl_stage.h) of a splat run, empty for the CPU builder. */
 #include "density_splat.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
+#include "gl_stage.h"
 #include "scene.h"
 #include "timing.h"
 #include <omp.h>
@@ -60,7 +62,7 @@ int main(int argc, char **argv)
         double ms = fs_now_ms() - t0;
         fs_grid_free(&ng);
         if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
-        printf("%s,%zu,%d,%s,exact_cpu,%d,%.2f,%.3g,,CPU (C + OpenMP),%d\n", label, p.n, res, dims, r + 1, ms,
+        printf("%s,%zu,%d,%s,exact_cpu,%d,%.2f,%.3g,,CPU (C + OpenMP),%d,,\n", label, p.n, res, dims, r + 1, ms,
                fs_density_grid_rel_l2(g, &ex), threads);
         fflush(stdout);
     }
@@ -73,13 +75,16 @@ int main(int argc, char **argv)
     fs_slice_splat *ss = fs_slice_splat_create();
     if (!ss) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return 1; }
     for (int r = 0; r < runs + 1; r++) { /* run 0 warms up (shader JIT, first allocation), not printed */
-        double t0 = fs_now_ms();
+        fs_stages st = {0};
+        double t0 = fs_gl_stage_start();
         rc = fs_slice_splat_run(ss, &cur, &p, &f, sc.up_axis, clusters);
-        double ms = fs_now_ms() - t0;
+        fs_gl_stage_end(&st, "slice_splat", t0); /* the run ends with a read back: nothing left in flight */
+        double ms = st.ms[0];
         if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
         if (r == 0) continue;
-        printf("%s,%zu,%d,%s,slice_splat,%d,%.2f,%.3g,%zu,\"%s\",%d\n", label, p.n, res, dims, r, ms,
-               fs_density_grid_rel_l2(&cur, &ex), fs_slice_splat_disks(ss), ctx.renderer, threads);
+        printf("%s,%zu,%d,%s,slice_splat,%d,%.2f,%.3g,%zu,\"%s\",%d,%.2f,\"%s\"\n", label, p.n, res, dims, r, ms,
+               fs_density_grid_rel_l2(&cur, &ex), fs_slice_splat_disks(ss), ctx.renderer, threads, st.gpu_ms[0],
+               ctx.version);
         fflush(stdout);
     }
     fs_slice_splat_destroy(ss);

@@ -23,19 +23,23 @@
  *            (the other stages as Table I)
  * SIZE x SIZE pixels (default 512); the camera frames the container.
  * Prints CSV rows without a header:
- *   particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms
- * table is "sim" (simulation, fetch), "I" or "II". With INACIO_TABLES_PNG=PREFIX
+ *   particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms,gpu_ms,gl_version
+ * table is "sim" (simulation, fetch), "I" or "II". ms: wall clock between glFinish
+ * calls; gpu_ms: the GL clock (gl_stage.h) for the GL stages and the GPU path's
+ * simulation, empty otherwise. With INACIO_TABLES_PNG=PREFIX
  * in the environment, the last frame's shaded images are written to
  * PREFIX_volume_raycast.png and PREFIX_spheres.png (to check what was timed). */
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_context.h"
+#include "gl_stage.h"
 #include "image_io.h"
 #include "method.h"
 #include "run.h"
 #include "scene.h"
 #include "sph.h"
 #include "timing.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,10 +53,13 @@ typedef struct renderer {
 
 static const char *row_head; /* the leading columns, filled once */
 static char head[1024];
+static const char *gl_version = "";
 
-static void row(int frame, double t, long steps, const char *table, const char *stage, double ms)
+static void row(int frame, double t, long steps, const char *table, const char *stage, double ms, double gpu_ms)
 {
-    printf("%s,%d,%.4f,%ld,%s,%s,%.3f\n", row_head, frame, t, steps, table, stage, ms);
+    printf("%s,%d,%.4f,%ld,%s,%s,%.3f,", row_head, frame, t, steps, table, stage, ms);
+    if (!isnan(gpu_ms)) printf("%.3f", gpu_ms);
+    printf(",\"%s\"\n", gl_version);
 }
 
 static int die(const char *what)
@@ -100,6 +107,7 @@ int main(int argc, char **argv)
 
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
+    gl_version = ctx.version;
     fs_sph_params prm;
     fs_sph_params_default(&prm);
     fs_sph *sim = NULL;
@@ -144,7 +152,7 @@ int main(int argc, char **argv)
         double ms = fs_now_ms() - t0;
         fprintf(stderr, "inacio_tables: %ld %s: settle frame %d/%d: %.0f ms\n", want, argv[2], f, settle, ms);
         if (f == 1 && ms > limit_s * 1000) {
-            row(f, fs_sph_get_stats(sim)->t, fs_sph_get_stats(sim)->steps, "sim", "skipped_first_frame_over_limit", ms);
+            row(f, fs_sph_get_stats(sim)->t, fs_sph_get_stats(sim)->steps, "sim", "skipped_first_frame_over_limit", ms, NAN);
             return 0;
         }
     }
@@ -157,24 +165,24 @@ int main(int argc, char **argv)
     for (int f = settle + 1; f <= settle + frames; f++) {
         const fs_sph_stats *s0 = fs_sph_get_stats(sim);
         long steps0 = s0->steps;
-        glFinish();
-        double t0 = fs_now_ms();
+        fs_stages sst = {0}; /* the GPU path on the GL clock too */
+        double t0 = fs_gl_stage_start();
         if (fs_sph_advance(sim, dt)) return die("advance");
-        if (gpu) glFinish();
-        double sim_ms = fs_now_ms() - t0;
+        if (gpu) fs_gl_stage_end(&sst, "simulation", t0);
+        else fs_stages_add(&sst, "simulation", fs_now_ms() - t0);
         const fs_sph_stats *s1 = fs_sph_get_stats(sim);
         double t = s1->t;
         long steps = s1->steps - steps0;
-        row(f, t, steps, "sim", "simulation", sim_ms);
+        row(f, t, steps, "sim", "simulation", sst.ms[0], sst.gpu_ms[0]);
         /* the methods hold p until the next upload: the new set replaces it after both uploads */
         fs_particles np = {0};
         t0 = fs_now_ms();
         if (fs_sph_get(sim, &np)) return die("get");
-        row(f, t, steps, "sim", "fetch", fs_now_ms() - t0);
+        row(f, t, steps, "sim", "fetch", fs_now_ms() - t0, NAN);
         for (int k = 0; k < NR; k++) {
             fs_stages st = {0};
             if (render_with(&rr[k], sim, &cam, &np, &st, k == 1)) return die(rr[k].m->name);
-            for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i]);
+            for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i], st.gpu_ms[i]);
             const char *prefix = getenv("INACIO_TABLES_PNG");
             if (prefix && f == settle + frames && k < 2) {
                 char path[1200];

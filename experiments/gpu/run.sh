@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# The papers' speed tables on one GPU, in one prepared run (docs/DESIGN.md, "Timing"):
+#   xiao2017 Table 1   raycast_pca on synthetic boxes of about the paper's particle
+#                      counts (0.78M .. 142.6M) at 512^2 .. 1920^2
+#   xu2022 Fig. 9      aniso_ssf, 5 filters x anisotropy off/on, against particle count
+#   inacio2010 I, II   SPH dam break, CPU path against GPU path; volume ray casting
+#                      against spheres (experiments/tools/inacio_tables)
+#   iwasaki2006 4      the 256^3 density grid of about 210k particles: slice splatting
+#                      on the GL against the exact CPU sum (experiments/tools/density_bench)
+#   demo               `fluidsurf compare` of the bundled dam break at 1024^2
+# Every row holds the wall time between glFinish calls and the GL clock's time of the
+# stage (gpu_ms), GL_RENDERER and GL_VERSION. The large particle sets are generated
+# where the script runs (synthetic boxes, the simulator): nothing big is carried.
+#
+# Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR]
+#   --quick  the same steps at small sizes, for llvmpipe (CI: under 3 minutes)
+#   -o DIR   output folder (default out/gpu, out/gpu-quick with --quick); it holds
+#            env.csv, status.csv and one CSV per step
+#   --bin    folder with fluidsurf, render_bench, inacio_tables, density_bench: a
+#            scripts/pack_lean.sh folder, or a build folder (default build-lean)
+# FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 220, quick 170)
+# caps the whole run: a cell that would start after the budget is spent is written
+# to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+QUICK=0 OUTDIR="" BINDIR=build-lean
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) QUICK=1 ;;
+    -o) OUTDIR=$2; shift ;;
+    --bin) BINDIR=$2; shift ;;
+    *) echo "run.sh: unknown argument $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR])" >&2; exit 2 ;;
+  esac
+  shift
+done
+[ -n "$OUTDIR" ] || OUTDIR=out/gpu$([ $QUICK = 1 ] && echo -quick)
+export FLUIDSURF_GL=${FLUIDSURF_GL:-egl}
+# glvnd finds NVIDIA's EGL through its vendor file; a bare node may keep it off the default path
+nv_vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f $nv_vendor ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv_vendor
+
+tool() { # the path of a program in BINDIR (pack folder) or BINDIR/experiments (build folder)
+  for p in "$BINDIR/$1" "$BINDIR/experiments/$1"; do [ -x "$p" ] && { echo "$p"; return; }; done
+  echo "run.sh: $1 not found in $BINDIR (build it: bash scripts/build_lean.sh)" >&2; exit 2
+}
+FS=$(tool fluidsurf) RB=$(tool render_bench) IT=$(tool inacio_tables) DB=$(tool density_bench)
+[ -n "$FS" ] && [ -n "$RB" ] && [ -n "$IT" ] && [ -n "$DB" ] || exit 2
+
+if [ $QUICK = 1 ]; then
+  BUDGET_S=${BUDGET_S:-170}
+  T1_SIDES="16 24" T1_SIZES="128,192" T1_RUNS=1
+  F9_SIDES="16" F9_SIZE=96 F9_RUNS=1
+  IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=1 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
+  DG_SCENE=experiments/scenes/dam_break.json DG_RES="64" DG_RUNS=1
+  DEMO_SIZE=128 DEMO_RUNS=1
+else
+  BUDGET_S=${BUDGET_S:-220}
+  # cube sides whose cubes come nearest xiao2017's sets: 779,752 2,027,776 12,394,215 37,975,520 142,612,764
+  T1_SIDES="92 127 231 336 522" T1_SIZES="512,768,1024,1440,1920" T1_RUNS=3
+  F9_SIDES="46 67 100 144" F9_SIZE=1024 F9_RUNS=3
+  IN_COUNTS="1024 2048 4096 8192 32768 131072" IN_SETTLE=2 IN_FRAMES=3 IN_SIZE=512 IN_GRID=128 IN_LIMIT=20
+  DG_SCENE=experiments/scenes/box_200k.json DG_RES="128 256" DG_RUNS=3
+  DEMO_SIZE=1024 DEMO_RUNS=3
+fi
+mkdir -p "$OUTDIR"
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+START=$(date +%s)
+left() { echo $((BUDGET_S - ($(date +%s) - START))); }
+
+# status.csv: one row per cell: what ran, how long, how it ended
+echo "step,cell,seconds,exit,note" > "$OUTDIR/status.csv"
+# cell STEP NAME LIMIT CMD...: runs CMD (stdout appended to STEP's raw file) under
+# min(LIMIT, budget left); skipped when the budget is spent
+cell() {
+  local step=$1 name=$2 limit=$3; shift 3
+  local l; l=$(left)
+  if [ "$l" -le 5 ]; then
+    echo "$step,$name,0,,skipped: the ${BUDGET_S} s budget is spent" >> "$OUTDIR/status.csv"; return
+  fi
+  [ "$limit" -gt "$l" ] && limit=$l
+  local t0 rc=0; t0=$(date +%s)
+  timeout "$limit" "$@" >> "$TMP/$step.raw" 2>> "$TMP/$step.err" || rc=$?
+  local note=""
+  [ $rc = 124 ] && note="cut at ${limit} s: the rows finished before are kept"
+  [ $rc != 0 ] && [ $rc != 124 ] && note="failed: $(tail -1 "$TMP/$step.err" | tr ',' ';' | cut -c1-200)"
+  echo "$step,$name,$(($(date +%s) - t0)),$rc,$note" >> "$OUTDIR/status.csv"
+  printf '%-10s %-28s %4ss  exit %s %s\n' "$step" "$name" "$(($(date +%s) - t0))" "$rc" "$note"
+}
+box_scene() { # box_scene SIDE: a synthetic lattice box of SIDE^3 particles (r = 0.025, jitter 0.1 r)
+  local f=$TMP/box_$1.json
+  printf '{"particles": {"synthetic": "box", "size": [%d, %d, %d], "jitter": 0.1, "seed": 1}, "radius": 0.025, "material": "water", "background": "checker"}\n' "$1" "$1" "$1" > "$f"
+  echo "$f"
+}
+
+# ---- the machine and the context ----
+{
+  echo "key,value"
+  echo "date,$(date -u +%FT%TZ)"
+  echo "mode,$([ $QUICK = 1 ] && echo quick || echo full)"
+  echo "fluidsurf,\"$("$FS" --version 2>/dev/null | head -1)\""
+  echo "cpu,\"$(nproc) cores; $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')\""
+  echo "context,$FLUIDSURF_GL"
+  "$RB" --probe 2> "$TMP/probe.err" | awk 'NR == 1 {print "gl_renderer,\"" $0 "\""} NR == 2 {print "gl_version,\"" $0 "\""}'
+  command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader |
+    head -1 | awk '{print "gpu,\"" $0 "\""}'
+} > "$OUTDIR/env.csv"
+grep -q '^gl_renderer' "$OUTDIR/env.csv" || { echo "run.sh: no OpenGL context: $(cat "$TMP/probe.err")" >&2; exit 1; }
+sed -n 's/^gl_renderer,//p; s/^gl_version,//p' "$OUTDIR/env.csv"
+
+RB_HEAD="label,particles,method,variant,size,run,stage,ms,gpu_ms,renderer,gl_version"
+# ---- xu2022 Fig. 9: aniso_ssf, each filter, anisotropy off and on ----
+variants=()
+for a in off on; do for f in none gaussian bilateral curvature narrow; do
+  variants+=("aniso_ssf.anisotropy=$a;aniso_ssf.filter=$f")
+done; done
+for side in $F9_SIDES; do
+  cell xu2022_fig9 "box_${side}^3" 90 "$RB" "$(box_scene "$side")" "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
+done
+# ---- inacio2010 Tables I and II: simulation and rendering, CPU path and GPU path ----
+for n in $IN_COUNTS; do for path in cpu gpu; do
+  cell inacio2010_tables "${n}_$path" 60 "$IT" "$n" "$path" "$IN_SETTLE" "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
+done; done
+# ---- iwasaki2006 section 4: the density grid, slice splatting against the exact CPU sum ----
+for res in $DG_RES; do
+  cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
+done
+# ---- the demo comparison ----
+cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break.json \
+  -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/demo"
+
+# ---- xiao2017 Table 1: raycast_pca, particle count x image size; last, largest set last,
+# so a spent budget cuts only the biggest cells ----
+for side in $T1_SIDES; do
+  cell xiao2017_table1 "box_${side}^3" 120 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS"
+done
+# ---- the CSVs, each with its header and the GL version on every row ----
+glv=$(sed -n 's/^gl_version,//p' "$OUTDIR/env.csv")
+write() { # write STEP HEADER: the raw rows of STEP under HEADER
+  [ -f "$TMP/$1.raw" ] || return 0
+  { echo "$2"; cat "$TMP/$1.raw"; } > "$OUTDIR/$1.csv"
+}
+write xiao2017_table1 "$RB_HEAD"
+write xu2022_fig9 "$RB_HEAD"
+write inacio2010_tables "particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms,gpu_ms,gl_version"
+write iwasaki2006_density_grid "label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads,gpu_ms,gl_version"
+if [ -f "$TMP/demo/timings.csv" ]; then
+  grep -v '^#' "$TMP/demo/timings.csv" | awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}' > "$OUTDIR/demo_timings.csv"
+  grep -v '^#' "$TMP/demo/metrics.csv" > "$OUTDIR/demo_metrics.csv"
+fi
+echo "run.sh: $(($(date +%s) - START)) s; wrote $OUTDIR: $(cd "$OUTDIR" && ls | tr '\n' ' ')"

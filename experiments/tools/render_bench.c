@@ -1,0 +1,162 @@
+/* render_bench: one method's stage times on one particle set at several image
+ * sizes and parameter variants, the set loaded (or generated) once, so a large
+ * synthetic set costs its generation once per process, not once per cell.
+ *
+ *   render_bench SCENE.json LABEL METHOD SIZES RUNS [VARIANT ...]
+ *   render_bench --probe
+ *
+ * SIZES: comma list of square image sizes ("512,1024"). VARIANT: ';'-joined
+ * "method.param=value" settings on top of the scene's ("-" or none: the
+ * defaults). Per variant the method is opened and the frame uploaded (stages
+ * grid and upload, run 0); per size one untimed warm-up render (shader
+ * compilation, target allocation), then RUNS timed renders. Only the method's
+ * own stages are timed: no shading, no file output. Prints CSV rows without a
+ * header, each flushed at once (so a run cut short by a time limit keeps its
+ * finished rows):
+ *   label,particles,method,variant,size,run,stage,ms,gpu_ms,gl_renderer,gl_version
+ * ms: wall clock between glFinish calls; gpu_ms: the GL clock (gl_stage.h),
+ * empty for CPU stages. --probe prints the default context's GL_RENDERER and
+ * GL_VERSION on two lines. With RENDER_BENCH_PNG=PREFIX, the last render of each
+ * variant and size is shaded and written to PREFIX_<variant>_<size>.png, to look
+ * at what was timed. */
+#include "frame_source.h"
+#include "fs_error.h"
+#include "gl_context.h"
+#include "image_io.h"
+#include "method.h"
+#include "run.h"
+#include "scene.h"
+#include "timing.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct bench {
+    const char *label, *variant;
+    const fs_method *m;
+    const fs_particles *p;
+    const fs_gl_context *ctx;
+} bench;
+
+static int die(const char *what)
+{
+    fprintf(stderr, "render_bench: %s: %s\n", what, fs_error_message());
+    return 1;
+}
+
+static void rows(const bench *b, const fs_run *run, int size, int r, const fs_stages *st)
+{
+    for (int i = 0; i < st->n; i++) {
+        printf("%s,%zu,%s,\"%s\",%d,%d,%s,%.3f,", b->label, b->p->n, b->m->name, b->variant, size, r, st->name[i],
+               st->ms[i]);
+        if (!isnan(st->gpu_ms[i])) printf("%.3f", st->gpu_ms[i]);
+        printf(",\"%s\",\"%s\"\n", fs_run_stage_renderer(run, st->name[i]), b->ctx ? b->ctx->version : "");
+    }
+    fflush(stdout);
+}
+
+static int write_png(fs_run *run, const fs_camera *cam, fs_run_image *im, const char *variant, int size)
+{
+    const char *prefix = getenv("RENDER_BENCH_PNG");
+    if (!prefix) return FS_OK;
+    char path[1200], v[256];
+    snprintf(v, sizeof v, "%s", variant);
+    for (char *c = v; *c; c++)
+        if (!strchr("abcdefghijklmnopqrstuvwxyz0123456789_.-", *c)) *c = '_';
+    snprintf(path, sizeof path, "%s_%s_%d.png", prefix, v, size);
+    int rc = fs_run_shade(run, cam, im, FS_APPEARANCE_SHARED, NULL);
+    const char *ch[4] = {"R", "G", "B", "A"};
+    fs_image img = {size, size, 4, ch, im->rgba};
+    return rc ? rc : fs_write_png(path, &img);
+}
+
+/* One size: a warm-up render, then runs timed ones. */
+static int bench_size(const bench *b, fs_run *run, const fs_scene *base, int size, int runs)
+{
+    static fs_scene s; /* large: not on the stack */
+    s = *base;
+    s.camera.width = s.camera.height = size;
+    fs_scene_adopt_frame(&s, b->p, 0);
+    fs_run_image im = {0};
+    int rc = fs_run_render(run, &s.camera, &im, NULL);
+    for (int r = 1; !rc && r <= runs; r++) {
+        fs_stages st = {0};
+        rc = fs_run_render(run, &s.camera, &im, &st);
+        if (!rc) rows(b, run, size, r, &st);
+    }
+    if (!rc) rc = write_png(run, &s.camera, &im, b->variant, size);
+    fs_run_image_free(&im);
+    return rc;
+}
+
+/* One variant: its settings on a copy of the scene, the run, every size. */
+static int bench_variant(bench *b, const fs_scene *scene, const char *sizes, int runs)
+{
+    static fs_scene s;
+    s = *scene;
+    char sets[1024];
+    snprintf(sets, sizeof sets, "%s", b->variant);
+    for (char *set = strtok(sets, ";"); set; set = strtok(NULL, ";"))
+        if (strcmp(set, "-") && fs_scene_add_set(&s, set)) return die(set);
+    fs_run *run = NULL;
+    fs_stages st = {0};
+    int rc = fs_run_open(&run, b->m, &s, NULL, b->ctx);
+    if (!rc) rc = fs_run_upload(run, b->p, NULL, &st);
+    if (!rc) rows(b, run, 0, 0, &st);
+    char list[512];
+    snprintf(list, sizeof list, "%s", sizes);
+    for (char *tok = list, *next; !rc && tok && *tok; tok = next) {
+        next = strchr(tok, ',');
+        if (next) *next++ = 0;
+        int size = atoi(tok);
+        rc = size > 0 && size <= 8192 ? bench_size(b, run, &s, size, runs) : fs_fail(FS_ERR_INPUT, "size '%s'", tok);
+    }
+    fs_run_close(run);
+    return rc ? die(b->variant) : 0;
+}
+
+static int probe(void)
+{
+    fs_gl_context ctx;
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
+    printf("%s\n%s\n", ctx.renderer, ctx.version);
+    fs_gl_context_destroy(&ctx);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && !strcmp(argv[1], "--probe")) return probe();
+    if (argc < 6) {
+        fprintf(stderr, "usage: render_bench SCENE.json LABEL METHOD SIZES RUNS [VARIANT ...] | --probe\n");
+        return 2;
+    }
+    fs_methods_register_builtin();
+    bench b = {argv[2], "-", fs_method_find(argv[3]), NULL, NULL};
+    int runs = atoi(argv[5]);
+    if (!b.m || runs < 1) {
+        fprintf(stderr, "render_bench: unknown method '%s' or bad RUNS '%s'\n", argv[3], argv[5]);
+        return 2;
+    }
+    static fs_scene scene;
+    fs_particles p;
+    double t0 = fs_now_ms();
+    if (fs_scene_load(&scene, argv[1]) || fs_scene_load_frame(&scene, 0, &p)) return die(argv[1]);
+    fs_scene_adopt_frame(&scene, &p, 0);
+    b.p = &p;
+    fs_gl_context ctx = {0};
+    if (b.m->needs_gl && fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
+    b.ctx = b.m->needs_gl ? &ctx : NULL;
+    printf("%s,%zu,%s,\"\",0,0,load,%.3f,,\"CPU\",\"%s\"\n", b.label, p.n, b.m->name, fs_now_ms() - t0, ctx.version);
+    static char *const defaults[] = {"-"};
+    char *const *variants = argc > 6 ? argv + 6 : defaults;
+    int nvariants = argc > 6 ? argc - 6 : 1, rc = 0;
+    for (int v = 0; !rc && v < nvariants; v++) {
+        b.variant = variants[v];
+        rc = bench_variant(&b, &scene, argv[4], runs);
+    }
+    if (b.m->needs_gl) fs_gl_context_destroy(&ctx);
+    fs_particles_free(&p);
+    return rc;
+}
