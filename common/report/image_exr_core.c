@@ -222,6 +222,15 @@ int fs_exr_read_attr(const char *path, const char *name, char *buf, int size)
     if (size > 0) buf[0] = 0;
     exr_context_t f = NULL;
     if (open_read(path, &f)) return -1;
+    /* OpenImageIO reports the compression as a string attribute too ("zip", ...). */
+    exr_compression_t comp;
+    if (!strcmp(name, "compression") && exr_get_compression(f, 0, &comp) == EXR_ERR_SUCCESS) {
+        static const char *const names[] = {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"};
+        int known = (unsigned)comp < sizeof names / sizeof names[0];
+        if (known && size > 0) snprintf(buf, (size_t)size, "%s", names[comp]);
+        exr_finish(&f);
+        return known;
+    }
     const exr_attribute_t *a = NULL;
     int found = exr_get_attribute_by_name(f, 0, name, &a) == EXR_ERR_SUCCESS && a && a->type == EXR_ATTR_STRING;
     if (found && size > 0) snprintf(buf, (size_t)size, "%s", a->string->str ? a->string->str : "");

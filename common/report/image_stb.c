@@ -47,6 +47,9 @@ int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int 
 {
     if (!pix || w <= 0 || h <= 0 || nch < 1 || nch > 4)
         return fs_fail(FS_ERR_INPUT, "%s: no 8-bit image with 1 to 4 channels to write", path);
+    /* libpng's (so OpenImageIO's) limit, kept so both builds accept the same images. */
+    if (w > 1000000 || h > 1000000)
+        return fs_fail(FS_ERR_RUNTIME, "%s: a %dx%d PNG exceeds 1000000 pixels a side", path, w, h);
     char tmp[4096];
     int rc = fs_output_begin(path, tmp, sizeof tmp);
     if (rc) return rc;
@@ -92,7 +95,7 @@ static int sniff(const char *path, file_kind *kind)
     static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     *kind = got >= 4 && !memcmp(m, exr, 4) ? KIND_EXR : got == 8 && !memcmp(m, png, 8) ? KIND_PNG : KIND_OTHER;
     if (*kind == KIND_OTHER)
-        return fs_fail(FS_ERR_INPUT, "%s: not a PNG or EXR file (other image formats need a build with FS_WITH_OIIO=ON)",
+        return fs_fail(FS_ERR_INPUT, "%s: not a PNG or EXR file (reading other image formats needs a build with FS_WITH_OIIO=ON)",
                        path);
     return FS_OK;
 }
