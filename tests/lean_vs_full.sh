@@ -9,7 +9,7 @@
 set -u
 FULL=$1 LEAN=$2 T=${3:-${TMPDIR:-/tmp}/fluidsurf-lean-vs-full}
 SRC=$(cd "$(dirname "$0")/.." && pwd)
-rm -rf "$T"; mkdir -p "$T"
+rm -rf "$T"; mkdir -p "$T"; T=$(cd "$T" && pwd) # the scene copy names its frame by absolute path
 fails=0
 check() { if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
 scene=$SRC/experiments/scenes/dam_break.json
