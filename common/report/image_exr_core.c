@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 /* OpenEXRCore reports through a callback; keep its last message for the one-line error. */
 static _Thread_local char exr_msg[512];
@@ -54,6 +55,12 @@ static exr_result_t write_parts(exr_context_t f, const fs_image *img, const fs_a
     }
     for (int i = 0; !rc && i < nattrs; i++)
         if (attrs[i].name && attrs[i].value) rc = exr_attr_set_string(f, part, attrs[i].name, attrs[i].value);
+    /* OpenImageIO stamps every file with the time of writing (EXR's capDate): so do we. */
+    char date[32];
+    time_t now = time(NULL);
+    struct tm tm;
+    if (!rc && localtime_r(&now, &tm) && strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", &tm))
+        rc = exr_attr_set_string(f, part, "capDate", date);
     if (!rc) rc = exr_write_header(f);
     int32_t lines = 0;
     if (!rc) rc = exr_get_scanlines_per_chunk(f, part, &lines);

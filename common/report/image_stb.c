@@ -92,6 +92,7 @@ static int sniff(const char *path, file_kind *kind)
     unsigned char m[8] = {0};
     size_t got = fread(m, 1, sizeof m, f);
     fclose(f);
+    if (got == 0) return fs_fail(FS_ERR_INPUT, "%s: empty file", path);
     static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     *kind = got >= 4 && !memcmp(m, exr, 4) ? KIND_EXR : got == 8 && !memcmp(m, png, 8) ? KIND_PNG : KIND_OTHER;
     if (*kind == KIND_OTHER)
