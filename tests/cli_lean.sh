@@ -62,9 +62,11 @@ if off VTK; then
   OUTFILE=$T/vtk.exr refused VTK "VTK input" render "$T/cube.vtk" --method spheres -o "$T/vtk.exr"
   OUTFILE= refused VTK "VTU input" info "$data/fluid_250_particles.vtu"
   OUTFILE=$T/out.vtk refused VTK "VTK output" convert "$bgeo" -o "$T/out.vtk"
+  OUTFILE=$T/sim.csv refused VTK "simulate to .vtk (before --stats is written)" simulate dam_break --frames 1 --particles 500 -q -o "$T/sim_%04d.vtk" --stats "$T/sim.csv"
 fi
 if off OPENVDB; then
   OUTFILE=$T/out.vdb refused OPENVDB "VDB points output" convert "$bgeo" -o "$T/out.vdb"
+  OUTFILE=$T/sim.csv refused OPENVDB "simulate to .vdb" simulate dam_break --frames 1 --particles 500 -q -o "$T/sim_%04d.vdb" --stats "$T/sim.csv"
   printf 'not a vdb' > "$T/in.vdb"
   OUTFILE= refused OPENVDB "VDB points input" info "$T/in.vdb"
   OUTFILE=$T/grid.vdb refused OPENVDB "VDB density grid export" render "$T/dam.json" --method surfels -q --export "$T/grid.vdb"
