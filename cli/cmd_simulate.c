@@ -81,6 +81,7 @@ static int parse(int argc, char **argv, opts *o)
         const char *fmt = fs_format_from_path(path);
         if (!fmt || (strcmp(fmt, "vtk") && strcmp(fmt, "bgeo") && strcmp(fmt, "ply") && strcmp(fmt, "vdb")))
             return cli_usage("simulate", "%s: output format must be .vtk, .bgeo, .ply or .vdb", o->out);
+        if ((rc = fs_particles_writable(path, NULL))) return cli_error(rc); /* before --stats is opened */
         if ((rc = fs_output_begin(path, tmp, sizeof tmp))) return cli_error(rc); /* folder exists and is writable */
         fs_output_end(path, tmp, 0);
     }

@@ -56,7 +56,7 @@ typedef struct cli_opt {
      .help = what " height in pixels (default: " dflt ")"}
 #define CLI_OPT_GL(var)                                                                                        \
     CLI_CHOICE_OPT("--gl", var, "osmesa|egl", ((const int[]){FS_CTX_OSMESA, FS_CTX_EGL}),                    \
-                   "OpenGL context (default osmesa, or FLUIDSURF_GL)")
+                   "OpenGL context (default " FS_CTX_DEFAULT_NAME ", or FLUIDSURF_GL)")
 #define CLI_OPT_SET(arr, cnt) \
     CLI_LIST_OPT("--set", arr, cnt, FS_MAX_SETS, "M.P=V", "set a method parameter (repeatable)")
 #define CLI_OPT_CACHE(var, hlp) CLI_STRING_OPT("--cache", var, "DIR", hlp)

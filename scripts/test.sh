@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the whole test suite: once in a normal build, then
-# once more under AddressSanitizer + UndefinedBehaviorSanitizer (suppressions
-# only for Mesa/LLVM, tests/lsan.supp). Set FS_NO_SANITIZE=1 to skip the second.
+# Sets up, builds and runs the whole test suite: once in a normal build; then the
+# lean build (scripts/build_lean.sh: no VTK, OpenVDB, OpenImageIO, GLFW, OSMesa)
+# with its own tests on EGL, and every method rendered by both builds compared
+# (tests/lean_vs_full.sh); then once more under AddressSanitizer +
+# UndefinedBehaviorSanitizer (suppressions only for Mesa/LLVM, tests/lsan.supp).
+# Set FS_NO_SANITIZE=1 to skip the last.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh build
 (cd build && ctest --output-on-failure -j2)
+bash scripts/build_lean.sh build-lean
+(cd build-lean && FLUIDSURF_GL=egl ctest --output-on-failure -j2)
+bash tests/lean_vs_full.sh build/fluidsurf build-lean/fluidsurf build-lean/test-out/lean_vs_full
 if [ "${FS_NO_SANITIZE:-0}" != 1 ]; then
   bash scripts/build.sh build-asan -DFS_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
   # Default (fast) unwinding: the slow unwinder deadlocks inside LLVM's JIT

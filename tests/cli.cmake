@@ -1,10 +1,13 @@
 # Command-line behaviour: bad input gives exit 2, one line "fluidsurf: ...", no output.
-add_test(NAME cli_bad_input COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_input.sh $<TARGET_FILE:fluidsurf>
-         ${CMAKE_SOURCE_DIR}/experiments/data/splashsurf ${CMAKE_BINARY_DIR}/test-out/cli_bad)
-add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh $<TARGET_FILE:fluidsurf>
-         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
-set_tests_properties(cli_bad_input cli_render PROPERTIES
-  ENVIRONMENT "${FS_TEST_ENV}")
+# Both use the bundled .vtk files: builds with VTK (the lean build: tests/cli_lean.sh).
+if(FS_WITH_VTK)
+  add_test(NAME cli_bad_input COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_bad_input.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR}/experiments/data/splashsurf ${CMAKE_BINARY_DIR}/test-out/cli_bad)
+  add_test(NAME cli_render COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_render.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_render)
+  set_tests_properties(cli_bad_input cli_render PROPERTIES
+    ENVIRONMENT "${FS_TEST_ENV}")
+endif()
 add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
@@ -16,8 +19,12 @@ set_tests_properties(cli_cache PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 # Every command's --help comes from its option table and lists all its options; unknown options exit 2, one line.
 add_test(NAME cli_help COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_help.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_BINARY_DIR}/test-out/cli_help)
+set(_help_env "${FS_TEST_ENV}")
+if(NOT FS_WITH_GLFW)
+  list(APPEND _help_env "FS_NO_VIEW=1")
+endif()
 set_tests_properties(cli_help PROPERTIES
-  ENVIRONMENT "${FS_TEST_ENV}")
+  ENVIRONMENT "${_help_env}")
 # experiments/gpu/run.sh --quick through EGL: the prepared GPU script works end to end
 # (about 15 s; not under the sanitizers, which only slow llvmpipe down).
 if(NOT FS_SANITIZE)

@@ -29,7 +29,10 @@ one_line_exit2() {
   [ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && grep -q '^fluidsurf: ' "$T/err"
 }
 
-for cmd in render compare diff info convert methods simulate view; do
+# FS_NO_VIEW=1: a build without GLFW, whose view only refuses (tests/cli_lean.sh checks that).
+cmds="render compare diff info convert methods simulate"
+[ "${FS_NO_VIEW:-0}" = 1 ] || cmds="$cmds view"
+for cmd in $cmds; do
   bad=$fails
   "$BIN" $cmd --help > "$T/help_$cmd" 2> "$T/err"; rc=$?
   [ $rc -eq 0 ] && [ ! -s "$T/err" ] || fail "$cmd --help: exit $rc, stderr: $(cat "$T/err")"

@@ -1,3 +1,8 @@
+# OSMesa, GLFW and EGL together: full builds only (the lean build's EGL runs in
+# every GL test there, its refusals of OSMesa and GLFW in tests/cli_lean.sh).
+if(NOT (FS_WITH_GLFW AND FS_WITH_OSMESA))
+  return()
+endif()
 # The GLFW window context needs an X server: the test runs under Xvfb (xvfb-run).
 find_program(XVFB_RUN xvfb-run)
 if(NOT XVFB_RUN)

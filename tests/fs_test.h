@@ -4,6 +4,8 @@
 #define FS_TEST_H
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
+#include <unistd.h>
 
 static int fs_test_failures;
 
@@ -16,5 +18,12 @@ static int fs_test_failures;
     if (fs_test_failures) { fprintf(stderr, "%d check(s) failed\n", fs_test_failures); } \
     else { printf("all checks passed\n"); } \
     return fs_test_failures ? 1 : 0; } while (0)
+
+/* A refusal of the lean build (a library left out): rc is bad input, the one-line
+ * message names the CMake option, and no file was left at path. */
+#define CHECK_REFUSED(rc, msg, path, option) do { \
+    CHECK((rc) == 2 && strstr((msg), "needs a build with " option "=ON") && !strchr((msg), '\n'), \
+          "expected a refusal naming " option ": rc %d, %s", (rc), (msg)); \
+    CHECK(access((path), F_OK) != 0, "%s: a refused write left a file", (path)); } while (0)
 
 #endif

@@ -454,7 +454,7 @@ static void test_bad(fs_caustics *c)
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     test_surfel_set();
     fs_caustics *c = fs_caustics_create();
     CHECK(c != NULL, "create: %s", fs_error_message());

@@ -132,10 +132,12 @@ int main(void)
     fs_particles_free(&q);
 
     fs_camera cam;
+#if FS_WITH_VTK /* the lean build reads no VTK; the PLY frame below still runs */
     rc = load_frame(FS_TEST_DATA "/splashsurf/dam_break_frame_23_24389_particles.vtk", 0.025f, 0.8f, &p, &f, &cam);
     CHECK(!rc, "24k frame loads (%s)", fs_error_message());
     if (!rc) compare_paths("24k frame", &p, f, &cam);
     fs_particles_free(&p);
+#endif
 
     rc = load_frame(FS_TEST_DATA "/splash/dam_break_splash_100k.ply", 0.025f, 1.0f, &p, &f, &cam);
     CHECK(!rc, "splash frame loads (%s)", fs_error_message());

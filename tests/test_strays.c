@@ -83,7 +83,7 @@ static void check_method(const char *m, const fs_particles *p, const fs_particle
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, FS_CTX_OSMESA, 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     fs_particles p, q;
     fs_scene s;
     fs_field f;

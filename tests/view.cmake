@@ -1,4 +1,8 @@
+fs_add_test(test_orbit_camera fs_scene test_orbit_camera.c)
 # fluidsurf view: a GLFW window under Xvfb driven by scripted input (tests/view.sh).
+if(NOT FS_WITH_GLFW) # the lean build refuses view (tests/cli_lean.sh)
+  return()
+endif()
 find_program(XVFB_RUN xvfb-run)
 if(NOT XVFB_RUN)
   message(FATAL_ERROR "xvfb-run not found: the viewer test needs it. Run scripts/setup.sh (Debian package xvfb).")
@@ -19,4 +23,3 @@ add_test(NAME cli_view_methods COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24"
          ${CMAKE_BINARY_DIR}/test-out/view_methods)
 set_tests_properties(cli_view_methods PROPERTIES TIMEOUT 300
   ENVIRONMENT "${FS_TEST_ENV}")
-fs_add_test(test_orbit_camera fs_scene test_orbit_camera.c)

@@ -7,9 +7,15 @@ int fs_gl_load(fs_gl_getproc getproc);
 int fs_gl_check_core45(char *renderer, int rsize, char *version, int vsize);
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+/* The OSMesa and GLFW parts compile only with their libraries (FS_WITH_OSMESA,
+ * FS_WITH_GLFW); without them a request for that kind is refused with one line. */
+#if FS_WITH_OSMESA
 #include <GL/osmesa.h> /* pulls GL/gl.h: so this file must not include gl.h */
+#endif
+#if FS_WITH_GLFW
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#endif
 #include <dlfcn.h>
 #include <link.h>
 #include <stdio.h>
@@ -30,10 +36,22 @@ fs_ctx_kind fs_gl_context_default_kind(void)
 {
     const char *e = getenv("FLUIDSURF_GL");
     int k = e ? fs_ctx_kind_from_name(e) : -1;
+#if FS_WITH_OSMESA
     return k == FS_CTX_EGL ? FS_CTX_EGL : FS_CTX_OSMESA;
+#else
+    /* EGL is the default; FLUIDSURF_GL=osmesa stays a request, refused at creation. */
+    return k == FS_CTX_OSMESA ? FS_CTX_OSMESA : FS_CTX_EGL;
+#endif
 }
 
 /* ---- OSMesa ---- */
+#if !FS_WITH_OSMESA
+static int create_osmesa(fs_gl_context *c)
+{
+    (void)c;
+    return fs_fail(FS_ERR_INPUT, "OpenGL: an OSMesa context needs a build with FS_WITH_OSMESA=ON (use --gl egl)");
+}
+#else
 static void *osmesa_getproc(const char *name) { return (void *)OSMesaGetProcAddress(name); }
 
 static int create_osmesa(fs_gl_context *c)
@@ -48,6 +66,7 @@ static int create_osmesa(fs_gl_context *c)
     c->handle = ctx;
     return FS_OK;
 }
+#endif
 
 /* ---- driver libraries ----
  * libEGL and libGL (loaded by GLFW) load vendor libraries and Mesa's DRI driver
@@ -162,6 +181,13 @@ fail:
 }
 
 /* ---- GLFW ---- */
+#if !FS_WITH_GLFW
+static int create_glfw(fs_gl_context *c)
+{
+    (void)c;
+    return fs_fail(FS_ERR_INPUT, "OpenGL: a GLFW window needs a build with FS_WITH_GLFW=ON");
+}
+#else
 static void *glfw_getproc(const char *name) { return (void *)glfwGetProcAddress(name); }
 /* glfwTerminate destroys every window: only the last GLFW context calls it. */
 static int glfw_users;
@@ -183,6 +209,7 @@ static int create_glfw(fs_gl_context *c)
     c->handle = w;
     return FS_OK;
 }
+#endif
 
 /* ---- switching ----
  * OSMesa, GLX (libGLX_mesa, loaded by GLFW) and EGL (libEGL_mesa) all dispatch
@@ -200,13 +227,18 @@ static void release_bound(void)
 {
     if (!bound.handle) return;
     switch (bound.kind) {
+#if FS_WITH_OSMESA
     case FS_CTX_OSMESA: OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0); break;
+#endif
     case FS_CTX_EGL: {
         egl_fns *e = bound.extra;
         e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         break;
     }
+#if FS_WITH_GLFW
     case FS_CTX_GLFW: glfwMakeContextCurrent(NULL); break;
+#endif
+    default: break;
     }
     bound.handle = NULL;
 }
@@ -217,10 +249,12 @@ int fs_gl_context_make_current(fs_gl_context *c)
     fs_gl_getproc gp = NULL;
     if (bound.handle != c->handle) release_bound();
     switch (c->kind) {
+#if FS_WITH_OSMESA
     case FS_CTX_OSMESA:
         ok = OSMesaMakeCurrent(c->handle, c->extra, GL_UNSIGNED_BYTE, c->width, c->height);
         gp = osmesa_getproc;
         break;
+#endif
     case FS_CTX_EGL: {
         egl_fns *e = c->extra;
         ok = e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, c->handle);
@@ -228,11 +262,14 @@ int fs_gl_context_make_current(fs_gl_context *c)
         gp = egl_getproc;
         break;
     }
+#if FS_WITH_GLFW
     case FS_CTX_GLFW:
         glfwMakeContextCurrent(c->handle);
         ok = glfwGetCurrentContext() == c->handle;
         gp = glfw_getproc;
         break;
+#endif
+    default: break;
     }
     if (!ok) return fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot make the %s context current", fs_ctx_kind_name(c->kind));
     bound = *c;
@@ -268,10 +305,12 @@ void fs_gl_context_destroy(fs_gl_context *c)
     if (!c->handle) return;
     if (bound.handle == c->handle) release_bound();
     switch (c->kind) {
+#if FS_WITH_OSMESA
     case FS_CTX_OSMESA:
         OSMesaDestroyContext(c->handle);
         free(c->extra);
         break;
+#endif
     case FS_CTX_EGL: {
         egl_fns *e = c->extra;
         e->DestroyContext(e->dpy, c->handle);
@@ -280,10 +319,13 @@ void fs_gl_context_destroy(fs_gl_context *c)
         free(e);
         break;
     }
+#if FS_WITH_GLFW
     case FS_CTX_GLFW:
         glfwDestroyWindow(c->handle);
         if (--glfw_users == 0) glfwTerminate();
         break;
+#endif
+    default: break;
     }
     memset(c, 0, sizeof *c);
 }

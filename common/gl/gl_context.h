@@ -27,8 +27,14 @@ const char *fs_ctx_kind_name(fs_ctx_kind k);
 int fs_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int height);
 int fs_gl_context_make_current(fs_gl_context *c);
 void fs_gl_context_destroy(fs_gl_context *c);
-/* The context kind to use: FLUIDSURF_GL=osmesa|egl in the environment, else osmesa. */
+/* The context kind to use: FLUIDSURF_GL=osmesa|egl in the environment, else osmesa
+ * (egl in a build with FS_WITH_OSMESA=OFF, where an OSMesa request is refused). */
 fs_ctx_kind fs_gl_context_default_kind(void);
+#if defined(FS_WITH_OSMESA) && !FS_WITH_OSMESA
+#define FS_CTX_DEFAULT_NAME "egl"
+#else
+#define FS_CTX_DEFAULT_NAME "osmesa"
+#endif
 
 #ifdef __cplusplus
 }

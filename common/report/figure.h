@@ -1,5 +1,5 @@
 /* Figure building blocks: heatmaps with a colour bar and scale, text through
- * OpenImageIO (common/report/image_text.cpp), and panels of labelled tiles. Images here
+ * OpenImageIO (common/report/image_text.cpp; text_stb.c without it), and panels of labelled tiles. Images here
  * are linear RGBA float (4 channels), rows top to bottom. */
 #ifndef FS_FIGURE_H
 #define FS_FIGURE_H

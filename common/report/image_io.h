@@ -1,5 +1,7 @@
-/* Image files through OpenImageIO (common/report/image_oiio.cpp): PNG (sRGB 8-bit) and
- * EXR (linear float, RGBA plus named AOV channels and string attributes). */
+/* Image files through OpenImageIO (common/report/image_oiio.cpp), or, in a build with
+ * FS_WITH_OIIO=OFF, OpenEXRCore and stb (image_exr_core.c, image_stb.c: PNG and EXR
+ * only): PNG (sRGB 8-bit) and EXR (linear float, RGBA plus named AOV channels and
+ * string attributes). */
 #ifndef FS_IMAGE_IO_H
 #define FS_IMAGE_IO_H
 #include "provenance.h" /* fs_attr */

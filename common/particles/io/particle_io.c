@@ -96,6 +96,17 @@ int fs_particles_write(const fs_particles *p, const char *path, const char *form
     return fs_fail(FS_ERR_INPUT, "%s: cannot write format '%s' (writers: vtk bgeo ply vdb)", path, fmt);
 }
 
+int fs_particles_writable(const char *path, const char *format)
+{
+    const char *fmt;
+    int rc = pick_format(path, format, &fmt);
+    if (rc) return rc;
+    /* The stubs (io_vtk_none.c, io_vdb_none.c) refuse without looking at the particles. */
+    if (!FS_WITH_VTK && strcasecmp(fmt, "vtk") == 0) return fs_write_vtk(NULL, path);
+    if (!FS_WITH_OPENVDB && strcasecmp(fmt, "vdb") == 0) return fs_write_vdb(NULL, path);
+    return FS_OK;
+}
+
 /* Accepts exactly one %[flags][width][.precision]d or i conversion; "%%" is a literal. */
 int fs_frame_path(char *out, int size, const char *pattern, int frame)
 {

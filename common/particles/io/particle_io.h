@@ -14,6 +14,9 @@ int fs_particles_read(fs_particles *p, const char *path, const char *format);
 /* Writers: vtk (legacy binary), bgeo, ply (binary), vdb. Writes to a temporary
  * file in the same folder and renames it, never leaving a partial file. */
 int fs_particles_write(const fs_particles *p, const char *path, const char *format);
+/* FS_OK when this build can write path's format (a build without VTK or OpenVDB
+ * refuses .vtk or .vdb, as the writer would): lets a command refuse before it works. */
+int fs_particles_writable(const char *path, const char *format);
 /* Expands a printf pattern ("frame_%04d.vtk") for one frame. */
 int fs_frame_path(char *out, int size, const char *pattern, int frame);
 const char *fs_format_from_path(const char *path);
