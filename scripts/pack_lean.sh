@@ -21,7 +21,7 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$out" ] || { echo "usage: scripts/pack_lean.sh [--gl] [--build DIR] OUTDIR" >&2; exit 2; }
 bins=("$build/fluidsurf")
-for t in density_bench inacio_tables edge_bands; do
+for t in density_bench inacio_tables render_bench edge_bands; do
   [ -x "$build/experiments/$t" ] && bins+=("$build/experiments/$t")
 done
 [ -x "${bins[0]}" ] || { echo "pack_lean: ${bins[0]}: not built (run scripts/build_lean.sh)" >&2; exit 2; }

@@ -51,7 +51,7 @@ if [ $QUICK = 1 ]; then
   T1_SIDES="16 24" T1_SIZES="128,192" T1_RUNS=1
   F9_SIDES="16" F9_SIZE=96 F9_RUNS=1
   IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=1 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
-  DG_SCENE=experiments/scenes/dam_break.json DG_RES="64" DG_RUNS=1
+  DG_SCENE=experiments/scenes/dam_break_ply.json DG_RES="64" DG_RUNS=1
   DEMO_SIZE=128 DEMO_RUNS=1
 else
   BUDGET_S=${BUDGET_S:-220}
@@ -126,7 +126,7 @@ for res in $DG_RES; do
   cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
 done
 # ---- the demo comparison ----
-cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break.json \
+cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \
   -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/demo"
 
 # ---- xiao2017 Table 1: raycast_pca, particle count x image size; last, largest set last,
