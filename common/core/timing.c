@@ -11,11 +11,12 @@ double fs_now_ms(void)
 
 void fs_stages_add(fs_stages *s, const char *name, double ms)
 {
-    for (int i = 0; i < s->n; i++)
-        if (!strcmp(s->name[i], name)) { s->ms[i] += ms; return; }
-    if (s->n == FS_MAX_STAGES) return;
-    s->name[s->n] = name;
-    s->ms[s->n++] = ms;
+    int i = 0;
+    while (i < s->n && strcmp(s->name[i], name)) i++;
+    if (i == FS_MAX_STAGES) return;
+    if (i == s->n) { s->name[s->n++] = name; s->ms[i] = 0; memset(s->count[i], 0, sizeof s->count[i]); }
+    s->ms[i] += ms;
+    if (fs_counting) fs_counters_attribute(s->count[i], name);
 }
 
 double fs_stages_total(const fs_stages *s)
