@@ -4,6 +4,8 @@
 // (lo, hi) uint pair: the add goes to lo and carries into hi when it wraps, so
 // the count is exact to 2^64; a wrap of hi sets the counter's overflow bit.
 // Count in a local per invocation and call FS_COUNT once at its end.
+#ifndef FS_COUNTERS_GLSL
+#define FS_COUNTERS_GLSL
 #ifdef FS_COUNTERS
 layout(std430, binding = FS_CNT_BINDING) buffer fs_counter_block { uint fs_cnt[FS_CNT_WORDS]; };
 void fs_count(uint c, uint n)
@@ -16,4 +18,5 @@ void fs_count(uint c, uint n)
 #define FS_COUNT(c, n) fs_count(c, uint(n))
 #else
 #define FS_COUNT(c, n)
+#endif
 #endif
