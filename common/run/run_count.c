@@ -11,6 +11,21 @@ int fs_run_check_counters(const fs_method *m)
     return fs_fail(FS_ERR_INPUT, "--counters: method '%s' reports no work counters yet", m->name);
 }
 
+/* The totals over the stages (the CSV's "total" rows) must not wrap either. */
+static int check_totals(const fs_stages *st)
+{
+    for (int c = 0; c < FS_NCOUNTERS; c++) {
+        uint64_t t = 0;
+        for (int i = 0; i < st->n; i++) {
+            if (t + st->count[i][c] < t)
+                return fs_fail(FS_ERR_RUNTIME, "work counter %s overflowed 2^64 in its total over the stages",
+                               fs_counter_name(c));
+            t += st->count[i][c];
+        }
+    }
+    return FS_OK;
+}
+
 int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, const fs_gl_context *ctx,
                  const fs_particles *p, const fs_grid *g, const fs_camera *cam, fs_run_image *im, fs_stages *st)
 {
@@ -29,6 +44,7 @@ int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, co
     fs_counting_set(0);
     fs_run_close(run);
     if (!rc) rc = fs_counters_check();
+    if (!rc) rc = check_totals(st);
     fs_counters_reset();
     return rc;
 }
