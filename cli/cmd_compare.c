@@ -237,6 +237,10 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
         if (!r->quiet) fprintf(stderr, "compare: counting %s, frame %d/%d\n", e->label, f + 1, r->nframes);
         rc = fs_run_count(e->v.m, &r->scene, e->v.params, ctx, &frames_p[f], &grids[f], &r->scene.camera, &v,
                           &e->counts[f]);
+        /* the counts describe the timed render only when it drew the same G-buffer */
+        if (!rc && f == 0 && !fs_digest_equal(fs_gcache_data_hash(&v.g), fs_gcache_data_hash(&e->first.g)))
+            fprintf(stderr, "compare: warning: %s: the counting render's G-buffer differs from the timed render's\n",
+                    e->label);
         free_view(&v);
     }
     return rc;
