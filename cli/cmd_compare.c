@@ -26,7 +26,7 @@ static const char epilogue[] =
     "--set M.P=v1,v2,... sweeps the parameter over the values.\n"
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
     "<label>_own.png for a method with its own appearance (fluidsurf methods says which),\n"
-    "report.md (and temporal.csv for a sequence).\n"
+    "report.md (and temporal.csv for a sequence); with --counters also counters.csv.\n"
     "Reference G-buffers are cached (--cache DIR, default $XDG_CACHE_HOME/fluidsurf or\n"
     "~/.cache/fluidsurf), keyed by a hash of the particles, field, camera, image size,\n"
     "the reference's parameters and fluidsurf's commit; a hit is named in report.md and\n"
@@ -226,6 +226,26 @@ static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_part
     return rc;
 }
 
+/* With --counters, after the timed renders: a counting render of every frame
+ * on the same inputs (docs/DESIGN.md, "Work counters"). */
+static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
+                       const fs_gl_context *ctx)
+{
+    int rc = FS_OK;
+    for (int f = 0; f < r->nframes && !rc; f++) {
+        cmp_view v = {0};
+        if (!r->quiet) fprintf(stderr, "compare: counting %s, frame %d/%d\n", e->label, f + 1, r->nframes);
+        rc = fs_run_count(e->v.m, &r->scene, e->v.params, ctx, &frames_p[f], &grids[f], &r->scene.camera, &v,
+                          &e->counts[f]);
+        /* the counts describe the timed render only when it drew the same G-buffer */
+        if (!rc && f == 0 && !fs_digest_equal(fs_gcache_data_hash(&v.g), fs_gcache_data_hash(&e->first.g)))
+            fprintf(stderr, "compare: warning: %s: the counting render's G-buffer differs from the timed render's\n",
+                    e->label);
+        free_view(&v);
+    }
+    return rc;
+}
+
 /* Runs one method variant on every frame; keeps the first frame's view for
  * the panel and heatmaps and the mean normal change between frames. */
 static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
@@ -255,6 +275,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, con
     free_view(&cur);
     e->temporal_deg = tn ? tsum / tn : NAN;
     fs_run_close(run);
+    if (!rc && r->counters) rc = count_entry(r, e, frames_p, grids, ctx);
     return rc;
 }
 
@@ -302,6 +323,7 @@ typedef struct cmp_options {
     fs_ctx_kind ctx_kind;
     const char *cache_dir; /* NULL: the default folder */
     int no_cache;
+    int counters;
 } cmp_options;
 
 /* The variants of every method of the comma list (all registered when NULL). */
@@ -357,6 +379,8 @@ static int plan_variants(cmp_run *r, const cmp_options *o)
         if (rc) return cli_error(rc);
     }
     if ((rc = add_variants(r, o->methods, sweeps, nsweeps))) return rc;
+    for (int i = 0; o->counters && i < r->nentries; i++)
+        if ((rc = fs_run_check_counters(r->entries[i].v.m))) return cli_error(rc);
     double check[FS_MAX_PARAMS]; /* every plain --set must name a real method and parameter */
     if ((rc = fs_method_params_resolve(fs_method_at(0), s, check))) return cli_error(rc);
     return FS_OK;
@@ -405,7 +429,9 @@ static int alloc_results(cmp_run *r)
         e->metrics = calloc((size_t)r->nrefs * r->nframes, sizeof *e->metrics);
         e->frame_ms = calloc(r->nframes, sizeof *e->frame_ms);
         e->runs = calloc(r->repeat, sizeof *e->runs);
-        if (!e->metrics || !e->frame_ms || !e->runs) return fs_fail(FS_ERR_RUNTIME, "out of memory");
+        e->counts = r->counters ? calloc(r->nframes, sizeof *e->counts) : NULL;
+        if (!e->metrics || !e->frame_ms || !e->runs || (r->counters && !e->counts))
+            return fs_fail(FS_ERR_RUNTIME, "out of memory");
     }
     return FS_OK;
 }
@@ -476,6 +502,7 @@ static int write_outputs(cmp_run *r, const cmp_options *o)
     if (!rc && r->nframes > 1) rc = cmp_write_temporal(r);
     if (!rc) rc = cmp_write_diffs(r);
     if (!rc) rc = cmp_write_panel(r);
+    if (!rc && r->counters) rc = cmp_write_counters(r);
     if (!rc) rc = cmp_write_report(r);
     return rc;
 }
@@ -487,6 +514,7 @@ static void free_results(cmp_run *r, fs_particles *frames_p, fs_grid *grids)
         free(r->entries[i].metrics);
         free(r->entries[i].frame_ms);
         free(r->entries[i].runs);
+        free(r->entries[i].counts);
     }
     for (int k = 0; k < r->nrefs; k++) {
         for (int f = 0; r->refs[k].frames && f < r->nframes; f++) free_view(&r->refs[k].frames[f]);
@@ -513,6 +541,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     if (!rc) rc = plan_references(r, o);
     if (rc) return rc;
     cli_cache_open(&r->cache, o->cache_dir, !o->no_cache, r->quiet);
+    r->cache.counters = r->counters; /* the references' counts come with their views */
     fs_particles *frames_p = calloc(r->nframes, sizeof *frames_p);
     fs_grid *grids = calloc(r->nframes, sizeof *grids);
     fs_gl_context ctx = {0};
@@ -538,7 +567,7 @@ int cmd_compare(int argc, char **argv)
     memset(r, 0, sizeof *r);
     const char *input = NULL, *out = NULL, *methods = NULL, *cache_dir = NULL;
     const char *refspecs[CMP_MAX_REFS + 1], *imports[CMP_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
-    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, rc;
+    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, counters = 0, rc;
     float radius = 0, nscale = 0, dscale = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     r->repeat = 3;
@@ -558,6 +587,8 @@ int cmd_compare(int argc, char **argv)
         CLI_OPT_CACHE(cache_dir, "the folder of cached reference G-buffers (default\n"
                       "$XDG_CACHE_HOME/fluidsurf, else ~/.cache/fluidsurf)"),
         CLI_FLAG_OPT("--no-cache", no_cache, "render every reference; read and write no cache"),
+        CLI_FLAG_OPT("--counters", counters, "also count each variant's and reference's work in a\n"
+                     "separate render after the timed ones: counters.csv"),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
         CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
         CLI_OPT_GL(ctx_kind),
@@ -574,7 +605,8 @@ int cmd_compare(int argc, char **argv)
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
     snprintf(r->outdir, sizeof r->outdir, "%s", out);
     quote_command(r->command, sizeof r->command, argc, argv);
+    r->counters = counters;
     const cmp_options o = {input, methods, refspecs, nrefspecs, imports, nimports, sets, nsets, w, h, radius, nscale,
-                           dscale, ctx_kind, cache_dir, no_cache};
+                           dscale, ctx_kind, cache_dir, no_cache, counters};
     return compare(r, &o);
 }

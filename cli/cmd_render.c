@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "counters_csv.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
@@ -27,6 +28,7 @@ typedef struct render_job {
     int nexports;
     fs_appearance look;
     int timings;                /* print the stage times */
+    int counters;               /* print the work counts of a counting render */
     cli_cache *cache;           /* --cache: the reference's view from it; NULL: none */
 } render_job;
 
@@ -40,13 +42,26 @@ static void print_timings(const fs_run *run, const fs_stages *st)
     }
 }
 
+/* The counts as CSV on stdout, under the provenance comment line. */
+static void print_counters(const fs_run *run, const render_job *job, const fs_stages *counts)
+{
+    fs_provenance prov;
+    char line[8192];
+    fs_run_provenance(run, NULL, job->frame, &prov);
+    fs_provenance_line(&prov, line, sizeof line);
+    printf("%s\n" CLI_COUNTERS_HEADER, line);
+    cli_counters_rows(stdout, job->m->name, "", job->frame, counts, job->m->counters);
+}
+
 /* The reference's view from the cache, or rendered and stored; the output file. */
-static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st)
+static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st,
+                      fs_stages *counts)
 {
     fs_run_image im = {0};
     fs_provenance prov;
     cli_cache_view made;
     int rc = cli_cache_render(job->cache, run, scene, p, NULL, NULL, job->frame, &im, st, &made);
+    if (!rc && job->counters) *counts = made.counts;
     fs_run_provenance(run, NULL, job->frame, &prov);
     if (!rc) rc = fs_write_render(job->out, &im.g, im.rgba, &prov);
     if (!rc && made.hit && !job->cache->quiet) fprintf(stderr, "fluidsurf: note: %s from the cache, %s\n", job->m->name, made.entry);
@@ -55,9 +70,10 @@ static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p,
 }
 
 /* Runs the method on one frame: exports, render, shading, the output file. */
-static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st)
+static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, const render_job *job, fs_stages *st,
+                   fs_stages *counts)
 {
-    if (job->cache && job->cache->on) return run_cached(run, scene, p, job, st);
+    if (job->cache && job->cache->on) return run_cached(run, scene, p, job, st, counts);
     int rc = fs_run_upload(run, p, NULL, st);
     for (int i = 0; !rc && i < job->nexports; i++) rc = fs_run_export(run, job->exports[i]);
     if (rc || !job->out) return rc;
@@ -77,10 +93,19 @@ static int render_one(const fs_scene *scene, const fs_particles *p, const render
 {
     fs_gl_context ctx = {0};
     fs_run *run = NULL;
+    fs_stages counts = {0};
+    int cached = job->cache && job->cache->on;
     int rc = job->m->needs_gl ? fs_gl_context_create(&ctx, kind, 16, 16) : FS_OK;
     if (!rc) rc = fs_run_open(&run, job->m, scene, job->params, job->m->needs_gl ? &ctx : NULL);
-    if (!rc) rc = run_job(run, scene, p, job, st);
+    if (!rc) rc = run_job(run, scene, p, job, st, &counts);
+    if (!rc && job->counters && !cached) { /* after the timed render, same inputs (docs/DESIGN.md, "Work counters") */
+        fs_run_image im = {0};
+        rc = fs_run_count(job->m, scene, job->params, job->m->needs_gl ? &ctx : NULL, p, NULL, &scene->camera, &im,
+                          &counts);
+        fs_run_image_free(&im);
+    }
     if (!rc && job->timings) print_timings(run, st);
+    if (!rc && job->counters) print_counters(run, job, &counts);
     fs_run_close(run);
     if (job->m->needs_gl) fs_gl_context_destroy(&ctx);
     return rc;
@@ -146,7 +171,7 @@ static int check_cache(const fs_method *m, const char *dir, const char *out)
 int cmd_render(int argc, char **argv)
 {
     const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL, *cache_dir = NULL;
-    int w = 0, h = 0, frame = -1, timings = 0, quiet = 0, own_look = 0, rc;
+    int w = 0, h = 0, frame = -1, timings = 0, counters = 0, quiet = 0, own_look = 0, rc;
     float radius = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     static fs_scene scene;
@@ -162,6 +187,8 @@ int cmd_render(int argc, char **argv)
         CLI_INT_OPT("--frame", frame, 0, 100000000, "N", "frame of a sequence scene (default: its first)"),
         CLI_OPT_GL(ctx_kind),
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the renderer they ran on"),
+        CLI_FLAG_OPT("--counters", counters, "print per-stage work counts (CSV) of a separate counting\n"
+                     "render after the timed one"),
         CLI_LIST_OPT("--export", exports, nexports, 4, "FILE",
                      "write the method's intermediate surface too (repeatable;\n"
                      "the kinds a method writes: fluidsurf methods NAME);\n"
@@ -185,6 +212,7 @@ int cmd_render(int argc, char **argv)
     if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
     if ((rc = check_outputs(m, input, out, exports, nexports, own_look))) return rc;
     if ((rc = check_cache(m, cache_dir, out))) return rc;
+    if (counters && (rc = fs_run_check_counters(m))) return cli_error(rc);
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
     for (int i = 0; i < nsets; i++)
@@ -199,7 +227,8 @@ int cmd_render(int argc, char **argv)
     if ((rc = frame_to_render(&scene, frame, &first))) return rc;
     static cli_cache cache;
     if (cache_dir) cli_cache_open(&cache, cache_dir, 0, quiet);
+    cache.counters = counters;
     const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED,
-                            timings, cache_dir ? &cache : NULL};
+                            timings, counters, cache_dir ? &cache : NULL};
     return load_and_render(&scene, &job, radius, quiet, ctx_kind, input);
 }

@@ -47,6 +47,7 @@ typedef struct cmp_entry {
     int nruns;
     char renderer[256];
     double temporal_deg; /* mean normal change between consecutive frames */
+    fs_stages *counts;   /* with --counters: nframes, the counting render's stages */
 } cmp_entry;
 
 typedef struct cmp_run {
@@ -54,6 +55,7 @@ typedef struct cmp_run {
     char outdir[1024];
     char command[4096];
     int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;
+    int counters;        /* --counters: a counting render per variant and frame */
     cmp_entry entries[CMP_MAX_ENTRIES];
     cmp_ref refs[CMP_MAX_REFS];
     double normal_scale_deg, depth_scale_r; /* heatmap scales, the same for every entry */
@@ -69,6 +71,7 @@ int cmp_write_temporal(const cmp_run *r);
 int cmp_write_diffs(const cmp_run *r);
 int cmp_write_panel(const cmp_run *r);
 int cmp_write_report(const cmp_run *r);
+int cmp_write_counters(const cmp_run *r);
 /* DIR/name into buf. */
 void cmp_path(const cmp_run *r, const char *name, char *buf, int size);
 

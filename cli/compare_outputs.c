@@ -1,10 +1,12 @@
 /* The files `compare` writes: CSVs, heatmaps, the panel and the report. Each is
  * written to a temporary file and renamed (output_file.h). */
 #include "compare.h"
+#include "counters_csv.h"
 #include "figure.h"
 #include "fs_error.h"
 #include "output_file.h"
 #include "stats.h"
+#include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -363,6 +365,54 @@ int cmp_write_panel(const cmp_run *r)
     return rc;
 }
 
+int cmp_write_counters(const cmp_run *r)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, "counters.csv", &cf);
+    if (rc) return rc;
+    FILE *f = cf.f;
+    provenance_header(r, f);
+    fputs(CLI_COUNTERS_HEADER, f);
+    for (int k = 0; k < r->nrefs; k++) {
+        const cmp_ref *ref = &r->refs[k];
+        for (int fr = 0; fr < r->nframes && !ref->analytic; fr++)
+            cli_counters_rows(f, ref->spec, "ground truth", r->first_frame + fr, &ref->made[fr].counts, ref->v.m->counters);
+    }
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        for (int fr = 0; fr < r->nframes && !e->imported; fr++)
+            cli_counters_rows(f, e->name, e->variant, r->first_frame + fr, &e->counts[fr], e->v.m->counters);
+    }
+    return cmp_close(&cf);
+}
+
+/* One row of the report's counter table: the first frame's totals. */
+static void md_counts(FILE *f, const char *name, const char *variant, const fs_stages *st, unsigned declared)
+{
+    fprintf(f, "| %s | %s", name, variant[0] ? variant : "—");
+    for (int c = 0; c < FS_NCOUNTERS; c++)
+        if (declared & FS_CNT_BIT(c)) fprintf(f, " | %" PRIu64, cli_counters_total(st, c));
+        else fputs(" | —", f);
+    fputs(" |\n", f);
+}
+
+static void write_counter_table(const cmp_run *r, FILE *f)
+{
+    fprintf(f, "## Work counters%s\n\n| method | variant", r->nframes > 1 ? " (first frame)" : "");
+    for (int c = 0; c < FS_NCOUNTERS; c++) fprintf(f, " | %s", fs_counter_name(c));
+    fputs(" |\n|---|---", f);
+    for (int c = 0; c < FS_NCOUNTERS; c++) fputs("|---", f);
+    fputs("|\n", f);
+    for (int k = 0; k < r->nrefs; k++)
+        if (!r->refs[k].analytic) md_counts(f, r->refs[k].spec, "ground truth", &r->refs[k].made[0].counts, r->refs[k].v.m->counters);
+    for (int i = 0; i < r->nentries; i++)
+        if (!r->entries[i].imported)
+            md_counts(f, r->entries[i].name, r->entries[i].variant, &r->entries[i].counts[0], r->entries[i].v.m->counters);
+    fputs("\nTotals over the stages of one counting render, made after the timed ones on the same inputs; "
+          "per stage and frame in `counters.csv`. The counts do not depend on the machine: docs/DESIGN.md "
+          "(\"Work counters\") defines each unit. — marks a counter the method does not report.\n\n", f);
+}
+
 static void md_num(FILE *f, double v, const char *fmt)
 {
     fputs(" | ", f);
@@ -431,6 +481,7 @@ int cmp_write_report(const cmp_run *r)
                "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",
             r->scene.radius, r->repeat, r->normal_scale_deg, r->depth_scale_r);
     write_ref_sources(r, f);
+    if (r->counters) write_counter_table(r, f);
     fputs("## Renderers\n\n", f);
     for (int i = 0; i < r->nentries; i++) fprintf(f, "- %s: %s\n", r->entries[i].label, r->entries[i].renderer);
     fputs("\nOn OSMesa (llvmpipe) the OpenGL stages run on the same CPU cores as the C code: these timings say nothing "

@@ -1,6 +1,7 @@
 #include "ref_cache.h"
 #include "fs_error.h"
 #include "render_key.h"
+#include "stage_counts.h"
 #include "timing.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,25 +48,42 @@ static int render_view(fs_run *run, const fs_scene *s, const fs_particles *p, co
     return rc;
 }
 
-/* The entry of key into im->g: 1 on a hit; a bad entry is named on stderr. */
-static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im)
+/* The entry of key into im->g (and its counts): 1 on a hit; a bad entry is
+ * named on stderr; one without the counts wanted is a miss. */
+static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im, fs_stages *counts)
 {
     fs_gbuffer g;
-    fs_gcache_result res = fs_gcache_load(&c->gc, key, s->camera.width, s->camera.height, &g);
+    char text[FS_GCACHE_COUNTS];
+    fs_gcache_result res = fs_gcache_load(&c->gc, key, s->camera.width, s->camera.height, &g, text, sizeof text);
     if (res == FS_GCACHE_BAD && !c->quiet)
         fprintf(stderr, "fluidsurf: warning: bad cache entry, rendering it again: %s\n", fs_error_message());
     if (res != FS_GCACHE_HIT) return 0;
+    if (c->counters && fs_stage_counts_parse(text, counts)) { /* made without counting: count now */
+        fs_gbuffer_free(&g);
+        return 0;
+    }
     fs_gbuffer_free(&im->g);
     im->g = g;
     return 1;
 }
 
 static void store_entry(cli_cache *c, fs_digest key, fs_run *run, const fs_provenance *base, int frame,
-                        const fs_run_image *im)
+                        const fs_run_image *im, const fs_stages *counts)
 {
     fs_provenance prov;
+    char text[FS_GCACHE_COUNTS] = "";
     fs_run_provenance(run, base, frame, &prov);
-    if (fs_gcache_store(&c->gc, key, &im->g, im->rgba, &prov)) turn_off(c);
+    if (counts && fs_stage_counts_format(counts, text, sizeof text)) text[0] = 0; /* too long: stored without */
+    if (fs_gcache_store(&c->gc, key, &im->g, im->rgba, &prov, text)) turn_off(c);
+}
+
+/* The counting render after the timed one, on the same inputs. */
+static int count_view(fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g, fs_stages *counts)
+{
+    fs_run_image cim = {0};
+    int rc = fs_run_count(fs_run_method(run), s, fs_run_values(run), NULL, p, g, &s->camera, &cim, counts);
+    fs_run_image_free(&cim);
+    return rc;
 }
 
 /* The floor an upload of p would set (the grid's bulk, or the particles'). */
@@ -81,12 +99,15 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     fs_stages local = {0};
     if (!st) st = &local;
     memset(out, 0, sizeof *out);
-    if (!c->on) return render_view(run, s, p, g, im, st);
+    if (!c->on) {
+        int rc = render_view(run, s, p, g, im, st);
+        return !rc && c->counters ? count_view(run, s, p, g, &out->counts) : rc;
+    }
     double t0 = fs_now_ms();
     fs_field f = fs_scene_field(s);
     fs_digest key = fs_render_key(fs_run_method(run), fs_run_values(run), &f, &s->camera, p);
     fs_gcache_entry(&c->gc, key, out->entry, sizeof out->entry);
-    if ((out->hit = load_entry(c, key, s, im))) {
+    if ((out->hit = load_entry(c, key, s, im, &out->counts))) {
         fs_stages_add(st, "cache", fs_now_ms() - t0);
         fs_run_set_floor(run, floor_y(s, p, g)); /* what an upload would set */
         return fs_run_shade(run, &s->camera, im, FS_APPEARANCE_SHARED, st);
@@ -94,9 +115,10 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     double lookup = fs_now_ms() - t0;
     fs_run_set_floor(run, floor_y(s, p, g)); /* a hit before may have set another frame's */
     int rc = render_view(run, s, p, g, im, st);
+    if (!rc && c->counters) rc = count_view(run, s, p, g, &out->counts);
     if (rc) return rc;
     double t1 = fs_now_ms();
-    store_entry(c, key, run, base, frame, im);
+    store_entry(c, key, run, base, frame, im, c->counters ? &out->counts : NULL);
     if (!c->on) out->entry[0] = 0;
     fs_stages_add(st, "cache_store", lookup + fs_now_ms() - t1);
     return FS_OK;

@@ -10,6 +10,7 @@ typedef struct cli_cache {
     fs_gcache gc;
     int on;          /* 0: no cache (turned off, or its folder is unusable) */
     int quiet;       /* no note about a bad entry */
+    int counters;    /* views come with the work counts of a counting render */
     char why[1200];  /* why it is off, for the report */
 } cli_cache;
 
@@ -22,13 +23,16 @@ void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet);
 typedef struct cli_cache_view {
     int hit;                     /* loaded from the cache */
     char entry[FS_GCACHE_PATH];  /* the entry file; "" without a cache */
+    fs_stages counts;            /* with c->counters: the counts (from the entry on a hit) */
 } cli_cache_view;
 
 /* Frame p's view of run into im: from the cache (stage "cache", the time to
  * hash the key and load and check the entry, then "shade"), or uploaded
  * (grid g, or NULL to build one), rendered and shaded (the run's stages),
  * then stored (stage "cache_store"). base and frame give the entry's
- * provenance (fs_run_provenance). A bad entry is re-rendered and replaced. */
+ * provenance (fs_run_provenance). A bad entry is re-rendered and replaced.
+ * With c->counters a counting render follows the timed one and its counts are
+ * stored in the entry; an entry without counts is then a miss. */
 int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
                      const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out);
 

@@ -15,6 +15,8 @@
 
 #define DIR_ FS_TEST_OUT "/gbuffer_cache/a/b" /* parents made too */
 
+static char counts[FS_GCACHE_COUNTS]; /* the work counts an entry came back with */
+
 static fs_digest key_n(uint64_t n)
 {
     fs_hash h;
@@ -61,7 +63,7 @@ static int temp_files_left(const char *dir)
 static fs_gcache_result load(const fs_gcache *c, fs_digest k, int w, int h)
 {
     fs_gbuffer g;
-    fs_gcache_result r = fs_gcache_load(c, k, w, h, &g);
+    fs_gcache_result r = fs_gcache_load(c, k, w, h, &g, counts, sizeof counts);
     CHECK((r == FS_GCACHE_HIT) == (g.depth != NULL), "a G-buffer comes back exactly on a hit");
     fs_gbuffer_free(&g);
     return r;
@@ -96,9 +98,9 @@ static void test_roundtrip_and_bad(void)
     fs_provenance_init_base(&prov, NULL, NULL);
     fs_digest k = key_n(1), k2 = key_n(2);
     CHECK(load(&c, k, 16, 8) == FS_GCACHE_MISS, "an empty cache misses");
-    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov) == 0, "store: %s", fs_error_message());
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, NULL) == 0, "store: %s", fs_error_message());
     CHECK(temp_files_left(DIR_) == 0, "a temporary file is left behind");
-    CHECK(fs_gcache_load(&c, k, 16, 8, &back) == FS_GCACHE_HIT, "hit: %s", fs_error_message());
+    CHECK(fs_gcache_load(&c, k, 16, 8, &back, counts, sizeof counts) == FS_GCACHE_HIT, "hit: %s", fs_error_message());
     CHECK(back.depth && same_gbuffer(&g, &back), "the entry differs from what was stored");
     fs_gbuffer_free(&back);
     CHECK(load(&c, k2, 16, 8) == FS_GCACHE_MISS, "another key misses");
@@ -130,7 +132,22 @@ static void test_roundtrip_and_bad(void)
     CHECK(fs_write_exr(path, &img, p2.attr, p2.n) == 0, "write");
     CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "no channel 'depth'"), "channel: %s", fs_error_message());
     /* a store replaces a bad entry */
-    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store over a bad entry");
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, NULL) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store over a bad entry");
+    CHECK(!counts[0], "an entry stored without work counts brings back none: '%s'", counts);
+    /* the work counts come back, and are covered by the content check */
+    const char *text = "1:march=12,34,5,0,0,7";
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, text) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store with counts");
+    CHECK(!strcmp(counts, text), "the counts come back: '%s'", counts);
+    fs_provenance p3 = prov;
+    for (int i = 0; i < p3.n; i++) { p3.attr[i].name = p3.name[i]; p3.attr[i].value = p3.value[i]; }
+    fs_digest_hex(k, hex);
+    fs_provenance_set(&p3, "cache_key", hex);
+    fs_digest_hex(fs_gcache_data_hash(&g), hex);
+    fs_provenance_set(&p3, "cache_data", hex);
+    fs_provenance_set(&p3, "counters", "1:march=99,34,5,0,0,7");
+    fs_gcache_entry(&c, k, path, sizeof path);
+    CHECK(fs_write_render(path, &g, rgba, &p3) == 0, "write");
+    CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD, "altered counts are caught by the content check");
     fs_gbuffer_free(&g);
     free(rgba);
 }

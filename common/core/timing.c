@@ -14,15 +14,17 @@ void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms)
 {
     int i = 0;
     while (i < s->n && strcmp(s->name[i], name)) i++;
+    if (i == FS_MAX_STAGES) return;
     if (i == s->n) {
-        if (s->n == FS_MAX_STAGES) return;
         s->name[i] = name;
         s->ms[i] = 0;
         s->gpu_ms[i] = NAN;
+        memset(s->count[i], 0, sizeof s->count[i]);
         s->n++;
     }
     s->ms[i] += ms;
     if (!isnan(gpu_ms)) s->gpu_ms[i] = isnan(s->gpu_ms[i]) ? gpu_ms : s->gpu_ms[i] + gpu_ms;
+    if (fs_counting) fs_counters_attribute(s->count[i], name);
 }
 
 void fs_stages_add(fs_stages *s, const char *name, double ms) { fs_stages_add_gpu(s, name, ms, NAN); }

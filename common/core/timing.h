@@ -3,6 +3,7 @@
  * queries are not trustworthy (docs/DESIGN.md), a real GPU's are. */
 #ifndef FS_TIMING_H
 #define FS_TIMING_H
+#include "counters.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -14,10 +15,13 @@ typedef struct fs_stages {
     const char *name[FS_MAX_STAGES];
     double ms[FS_MAX_STAGES];
     double gpu_ms[FS_MAX_STAGES]; /* GL timestamp difference; NaN for a stage without one */
+    /* work counts per stage, filled only while counting (counters.h) */
+    uint64_t count[FS_MAX_STAGES][FS_NCOUNTERS];
 } fs_stages;
 
 double fs_now_ms(void); /* CLOCK_MONOTONIC in milliseconds */
-/* Adds ms to the stage called name (created on first use; names are static strings). */
+/* Adds ms to the stage called name (created on first use; names are static
+ * strings); while counting, also the pending work counts. */
 void fs_stages_add(fs_stages *s, const char *name, double ms);
 /* The same, with the GL clock's time of the stage (NaN: none; kept NaN until one comes). */
 void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms);

@@ -1,6 +1,7 @@
 /* Yu & Turk 2013 anisotropy (anisotropy.h). Sums run relative to the point in
  * double precision; the GLSL version does the same algebra in float. */
 #include "anisotropy.h"
+#include "counters.h"
 #include "eigen3.h"
 #include "fs_error.h"
 #include <math.h>
@@ -59,10 +60,12 @@ static void visit(void *user, uint32_t slot, float dist2)
     a->see[5] += w * e[2] * e[2];
 }
 
-int fs_aniso_point(const fs_grid *g, const float x[3], const fs_aniso_params *ap, float centre[3], float A[9])
+/* fs_aniso_point; *tested gets the particles whose distance the query computed. */
+static int aniso_point(const fs_grid *g, const float x[3], const fs_aniso_params *ap, float centre[3], float A[9],
+                       size_t *tested)
 {
     acc a = {g, ap, {x[0], x[1], x[2]}, 0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}, 0};
-    fs_grid_query(g, x, ap->radius, visit, &a);
+    *tested = fs_grid_query(g, x, ap->radius, visit, &a);
     memset(A, 0, 9 * sizeof *A);
     A[0] = A[4] = A[8] = 1;
     for (int k = 0; k < 3; k++) centre[k] = x[k];
@@ -93,6 +96,12 @@ int fs_aniso_point(const fs_grid *g, const float x[3], const fs_aniso_params *ap
     return a.n;
 }
 
+int fs_aniso_point(const fs_grid *g, const float x[3], const fs_aniso_params *ap, float centre[3], float A[9])
+{
+    size_t tested;
+    return aniso_point(g, x, ap, centre, A, &tested);
+}
+
 int fs_aniso_compute(const fs_particles *p, const fs_grid *g, const fs_aniso_params *ap, float *centre, float *A,
                      float *max_axis)
 {
@@ -102,10 +111,13 @@ int fs_aniso_compute(const fs_particles *p, const fs_grid *g, const fs_aniso_par
     if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "anisotropy: grid holds %zu particles, the set %zu", g->n, p->n);
     float mx = 1;
     long n = (long)p->n;
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : mx)
+    uint64_t visits = 0; /* work counters: the neighbours looked at */
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : mx) reduction(+ : visits)
     for (long i = 0; i < n; i++) {
         float x[3] = {p->x[i], p->y[i], p->z[i]}, *Ai = A + 9 * i;
-        fs_aniso_point(g, x, ap, centre + 3 * i, Ai);
+        size_t tested;
+        aniso_point(g, x, ap, centre + 3 * i, Ai, &tested);
+        visits += tested;
         /* Largest axis: the largest eigenvalue, bounded by the Frobenius norm. */
         float f = 0;
         for (int k = 0; k < 9; k++) f += Ai[k] * Ai[k];
@@ -113,5 +125,6 @@ int fs_aniso_compute(const fs_particles *p, const fs_grid *g, const fs_aniso_par
         if (f > mx) mx = f;
     }
     if (max_axis) *max_axis = mx;
+    fs_count_add(FS_CNT_NEIGHBOURS, visits);
     return FS_OK;
 }

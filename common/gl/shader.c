@@ -1,6 +1,8 @@
 #include "shader.h"
+#include "counters.h"
 #include "fs_error.h"
 #include "gl.h"
+#include "gl_counters.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,8 +146,21 @@ static GLenum stage_type(const char *name)
     return 0;
 }
 
-unsigned fs_program_build(const char *const *stages, const char *defines)
+/* defines, plus the counter defines while counting (gl_counters.h): the
+ * counting render's programs are variants, the timed render's are untouched. */
+static char *with_counters(const char *defines)
 {
+    if (!fs_counting) return defines ? strdup(defines) : NULL;
+    const char *cd = fs_gl_counter_defines();
+    size_t n = (defines ? strlen(defines) + 1 : 0) + strlen(cd) + 1;
+    char *s = malloc(n);
+    if (s) snprintf(s, n, "%s%s%s", defines ? defines : "", defines ? "\n" : "", cd);
+    return s;
+}
+
+unsigned fs_program_build(const char *const *stages, const char *defines_in)
+{
+    char *defines = with_counters(defines_in);
     GLuint prog = glCreateProgram();
     GLuint sh[8];
     int nsh = 0;
@@ -187,8 +202,10 @@ unsigned fs_program_build(const char *const *stages, const char *defines)
     for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
     free(map.file);
     free(map.line);
+    free(defines);
     return prog;
 fail:
+    free(defines);
     free(map.file);
     free(map.line);
     for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);

@@ -43,6 +43,9 @@ typedef struct fs_method {
     const char *exports;     /* what export_file writes, for `methods` (NULL: nothing) */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
     int grid_use;            /* FS_GRID_KEPT (0), FS_GRID_AT_UPLOAD or FS_GRID_UNUSED, below */
+    /* The work counters it reports (FS_CNT_BIT of counters.h, or-ed); 0: none
+     * yet, and --counters refuses it. */
+    unsigned counters;
     /* The AOVs render() fills (render finds each in out by name); a method with
      * its own appearance declares FS_AOV_OWN. */
     const fs_aov_def *aovs;

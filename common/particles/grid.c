@@ -318,12 +318,14 @@ int fs_grid_build(fs_grid *g, const fs_particles *p, float cell)
 }
 
 /* Visits the particles within r2 of x in the cells of row (i0..i1, j, k). */
-static void query_row(const fs_grid *g, int i0, int i1, int j, int k, const float x[3], float r2, fs_grid_visit fn,
-                      void *user)
+static size_t query_row(const fs_grid *g, int i0, int i1, int j, int k, const float x[3], float r2, fs_grid_visit fn,
+                        void *user)
 {
     uint32_t s0, s1;
+    size_t tested = 0;
     for (int i = i0, e; i <= i1; i = e + 1) {
         e = fs_grid_row_run(g, i, i1, j, k, &s0, &s1);
+        tested += s1 - s0;
         for (uint32_t s = s0; s < s1; s++) {
             const float *q = g->pos4 + 4 * (size_t)s;
             float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
@@ -331,22 +333,25 @@ static void query_row(const fs_grid *g, int i0, int i1, int j, int k, const floa
             if (d2 <= r2) fn(user, s, d2);
         }
     }
+    return tested;
 }
 
-void fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_visit fn, void *user)
+size_t fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_visit fn, void *user)
 {
-    if (!g->n || !(radius >= 0)) return;
+    if (!g->n || !(radius >= 0)) return 0;
     int lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
         lo[a] = fs_grid_coord(g, a, x[a] - radius);
         hi[a] = fs_grid_coord(g, a, x[a] + radius);
-        if (hi[a] < g->lo[a] || lo[a] > g->hi[a]) return; /* the ball misses every stored cell */
+        if (hi[a] < g->lo[a] || lo[a] > g->hi[a]) return 0; /* the ball misses every stored cell */
         if (lo[a] < g->lo[a]) lo[a] = g->lo[a];
         if (hi[a] > g->hi[a]) hi[a] = g->hi[a];
     }
     float r2 = radius * radius;
+    size_t tested = 0;
     for (int k = lo[2]; k <= hi[2]; k++)
-        for (int j = lo[1]; j <= hi[1]; j++) query_row(g, lo[0], hi[0], j, k, x, r2, fn, user);
+        for (int j = lo[1]; j <= hi[1]; j++) tested += query_row(g, lo[0], hi[0], j, k, x, r2, fn, user);
+    return tested;
 }
 
 int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid *own, int *has_own,

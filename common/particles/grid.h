@@ -141,9 +141,10 @@ static inline int fs_grid_near_occupied(const fs_grid *g, int i, int j, int k)
 int fs_grid_box_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_t runs[][2]);
 
 /* Calls fn(user, sorted_slot, dist2) for every particle within radius of x.
- * radius may exceed the cell size (more cells are visited). */
+ * radius may exceed the cell size (more cells are visited). Returns the
+ * particles whose distance it computed (for the work counters). */
 typedef void (*fs_grid_visit)(void *user, uint32_t slot, float dist2);
-void fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_visit fn, void *user);
+size_t fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_visit fn, void *user);
 
 #ifdef __cplusplus
 }

@@ -12,6 +12,7 @@
 
 #define KEY_ATTR "fluidsurf:cache_key"
 #define DATA_ATTR "fluidsurf:cache_data"
+#define COUNTS_ATTR "fluidsurf:counters"
 
 /* mkdir -p: each missing folder of path, 0755. */
 static int make_folders(const char *path)
@@ -88,6 +89,19 @@ fs_digest fs_gcache_data_hash(const fs_gbuffer *g)
     return fs_hash_digest(&h);
 }
 
+/* What cache_data holds: the G-buffer's hash, and with work counts the hash of
+ * both (an entry without counts keeps the hash it always had). */
+static fs_digest entry_hash(const fs_gbuffer *g, const char *counts)
+{
+    fs_digest d = fs_gcache_data_hash(g);
+    if (!counts || !*counts) return d;
+    fs_hash h;
+    fs_hash_init(&h);
+    fs_hash_bytes(&h, &d, sizeof d);
+    fs_hash_str(&h, counts);
+    return fs_hash_digest(&h);
+}
+
 /* The entry's attribute name equals want: FS_OK, else BAD with the reason. */
 static int check_attr(const char *path, const char *name, const char *want, const char *what)
 {
@@ -99,23 +113,27 @@ static int check_attr(const char *path, const char *name, const char *want, cons
     return FS_OK;
 }
 
-/* Reads the pixels and checks their size and contents. */
-static int read_checked(const char *path, int w, int h, fs_gbuffer *g)
+/* Reads the pixels and the counts and checks their size and contents. */
+static int read_checked(const char *path, int w, int h, fs_gbuffer *g, char *counts, int size)
 {
     float *rgba = NULL, r;
     int rc = fs_read_render(path, g, &rgba, &r);
     free(rgba);
     if (rc) return rc;
     char hex[FS_DIGEST_HEX];
+    int found = fs_read_image_attr(path, COUNTS_ATTR, counts, size);
+    if (found <= 0) counts[0] = 0;
     if (g->w != w || g->h != h) rc = fs_fail(FS_ERR_INPUT, "%s: %dx%d, expected %dx%d", path, g->w, g->h, w, h);
-    else fs_digest_hex(fs_gcache_data_hash(g), hex);
+    else fs_digest_hex(entry_hash(g, counts), hex);
     if (!rc) rc = check_attr(path, DATA_ATTR, hex, "contents fail their check (corrupt)");
     if (rc) fs_gbuffer_free(g);
     return rc;
 }
 
-fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g)
+fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts,
+                                int size)
 {
+    counts[0] = 0;
     char path[FS_GCACHE_PATH], hex[FS_DIGEST_HEX];
     struct stat st;
     memset(g, 0, sizeof *g);
@@ -124,11 +142,11 @@ fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h,
     if (!S_ISREG(st.st_mode)) { fs_fail(FS_ERR_INPUT, "%s: not a regular file", path); return FS_GCACHE_BAD; }
     fs_digest_hex(key, hex);
     if (check_attr(path, KEY_ATTR, hex, "holds another key (a stale entry or a name collision)")) return FS_GCACHE_BAD;
-    return read_checked(path, w, h, g) ? FS_GCACHE_BAD : FS_GCACHE_HIT;
+    return read_checked(path, w, h, g, counts, size) ? FS_GCACHE_BAD : FS_GCACHE_HIT;
 }
 
 int fs_gcache_store(const fs_gcache *c, fs_digest key, const fs_gbuffer *g, const float *rgba,
-                    const fs_provenance *prov)
+                    const fs_provenance *prov, const char *counts)
 {
     fs_provenance p;
     char path[FS_GCACHE_PATH], hex[FS_DIGEST_HEX];
@@ -139,8 +157,9 @@ int fs_gcache_store(const fs_gcache *c, fs_digest key, const fs_gbuffer *g, cons
     }
     fs_digest_hex(key, hex);
     fs_provenance_set(&p, "cache_key", hex);
-    fs_digest_hex(fs_gcache_data_hash(g), hex);
+    fs_digest_hex(entry_hash(g, counts), hex);
     fs_provenance_set(&p, "cache_data", hex);
+    if (counts && *counts) fs_provenance_set(&p, "counters", counts);
     fs_gcache_entry(c, key, path, sizeof path);
     return fs_write_render(path, g, rgba, &p);
 }

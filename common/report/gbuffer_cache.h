@@ -12,6 +12,7 @@ extern "C" {
 #endif
 
 #define FS_GCACHE_PATH 1100
+#define FS_GCACHE_COUNTS 640 /* the work counts' text (stage_counts.h), as a provenance value */
 
 typedef struct fs_gcache {
     char dir[FS_GCACHE_PATH - 64]; /* room for "/gbuffer-<hex>.exr" */
@@ -29,13 +30,17 @@ int fs_gcache_open(fs_gcache *c, const char *dir);
 /* DIR/gbuffer-<the key's first 64 bits in hex>.exr */
 void fs_gcache_entry(const fs_gcache *c, fs_digest key, char *path, int size);
 /* The entry of key, expected w x h, into g (allocated here on a hit, empty
- * otherwise). A file that is unreadable, truncated, of another size, lacks a
- * channel, holds another key or fails the content check is BAD, never a hit. */
-fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g);
-/* Stores g (rgba: its shaded image, kept so the entry can be viewed) under key,
+ * otherwise) and the work counts it was stored with into counts ("" when
+ * none). A file that is unreadable, truncated, of another size, lacks a
+ * channel, holds another key or fails the content check (which covers the
+ * counts) is BAD, never a hit. */
+fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts,
+                                int size);
+/* Stores g (rgba: its shaded image, kept so the entry can be viewed) and the
+ * work counts' text (attribute fluidsurf:counters; NULL or "": none) under key,
  * atomically (a temporary file in the folder, renamed), replacing any entry. */
 int fs_gcache_store(const fs_gcache *c, fs_digest key, const fs_gbuffer *g, const float *rgba,
-                    const fs_provenance *prov);
+                    const fs_provenance *prov, const char *counts);
 /* The hash of g as fs_read_render brings it back: size, coverage, depth and
  * normal where covered, thickness, every AOV by name. */
 fs_digest fs_gcache_data_hash(const fs_gbuffer *g);

@@ -79,6 +79,18 @@ void fs_run_provenance(const fs_run *r, const fs_provenance *base, int frame, fs
  * the CPU; the method's own stages ran on fs_run_renderer. */
 const char *fs_run_stage_renderer(const fs_run *r, const char *stage);
 
+/* The counting render (docs/DESIGN.md, "Work counters"): a fresh run of m
+ * with these values on context ctx (NULL for a CPU method), opened, uploaded
+ * (grid g, or NULL to build one) and rendered once with counting on, so its
+ * programs are the counting variants and the timed runs' are untouched. im
+ * gets the G-buffer, st the stages with their counts. FS_ERR_INPUT when m
+ * declares no counters; FS_ERR_RUNTIME naming the counter and stage when one
+ * overflowed. Counting is off again on return. */
+int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, const fs_gl_context *ctx,
+                 const fs_particles *p, const fs_grid *g, const fs_camera *cam, fs_run_image *im, fs_stages *st);
+/* FS_ERR_INPUT (fs_fail) naming m when it reports no work counters. */
+int fs_run_check_counters(const fs_method *m);
+
 #ifdef __cplusplus
 }
 #endif

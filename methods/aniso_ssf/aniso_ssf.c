@@ -288,6 +288,8 @@ const fs_method fs_method_aniso_ssf = {
     .paper = "xu2022",
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
+    .counters = FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) |
+                FS_CNT_BIT(FS_CNT_TEXELS),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(aniso_ssf_params),

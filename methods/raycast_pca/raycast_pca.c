@@ -284,6 +284,8 @@ const fs_method fs_method_raycast_pca = {
     .paper = "xiao2017",
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
+    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
+                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

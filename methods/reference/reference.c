@@ -227,15 +227,18 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
  * a tile walk the same cells, and a tile is enough work to hide the schedule. */
 #define FS_REF_TILE 16
 
-/* One pixel's ray into the G-buffer. */
+/* One pixel's ray into the G-buffer; its work added to w. */
 static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                        fs_gbuffer *out)
+                        fs_gbuffer *out, ray_work *w)
 {
     float d[3];
     ray_result res;
     fs_camera_ray(cam, px + 0.5f, py + 0.5f, d);
     if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
+    w->evals += res.w.evals;
+    w->samples += res.w.samples;
+    w->nbrs += res.w.nbrs;
     size_t id = (size_t)py * cam->width + px;
     out->thickness[id] = res.thick;
     if (!res.hit) return;
@@ -322,13 +325,17 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 #pragma omp parallel num_threads(nth)
     {
         void *buf = bufs + (size_t)omp_get_thread_num() * per;
+        ray_work w = {0}; /* this thread's rays */
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < tw * th; tile++) {
             int x0 = tile % tw * FS_REF_TILE, y0 = tile / tw * FS_REF_TILE;
             for (int py = y0; py < y0 + FS_REF_TILE && py < cam->height; py++)
                 for (int px = x0; px < x0 + FS_REF_TILE && px < cam->width; px++)
-                    shade_pixel(R, cam, fwd, px, py, buf, out);
+                    shade_pixel(R, cam, fwd, px, py, buf, out, &w);
         }
+        fs_count_add(FS_CNT_FIELD_EVALS, w.evals);
+        fs_count_add(FS_CNT_NEIGHBOURS, w.nbrs);
+        fs_count_add(FS_CNT_MARCH_SAMPLES, w.samples);
     }
     free(bufs);
     if (st) fs_stages_add(st, "march", fs_now_ms() - t0); /* the bounds are built in upload */
@@ -340,6 +347,7 @@ const fs_method fs_method_reference = {
     .description = "exact CPU ray caster of the SPH iso-surface (safe steps, bisection, analytic normals)",
     .paper = "",
     .needs_gl = 0,
+    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(reference_params),

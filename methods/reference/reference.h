@@ -53,7 +53,14 @@ typedef struct reference {
 /* Quantisation of the sub-cell bounds: value v is stored as v / (iso / FS_REF_Q). */
 #define FS_REF_Q 64
 
+/* One ray's work (docs/DESIGN.md, "Work counters"), counted in the ray's
+ * result and added up per thread; the sums over particles are not touched. */
+typedef struct ray_work {
+    uint64_t evals, samples, nbrs;
+} ray_work;
+
 typedef struct ray_result {
+    ray_work w;
     int hit;
     float t;        /* ray distance of the first hit */
     float n[3];     /* world normal, -grad phi normalised */

@@ -7,6 +7,7 @@
  * margin far above the float error of the sums), so the classes they give are
  * proven: hi < FS_REF_Q means phi < iso everywhere, lo >= FS_REF_Q phi >= iso.
  * Built by gathering, in parallel over blocks: no locks, no atomics. */
+#include "counters.h"
 #include "fs_error.h"
 #include "reference.h"
 #include <math.h>
@@ -77,9 +78,12 @@ static void add_bounds(const fs_field *f, const float p[3], float b[3][64], int 
     }
 }
 
-/* Bounds of the sub-cells of cell c, slot `slot`. */
-static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, float *dn)
+/* Bounds of the sub-cells of cell c, slot `slot`; returns the particle-box
+ * distances it computed (work counters: one per particle for the cell, one
+ * per sub-cell for each particle that reaches it). */
+static uint64_t cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, float *dn)
 {
+    uint64_t visits = 0;
     const fs_grid *g = R->g;
     const fs_field *f = &R->f;
     int sub = R->sub, nsub = sub * sub * sub, lo[3], hi[3];
@@ -102,7 +106,8 @@ static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, 
         for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
             float p[3] = {R->sx[s], R->sy[s], R->sz[s]}, n2, f2;
             box_dist2(p, corner, g->cell, &n2, &f2);
-            if (n2 < H2) add_bounds(f, p, b, nsub, e, up, dn); /* else it cannot reach the cell */
+            visits++;
+            if (n2 < H2) { add_bounds(f, p, b, nsub, e, up, dn); visits += (uint64_t)nsub; } /* else it cannot reach the cell */
         }
     float q = f->iso / FS_REF_Q;
     size_t base = (size_t)slot * (size_t)nsub;
@@ -111,6 +116,7 @@ static void cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, 
         R->hi[base + k] = (uint8_t)(u > 255 ? 255 : (u < 0 ? 0 : u));
         R->lo[base + k] = (uint8_t)(l > 255 ? 255 : (l < 0 ? 0 : l));
     }
+    return visits;
 }
 
 int fs_ref_bounds_build(reference *R)
@@ -127,7 +133,8 @@ int fs_ref_bounds_build(reference *R)
         return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu sub-cell bounds", total);
     }
     long nb = (long)g->nblocks;
-#pragma omp parallel
+    uint64_t visits = 0, cells = 0;
+#pragma omp parallel reduction(+ : visits, cells)
     {
         float up[64], dn[64];
 #pragma omp for schedule(dynamic, 4)
@@ -138,9 +145,13 @@ int fs_ref_bounds_build(reference *R)
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                cell_bounds(R, c, slot, up, dn);
+                visits += cell_bounds(R, c, slot, up, dn);
+                cells++;
             }
     }
+    /* one bound of phi (upper and lower, in one pass) per sub-cell */
+    fs_count_add(FS_CNT_FIELD_EVALS, cells * nsub);
+    fs_count_add(FS_CNT_NEIGHBOURS, visits);
     return FS_OK;
 }
 

@@ -131,6 +131,14 @@ static float field_sum(const reference *R, const near_soa *N, float t, float s, 
     return sum * kernel_c(f) * f->volume;
 }
 
+/* field_sum, counted as one field evaluation over the gathered particles. */
+static inline float field_counted(const reference *R, const near_soa *N, float t, float s, int mode, ray_work *w)
+{
+    w->evals++;
+    w->nbrs += (uint64_t)N->n;
+    return field_sum(R, N, t, s, mode);
+}
+
 /* grad phi at local t (world axes), as reference_plain.c's grad_at. */
 static void grad_at(const reference *R, const near_soa *N, const float d[3], float t, float gr[3])
 {
@@ -213,7 +221,8 @@ static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const 
 }
 
 /* Gathers the particles within reach of the stretch o + u d, u in [0, len], of cell c. */
-static void gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_soa *N)
+static void gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_soa *N,
+                   ray_work *w)
 {
     const fs_grid *g = R->g;
     float H = R->reach;
@@ -228,21 +237,23 @@ static void gather(const reference *R, const int c[3], const float o[3], const f
     }
     uint32_t runs[FS_GRID_MAX_RUNS][2];
     int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
-    for (int r = 0; r < nr; r++)
+    for (int r = 0; r < nr; r++) {
         n = R->inv ? gather_run_aniso(R, runs[r][0], runs[r][1], d, len, N, n)
                    : gather_run_iso(R, runs[r][0], runs[r][1], d, len, N, n);
+        w->nbrs += runs[r][1] - runs[r][0];
+    }
     N->n = n;
 }
 
 /* As reference_plain.c's safe_step, on the gathered arrays. */
 static int safe_step(const reference *R, const near_soa *N, const march *m, float t, float rem, float lip,
-                     float *s_out, float *g_end)
+                     float *s_out, float *g_end, ray_work *w)
 {
     float s_lip = fabsf(m->g) / lip, floor_s = s_lip > R->step_min ? s_lip : R->step_min;
     float s = 2.0f * m->s_prev > floor_s ? 2.0f * m->s_prev : floor_s;
     s = s < rem ? s : rem;
     while (s > floor_s) {
-        float b = field_sum(R, N, t, s, m->inside ? 2 : 1);
+        float b = field_counted(R, N, t, s, m->inside ? 2 : 1, w);
         if (m->inside ? b >= R->f.iso : b < R->f.iso) {
             *s_out = s;
             *g_end = b - R->f.iso;
@@ -264,6 +275,8 @@ static int crossing(fast_ray *F, float t0, float tc)
         if (!res->hit) {
             float gr[3];
             grad_at(R, &F->N, F->d, tc, gr);
+            res->w.evals++;
+            res->w.nbrs += (uint64_t)F->N.n;
             float l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
             for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -F->d[a];
             res->hit = 1;
@@ -304,7 +317,8 @@ static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, fl
         t = t < a + q ? a + q : (t > b - q ? b - q : t);
         if (t <= a || t >= b) t = 0.5f * (a + b); /* a + q rounded to a: tol is below the floats' spacing here */
         if (t <= a || t >= b) break;             /* the bracket is two adjacent floats: as tight as it gets */
-        float g = field_sum(R, &F->N, t, 0, 0) - R->f.iso;
+        float g = field_counted(R, &F->N, t, 0, 0, &F->res->w) - R->f.iso;
+        F->res->w.samples++;
         if ((g >= 0) == inside) {
             a = t; g_lo = g;
             if (keep == 1) g_hi *= 0.5f;
@@ -325,17 +339,20 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
     const reference *R = F->R;
     march *m = &F->m;
     float iso = R->f.iso, tol = 1e-5f * R->f.r; /* finer than the plain path: halves the gap between them */
+    ray_work *w = &F->res->w;
     if (!m->started) {
-        m->g = field_sum(R, &F->N, u0, 0, 0) - iso;
+        m->g = field_counted(R, &F->N, u0, 0, 0, w) - iso;
+        w->samples++;
         m->inside = m->g >= 0;
         m->counting = 0;
         m->started = 1;
     }
     for (float t = u0; t < u1;) {
         float rem = u1 - t, s, gn;
-        int proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn);
+        int proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn, w);
         float tn = s >= rem ? u1 : t + s;
-        if (!proven) gn = field_sum(R, &F->N, tn, 0, 0) - iso;
+        if (!proven) gn = field_counted(R, &F->N, tn, 0, 0, w) - iso;
+        w->samples++; /* the step's end, sampled or proven */
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         float lo = t, hi = tn;
         locate(F, &lo, &hi, m->g, gn, tol);
@@ -428,7 +445,7 @@ static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, f
             if (edge0 < 0) edge0 = ts;
             if (last || next_cls != FS_REF_EDGE) { /* the run of marched sub-cells ends here */
                 float end = last ? t_out : te;
-                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N); gathered = 1; }
+                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N, &F->res->w); gathered = 1; }
                 if (F->N.n) {
                     if (march_range(F, t, edge0 - t, end - t, lip)) return 1;
                 } else {
@@ -463,7 +480,7 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
     if (cnt) {
         const float *o = F->o, *d = F->d;
         float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-        gather(R, c, o_loc, d, t_out - t, &F->N);
+        gather(R, c, o_loc, d, t_out - t, &F->N, &F->res->w);
         if (F->N.n) return march_range(F, t, 0, t_out - t, lip);
     }
     fs_ref_leave_fluid(&F->m, F->res, t, R);

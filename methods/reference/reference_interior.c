@@ -15,6 +15,7 @@
  * with the inner loop over a row of FS_REF_FINE boxes vectorised. Only the
  * cubic spline (the default kernel) has this level; for the others the
  * accelerated path keeps the monotone bounds only. */
+#include "counters.h"
 #include "fs_error.h"
 #include "reference.h"
 #include <math.h>
@@ -40,13 +41,15 @@ typedef struct fine_k { float e, hd, H, kw, kg, km, iso; } fine_k;
 #if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default"))) /* one AVX2 vector a row */
 #endif
-static void row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint8_t *bits, int row)
+static uint64_t row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint8_t *bits, int row)
 {
+    uint64_t reach = 0; /* candidates within reach of the row: FS_REF_FINE distances each */
     float ph[FS_REF_FINE] = {0}, gx[FS_REF_FINE] = {0}, gy[FS_REF_FINE] = {0}, gz[FS_REF_FINE] = {0};
     float m[FS_REF_FINE] = {0}, reach2 = (K->H + K->hd) * (K->H + K->hd), inv_h = 1.0f / K->H, e = K->e, hd = K->hd;
     for (int j = 0; j < c->n; j++) {
         float dy = y - c->y[j], dz = z - c->z[j], r2 = dy * dy + dz * dz, px = c->x[j];
         if (r2 >= reach2) continue;
+        reach++;
 #pragma omp simd
         for (int i = 0; i < FS_REF_FINE; i++) {
             float dx = ((float)i + 0.5f) * e - px, d = sqrtf(dx * dx + r2), q = d * inv_h;
@@ -69,11 +72,13 @@ static void row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint
         int k = row * FS_REF_FINE + i;
         if (lower >= K->iso * 1.001f + 1e-4f) bits[k >> 3] |= (uint8_t)(1u << (k & 7)); /* margin over float error */
     }
+    return (uint64_t)c->n + reach * FS_REF_FINE;
 }
 
 /* The interior bits of cell c into bits (FS_REF_FINE3 / 8 bytes); all and
- * slab are candidate buffers of R->max27 entries. */
-static void cell_interior(const reference *R, const int c[3], fine_cand *all, fine_cand *slab, uint8_t *bits)
+ * slab are candidate buffers of R->max27 entries. Returns the particle
+ * distances it computed (work counters). */
+static uint64_t cell_interior(const reference *R, const int c[3], fine_cand *all, fine_cand *slab, uint8_t *bits)
 {
     const fs_grid *g = R->g;
     const fs_field *f = &R->f;
@@ -99,6 +104,7 @@ static void cell_interior(const reference *R, const int c[3], fine_cand *all, fi
             all->n++;
         }
     memset(bits, 0, FS_REF_FINE3 / 8);
+    uint64_t visits = (uint64_t)all->n * (1 + FS_REF_FINE); /* gathered, then tested per slab */
     for (int k = 0; k < FS_REF_FINE; k++) {
         float z = ((float)k + 0.5f) * K.e;
         slab->n = 0;
@@ -109,8 +115,10 @@ static void cell_interior(const reference *R, const int c[3], fine_cand *all, fi
                 slab->z[slab->n] = all->z[j];
                 slab->n++;
             }
-        for (int j = 0; j < FS_REF_FINE; j++) row_bits(slab, ((float)j + 0.5f) * K.e, z, &K, bits, k * FS_REF_FINE + j);
+        for (int j = 0; j < FS_REF_FINE; j++)
+            visits += row_bits(slab, ((float)j + 0.5f) * K.e, z, &K, bits, k * FS_REF_FINE + j);
     }
+    return visits;
 }
 
 static int cand_alloc(fine_cand *c, size_t cap)
@@ -174,7 +182,8 @@ int fs_ref_interior_build(reference *R)
     R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8));
     if (!R->fine) { fs_ref_interior_free(R); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
     long nb = (long)g->nblocks;
-#pragma omp parallel
+    uint64_t visits = 0, cells = 0;
+#pragma omp parallel reduction(+ : visits, cells)
     {
         fine_cand all, slab;
         int ok = cand_alloc(&all, R->max27) & cand_alloc(&slab, R->max27);
@@ -188,11 +197,15 @@ int fs_ref_interior_build(reference *R)
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                cell_interior(R, c, &all, &slab, bits);
+                visits += cell_interior(R, c, &all, &slab, bits);
+                cells++;
                 promote(R, slot);
             }
         free(all.x);
         free(slab.x);
     }
+    /* one second-order bound of phi (value, gradient, curvature at the centre) per fine box */
+    fs_count_add(FS_CNT_FIELD_EVALS, cells * FS_REF_FINE3);
+    fs_count_add(FS_CNT_NEIGHBOURS, visits);
     return FS_OK;
 }

@@ -16,11 +16,20 @@ typedef struct stretch {
     const near_particle *np;
     int n;
     float d[3];
+    ray_work *w;   /* the ray's work counts */
 } stretch;
+
+/* One field evaluation (value, bound or gradient) over the stretch's particles. */
+static inline void counted(const stretch *S)
+{
+    S->w->evals++;
+    S->w->nbrs += (uint64_t)S->n;
+}
 
 /* phi at local ray parameter t. */
 static float phi_at(const stretch *S, float t)
 {
+    counted(S);
     const fs_field *f = &S->R->f;
     float H2 = f->H * f->H, sum = 0;
     for (int j = 0; j < S->n; j++) {
@@ -35,6 +44,7 @@ static float phi_at(const stretch *S, float t)
  * distance to the farther end). upper = 1 gives the upper bound of phi there. */
 static float phi_bound(const stretch *S, float t, float s, int upper)
 {
+    counted(S);
     const fs_field *f = &S->R->f;
     float H2 = f->H * f->H, sum = 0;
     for (int j = 0; j < S->n; j++) {
@@ -50,6 +60,7 @@ static float phi_bound(const stretch *S, float t, float s, int upper)
 /* grad phi at local t (world axes). */
 static void grad_at(const stretch *S, float t, float gr[3])
 {
+    counted(S);
     const fs_field *f = &S->R->f;
     float H2 = f->H * f->H;
     gr[0] = gr[1] = gr[2] = 0;
@@ -78,7 +89,8 @@ static void grad_at(const stretch *S, float t, float gr[3])
 /* Collects the particles that can reach the stretch o + t d, t in [0, len]
  * (distance to the stretch below H). They lie in the 27 cells around cell c
  * because cell >= H; only the cells the stretch's box grown by H touches are read. */
-static int gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_particle *out)
+static int gather(const reference *R, const int c[3], const float o[3], const float d[3], float len, near_particle *out,
+                  ray_work *w)
 {
     const fs_grid *g = R->g;
     float H = R->reach, H2 = R->f.H * R->f.H;
@@ -92,6 +104,7 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
     }
     uint32_t runs[FS_GRID_MAX_RUNS][2];
     int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
+    for (int r = 0; r < nr; r++) w->nbrs += runs[r][1] - runs[r][0];
     for (int r = 0; r < nr; r++)
             for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
@@ -159,6 +172,7 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
     float iso = R->f.iso, tol = 1e-4f * R->f.r;
     if (!m->started) {
         m->g = phi_at(S, 0) - iso;
+        S->w->samples++;
         m->inside = m->g >= 0; /* the ray starts in the fluid: not a visible crossing */
         m->counting = 0;
         m->started = 1;
@@ -169,12 +183,14 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
         int proven = safe_step(S, m, t, rem, lip, &s, &gn);
         float tn = s >= rem ? len : t + s;
         if (!proven) gn = phi_at(S, tn) - iso;
+        S->w->samples++; /* the step's end, sampled or proven */
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
         float lo = t, hi = tn;
         while (hi - lo > tol) {
             float mid = 0.5f * (lo + hi);
             if (mid <= lo || mid >= hi) break; /* floats cannot split it further (far along a huge cell) */
+            S->w->samples++;
             if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
         }
         float tc = 0.5f * (lo + hi);
@@ -222,9 +238,9 @@ static int plain_visit(void *ctx, const int c[3], uint32_t slot, float t, float 
     }
     uint32_t cnt = R->count27[slot];
     const float *o = P->o, *d = P->d;
-    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}};
+    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}, &P->res->w};
     float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf);
+    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf, &P->res->w);
     if (S.n) return march_stretch(&S, &P->m, t, t_out - t, R->lip_unit * cnt, P->res);
     fs_ref_leave_fluid(&P->m, P->res, t, R);
     return 0;

@@ -118,6 +118,7 @@ const fs_method fs_method_spheres = {
     .paper = "inacio2010 (Table II baseline)",
     .needs_gl = 1,
     .grid_use = FS_GRID_UNUSED, /* the sprites are drawn in the particles' order */
+    .counters = FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(spheres_params),

@@ -307,6 +307,8 @@ const fs_method fs_method_surfels = {
     .appearance = "environment reflection, refraction of the floor and a sunken box, caustics (iwasaki2006)",
     .exports = ".vdb density grid (OpenVDB FloatGrid), .ply surfels",
     .needs_gl = 1,
+    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
+                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

@@ -363,6 +363,8 @@ const fs_method fs_method_volume_raycast = {
     .appearance = "its transfer function: the opaque iso-surface, or translucent with mode=translucent (inacio2010)",
     .exports = ".vdb density volume (OpenVDB FloatGrid)",
     .needs_gl = 1,
+    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
+                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

@@ -18,7 +18,8 @@ void main()
     ivec2 px = ivec2(gl_GlobalInvocationID.xy), size = imageSize(u_src);
     if (any(greaterThanEqual(px, size))) return;
     float z = imageLoad(u_src, px).x;
-    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); return; }
+    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); fs_filter_done(); return; }
+    fs_taps++; // the centre
     float zr = depth_at(px + ivec2(1, 0), size), zl = depth_at(px - ivec2(1, 0), size);
     float zu = depth_at(px + ivec2(0, 1), size), zd = depth_at(px - ivec2(0, 1), size);
     bool okx = ok(zr, z) && ok(zl, z), oky = ok(zu, z) && ok(zd, z);
@@ -37,5 +38,5 @@ void main()
     float Ex = 0.5 * zx * Dx - zxx * D, Ey = 0.5 * zy * Dy - zyy * D;
     float H = (Cy * Ex + Cx * Ey) / (2.0 * D * sqrt(D));
     float dt = u_dt_scale * z / (2.0 * u_focal_px);
-    imageStore(u_dst, px, vec4(z - dt * H));
+    imageStore(u_dst, px, vec4(z - dt * H)); fs_filter_done();
 }

@@ -1,5 +1,6 @@
 #version 450 core
 #include "common/view_ray.glsl"
+#include "common/counters.glsl"
 // Exact ray-ellipsoid intersection per fragment (the ray taken to the unit
 // sphere's parameter space). MODE_DEPTH: eye depth and view normal of the
 // front hit, depth replaced. MODE_THICKNESS: the chord length, added by the blender.
@@ -16,6 +17,7 @@ layout(location = 1) out vec4 o_normal;
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
     vec3 dir = fs_view_ray(gl_FragCoord.xy, u_viewport, u_proj);
     // Ray t = tc + s around the point nearest the centre, so the quadratic has small coefficients.
     float tc = dot(dir, v_center);
@@ -23,6 +25,7 @@ void main()
     float qq = dot(q, q), qp = dot(q, p);
     float h = qp * qp - qq * (dot(p, p) - 1.0);
     if (h < 0.0) discard;
+    FS_COUNT(FS_CNT_TEXELS, 1);
     float s = sqrt(h);
 #ifdef MODE_THICKNESS
     o_thickness = 2.0 * s / qq;

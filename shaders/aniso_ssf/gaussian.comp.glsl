@@ -10,7 +10,7 @@ void main()
     ivec2 px = ivec2(gl_GlobalInvocationID.xy), size = imageSize(u_src);
     if (any(greaterThanEqual(px, size))) return;
     float z = imageLoad(u_src, px).x;
-    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); return; }
+    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); fs_filter_done(); return; }
     ivec2 dir = axis_dir();
     float sp = sigma_px(z), sum = 0.0, wsum = 0.0;
     int rad = radius_px(z);
@@ -21,5 +21,5 @@ void main()
         sum += w * zq;
         wsum += w;
     }
-    imageStore(u_dst, px, vec4(sum / wsum));
+    imageStore(u_dst, px, vec4(sum / wsum)); fs_filter_done();
 }

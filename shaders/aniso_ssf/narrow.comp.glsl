@@ -35,8 +35,9 @@ void main()
     ivec2 px = ivec2(gl_GlobalInvocationID.xy), size = imageSize(u_src);
     if (any(greaterThanEqual(px, size))) return;
     float z = imageLoad(u_src, px).x;
-    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); return; }
+    if (z <= 0.0) { imageStore(u_dst, px, vec4(0.0)); fs_filter_done(); return; }
     float sp = sigma_px(z), sum = z, wsum = 1.0;
+    fs_taps++; // the centre
     int rad = radius_px(z);
     vec2 r0 = vec2(z - u_threshold, z + u_threshold), ra = r0, rb = r0;
     if (u_axis < 2) {
@@ -44,6 +45,7 @@ void main()
         for (int k = 1; k <= rad; k++) {
             ivec2 qa = px + k * dir, qb = px - k * dir;
             if (!inside(qa, size) || !inside(qb, size)) break;
+            fs_taps += 2u;
             float a = imageLoad(u_src, qa).x, b = imageLoad(u_src, qb).x;
             bool ta = take(a, ra, z), tb = take(b, rb, z);
             if (!(ta && tb)) continue;
@@ -59,6 +61,7 @@ void main()
                 ivec2 o = i <= 2 * d ? ivec2(i - d, d) : ivec2(d, 3 * d - i);
                 ivec2 qa = px + o, qb = px - o;
                 if (!inside(qa, size) || !inside(qb, size)) continue;
+                fs_taps += 2u;
                 float a = imageLoad(u_src, qa).x, b = imageLoad(u_src, qb).x;
                 bool ta = take(a, ra, z), tb = take(b, ra, z);
                 if (!(ta && tb)) continue;
@@ -67,5 +70,5 @@ void main()
                 wsum += 2.0 * w;
             }
     }
-    imageStore(u_dst, px, vec4(sum / wsum));
+    imageStore(u_dst, px, vec4(sum / wsum)); fs_filter_done();
 }

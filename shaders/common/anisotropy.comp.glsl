@@ -8,6 +8,7 @@
 #include "common/kernels.glsl"
 #include "common/grid.glsl"
 #include "common/eigen3.glsl"
+#include "common/counters.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = 1) writeonly buffer FsAniso { vec4 fs_aniso_out[]; };
 uniform uint u_first, u_count;
@@ -18,7 +19,7 @@ uniform int u_per_particle; // 1: normalise by cbrt(det) (volume kept), 0: by u_
 
 void main()
 {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = gl_GlobalInvocationID.x, n_nbrs = 0u; // particles looked at (counters.glsl)
     if (i >= u_count) return;
     vec3 x = fs_grid_pos(u_first + i).xyz;
     float sw = 0.0, R2 = u_R * u_R;
@@ -31,6 +32,7 @@ void main()
                 for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
                     uvec2 run;
                     ce = fs_grid_row_run(ci, hi.x, j, k, run);
+                    n_nbrs += run.y - run.x;
                     for (uint s = run.x; s < run.y; s++) {
                         vec3 e = fs_grid_pos(s).xyz - x;
                         float d2 = dot(e, e);
@@ -65,4 +67,5 @@ void main()
     fs_aniso_out[b] = vec4(c, 0.0);
     fs_aniso_out[b + 1u] = vec4(A[0][0], A[1][0], A[2][0], A[1][1]);
     fs_aniso_out[b + 2u] = vec4(A[2][1], A[2][2], float(n), 0.0);
+    FS_COUNT(FS_CNT_NEIGHBOURS, n_nbrs);
 }

@@ -5,6 +5,7 @@
 // particles. The paper looks the kernel up in a 1D texture; the kernel is
 // evaluated here with the same formulas as the C code (common/kernels.glsl).
 #include "common/kernels.glsl"
+#include "common/counters.glsl"
 in flat vec3 v_p;        // particle in (a, b, up)
 uniform vec2 u_origin;   // world (a, b) of grid point (0, 0)
 uniform float u_spacing;
@@ -16,6 +17,8 @@ layout(location = 0) out vec4 o_phi;
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
+    FS_COUNT(FS_CNT_TEXELS, 4); // four voxels: one plane per channel
     vec2 x = u_origin + u_spacing * (gl_FragCoord.xy - 0.5);
     vec2 d = x - v_p.xy;
     float r2 = dot(d, d);

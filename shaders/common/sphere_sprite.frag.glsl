@@ -1,5 +1,6 @@
 #version 450 core
 #include "common/view_ray.glsl"
+#include "common/counters.glsl"
 // Exact ray-sphere intersection per fragment; depth replaced by the hit.
 // MODE_DEPTH: eye depth + view normal (depth-tested). MODE_THICKNESS: the chord
 // length of the view ray through the sphere, added up by the blender.
@@ -16,10 +17,12 @@ layout(location = 1) out vec4 o_normal;
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
     vec3 dir = fs_view_ray(gl_FragCoord.xy, u_viewport, u_proj);
     float b = dot(dir, v_center);
     float h = b * b - dot(v_center, v_center) + u_radius * u_radius;
     if (h < 0.0) discard;
+    FS_COUNT(FS_CNT_TEXELS, 1);
     float s = sqrt(h);
 #ifdef MODE_THICKNESS
     o_thickness = 2.0 * s;

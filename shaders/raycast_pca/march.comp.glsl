@@ -7,6 +7,7 @@
 // side or u_max_steps samples. The crossing is refined by bisection.
 #include "common/kernels.glsl"
 #include "common/grid.glsl"
+#include "common/counters.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r32f, binding = 0) uniform readonly image2D u_entry;   // eye depth of the nearest sphere
 layout(rgba32f, binding = 1) uniform readonly image2D u_splat; // w: a sphere covers the pixel
@@ -19,8 +20,20 @@ uniform float u_H, u_V, u_iso;
 uniform float u_step, u_step_back;
 uniform int u_max_steps, u_refine;
 
+uint n_evals = 0u, n_nbrs = 0u; // this invocation's work (counters.glsl)
+
+// The work counts, and one texel written, once per invocation that stores.
+void count_done()
+{
+    FS_COUNT(FS_CNT_FIELD_EVALS, n_evals);
+    FS_COUNT(FS_CNT_MARCH_SAMPLES, n_evals); // every evaluation here is a sample along the ray
+    FS_COUNT(FS_CNT_NEIGHBOURS, n_nbrs);
+    FS_COUNT(FS_CNT_TEXELS, 1);
+}
+
 float phi(vec3 x)
 {
+    n_evals++;
     ivec3 lo, hi;
     if (!fs_grid_range(x, u_H, lo, hi)) return 0.0;
     float s = 0.0, H2 = u_H * u_H;
@@ -29,6 +42,7 @@ float phi(vec3 x)
             for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
                 uvec2 run;
                 ce = fs_grid_row_run(ci, hi.x, j, k, run);
+                n_nbrs += run.y - run.x;
                 for (uint i = run.x; i < run.y; i++) {
                     vec3 e = fs_grid_pos(i).xyz - x;
                     float d2 = dot(e, e);
@@ -54,7 +68,7 @@ void main()
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     ivec2 size = imageSize(u_splat);
     if (any(greaterThanEqual(px, size))) return;
-    if (imageLoad(u_splat, px).w < 0.5) { imageStore(u_hit, px, vec4(0.0)); return; } // no entry: no ray
+    if (imageLoad(u_splat, px).w < 0.5) { imageStore(u_hit, px, vec4(0.0)); count_done(); return; } // no entry: no ray
     vec3 dv = fs_view_ray(vec2(px) + 0.5, vec2(size), u_proj);
     vec3 d = transpose(u_view_rot) * dv;
     float t0 = imageLoad(u_entry, px).x / -dv.z;
@@ -92,10 +106,11 @@ void main()
             tp = tn;
         }
     }
-    if (!found) { imageStore(u_hit, px, vec4(0.0)); return; }
+    if (!found) { imageStore(u_hit, px, vec4(0.0)); count_done(); return; }
     for (int i = 0; i < u_refine && hi > lo; i++) {
         float mid = 0.5 * (lo + hi);
         if (phi(u_eye + mid * d) >= u_iso) hi = mid; else lo = mid;
     }
     imageStore(u_hit, px, vec4(u_eye + 0.5 * (lo + hi) * d, 1.0));
+    count_done();
 }

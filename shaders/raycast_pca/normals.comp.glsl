@@ -7,6 +7,7 @@
 #include "common/kernels.glsl"
 #include "common/grid.glsl"
 #include "common/eigen3.glsl"
+#include "common/counters.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform readonly image2D u_hit;
 layout(r32f, binding = 1) uniform writeonly image2D u_depth;
@@ -33,8 +34,10 @@ void main()
     if (h.w < 0.5) {
         imageStore(u_raw, px, vec4(0.0));
         imageStore(u_color, px, vec4(0.0));
+        FS_COUNT(FS_CNT_TEXELS, 1);
         return;
     }
+    uint n_nbrs = 0u; // particles looked at (counters.glsl)
     vec3 x = h.xyz;
     float rad = max(u_R, u_use_color != 0 ? u_H : 0.0), R2 = u_R * u_R, H2 = u_H * u_H;
     vec3 grad = vec3(0.0), m = vec3(0.0), col = vec3(0.0);
@@ -48,6 +51,7 @@ void main()
                 for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
                     uvec2 run;
                     ce = fs_grid_row_run(ci, hi.x, j, k, run);
+                    n_nbrs += run.y - run.x;
                     for (uint i = run.x; i < run.y; i++) {
                         vec3 u = fs_grid_pos(i).xyz - x; // relative to x: keeps float precision
                         float d2 = dot(u, u);
@@ -94,4 +98,7 @@ void main()
     imageStore(u_depth, px, vec4(dot(x - u_eye, viewfwd)));
     imageStore(u_raw, px, vec4(nv, 1.0));
     imageStore(u_color, px, u_use_color != 0 && wc > 0.0 ? vec4(col / wc, 1.0) : vec4(0.0));
+    FS_COUNT(FS_CNT_FIELD_EVALS, 1); // the gradient and the PCA at the hit: one sum over its neighbours
+    FS_COUNT(FS_CNT_NEIGHBOURS, n_nbrs);
+    FS_COUNT(FS_CNT_TEXELS, 1);
 }

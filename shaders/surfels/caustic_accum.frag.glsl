@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 // Caustics, sample planes: the exact integral of eq. 2's intensity over the
 // part of the triangle inside this texel, divided by the texel area, added by
 // the blender. The intensity is linear over the triangle (per-vertex
@@ -60,9 +61,11 @@ vec3 box_edge(vec2 p, vec2 q, vec2 a, vec2 b, vec2 c)
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
     float det = cross2(v_e1, v_e2);
     if (0.5 * abs(det) < u_sq_min) { // degenerate (a fold or focus): all to the centroid's texel
         o_flux = vec4(v_K * (v_E0 + v_E1 + v_E2) / 3.0, 1.0);
+        FS_COUNT(FS_CNT_TEXELS, 1);
         return;
     }
     // Triangle relative to the texel's lower corner, counter-clockwise.
@@ -74,6 +77,7 @@ void main()
     m += box_edge(vec2(1.0, 1.0), vec2(0.0, 1.0), a, b, c);
     m += box_edge(vec2(0.0, 1.0), vec2(0.0, 0.0), a, b, c);
     if (m.x <= 1e-12) discard;
+    FS_COUNT(FS_CNT_TEXELS, 1);
     vec2 cen = m.yz / m.x;
     float l1 = cross2(cen - a, v_e2) / det, l2 = cross2(v_e1, cen - a) / det;
     vec3 E = (1.0 - l1 - l2) * v_E0 + l1 * v_E1 + l2 * v_E2;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 // Caustics, per-pixel normalisation (iwasaki2006 eq. 3): n = sum g n_i / sum g
 // (then made unit), d = sum g t_i / sum g. Output (n, d); w = -1 where no
 // surfel covers the pixel (sum g <= u_wmin).
@@ -15,6 +16,7 @@ void main()
     if (p.x >= u_res || p.y >= u_res) return;
     vec4 a = imageLoad(u_acc, p);
     float len = length(a.xyz);
+    FS_COUNT(FS_CNT_TEXELS, 1);
     if (!(a.w > u_wmin) || len <= 0.0) { imageStore(u_out, p, vec4(0.0, 0.0, 0.0, -1.0)); return; }
     imageStore(u_out, p, vec4(a.xyz / len, imageLoad(u_dacc, p).x / a.w));
 }

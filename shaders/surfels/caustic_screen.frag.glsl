@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 // Caustics, virtual screen: the pixel's light ray P - t light meets the surfel's
 // disk plane at depth t; the fragment exists where that point lies within R of
 // the centre. MODE_DEPTH (pass 1) writes only depth, pushed back by u_eps surfel
@@ -23,12 +24,14 @@ layout(location = 1) out float o_dacc; // sum g t
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
     vec2 ab = u_rect_min + gl_FragCoord.xy * u_pix;
     vec3 P = ab.x * u_ea + ab.y * u_eb + u_top * u_eu;
     float t = dot(P - v_center, v_normal) / dot(u_light, v_normal);
     vec3 X = P - t * u_light;
     float x = length(X - v_center) / v_radius;
     if (x >= 1.0 || t < 0.0) discard;
+    FS_COUNT(FS_CNT_TEXELS, 1);
 #ifdef MODE_DEPTH
     gl_FragDepth = clamp((t + u_eps * v_radius) / u_tfar, 0.0, 1.0);
 #else

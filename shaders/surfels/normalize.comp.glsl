@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 #include "common/view_ray.glsl"
 #include "surfels/appearance.glsl"
 // Pass 3 (iwasaki2006 section 5.3): per-pixel normalisation of the blended
@@ -28,6 +29,7 @@ void main()
         imageStore(u_depth, px, vec4(ad.x / w));
         imageStore(u_normal, px, vec4(len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0), 1.0));
         imageStore(u_own, px, vec4(ac.rgb / w, ad.y / w));
+        FS_COUNT(FS_CNT_TEXELS, 1);
         return;
     }
     vec3 dir = fs_view_ray(vec2(px) + 0.5, vec2(size), u_proj);
@@ -37,4 +39,5 @@ void main()
     imageStore(u_depth, px, vec4(0.0));
     imageStore(u_normal, px, vec4(0.0));
     imageStore(u_own, px, vec4(bg, caustic));
+    FS_COUNT(FS_CNT_TEXELS, 1);
 }

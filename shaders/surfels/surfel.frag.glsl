@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 // The surfel disk per fragment: the pixel's view ray meets the disk's plane;
 // fragments outside radius R are discarded (a perspective-correct splat).
 // MODE_VISIBILITY (pass 1): depth only, pushed back by u_epsilon (eye depth).
@@ -25,12 +26,14 @@ uniform mat4 u_view_inv;
 
 void main()
 {
+    FS_COUNT(FS_CNT_FRAGMENTS, 1);
     vec3 dir = fs_view_ray(gl_FragCoord.xy, u_viewport, u_proj);
     float den = dot(dir, v_normal);
     if (den >= -1e-6) discard; // grazing or behind
     vec3 hit = dir * (dot(v_center, v_normal) / den);
     float d = length(hit - v_center);
     if (d > v_radius) discard;
+    FS_COUNT(FS_CNT_TEXELS, 1);
 #ifdef MODE_VISIBILITY
     vec3 off = hit * ((-hit.z + u_epsilon) / -hit.z);
     vec4 clip = u_proj * vec4(off, 1.0);

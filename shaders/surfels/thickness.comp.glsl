@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 #include "common/view_ray.glsl"
 // Thickness for the shared shading (not in the paper, whose own appearance
 // needs none): the fluid path length along the view ray, marched through the
@@ -16,8 +17,11 @@ uniform vec3 u_grid_dim;
 uniform float u_step;
 uniform float u_iso;
 
+uint n_samples = 0u; // this invocation's lookups of the density grid (counters.glsl)
+
 float phi(vec3 w)
 {
+    n_samples++;
     vec3 t = (w - u_grid_origin) / u_grid_extent;          // 0..1 between the first and last point
     vec3 uvw = (t * (u_grid_dim - 1.0) + 0.5) / u_grid_dim; // texel centres
     return textureLod(u_grid, uvw, 0.0).r;
@@ -28,7 +32,7 @@ void main()
     ivec2 px = ivec2(gl_GlobalInvocationID.xy), size = imageSize(u_depth);
     if (any(greaterThanEqual(px, size))) return;
     float z = imageLoad(u_depth, px).x;
-    if (z <= 0.0) { imageStore(u_thickness, px, vec4(0.0)); return; }
+    if (z <= 0.0) { imageStore(u_thickness, px, vec4(0.0)); FS_COUNT(FS_CNT_TEXELS, 1); return; }
     vec3 dv = fs_view_dir_unnormalized(vec2(px) + 0.5, vec2(size), u_proj);
     vec3 o = (u_view_inv * vec4(dv * z, 1.0)).xyz;
     vec3 d = normalize(mat3(u_view_inv) * dv);
@@ -40,4 +44,6 @@ void main()
     for (float t = 0.5 * u_step; t < tmax; t += u_step)
         if (phi(o + t * d) >= u_iso) inside += u_step;
     imageStore(u_thickness, px, vec4(inside));
+    FS_COUNT(FS_CNT_MARCH_SAMPLES, n_samples);
+    FS_COUNT(FS_CNT_TEXELS, 1);
 }

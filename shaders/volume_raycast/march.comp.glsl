@@ -1,4 +1,5 @@
 #version 450 core
+#include "common/counters.glsl"
 #include "common/view_ray.glsl"
 // inacio2010 IV-B: per pixel, march the view ray from the box's front face to
 // its back face through the density volume (3D texture, trilinear), step u_step.
@@ -35,8 +36,11 @@ uniform float u_opacity, u_absorption, u_term;
 uniform vec3 u_light_dir, u_light_color, u_material;
 uniform float u_ambient;
 
+uint n_samples = 0u; // this invocation's lookups of the volume (counters.glsl)
+
 float phi(vec3 w)
 {
+    n_samples++;
     vec3 t = (w - u_box_origin) / u_box_extent;             // 0..1 between the first and last point
     vec3 uvw = (t * (u_grid_dim - 1.0) + 0.5) / u_grid_dim; // texel centres
     return textureLod(u_grid, uvw, 0.0).r;
@@ -128,4 +132,6 @@ void main()
     }
     imageStore(u_thickness, px, vec4(inside));
     if (u_own_on != 0) imageStore(u_own, px, acc);
+    FS_COUNT(FS_CNT_MARCH_SAMPLES, n_samples);
+    FS_COUNT(FS_CNT_TEXELS, 1);
 }

@@ -1,0 +1,62 @@
+/* Hardware-independent work counters (docs/DESIGN.md, "Work counters"): counts
+ * of a method's algorithmic work that do not depend on the machine. Off unless
+ * a counting render switches them on (fs_counting_set), so a timed render pays
+ * one branch per ray, tile or pass. Counts are added to a process-wide pending
+ * table; the next fs_stages_add attributes what is pending to its stage. */
+#ifndef FS_COUNTERS_H
+#define FS_COUNTERS_H
+#include <stdint.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The counters; docs/DESIGN.md defines exactly what one unit of each is. The
+ * list is extensible: a new counter (a library's voxels or triangles) is one
+ * enum entry and one name. Shaders get the same indices as FS_CNT_* defines. */
+typedef enum fs_counter {
+    FS_CNT_FIELD_EVALS = 0,
+    FS_CNT_NEIGHBOURS,
+    FS_CNT_MARCH_SAMPLES,
+    FS_CNT_FRAGMENTS,
+    FS_CNT_FILTER_TAPS,
+    FS_CNT_TEXELS,
+    FS_NCOUNTERS
+} fs_counter;
+#define FS_CNT_BIT(c) (1u << (c))
+
+/* "field_evals", ... (the CSV names); NULL out of range. */
+const char *fs_counter_name(int c);
+/* The index of a CSV name, or -1. */
+int fs_counter_index(const char *name);
+
+/* 1 while a counting render runs. Read it directly in hot code: a plain int. */
+extern int fs_counting;
+void fs_counting_set(int on);
+
+/* Adds n to counter c's pending count (atomic, 64-bit); an overflow is
+ * remembered and reported by fs_counters_check. A no-op when not counting. */
+void fs_count_add_(fs_counter c, uint64_t n);
+static inline void fs_count_add(fs_counter c, uint64_t n)
+{
+    if (fs_counting && n) fs_count_add_(c, n);
+}
+
+/* A source of pending counts outside C (the GL layer's storage buffer), asked
+ * before pending counts are attributed to a stage; NULL removes it. */
+void fs_counters_set_collector(void (*collect)(void));
+
+/* For fs_stages_add: moves the pending counts into row[FS_NCOUNTERS] (the
+ * stage's), noting an overflow with the stage name. */
+void fs_counters_attribute(uint64_t *row, const char *stage);
+/* Drops pending counts and a noted overflow (before a counting render). */
+void fs_counters_reset(void);
+/* FS_OK, or FS_ERR_RUNTIME (fs_fail) naming the counter and stage that overflowed. */
+int fs_counters_check(void);
+
+/* Marks an overflow of counter c (a GL counter's high word wrapped). */
+void fs_counters_overflowed(fs_counter c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

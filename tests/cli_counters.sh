@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Work counters end to end (docs/DESIGN.md, "Work counters"): render --counters
+# gives the same counts for every method on OSMesa and EGL and on 1 and 2
+# threads; compare --counters writes counters.csv and a table in report.md;
+# the reference cache carries the counts (a hit brings them back, an entry made
+# without them is a miss when they are wanted).
+set -u
+BIN=$1 SRC=$2 T=$3
+rm -rf "$T"; mkdir -p "$T"
+fails=0
+check() { if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
+cube=$SRC/experiments/data/splashsurf/cube_2366_particles.vtk
+box=$SRC/experiments/scenes/box.json
+# counts NAME GL THREADS METHOD: the CSV rows (no provenance line) of one counting render
+counts() {
+  OMP_NUM_THREADS=$3 LP_NUM_THREADS=$3 FLUIDSURF_GL=$2 "$BIN" render "$cube" --method $4 -W 64 -H 48 -q --counters \
+    -o "$T/$1.png" 2> "$T/$1.err" | grep -v '^#' > "$T/$1.csv"
+}
+header='method,variant,frame,stage,counter,value'
+
+# 1. the same counts on every context and thread count
+for m in ${METHODS:-spheres reference raycast_pca aniso_ssf surfels volume_raycast}; do
+  counts "$m-osmesa2" osmesa 2 $m; rc=$?
+  counts "$m-osmesa1" osmesa 1 $m
+  counts "$m-egl2" egl 2 $m
+  check '[ $rc -eq 0 ] && [ "$(head -1 "$T/$m-osmesa2.csv")" = "$header" ] && grep -q "^$m,,0,total," "$T/$m-osmesa2.csv"' \
+    "$m: render --counters prints the CSV with total rows"
+  check '! grep -q "^$m,,0,[a-z_]*,[a-z_]*,0$" <(grep -v ",total," "$T/$m-osmesa2.csv")' "$m: zero counts are left out"
+  check 'cmp -s "$T/$m-osmesa2.csv" "$T/$m-osmesa1.csv"' "$m: the same counts on 1 and 2 threads"
+  check 'cmp -s "$T/$m-osmesa2.csv" "$T/$m-egl2.csv"' "$m: the same counts on OSMesa and EGL"
+done
+"$BIN" render "$cube" --method spheres -W 64 -H 48 -q --counters --timings -o "$T/both.png" > "$T/both.txt"
+check 'grep -q "^stage,ms,renderer" "$T/both.txt" && grep -q "^# .*method=spheres" "$T/both.txt" && grep -q "^$header" "$T/both.txt"' \
+  "--timings and --counters together: both tables, the counts under a provenance line"
+
+# 2. compare --counters: counters.csv with the provenance line, a table in report.md
+"$BIN" compare "$box" --methods spheres,raycast_pca -W 64 -H 64 --repeat 1 -q --no-cache --counters -o "$T/cmp" 2> "$T/cmp.err"; rc=$?
+check '[ $rc -eq 0 ] && head -1 "$T/cmp/counters.csv" | grep -q "^# .*commit=" && sed -n 2p "$T/cmp/counters.csv" | grep -qx "$header"' \
+  "compare writes counters.csv with a provenance line and the header"
+check 'grep -q "^reference,ground truth,0,march,march_samples,[1-9]" "$T/cmp/counters.csv" && grep -q "^raycast_pca,,0,filter,filter_taps,[1-9]" "$T/cmp/counters.csv"' \
+  "counters.csv holds the reference's and the methods' counts"
+check 'grep -q "^## Work counters" "$T/cmp/report.md" && grep -q "^| spheres | — | — | — | — | [1-9]" "$T/cmp/report.md"' \
+  "report.md has the counter table"
+"$BIN" compare "$box" --methods spheres -W 64 -H 64 --repeat 1 -q --no-cache -o "$T/plain" 2> /dev/null
+check '[ ! -e "$T/plain/counters.csv" ] && ! grep -q "Work counters" "$T/plain/report.md"' "without --counters: no counters.csv"
+
+# 3. the reference cache carries the counts
+ref_rows() { grep '^reference,ground truth,' "$T/$1/counters.csv"; }
+cmpc() { local d=$1; shift; "$BIN" compare "$box" --methods spheres -W 64 -H 64 --repeat 1 -q -o "$T/$d" "$@" 2> "$T/$d.err"; }
+cmpc c1 --cache "$T/cache" --counters
+cmpc c2 --cache "$T/cache" --counters
+check 'grep -q "rendered, stored as" "$T/c1/report.md" && grep -q "from the cache:" "$T/c2/report.md"' "a counted entry is stored, then hit"
+check '[ -n "$(ref_rows c1)" ] && [ "$(ref_rows c1)" = "$(ref_rows c2)" ]' "a hit brings back the counts it was stored with"
+cmpc u1 --cache "$T/cache2"
+cmpc u0 --cache "$T/cache2"
+cmpc u2 --cache "$T/cache2" --counters
+cmpc u3 --cache "$T/cache2" --counters
+check 'grep -q "rendered, stored as" "$T/u1/report.md" && grep -q "from the cache:" "$T/u0/report.md"' "an entry made without counts is a hit without --counters"
+check 'grep -q "rendered, stored as" "$T/u2/report.md" && [ -n "$(ref_rows u2)" ]' "an entry without counts is a miss with --counters, counted and stored"
+check 'grep -q "from the cache:" "$T/u3/report.md" && [ "$(ref_rows u2)" = "$(ref_rows u3)" ] && [ "$(ref_rows u2)" = "$(ref_rows c1)" ]' \
+  "the re-stored entry then hits with the same counts"
+for k in 1 2; do
+  "$BIN" render "$box" -W 64 -H 64 --cache "$T/cache3" --counters -o "$T/r$k.png" 2> "$T/r$k.err" | grep -v '^#' > "$T/r$k.csv"
+done
+check 'grep -q "^reference,,0,march,march_samples,[1-9]" "$T/r1.csv" && grep -q "from the cache" "$T/r2.err" && cmp -s "$T/r1.csv" "$T/r2.csv"' \
+  "render --cache --counters stores the counts and prints them again from the entry"
+
+echo "$fails failure(s)"
+[ $fails -eq 0 ]

@@ -1,0 +1,234 @@
+/* Every method's counting render (run.h fs_run_count) against its timed render
+ * on the 6,859-particle dam break at 128x128: the same G-buffer bit for bit,
+ * no counts in the timed stages, and counts that are plausible and can fail
+ * (bounded by the sprites' pixels, at least one sample per covered pixel, one
+ * texel per pixel where a pass writes every pixel, passes that must agree).
+ * Also: the GL counters' exact 64-bit carry and their overflow error naming
+ * the counter and stage, and the refusal of a method that declares no counters. */
+#include "counters.h"
+#include "fs_error.h"
+#include "fs_test.h"
+#include "gl.h"
+#include "gl_context.h"
+#include "gl_counters.h"
+#include "run.h"
+#include "scene.h"
+#include "shader.h"
+#include "test_render.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static fs_particles P;
+static fs_scene S;
+static fs_gl_context CTX;
+
+/* Counter c of stage (NULL: the sum over the stages). */
+static uint64_t cnt(const fs_stages *st, const char *stage, int c)
+{
+    uint64_t t = 0;
+    for (int i = 0; i < st->n; i++)
+        if (!stage || !strcmp(st->name[i], stage)) t += st->count[i][c];
+    return t;
+}
+
+static size_t covered(const fs_gbuffer *g)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < (size_t)g->w * g->h; i++) n += g->coverage[i] >= 0.5f;
+    return n;
+}
+
+static int same_floats(const float *a, const float *b, size_t n)
+{
+    return (!a && !b) || (a && b && !memcmp(a, b, n * sizeof *a));
+}
+
+static int same_gbuffer(const fs_gbuffer *a, const fs_gbuffer *b)
+{
+    size_t n = (size_t)a->w * a->h;
+    if (a->w != b->w || a->h != b->h || a->naovs != b->naovs) return 0;
+    int ok = same_floats(a->depth, b->depth, n) && same_floats(a->normal, b->normal, 3 * n) &&
+             same_floats(a->thickness, b->thickness, n) && same_floats(a->coverage, b->coverage, n);
+    for (int k = 0; k < a->naovs && ok; k++)
+        ok = a->aov[k].ncomp == b->aov[k].ncomp && same_floats(a->aov[k].data, b->aov[k].data, n * a->aov[k].ncomp);
+    return ok;
+}
+
+/* An upper bound of the pixels of every particle's sprite quad: the sphere's
+ * projected radius, grown for the perspective stretch at the image corner. */
+static double sprite_pixels_bound(float radius)
+{
+    const fs_camera *cam = &S.camera;
+    float view[16];
+    fs_camera_view_matrix(cam, view);
+    double t = tan(cam->fovy_deg * M_PI / 360.0), f_px = 0.5 * cam->height / t;
+    double ta = t * sqrt(1.0 + (double)cam->width * cam->width / ((double)cam->height * cam->height));
+    double stretch = 1.0 + ta * ta; /* 1 / cos^2 of the corner's angle */
+    double sum = 0;
+    for (size_t i = 0; i < P.n; i++) {
+        double z = -(view[2] * P.x[i] + view[6] * P.y[i] + view[10] * P.z[i] + view[14]);
+        if (z <= radius) continue;
+        double rho = f_px * radius / (z - radius) * stretch;
+        sum += (2 * rho + 2) * (2 * rho + 2);
+    }
+    return sum;
+}
+
+static void check_spheres(const fs_stages *c, const fs_gbuffer *g)
+{
+    uint64_t fr = cnt(c, "splat", FS_CNT_FRAGMENTS), tx = cnt(c, "splat", FS_CNT_TEXELS);
+    double bound = sprite_pixels_bound(S.radius);
+    CHECK(fr > 0 && fr <= bound, "spheres: %llu fragments, sprites hold at most %.0f pixels", (unsigned long long)fr, bound);
+    CHECK(tx >= covered(g) && tx <= fr, "spheres: %llu texels written, %zu covered, %llu fragments",
+          (unsigned long long)tx, covered(g), (unsigned long long)fr);
+    CHECK(cnt(c, "thickness", FS_CNT_FRAGMENTS) == fr && cnt(c, "thickness", FS_CNT_TEXELS) == tx,
+          "spheres: the thickness pass draws the same sprites");
+}
+
+static void check_reference(const fs_stages *c, const fs_gbuffer *g)
+{
+    uint64_t ms = cnt(c, "march", FS_CNT_MARCH_SAMPLES), fe = cnt(c, "march", FS_CNT_FIELD_EVALS);
+    CHECK(ms >= covered(g) && covered(g) > 0, "reference: %llu samples for %zu covered pixels", (unsigned long long)ms,
+          covered(g));
+    CHECK(fe >= ms && cnt(c, "march", FS_CNT_NEIGHBOURS) > fe, "reference: evaluations %llu, samples %llu",
+          (unsigned long long)fe, (unsigned long long)ms);
+}
+
+static void check_raycast_pca(const fs_stages *c, const fs_gbuffer *g)
+{
+    size_t px = (size_t)g->w * g->h;
+    CHECK(cnt(c, "march", FS_CNT_TEXELS) == px, "raycast_pca: the march writes every pixel once");
+    CHECK(cnt(c, "normals", FS_CNT_FIELD_EVALS) == covered(g), "raycast_pca: one normal sum per hit: %llu vs %zu",
+          (unsigned long long)cnt(c, "normals", FS_CNT_FIELD_EVALS), covered(g));
+    CHECK(cnt(c, "march", FS_CNT_MARCH_SAMPLES) >= covered(g), "raycast_pca: a sample per hit at least");
+    CHECK(cnt(c, "filter", FS_CNT_FILTER_TAPS) >= covered(g), "raycast_pca: the filter reads each hit at least");
+}
+
+static void check_aniso_ssf(const fs_stages *c, const fs_gbuffer *g)
+{
+    CHECK(cnt(c, "anisotropy", FS_CNT_NEIGHBOURS) >= P.n, "aniso_ssf: every particle sees itself at least");
+    CHECK(cnt(c, "normals", FS_CNT_TEXELS) == (size_t)g->w * g->h, "aniso_ssf: normals write every pixel once");
+    CHECK(cnt(c, "splat", FS_CNT_TEXELS) >= covered(g), "aniso_ssf: a sprite texel per covered pixel");
+    CHECK(cnt(c, "filter", FS_CNT_FILTER_TAPS) >= covered(g), "aniso_ssf: the filter reads each covered pixel");
+}
+
+static void check_surfels(const fs_stages *c, const fs_gbuffer *g)
+{
+    CHECK(cnt(c, "normalize", FS_CNT_TEXELS) == (size_t)g->w * g->h, "surfels: normalize writes every pixel once");
+    CHECK(cnt(c, "density_grid", FS_CNT_TEXELS) == 4 * cnt(c, "density_grid", FS_CNT_FRAGMENTS) &&
+              cnt(c, "density_grid", FS_CNT_FRAGMENTS) > 0,
+          "surfels: four voxels per slice-splat fragment");
+    CHECK(cnt(c, "blend", FS_CNT_TEXELS) >= covered(g), "surfels: a surfel texel per covered pixel");
+}
+
+static void check_volume_raycast(const fs_stages *c, const fs_gbuffer *g)
+{
+    CHECK(cnt(c, "march", FS_CNT_TEXELS) == (size_t)g->w * g->h, "volume_raycast: the march writes every pixel once");
+    CHECK(cnt(c, "march", FS_CNT_MARCH_SAMPLES) >= covered(g), "volume_raycast: a sample per covered pixel");
+    CHECK(cnt(c, "volume", FS_CNT_TEXELS) == cnt(c, "volume", FS_CNT_FRAGMENTS), "volume_raycast: a voxel per fragment");
+}
+
+/* The timed render, then the counting render, of method name. */
+static void test_method(const char *name, void (*check)(const fs_stages *, const fs_gbuffer *))
+{
+    const fs_method *m = fs_method_find(name);
+    fs_run *run = NULL;
+    fs_run_image timed = {0}, counted = {0};
+    fs_stages st = {0}, cst;
+    int rc = fs_run_open(&run, m, &S, NULL, m->needs_gl ? &CTX : NULL);
+    if (!rc) rc = fs_run_upload(run, &P, NULL, &st);
+    if (!rc) rc = fs_run_render(run, &S.camera, &timed, &st);
+    if (!rc) rc = fs_run_count(m, &S, fs_run_values(run), &CTX, &P, NULL, &S.camera, &counted, &cst);
+    CHECK(!rc, "%s: %s", name, fs_error_message());
+    if (!rc) {
+        CHECK(same_gbuffer(&timed.g, &counted.g), "%s: the counting render's G-buffer differs from the timed one", name);
+        uint64_t any = 0;
+        for (int c = 0; c < FS_NCOUNTERS; c++) any |= cnt(&st, NULL, c);
+        CHECK(!any, "%s: the timed render counted", name);
+        for (int c = 0; c < FS_NCOUNTERS; c++)
+            CHECK(!cnt(&cst, NULL, c) || (m->counters & FS_CNT_BIT(c)), "%s counts %s, which it does not declare",
+                  name, fs_counter_name(c));
+        check(&cst, &counted.g);
+    }
+    fs_run_close(run);
+    fs_run_image_free(&timed);
+    fs_run_image_free(&counted);
+}
+
+/* The carry into the high word is exact, and a wrap of the high word is an
+ * error naming the counter and the stage. */
+static void test_gl_carry(void)
+{
+    const char *st[] = {"tests/counter_add.comp.glsl", NULL};
+    fs_counters_reset();
+    fs_counting_set(1);
+    unsigned prog = fs_program_build(st, NULL);
+    CHECK(prog && fs_gl_counters_begin() == FS_OK, "counter program: %s", fs_error_message());
+    fs_stages s = {0};
+    glUseProgram(prog);
+    glUniform1ui(glGetUniformLocation(prog, "u_n"), 0xF0000000u);
+    glUniform1ui(glGetUniformLocation(prog, "u_counter"), FS_CNT_FILTER_TAPS);
+    glDispatchCompute(4, 1, 1); /* 256 adds */
+    glFinish();
+    fs_stages_add(&s, "carry", 0);
+    CHECK(s.count[0][FS_CNT_FILTER_TAPS] == 256ull * 0xF0000000u, "64-bit sum: %llu",
+          (unsigned long long)s.count[0][FS_CNT_FILTER_TAPS]);
+    GLint buf = 0;
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, FS_GL_COUNTER_BINDING, &buf);
+    uint32_t full[2] = {0xFFFFFFFFu, 0xFFFFFFFFu};
+    glNamedBufferSubData((GLuint)buf, 2 * FS_CNT_TEXELS * sizeof(uint32_t), sizeof full, full);
+    glUniform1ui(glGetUniformLocation(prog, "u_n"), 1);
+    glUniform1ui(glGetUniformLocation(prog, "u_counter"), FS_CNT_TEXELS);
+    glDispatchCompute(1, 1, 1);
+    glFinish();
+    fs_stages_add(&s, "wrap", 0);
+    fs_gl_counters_end();
+    fs_counting_set(0);
+    CHECK(fs_counters_check() != FS_OK && strstr(fs_error_message(), "texels_written") &&
+              strstr(fs_error_message(), "wrap"),
+          "GL overflow: %s", fs_error_message());
+    fs_counters_reset();
+    glDeleteProgram(prog);
+}
+
+/* A method that declares no counters is refused, by name. */
+static void *none_create(const fs_method_setup *s) { (void)s; static int x; return &x; }
+static int none_upload(void *self, const fs_particles *p, const fs_grid *g) { (void)self; (void)p; (void)g; return FS_OK; }
+static int none_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t) { (void)self; (void)c; (void)o; (void)t; return FS_OK; }
+static void none_destroy(void *self) { (void)self; }
+static const fs_method uncounted = {.name = "uncounted", .description = "declares no counters", .paper = "",
+                                    .grid_use = FS_GRID_UNUSED, .create = none_create, .upload = none_upload,
+                                    .render = none_render, .destroy = none_destroy};
+
+static void test_uncounted(void)
+{
+    CHECK(fs_method_register(&uncounted, FS_METHOD_HIDDEN) == FS_OK, "register");
+    fs_run_image im = {0};
+    fs_stages st;
+    int rc = fs_run_count(fs_method_find("uncounted"), &S, NULL, NULL, &P, NULL, &S.camera, &im, &st);
+    CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "'uncounted'"), "refused: %d %s", rc, fs_error_message());
+    CHECK(!fs_counting, "counting is off again");
+    fs_run_image_free(&im);
+}
+
+int main(void)
+{
+    fs_field f;
+    fs_methods_register_builtin();
+    if (fs_test_load_dam(&P, &S, &f) || fs_gl_context_create(&CTX, FS_CTX_OSMESA, 16, 16)) {
+        CHECK(0, "setup: %s", fs_error_message());
+        TEST_DONE();
+    }
+    test_method("spheres", check_spheres);
+    test_method("reference", check_reference);
+    test_method("raycast_pca", check_raycast_pca);
+    test_method("aniso_ssf", check_aniso_ssf);
+    test_method("surfels", check_surfels);
+    test_method("volume_raycast", check_volume_raycast);
+    test_gl_carry();
+    test_uncounted();
+    fs_gl_context_destroy(&CTX);
+    fs_particles_free(&P);
+    TEST_DONE();
+}
