@@ -30,7 +30,7 @@ for m in ${METHODS:-spheres reference raycast_pca aniso_ssf surfels volume_rayca
   check 'cmp -s "$T/$m-osmesa2.csv" "$T/$m-egl2.csv"' "$m: the same counts on OSMesa and EGL"
 done
 "$BIN" render "$cube" --method spheres -W 64 -H 48 -q --counters --timings -o "$T/both.png" > "$T/both.txt"
-check 'grep -q "^stage,ms,renderer" "$T/both.txt" && grep -q "^# .*method=spheres" "$T/both.txt" && grep -q "^$header" "$T/both.txt"' \
+check 'grep -q "^stage,ms,gpu_ms,renderer" "$T/both.txt" && grep -q "^# .*method=spheres" "$T/both.txt" && grep -q "^$header" "$T/both.txt"' \
   "--timings and --counters together: both tables, the counts under a provenance line"
 
 # 2. compare --counters: counters.csv with the provenance line, a table in report.md
