@@ -216,7 +216,7 @@ int main(void)
 {
     fs_field f;
     fs_methods_register_builtin();
-    if (fs_test_load_dam(&P, &S, &f) || fs_gl_context_create(&CTX, FS_CTX_OSMESA, 16, 16)) {
+    if (fs_test_load_dam(&P, &S, &f) || fs_gl_context_create(&CTX, fs_gl_context_default_kind(), 16, 16)) {
         CHECK(0, "setup: %s", fs_error_message());
         TEST_DONE();
     }
