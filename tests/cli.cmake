@@ -26,7 +26,7 @@ endif()
 set_tests_properties(cli_help PROPERTIES
   ENVIRONMENT "${_help_env}")
 # experiments/gpu/run.sh --quick through EGL: the prepared GPU script works end to end
-# (about 15 s; not under the sanitizers, which only slow llvmpipe down).
+# (not under the sanitizers, which only slow llvmpipe down).
 if(NOT FS_SANITIZE)
   add_test(NAME gpu_quick COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/gpu_quick.sh ${CMAKE_SOURCE_DIR}
            ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/gpu_quick)

@@ -124,7 +124,8 @@ def iwasaki(d):
         ex = statistics.median(float(r["ms"]) for r in cell[(n, res, m)])
         sp = cell.get((n, res, "slice_splat"), [])
         w = statistics.median(float(r["ms"]) for r in sp) if sp else None
-        g = statistics.median(num(r["gpu_ms"]) for r in sp) if sp else None
+        gs = [num(r["gpu_ms"]) for r in sp if num(r["gpu_ms"]) is not None]
+        g = statistics.median(gs) if gs else None
         l2 = max(float(r["rel_l2_vs_exact"]) for r in sp) if sp else None
         body.append((n, res, fmt(ex), fmt(w), fmt(g), fmt(ex / w if w else None, "%.1f"), fmt(l2, "%.3g")))
     return (table(("particles", "res", "exact CPU ms", "slice splat ms (wall)", "slice splat ms (GL clock)",

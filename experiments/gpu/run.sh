@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The papers' speed tables on one GPU, in one prepared run (docs/DESIGN.md, "Timing"):
+# The papers' speed tables on one GPU, in one prepared run (docs/DESIGN.md, "Timing"),
+# budgeted to BUDGET_S seconds (default 220: under 4 minutes):
 #   xiao2017 Table 1   raycast_pca on synthetic boxes of about the paper's particle
 #                      counts (0.78M .. 142.6M) at 512^2 .. 1920^2
 #   xu2022 Fig. 9      aniso_ssf, 5 filters x anisotropy off/on, against particle count
@@ -13,7 +14,7 @@
 # where the script runs (synthetic boxes, the simulator): nothing big is carried.
 #
 # Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR]
-#   --quick  the same steps at small sizes, for llvmpipe (CI: under 3 minutes)
+#   --quick  the same steps at small sizes, for llvmpipe (the ctest gpu_quick; budget 170 s)
 #   -o DIR   output folder (default out/gpu, out/gpu-quick with --quick); it holds
 #            env.csv, status.csv and one CSV per step
 #   --bin    folder with fluidsurf, render_bench, inacio_tables, density_bench: a
@@ -21,18 +22,22 @@
 # FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 220, quick 170)
 # caps the whole run: a cell that would start after the budget is spent is written
 # to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
+# Exit status: 0 when every cell finished, 1 when one failed or was cut or skipped
+# (status.csv says which; the rows of the others are written all the same), 2 bad usage.
 set -uo pipefail
-cd "$(dirname "$0")/../.."
-QUICK=0 OUTDIR="" BINDIR=build-lean
+usage() { echo "run.sh: $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR])" >&2; exit 2; }
+QUICK=0 OUTDIR="" BINDIR=""
 while [ $# -gt 0 ]; do
   case $1 in
     --quick) QUICK=1 ;;
-    -o) OUTDIR=$2; shift ;;
-    --bin) BINDIR=$2; shift ;;
-    *) echo "run.sh: unknown argument $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR])" >&2; exit 2 ;;
+    -o|--bin) [ $# -ge 2 ] || usage "$1 needs a folder"
+              if [ "$1" = -o ]; then OUTDIR=$(realpath -m "$2"); else BINDIR=$(realpath -m "$2"); fi; shift ;;
+    *) usage "unknown argument $1" ;;
   esac
   shift
 done
+cd "$(dirname "$0")/../.." # relative -o and --bin were resolved against the caller's folder
+[ -n "$BINDIR" ] || BINDIR=build-lean
 [ -n "$OUTDIR" ] || OUTDIR=out/gpu$([ $QUICK = 1 ] && echo -quick)
 export FLUIDSURF_GL=${FLUIDSURF_GL:-egl}
 # glvnd finds NVIDIA's EGL through its vendor file; a bare node may keep it off the default path
@@ -65,7 +70,7 @@ fi
 mkdir -p "$OUTDIR"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-START=$(date +%s)
+START=$(date +%s) FAILED=0
 left() { echo $((BUDGET_S - ($(date +%s) - START))); }
 
 # status.csv: one row per cell: what ran, how long, how it ended
@@ -76,14 +81,16 @@ cell() {
   local step=$1 name=$2 limit=$3; shift 3
   local l; l=$(left)
   if [ "$l" -le 5 ]; then
-    echo "$step,$name,0,,skipped: the ${BUDGET_S} s budget is spent" >> "$OUTDIR/status.csv"; return
+    echo "$step,$name,0,,skipped: the ${BUDGET_S} s budget is spent" >> "$OUTDIR/status.csv"; FAILED=1; return
   fi
   [ "$limit" -gt "$l" ] && limit=$l
-  local t0 rc=0; t0=$(date +%s)
-  timeout "$limit" "$@" >> "$TMP/$step.raw" 2>> "$TMP/$step.err" || rc=$?
+  local t0 rc=0 err=$TMP/cell.err; t0=$(date +%s)
+  timeout "$limit" "$@" >> "$TMP/$step.raw" 2> "$err" || rc=$?
+  cat "$err" >> "$TMP/$step.err"
   local note=""
   [ $rc = 124 ] && note="cut at ${limit} s: the rows finished before are kept"
-  [ $rc != 0 ] && [ $rc != 124 ] && note="failed: $(tail -1 "$TMP/$step.err" | tr ',' ';' | cut -c1-200)"
+  [ $rc != 0 ] && [ $rc != 124 ] && note="failed: $(tail -1 "$err" | tr ',' ';' | cut -c1-200)"
+  [ $rc != 0 ] && FAILED=1
   echo "$step,$name,$(($(date +%s) - t0)),$rc,$note" >> "$OUTDIR/status.csv"
   printf '%-10s %-28s %4ss  exit %s %s\n' "$step" "$name" "$(($(date +%s) - t0))" "$rc" "$note"
 }
@@ -149,3 +156,4 @@ if [ -f "$TMP/demo/timings.csv" ]; then
   grep -v '^#' "$TMP/demo/metrics.csv" > "$OUTDIR/demo_metrics.csv"
 fi
 echo "run.sh: $(($(date +%s) - START)) s; wrote $OUTDIR: $(cd "$OUTDIR" && ls | tr '\n' ' ')"
+[ $FAILED = 0 ] || { echo "run.sh: some cells did not finish: see $OUTDIR/status.csv" >&2; exit 1; }

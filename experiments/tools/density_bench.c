@@ -20,6 +20,7 @@
 #include "gl_stage.h"
 #include "scene.h"
 #include "timing.h"
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -82,9 +83,10 @@ int main(int argc, char **argv)
         double ms = st.ms[0];
         if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
         if (r == 0) continue;
-        printf("%s,%zu,%d,%s,slice_splat,%d,%.2f,%.3g,%zu,\"%s\",%d,%.2f,\"%s\"\n", label, p.n, res, dims, r, ms,
-               fs_density_grid_rel_l2(&cur, &ex), fs_slice_splat_disks(ss), ctx.renderer, threads, st.gpu_ms[0],
-               ctx.version);
+        char gpu[32] = ""; /* empty when the context has no GL clock */
+        if (!isnan(st.gpu_ms[0])) snprintf(gpu, sizeof gpu, "%.2f", st.gpu_ms[0]);
+        printf("%s,%zu,%d,%s,slice_splat,%d,%.2f,%.3g,%zu,\"%s\",%d,%s,\"%s\"\n", label, p.n, res, dims, r, ms,
+               fs_density_grid_rel_l2(&cur, &ex), fs_slice_splat_disks(ss), ctx.renderer, threads, gpu, ctx.version);
         fflush(stdout);
     }
     fs_slice_splat_destroy(ss);
