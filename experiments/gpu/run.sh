@@ -22,6 +22,8 @@
 # FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 220, quick 170)
 # caps the whole run: a cell that would start after the budget is spent is written
 # to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
+# Each step but the last has a share of it (SHARE_* seconds), so one slow step cannot
+# starve the others; xiao2017's Table 1 comes last and has what is left.
 # Exit status: 0 when every cell finished, 1 when one failed or was cut or skipped
 # (status.csv says which; the rows of the others are written all the same), 2 bad usage.
 set -uo pipefail
@@ -58,6 +60,7 @@ if [ $QUICK = 1 ]; then
   IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=1 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
   DG_SCENE=experiments/scenes/dam_break_ply.json DG_RES="64" DG_RUNS=1
   DEMO_SIZE=128 DEMO_RUNS=1
+  SHARE_F9=${SHARE_F9:-30} SHARE_IN=${SHARE_IN:-30} SHARE_DG=${SHARE_DG:-15} SHARE_DEMO=${SHARE_DEMO:-40}
 else
   BUDGET_S=${BUDGET_S:-220}
   # cube sides whose cubes come nearest xiao2017's sets: 779,752 2,027,776 12,394,215 37,975,520 142,612,764
@@ -66,12 +69,19 @@ else
   IN_COUNTS="1024 2048 4096 8192 32768 131072" IN_SETTLE=2 IN_FRAMES=3 IN_SIZE=512 IN_GRID=128 IN_LIMIT=20
   DG_SCENE=experiments/scenes/box_200k.json DG_RES="128 256" DG_RUNS=3
   DEMO_SIZE=1024 DEMO_RUNS=3
+  SHARE_F9=${SHARE_F9:-40} SHARE_IN=${SHARE_IN:-40} SHARE_DG=${SHARE_DG:-20} SHARE_DEMO=${SHARE_DEMO:-30}
 fi
 mkdir -p "$OUTDIR"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-START=$(date +%s) FAILED=0
-left() { echo $((BUDGET_S - ($(date +%s) - START))); }
+START=$(date +%s) FAILED=0 STEP_END=""
+left() { # seconds left: of the whole budget, and of the current step's share
+  local now l s; now=$(date +%s); l=$((BUDGET_S - (now - START)))
+  [ -n "$STEP_END" ] && s=$((STEP_END - now)) && [ "$s" -lt "$l" ] && l=$s
+  echo "$l"
+}
+step_share() { STEP_END=$(($(date +%s) + $1)); } # the next cells' share, in seconds; "" lifts it
+
 
 # status.csv: one row per cell: what ran, how long, how it ended
 echo "step,cell,seconds,exit,note" > "$OUTDIR/status.csv"
@@ -81,7 +91,7 @@ cell() {
   local step=$1 name=$2 limit=$3; shift 3
   local l; l=$(left)
   if [ "$l" -le 5 ]; then
-    echo "$step,$name,0,,skipped: the ${BUDGET_S} s budget is spent" >> "$OUTDIR/status.csv"; FAILED=1; return
+    echo "$step,$name,0,,skipped: the budget (${BUDGET_S} s, or this step's share) is spent" >> "$OUTDIR/status.csv"; FAILED=1; return
   fi
   [ "$limit" -gt "$l" ] && limit=$l
   local t0 rc=0 err=$TMP/cell.err; t0=$(date +%s)
@@ -121,23 +131,28 @@ variants=()
 for a in off on; do for f in none gaussian bilateral curvature narrow; do
   variants+=("aniso_ssf.anisotropy=$a;aniso_ssf.filter=$f")
 done; done
+step_share "$SHARE_F9"
 for side in $F9_SIDES; do
   cell xu2022_fig9 "box_${side}^3" 90 "$RB" "$(box_scene "$side")" "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
 done
 # ---- inacio2010 Tables I and II: simulation and rendering, CPU path and GPU path ----
+step_share "$SHARE_IN"
 for n in $IN_COUNTS; do for path in cpu gpu; do
   cell inacio2010_tables "${n}_$path" 60 "$IT" "$n" "$path" "$IN_SETTLE" "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
 done; done
 # ---- iwasaki2006 section 4: the density grid, slice splatting against the exact CPU sum ----
+step_share "$SHARE_DG"
 for res in $DG_RES; do
   cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
 done
 # ---- the demo comparison ----
+step_share "$SHARE_DEMO"
 cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \
   -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/demo"
 
 # ---- xiao2017 Table 1: raycast_pca, particle count x image size; last, largest set last,
 # so a spent budget cuts only the biggest cells ----
+STEP_END="" # the rest of the budget
 for side in $T1_SIDES; do
   cell xiao2017_table1 "box_${side}^3" 120 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS"
 done
