@@ -10,7 +10,8 @@
  *
  * - as OpenImageIO's render_text and text_size, the pen moves by each glyph's
  *   whole-pixel advance (here the unhinted advance rounded), with no kerning,
- *   and every glyph starts on a whole pixel.
+ *   every glyph starts on a whole pixel, and a glyph's bitmap replaces the
+ *   coverage under it (overlapping boxes keep the later glyph's).
  *
  * Glyph shapes differ slightly from FreeType's (no hinting), so panels are not
  * bit-identical to the full build's. A missing font file is a soft condition
@@ -80,7 +81,7 @@ static int next_cp(const char **s)
 }
 
 /* Walks the glyphs of text at pixel size `size`: box (relative to pen start and
- * baseline) and, if cover is given, their coverage added at (ox, oy) + glyph offset. */
+ * baseline) and, if cover is given, their coverage written at (ox, oy) + glyph offset. */
 typedef struct box { int x0, y0, x1, y1, any; } box;
 
 static void layout(const char *text, int size, box *b, float *cover, int cw, int ch, int ox, int oy)
@@ -112,9 +113,9 @@ static void layout(const char *text, int size, box *b, float *cover, int cw, int
                     for (int i = 0; i < x1 - x0; i++) {
                         int px = ox + gx + i, py = oy + y0 + j;
                         if (px < 0 || py < 0 || px >= cw || py >= ch) continue;
-                        float *d = cover + (size_t)py * cw + px;
-                        *d += glyph[(size_t)j * (x1 - x0) + i] / 255.0f;
-                        if (*d > 1) *d = 1;
+                        /* Set, not added: where glyph boxes overlap, the later glyph's
+                         * bitmap replaces the earlier one's, as in render_text. */
+                        cover[(size_t)py * cw + px] = glyph[(size_t)j * (x1 - x0) + i] / 255.0f;
                     }
             }
         }
