@@ -7,7 +7,9 @@ set -euo pipefail
 bin=${1:-build-lean/fluidsurf}
 [ -x "$bin" ] || { echo "check_lean: $bin: no such executable" >&2; exit 2; }
 out=$(ldd "$bin") || { echo "check_lean: ldd $bin failed" >&2; exit 1; }
-runtime='^(linux-vdso\.so|ld-linux|libc\.so|libm\.so|libdl\.so|libpthread\.so|librt\.so)'
+# shellcheck source=scripts/lean_libs.sh
+source "$(dirname "$0")/lean_libs.sh" # lean_runtime
+runtime=$lean_runtime
 heavy='vtk|openvdb|OpenImageIO|tbb|boost|LLVM|OSMesa|libGL\.|libGLX|glapi|glfw'
 n=0 total=0 fail=0
 while read -r name arrow path _; do

@@ -2,7 +2,7 @@
 # Packs the lean build (scripts/build_lean.sh) into DIR for a bare machine: the
 # fluidsurf binary, the lean experiment tools, and the shared libraries they link
 # (resolved through ldd, copied as real files under their SONAME, C runtime
-# excepted). The binaries' RUNPATH $ORIGIN finds them there. --gl also copies
+# excepted). The binaries' DT_RPATH $ORIGIN finds them there. --gl also copies
 # this machine's GL loaders (glvnd: libEGL.so.1, libGLdispatch.so.0,
 # libOpenGL.so.0), for a GPU node that has only the NVIDIA driver.
 # usage: scripts/pack_lean.sh [--gl] [--build DIR] OUTDIR
@@ -25,7 +25,9 @@ for t in density_bench inacio_tables render_bench edge_bands; do
   [ -x "$build/experiments/$t" ] && bins+=("$build/experiments/$t")
 done
 [ -x "${bins[0]}" ] || { echo "pack_lean: ${bins[0]}: not built (run scripts/build_lean.sh)" >&2; exit 2; }
-runtime='^(linux-vdso\.so|ld-linux|libc\.so|libm\.so|libdl\.so|libpthread\.so|librt\.so)'
+# shellcheck source=scripts/lean_libs.sh
+source scripts/lean_libs.sh # lean_runtime
+runtime=$lean_runtime
 mkdir -p "$out"
 copy_lib() { # SONAME PATH: the real file, under its SONAME
   cp -L "$2" "$out/$1.tmp.$$" && mv -f "$out/$1.tmp.$$" "$out/$1"

@@ -5,6 +5,7 @@
 #include "golden.h"
 #include "image_io.h"
 #include <dirent.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -208,6 +209,46 @@ static void test_errors(void)
     CHECK(back.pix == NULL && back.chnames == NULL, "failed read left pointers");
     char buf[16];
     CHECK(fs_read_image_attr(nofile, "x", buf, sizeof buf) == -1, "attribute of a missing file");
+    /* A folder is bad input, not an image (nor, in the lean build, an "empty file"). */
+    CHECK(fs_read_image(FS_TEST_OUT, &back) == FS_ERR_INPUT, "a folder read as an image");
+    printf("expected error: %s\n", fs_error_message());
+    CHECK(back.pix == NULL && !strchr(fs_error_message(), '\n'), "folder read: %s", fs_error_message());
+#if !FS_WITH_OIIO
+    CHECK(strstr(fs_error_message(), ": is a folder") != NULL, "folder read: %s", fs_error_message());
+
+    /* stb sizes (w*nch + 1) * h in int: refused before any pixel is read (the buffer is one byte). */
+    unsigned char one = 0;
+    rc = fs_write_png8(keep, &one, 30000, 30000, 4);
+    CHECK(rc == FS_ERR_INPUT, "a 30000x30000 RGBA PNG: rc %d", rc);
+    printf("expected error: %s\n", fs_error_message());
+    CHECK(strncmp(fs_error_message(), keep, strlen(keep)) == 0 && !strchr(fs_error_message(), '\n') &&
+              strstr(fs_error_message(), "too large"),
+          "message: %s", fs_error_message());
+    CHECK(file_hash(keep) == before, "a refused write changed the existing file");
+
+    /* An EXR whose header claims a huge data window: bad input, refused before allocating. */
+    const char *huge = FS_TEST_OUT "/image_io_huge_window.exr";
+    CHECK(fs_write_exr(huge, &img, NULL, 0) == FS_OK, "write exr: %s", fs_error_message());
+    f = fopen(huge, "r+b");
+    unsigned char hdr[4096];
+    size_t got = f ? fread(hdr, 1, sizeof hdr, f) : 0;
+    static const char key[] = "dataWindow\0box2i"; /* then size 16 and xmin, ymin, xmax, ymax */
+    long at = -1;
+    for (size_t i = 0; i + sizeof key + 20 <= got && at < 0; i++)
+        if (!memcmp(hdr + i, key, sizeof key)) at = (long)(i + sizeof key + 4);
+    CHECK(at > 0, "no dataWindow attribute in the written EXR");
+    if (f && at > 0) {
+        const int32_t max[2] = {999999, 999999}; /* 10^12 pixels, little-endian as EXR stores them */
+        fseek(f, at + 8, SEEK_SET);
+        fwrite(max, sizeof max, 1, f);
+    }
+    if (f) fclose(f);
+    rc = fs_read_image(huge, &back);
+    printf("expected error: %s\n", fs_error_message());
+    CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "1000000x1000000 is too large"),
+          "huge data window: rc %d, %s", rc, fs_error_message());
+    CHECK(back.pix == NULL, "failed read left pointers");
+#endif
 }
 
 /* A deterministic test pattern, linear RGBA. */

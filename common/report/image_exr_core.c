@@ -9,6 +9,7 @@
 #include "output_file.h"
 
 #include <openexr.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,6 +42,15 @@ static const char *why(exr_result_t rc)
 
 /* ---- writing ---- */
 
+/* Channel c's name in the file: the caller's, or "C<c>" (as image_oiio.cpp names it) when it has none. */
+static const char *channel_name(const fs_image *img, int c, char buf[16])
+{
+    const char *n = img->chnames ? img->chnames[c] : NULL;
+    if (n && *n) return n;
+    snprintf(buf, 16, "C%d", c);
+    return buf;
+}
+
 static exr_result_t write_parts(exr_context_t f, const fs_image *img, const fs_attr *attrs, int nattrs)
 {
     int part;
@@ -48,8 +58,7 @@ static exr_result_t write_parts(exr_context_t f, const fs_image *img, const fs_a
     if (!rc) rc = exr_initialize_required_attr_simple(f, part, img->w, img->h, EXR_COMPRESSION_ZIP);
     char fallback[16];
     for (int c = 0; !rc && c < img->nch; c++) {
-        const char *n = img->chnames ? img->chnames[c] : NULL;
-        if (!n || !*n) snprintf(fallback, sizeof fallback, "C%d", c), n = fallback;
+        const char *n = channel_name(img, c, fallback);
         /* Perceptually logarithmic, OpenEXR's (and so OpenImageIO's) default. */
         rc = exr_add_channel(f, part, n, EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
     }
@@ -77,12 +86,9 @@ static exr_result_t write_parts(exr_context_t f, const fs_image *img, const fs_a
             exr_coding_channel_info_t *ch = &enc.channels[k];
             /* The file sorts channels by name: find ours. Duplicate names keep the first. */
             int c = 0;
-            for (c = 0; c < img->nch; c++) {
-                const char *n = img->chnames ? img->chnames[c] : NULL;
-                char tmp[16];
-                if (!n || !*n) snprintf(tmp, sizeof tmp, "C%d", c), n = tmp;
-                if (!strcmp(n, ch->channel_name)) break;
-            }
+            char tmp[16];
+            for (c = 0; c < img->nch; c++)
+                if (!strcmp(channel_name(img, c, tmp), ch->channel_name)) break;
             if (c == img->nch) c = 0;
             ch->encode_from_ptr = (const uint8_t *)(img->pix + (size_t)(ci.start_y) * row + c);
             ch->user_pixel_stride = (int32_t)(img->nch * sizeof(float));
@@ -154,8 +160,11 @@ static int read_pixels(exr_context_t f, const char *path, fs_image *img)
         return fs_fail(FS_ERR_INPUT, "%s: only scanline EXR files are read (this one is tiled or deep)", path);
     int64_t w = (int64_t)dw.max.x - dw.min.x + 1, h = (int64_t)dw.max.y - dw.min.y + 1;
     int nch = chl ? chl->num_channels : 0;
-    if (w <= 0 || h <= 0 || nch <= 0 || w > (1 << 20) || h > (1 << 20))
-        return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
+    if (w <= 0 || h <= 0 || nch <= 0) return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
+    /* A corrupt or hostile header's data window: refused as bad input before allocating. */
+    if (w > (1 << 20) || h > (1 << 20) || w * h > ((int64_t)1 << 31) ||
+        (uint64_t)(w * h) > SIZE_MAX / sizeof(float) / (uint64_t)nch)
+        return fs_fail(FS_ERR_INPUT, "%s: image of %lldx%lld is too large", path, (long long)w, (long long)h);
     /* order[k]: the file's channel k goes to output channel order[k]. */
     int order[1024];
     if (nch > 1024) return fs_fail(FS_ERR_INPUT, "%s: %d channels (at most 1024 are read)", path, nch);

@@ -1,6 +1,7 @@
 // Thin OpenImageIO adapter behind image_io.h. Every write goes to a temporary
 // file next to the target (output_file.h), so the format is named explicitly:
-// the temporary name has no useful extension.
+// the temporary name has no useful extension. fs_write_png's sRGB conversion
+// and fs_image_free are in image_util.c, shared with the build without OIIO.
 #include "image_io.h"
 #include "fs_error.h"
 #include "output_file.h"
@@ -11,7 +12,6 @@
 #include <cstring>
 #include <memory>
 #include <string>
-#include <vector>
 
 using namespace OIIO;
 
@@ -78,29 +78,6 @@ extern "C" int fs_write_png8(const char *path, const unsigned char *pix, int w, 
     return write_safely(path, "png", spec, TypeDesc::UINT8, pix);
 }
 
-extern "C" int fs_write_png(const char *path, const fs_image *img)
-{
-    if (!valid_image(img)) return fs_fail(FS_ERR_INPUT, "%s: no image to write", path);
-    // Colour: first 3 channels sRGB-encoded (gray for 1-2 channel images); alpha linear.
-    int color = img->nch >= 3 ? 3 : 1, out_nch = img->nch >= 4 ? 4 : color;
-    size_t n = (size_t)img->w * img->h;
-    std::vector<unsigned char> buf;
-    try {
-        buf.resize(n * out_nch);
-    } catch (const std::bad_alloc &) {
-        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, img->w, img->h);
-    }
-    for (size_t i = 0; i < n; i++) {
-        const float *p = img->pix + i * img->nch;
-        for (int c = 0; c < color; c++) buf[i * out_nch + c] = fs_srgb_encode8(p[c]);
-        if (out_nch == 4) {
-            float a = p[3] > 0 ? (p[3] < 1 ? p[3] : 1) : 0; // also NaN -> 0
-            buf[i * out_nch + 3] = (unsigned char)(a * 255.0f + 0.5f);
-        }
-    }
-    return fs_write_png8(path, buf.data(), img->w, img->h, out_nch);
-}
-
 extern "C" int fs_read_image(const char *path, fs_image *img)
 {
     std::memset(img, 0, sizeof *img);
@@ -153,14 +130,4 @@ extern "C" int fs_read_image_attr(const char *path, const char *name, char *buf,
         buf[size - 1] = 0;
     }
     return 1;
-}
-
-extern "C" void fs_image_free(fs_image *img)
-{
-    if (!img) return;
-    if (img->chnames)
-        for (int c = 0; c < img->nch; c++) std::free((void *)img->chnames[c]);
-    std::free((void *)img->chnames);
-    std::free(img->pix);
-    std::memset(img, 0, sizeof *img);
 }

@@ -8,9 +8,11 @@
 #include "output_file.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 /* zlib instead of stb's own deflate: smaller files, and the library is linked anyway. */
@@ -34,7 +36,12 @@ static unsigned char *zlib_compress(unsigned char *data, int len, int *out_len, 
 #define STBI_ONLY_PNG
 #define STBI_NO_LINEAR
 #define STBI_NO_HDR
-/* stb declares static functions this file never uses: reported at the file's end. */
+/* -Wunused-function is off for the whole file, on purpose before the push: stb
+ * declares static functions that STBI_ONLY_PNG leaves undefined
+ * (stbi_load_gif_from_memory, ...), and GCC reports "declared 'static' but never
+ * defined" at the end of the file, where a pop would have restored the warning.
+ * (Unused static functions that stb does define, such as stbi_write_png, are
+ * judged where they are defined and would be covered by the push alone.) */
 #pragma GCC diagnostic ignored "-Wunused-function"
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wsign-compare"
@@ -43,6 +50,18 @@ static unsigned char *zlib_compress(unsigned char *data, int len, int *out_len, 
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
+/* Writes n bytes to path (an fs_output_begin temporary), checking every step. */
+static int write_all(const char *path, const char *tmp, const unsigned char *data, size_t n)
+{
+    FILE *f = fopen(tmp, "wb");
+    if (!f) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(errno));
+    int ok = fwrite(data, 1, n, f) == n && fflush(f) == 0;
+    int err = ok ? 0 : errno;
+    if (fclose(f) != 0 && ok) ok = 0, err = errno;
+    if (!ok) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(err ? err : EIO));
+    return FS_OK;
+}
+
 int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
 {
     if (!pix || w <= 0 || h <= 0 || nch < 1 || nch > 4)
@@ -50,36 +69,25 @@ int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int 
     /* libpng's (so OpenImageIO's) limit, kept so both builds accept the same images. */
     if (w > 1000000 || h > 1000000)
         return fs_fail(FS_ERR_RUNTIME, "%s: a %dx%d PNG exceeds 1000000 pixels a side", path, w, h);
+    /* stb_image_write sizes its filtered copy, (w*nch + 1) * h bytes, in int. */
+    if (((size_t)w * nch + 1) * (size_t)h > INT_MAX)
+        return fs_fail(FS_ERR_INPUT,
+                       "%s: a %dx%d PNG of %d channels is too large to write without OpenImageIO (FS_WITH_OIIO=ON)",
+                       path, w, h, nch);
+    int len = 0;
+    unsigned char *png = stbi_write_png_to_mem(pix, w * nch, w, h, nch, &len);
+    if (!png || len <= 0) {
+        free(png);
+        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, w, h);
+    }
     char tmp[4096];
     int rc = fs_output_begin(path, tmp, sizeof tmp);
-    if (rc) return rc;
-    int ok = stbi_write_png(tmp, w, h, nch, pix, w * nch);
-    if (!ok) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: cannot write the PNG (disk full or out of memory?)", path);
+    if (!rc) {
+        rc = write_all(path, tmp, png, (size_t)len);
+        if (rc) fs_output_end(path, tmp, 0);
+        else rc = fs_output_end(path, tmp, 1);
     }
-    return fs_output_end(path, tmp, 1);
-}
-
-int fs_write_png(const char *path, const fs_image *img)
-{
-    if (!img || img->w <= 0 || img->h <= 0 || img->nch <= 0 || !img->pix)
-        return fs_fail(FS_ERR_INPUT, "%s: no image to write", path);
-    /* As image_oiio.cpp: first 3 channels sRGB-encoded (gray for 1-2 channels); alpha linear. */
-    int color = img->nch >= 3 ? 3 : 1, out_nch = img->nch >= 4 ? 4 : color;
-    size_t n = (size_t)img->w * img->h;
-    unsigned char *buf = malloc(n * out_nch);
-    if (!buf) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, img->w, img->h);
-    for (size_t i = 0; i < n; i++) {
-        const float *p = img->pix + i * img->nch;
-        for (int c = 0; c < color; c++) buf[i * out_nch + c] = fs_srgb_encode8(p[c]);
-        if (out_nch == 4) {
-            float a = p[3] > 0 ? (p[3] < 1 ? p[3] : 1) : 0; /* also NaN -> 0 */
-            buf[i * out_nch + 3] = (unsigned char)(a * 255.0f + 0.5f);
-        }
-    }
-    int rc = fs_write_png8(path, buf, img->w, img->h, out_nch);
-    free(buf);
+    free(png);
     return rc;
 }
 
@@ -89,9 +97,16 @@ static int sniff(const char *path, file_kind *kind)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && !S_ISREG(st.st_mode)) {
+        fclose(f);
+        return fs_fail(FS_ERR_INPUT, S_ISDIR(st.st_mode) ? "%s: is a folder" : "%s: not a regular file", path);
+    }
     unsigned char m[8] = {0};
     size_t got = fread(m, 1, sizeof m, f);
+    int err = ferror(f) ? (errno ? errno : EIO) : 0;
     fclose(f);
+    if (err) return fs_fail(FS_ERR_INPUT, "%s: cannot read: %s", path, strerror(err));
     if (got == 0) return fs_fail(FS_ERR_INPUT, "%s: empty file", path);
     static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     *kind = got >= 4 && !memcmp(m, exr, 4) ? KIND_EXR : got == 8 && !memcmp(m, png, 8) ? KIND_PNG : KIND_OTHER;
@@ -142,14 +157,4 @@ int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
     if (sniff(path, &kind)) return -1;
     if (kind == KIND_EXR) return fs_exr_read_attr(path, name, buf, size);
     return 0; /* our PNGs carry no attributes */
-}
-
-void fs_image_free(fs_image *img)
-{
-    if (!img) return;
-    if (img->chnames)
-        for (int c = 0; c < img->nch; c++) free((void *)img->chnames[c]);
-    free((void *)img->chnames);
-    free(img->pix);
-    memset(img, 0, sizeof *img);
 }

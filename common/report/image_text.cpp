@@ -7,10 +7,12 @@
 // widened where the text itself reaches further).
 //
 // render_text draws glyph coverage into a small one-channel buffer; the
-// coverage is blended into the caller's linear RGBA in sRGB-encoded values.
+// coverage is blended into the caller's linear RGBA in sRGB-encoded values
+// (text_blend.c, shared with text_stb.c).
 #include "figure.h"
 #include "fs_error.h"
 #include "image_io.h"
+#include "text_blend.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -75,18 +77,6 @@ extern "C" int fs_text_size(const char *text, int size, int *w, int *h)
     return FS_OK;
 }
 
-// Blends coverage a of colour rgb over a linear pixel in sRGB-encoded values,
-// as text renderers do: blended in linear light, antialiased dark-on-light
-// strokes wash out to thin grey lines at 11-12 px.
-void blend_encoded(float *d, const float rgb[3], float a)
-{
-    for (int c = 0; c < 3; c++) {
-        float e = a * fs_srgb_encode8(rgb[c]) + (1 - a) * fs_srgb_encode8(d[c]);
-        d[c] = fs_srgb_decode8((unsigned char)(e + 0.5f));
-    }
-    d[3] = a + (1 - a) * d[3];
-}
-
 } // namespace
 
 extern "C" int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, int size, const float rgb[3])
@@ -108,16 +98,6 @@ extern "C" int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, i
         err = err.substr(0, err.find('\n'));
         return fs_fail(FS_ERR_RUNTIME, "text \"%s\": %s", text, err.empty() ? "cannot draw it" : err.c_str());
     }
-    const float *a = (const float *)cover.localpixels();
-    for (int j = 0; j < p.h + 2 * m; j++) {
-        int py = y - m + j;
-        if (py < 0 || py >= im->h) continue;
-        for (int i = 0; i < p.w + 2 * m; i++) {
-            int px = x - m + i;
-            float cov = a[(size_t)j * (p.w + 2 * m) + i];
-            if (px < 0 || px >= im->w || !(cov > 0)) continue;
-            blend_encoded(im->pix + 4 * ((size_t)py * im->w + px), rgb, cov < 1 ? cov : 1);
-        }
-    }
+    fs_text_blend(im, x - m, y - m, (const float *)cover.localpixels(), p.w + 2 * m, p.h + 2 * m, rgb);
     return FS_OK;
 }

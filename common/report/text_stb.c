@@ -8,13 +8,19 @@
  * - the font size is FreeType's pixel size (em height), as OpenImageIO uses it;
  * - coverage is blended into the caller's linear RGBA in sRGB-encoded values.
  *
+ * - as OpenImageIO's render_text and text_size, the pen moves by each glyph's
+ *   whole-pixel advance (here the unhinted advance rounded), with no kerning,
+ *   every glyph starts on a whole pixel, and a glyph's bitmap replaces the
+ *   coverage under it (overlapping boxes keep the later glyph's).
+ *
  * Glyph shapes differ slightly from FreeType's (no hinting), so panels are not
  * bit-identical to the full build's. A missing font file is a soft condition
- * here: text is measured with a fixed estimate, nothing is drawn, and one note
- * says so, so a bare GPU node still writes every image of `compare`. */
+ * here (the full build fails with FS_ERR_RUNTIME): text is measured with a fixed
+ * estimate (0.6 em a code point), nothing is drawn, and one note says so, so a
+ * bare GPU node still writes every image of `compare`. */
 #include "figure.h"
 #include "fs_error.h"
-#include "srgb.h"
+#include "text_blend.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -75,23 +81,21 @@ static int next_cp(const char **s)
 }
 
 /* Walks the glyphs of text at pixel size `size`: box (relative to pen start and
- * baseline) and, if cover is given, their coverage added at (ox, oy) + glyph offset. */
+ * baseline) and, if cover is given, their coverage written at (ox, oy) + glyph offset. */
 typedef struct box { int x0, y0, x1, y1, any; } box;
 
 static void layout(const char *text, int size, box *b, float *cover, int cw, int ch, int ox, int oy)
 {
-    float scale = stbtt_ScaleForMappingEmToPixels(&font, (float)size), pen = 0;
-    int prev = 0;
+    float scale = stbtt_ScaleForMappingEmToPixels(&font, (float)size);
+    int pen = 0;
     memset(b, 0, sizeof *b);
     unsigned char *glyph = NULL;
     size_t glyph_cap = 0;
     for (const char *s = text; *s;) {
         int cp = next_cp(&s), adv, lsb, x0, y0, x1, y1;
-        if (prev) pen += scale * stbtt_GetCodepointKernAdvance(&font, prev, cp);
-        float base = floorf(pen), shift = pen - base;
-        stbtt_GetCodepointBitmapBoxSubpixel(&font, cp, scale, scale, shift, 0, &x0, &y0, &x1, &y1);
+        stbtt_GetCodepointBitmapBox(&font, cp, scale, scale, &x0, &y0, &x1, &y1);
         if (x1 > x0 && y1 > y0) {
-            int gx = (int)base + x0;
+            int gx = pen + x0;
             if (!b->any || gx < b->x0) b->x0 = gx;
             if (!b->any || gx + (x1 - x0) > b->x1) b->x1 = gx + (x1 - x0);
             if (!b->any || y0 < b->y0) b->y0 = y0;
@@ -104,23 +108,22 @@ static void layout(const char *text, int size, box *b, float *cover, int cw, int
                 glyph_cap = glyph ? need : 0;
             }
             if (cover && glyph) {
-                stbtt_MakeCodepointBitmapSubpixel(&font, glyph, x1 - x0, y1 - y0, x1 - x0, scale, scale, shift, 0, cp);
+                stbtt_MakeCodepointBitmap(&font, glyph, x1 - x0, y1 - y0, x1 - x0, scale, scale, cp);
                 for (int j = 0; j < y1 - y0; j++)
                     for (int i = 0; i < x1 - x0; i++) {
                         int px = ox + gx + i, py = oy + y0 + j;
                         if (px < 0 || py < 0 || px >= cw || py >= ch) continue;
-                        float *d = cover + (size_t)py * cw + px;
-                        *d += glyph[(size_t)j * (x1 - x0) + i] / 255.0f;
-                        if (*d > 1) *d = 1;
+                        /* Set, not added: where glyph boxes overlap, the later glyph's
+                         * bitmap replaces the earlier one's, as in render_text. */
+                        cover[(size_t)py * cw + px] = glyph[(size_t)j * (x1 - x0) + i] / 255.0f;
                     }
             }
         }
         stbtt_GetCodepointHMetrics(&font, cp, &adv, &lsb);
-        pen += scale * adv;
-        prev = cp;
+        pen += (int)lroundf(scale * adv);
     }
     free(glyph);
-    if (!b->any) b->x1 = (int)ceilf(pen);
+    if (!b->any) b->x1 = pen;
 }
 
 /* Where text goes relative to its top-left corner: pen offset and box size. */
@@ -131,7 +134,9 @@ static void place(const char *text, int size, placement *p)
     if (!have_font) { /* no font: an estimate of DejaVuSans' metrics, so layouts keep their shape */
         p->pen_x = 0;
         p->baseline = (size * 19 + 10) / 20;
-        p->w = (int)(strlen(text) * size * 0.6 + 0.5);
+        size_t n = 0;
+        for (const char *s = text; *s; n++) next_cp(&s);
+        p->w = (int)(n * size * 0.6 + 0.5);
         p->h = (size * 6 + 2) / 5;
         return;
     }
@@ -159,18 +164,6 @@ int fs_text_size(const char *text, int size, int *w, int *h)
     return FS_OK;
 }
 
-/* Blends coverage a of colour rgb over a linear pixel in sRGB-encoded values, as
- * text renderers do: blended in linear light, antialiased dark-on-light strokes
- * wash out to thin grey lines at 11-12 px. */
-static void blend_encoded(float *d, const float rgb[3], float a)
-{
-    for (int c = 0; c < 3; c++) {
-        float e = a * fs_srgb_encode8(rgb[c]) + (1 - a) * fs_srgb_encode8(d[c]);
-        d[c] = fs_srgb_decode8((unsigned char)(e + 0.5f));
-    }
-    d[3] = a + (1 - a) * d[3];
-}
-
 int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, int size, const float rgb[3])
 {
     if (!im || !im->pix || im->w <= 0 || im->h <= 0) return fs_fail(FS_ERR_INPUT, "text: no image to draw on");
@@ -185,16 +178,7 @@ int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, int size, co
     if (!cover) return fs_fail(FS_ERR_RUNTIME, "text \"%s\": out of memory", text);
     box b;
     layout(text, size, &b, cover, cw, ch, m + p.pen_x, m + p.baseline);
-    for (int j = 0; j < ch; j++) {
-        int py = y - m + j;
-        if (py < 0 || py >= im->h) continue;
-        for (int i = 0; i < cw; i++) {
-            int px = x - m + i;
-            float cov = cover[(size_t)j * cw + i];
-            if (px < 0 || px >= im->w || !(cov > 0)) continue;
-            blend_encoded(im->pix + 4 * ((size_t)py * im->w + px), rgb, cov < 1 ? cov : 1);
-        }
-    }
+    fs_text_blend(im, x - m, y - m, cover, cw, ch, rgb);
     free(cover);
     return FS_OK;
 }
