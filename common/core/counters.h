@@ -48,9 +48,18 @@ void fs_counters_set_collector(void (*collect)(void));
 /* For fs_stages_add: moves the pending counts into row[FS_NCOUNTERS] (the
  * stage's), noting an overflow with the stage name. */
 void fs_counters_attribute(uint64_t *row, const char *stage);
+/* For fs_stages_add, when the stage table is full (FS_MAX_STAGES) while
+ * counting: notes the error (fs_counters_check reports it); what is pending
+ * stays pending, so fs_counters_unattributed sees it too. */
+void fs_counters_no_stage(const char *stage);
+/* After a counting render's last stage (and the GL collector's last read):
+ * the bits (FS_CNT_BIT) of the counters that still hold pending counts or a
+ * pending overflow, which no stage took. */
+unsigned fs_counters_unattributed(void);
 /* Drops pending counts and a noted overflow (before a counting render). */
 void fs_counters_reset(void);
-/* FS_OK, or FS_ERR_RUNTIME (fs_fail) naming the counter and stage that overflowed. */
+/* FS_OK, or FS_ERR_RUNTIME (fs_fail) naming the counter and stage that
+ * overflowed, or the stage that found the stage table full. */
 int fs_counters_check(void);
 
 /* Marks an overflow of counter c (a GL counter's high word wrapped). */
