@@ -1,8 +1,12 @@
 /* Hardware-independent work counters (docs/DESIGN.md, "Work counters"): counts
- * of a method's algorithmic work that do not depend on the machine. Off unless
- * a counting render switches them on (fs_counting_set), so a timed render pays
- * one branch per ray, tile or pass. Counts are added to a process-wide pending
- * table; the next fs_stages_add attributes what is pending to its stage. */
+ * of a method's algorithmic work that do not depend on the machine. Code keeps
+ * its counts in integer locals (per ray, tile or voxel row), mostly incremented
+ * always, and adds them with fs_count_add once per thread or pass; that add is
+ * a no-op unless a counting render switched counting on (fs_counting_set). So
+ * a timed render pays the local increments (docs/DESIGN.md says which code
+ * skips them) and one branch per fs_count_add.
+ * Counts are added to a process-wide pending table; the next fs_stages_add
+ * attributes what is pending to its stage. */
 #ifndef FS_COUNTERS_H
 #define FS_COUNTERS_H
 #include <stdint.h>
