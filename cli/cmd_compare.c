@@ -123,7 +123,9 @@ static int render_analytic(cmp_run *r, int f, const fs_grid *g, cmp_view *v, fs_
 }
 
 /* One reference on every frame, from the cache where it holds the frame;
- * frame_ms and stages time the first. */
+ * stages time the first, and its time is their sum (fs_stages_total), so the
+ * counting render of --counters, which cli_cache_render runs outside every
+ * stage, is never part of it. */
 static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, const fs_grid *grids)
 {
     fs_run *run = NULL;
@@ -132,13 +134,12 @@ static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, co
         cmp_view *v = &ref->frames[f];
         cli_cache_view *made = &ref->made[f];
         fs_stages st = {0};
-        double t0 = fs_now_ms();
         if (ref->analytic) rc = render_analytic(r, f, &grids[f], v, &st);
         else rc = cli_cache_render(&r->cache, run, &r->scene, &frames_p[f], &grids[f], &r->prov, r->first_frame + f, v,
                                    &st, made);
         ref->hits += made->hit;
         if (!rc && made->hit && !r->quiet) fprintf(stderr, "compare: %s, frame %d: from the cache, %s\n", ref->spec, r->first_frame + f, made->entry);
-        if (f == 0) { ref->frame_ms = fs_now_ms() - t0; ref->stages = st; }
+        if (f == 0) ref->stages = st;
     }
     fs_run_close(run);
     return rc;

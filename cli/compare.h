@@ -27,7 +27,6 @@ typedef struct cmp_ref {
     int analytic;
     fs_variant v;        /* the reference method's parameters */
     cmp_view *frames;    /* nframes */
-    double frame_ms;     /* median render time of the first frame */
     fs_stages stages;    /* the first frame's (timings.csv) */
     cli_cache_view *made; /* nframes: loaded from the cache or rendered, and the entry */
     int hits;            /* frames loaded from the cache */

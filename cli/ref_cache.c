@@ -73,11 +73,18 @@ static void store_entry(cli_cache *c, fs_digest key, fs_run *run, const fs_prove
     fs_provenance prov;
     char text[FS_GCACHE_COUNTS] = "";
     fs_run_provenance(run, base, frame, &prov);
-    if (counts && fs_stage_counts_format(counts, text, sizeof text)) text[0] = 0; /* too long: stored without */
+    static int warned;
+    if (counts && fs_stage_counts_format(counts, text, sizeof text)) { /* cannot happen for FS_MAX_STAGES stages */
+        if (!warned++) /* stored without: later --counters runs miss and count again */
+            fprintf(stderr, "fluidsurf: warning: cache entry stored without its work counts: %s\n", fs_error_message());
+        text[0] = 0;
+    }
     if (fs_gcache_store(&c->gc, key, &im->g, im->rgba, &prov, text)) turn_off(c);
 }
 
-/* The counting render after the timed one, on the same inputs. */
+/* The counting render after the timed one, on the same inputs. It adds no
+ * stage to the caller's table and runs outside every timed span: callers time
+ * a view as the sum of its stages (docs/DESIGN.md, "Work counters"). */
 static int count_view(fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g, fs_stages *counts)
 {
     fs_run_image cim = {0};
@@ -115,9 +122,9 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     double lookup = fs_now_ms() - t0;
     fs_run_set_floor(run, floor_y(s, p, g)); /* a hit before may have set another frame's */
     int rc = render_view(run, s, p, g, im, st);
-    if (!rc && c->counters) rc = count_view(run, s, p, g, &out->counts);
+    if (!rc && c->counters) rc = count_view(run, s, p, g, &out->counts); /* between the timed spans */
     if (rc) return rc;
-    double t1 = fs_now_ms();
+    double t1 = fs_now_ms(); /* cache_store: the lookup and this write, not the counting */
     store_entry(c, key, run, base, frame, im, c->counters ? &out->counts : NULL);
     if (!c->on) out->entry[0] = 0;
     fs_stages_add(st, "cache_store", lookup + fs_now_ms() - t1);

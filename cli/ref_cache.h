@@ -32,7 +32,9 @@ typedef struct cli_cache_view {
  * then stored (stage "cache_store"). base and frame give the entry's
  * provenance (fs_run_provenance). A bad entry is re-rendered and replaced.
  * With c->counters a counting render follows the timed one and its counts are
- * stored in the entry; an entry without counts is then a miss. */
+ * stored in the entry; an entry without counts is then a miss. The counting
+ * render adds no stage to st and lies outside every stage's span: time the
+ * view by fs_stages_total(st), never by a clock around this call. */
 int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
                      const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out);
 

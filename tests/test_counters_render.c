@@ -27,8 +27,12 @@ static fs_gl_context CTX;
 static uint64_t cnt(const fs_stages *st, const char *stage, int c)
 {
     uint64_t t = 0;
+    if (!stage) {
+        CHECK(!fs_stages_count_total(st, c, &t), "the total of %s wraps", fs_counter_name(c));
+        return t;
+    }
     for (int i = 0; i < st->n; i++)
-        if (!stage || !strcmp(st->name[i], stage)) t += st->count[i][c];
+        if (!strcmp(st->name[i], stage)) t += st->count[i][c];
     return t;
 }
 
@@ -212,6 +216,52 @@ static void test_uncounted(void)
     fs_run_image_free(&im);
 }
 
+/* Counts made after the last stage, and a stage past the table's 16: errors
+ * naming the method or the stage, never counts dropped silently. */
+static int late_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t)
+{
+    (void)self; (void)c; (void)o;
+    fs_stages_add(t, "late_stage", 0);
+    fs_count_add(FS_CNT_FIELD_EVALS, 3); /* after the method's last stage */
+    return FS_OK;
+}
+static int many_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t)
+{
+    static const char *const names[FS_MAX_STAGES] = {"s0", "s1", "s2",  "s3",  "s4",  "s5",  "s6",  "s7",
+                                                     "s8", "s9", "s10", "s11", "s12", "s13", "s14", "s15"};
+    (void)self; (void)c; (void)o;
+    for (int i = 0; i < FS_MAX_STAGES; i++) {
+        fs_count_add(FS_CNT_FIELD_EVALS, 1);
+        fs_stages_add(t, names[i], 0); /* with "upload" before them: the last finds the table full */
+    }
+    return FS_OK;
+}
+static const fs_method late = {.name = "late", .description = "counts after its last stage", .paper = "",
+                               .grid_use = FS_GRID_UNUSED, .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
+                               .create = none_create, .upload = none_upload, .render = late_render,
+                               .destroy = none_destroy};
+static const fs_method many = {.name = "many", .description = "has more stages than a table holds", .paper = "",
+                               .grid_use = FS_GRID_UNUSED, .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
+                               .create = none_create, .upload = none_upload, .render = many_render,
+                               .destroy = none_destroy};
+
+static void test_never_dropped(void)
+{
+    CHECK(fs_method_register(&late, FS_METHOD_HIDDEN) == FS_OK && fs_method_register(&many, FS_METHOD_HIDDEN) == FS_OK,
+          "register");
+    fs_run_image im = {0};
+    fs_stages st;
+    int rc = fs_run_count(fs_method_find("late"), &S, NULL, NULL, &P, NULL, &S.camera, &im, &st);
+    CHECK(rc == FS_ERR_RUNTIME && strstr(fs_error_message(), "'late'") && strstr(fs_error_message(), "field_evals"),
+          "counts after the last stage: %d %s", rc, fs_error_message());
+    fs_run_image_free(&im);
+    rc = fs_run_count(fs_method_find("many"), &S, NULL, NULL, &P, NULL, &S.camera, &im, &st);
+    CHECK(rc == FS_ERR_RUNTIME && strstr(fs_error_message(), "s15") && strstr(fs_error_message(), "at most 16"),
+          "a full stage table while counting: %d %s", rc, fs_error_message());
+    CHECK(!fs_counting, "counting is off again");
+    fs_run_image_free(&im);
+}
+
 int main(void)
 {
     fs_field f;
@@ -228,6 +278,7 @@ int main(void)
     test_method("volume_raycast", check_volume_raycast);
     test_gl_carry();
     test_uncounted();
+    test_never_dropped();
     fs_gl_context_destroy(&CTX);
     fs_particles_free(&P);
     TEST_DONE();

@@ -138,6 +138,13 @@ static void test_roundtrip_and_bad(void)
     const char *text = "1:march=12,34,5,0,0,7";
     CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, text) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store with counts");
     CHECK(!strcmp(counts, text), "the counts come back: '%s'", counts);
+    /* the longest counts text any run makes (stage_counts.h) comes back whole */
+    static char longest[FS_GCACHE_COUNTS];
+    memcpy(longest, "1:", 2);
+    memset(longest + 2, '9', sizeof longest - 3);
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, longest) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT,
+          "store the longest counts: %s", fs_error_message());
+    CHECK(!strcmp(counts, longest), "the longest counts come back (%zu of %zu bytes)", strlen(counts), strlen(longest));
     fs_provenance p3 = prov;
     for (int i = 0; i < p3.n; i++) { p3.attr[i].name = p3.name[i]; p3.attr[i].value = p3.value[i]; }
     fs_digest_hex(k, hex);

@@ -1,5 +1,6 @@
 #include "counters.h"
 #include "fs_error.h"
+#include "timing.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -18,7 +19,7 @@ int fs_counter_index(const char *name)
 int fs_counting;
 static uint64_t pending[FS_NCOUNTERS];
 static unsigned pending_over;      /* bits: counters whose pending sum wrapped */
-static char over_msg[200];         /* the first overflow, with its stage */
+static char over_msg[200];         /* the first error: an overflow with its stage, or a full stage table */
 static void (*collector)(void);
 
 void fs_counting_set(int on) { fs_counting = on; }
@@ -36,6 +37,21 @@ static void note_overflow(int c, const char *stage)
 {
     if (!over_msg[0])
         snprintf(over_msg, sizeof over_msg, "work counter %s overflowed 2^64 in stage %s", names[c], stage);
+}
+
+void fs_counters_no_stage(const char *stage)
+{
+    if (!over_msg[0])
+        snprintf(over_msg, sizeof over_msg, "work counts of stage %s have no row: a run has at most %d stages", stage,
+                 FS_MAX_STAGES);
+}
+
+unsigned fs_counters_unattributed(void)
+{
+    unsigned bits = __atomic_load_n(&pending_over, __ATOMIC_RELAXED);
+    for (int c = 0; c < FS_NCOUNTERS; c++)
+        if (__atomic_load_n(&pending[c], __ATOMIC_RELAXED)) bits |= FS_CNT_BIT(c);
+    return bits;
 }
 
 void fs_counters_attribute(uint64_t *row, const char *stage)

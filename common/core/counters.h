@@ -1,8 +1,12 @@
 /* Hardware-independent work counters (docs/DESIGN.md, "Work counters"): counts
- * of a method's algorithmic work that do not depend on the machine. Off unless
- * a counting render switches them on (fs_counting_set), so a timed render pays
- * one branch per ray, tile or pass. Counts are added to a process-wide pending
- * table; the next fs_stages_add attributes what is pending to its stage. */
+ * of a method's algorithmic work that do not depend on the machine. Code keeps
+ * its counts in integer locals (per ray, tile or voxel row), mostly incremented
+ * always, and adds them with fs_count_add once per thread or pass; that add is
+ * a no-op unless a counting render switched counting on (fs_counting_set). So
+ * a timed render pays the local increments (docs/DESIGN.md says which code
+ * skips them) and one branch per fs_count_add.
+ * Counts are added to a process-wide pending table; the next fs_stages_add
+ * attributes what is pending to its stage. */
 #ifndef FS_COUNTERS_H
 #define FS_COUNTERS_H
 #include <stdint.h>
@@ -48,9 +52,18 @@ void fs_counters_set_collector(void (*collect)(void));
 /* For fs_stages_add: moves the pending counts into row[FS_NCOUNTERS] (the
  * stage's), noting an overflow with the stage name. */
 void fs_counters_attribute(uint64_t *row, const char *stage);
+/* For fs_stages_add, when the stage table is full (FS_MAX_STAGES) while
+ * counting: notes the error (fs_counters_check reports it); what is pending
+ * stays pending, so fs_counters_unattributed sees it too. */
+void fs_counters_no_stage(const char *stage);
+/* After a counting render's last stage (and the GL collector's last read):
+ * the bits (FS_CNT_BIT) of the counters that still hold pending counts or a
+ * pending overflow, which no stage took. */
+unsigned fs_counters_unattributed(void);
 /* Drops pending counts and a noted overflow (before a counting render). */
 void fs_counters_reset(void);
-/* FS_OK, or FS_ERR_RUNTIME (fs_fail) naming the counter and stage that overflowed. */
+/* FS_OK, or FS_ERR_RUNTIME (fs_fail) naming the counter and stage that
+ * overflowed, or the stage that found the stage table full. */
 int fs_counters_check(void);
 
 /* Marks an overflow of counter c (a GL counter's high word wrapped). */

@@ -14,7 +14,10 @@ void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms)
 {
     int i = 0;
     while (i < s->n && strcmp(s->name[i], name)) i++;
-    if (i == FS_MAX_STAGES) return;
+    if (i == FS_MAX_STAGES) { /* no row: while counting, an error, never dropped counts */
+        if (fs_counting) fs_counters_no_stage(name);
+        return;
+    }
     if (i == s->n) {
         s->name[i] = name;
         s->ms[i] = 0;
@@ -41,4 +44,18 @@ double fs_stages_total(const fs_stages *s)
     double t = 0;
     for (int i = 0; i < s->n; i++) t += s->ms[i];
     return t;
+}
+
+int fs_stages_count_total(const fs_stages *s, int c, uint64_t *total)
+{
+    uint64_t t = 0;
+    for (int i = 0; i < s->n; i++) {
+        if (t + s->count[i][c] < t) {
+            *total = UINT64_MAX;
+            return 1;
+        }
+        t += s->count[i][c];
+    }
+    *total = t;
+    return 0;
 }

@@ -28,6 +28,9 @@ void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms)
 /* The GL time of stage name; NaN when it has none or does not exist. */
 double fs_stages_gpu(const fs_stages *s, const char *name);
 double fs_stages_total(const fs_stages *s);
+/* The sum of work counter c over the stages into *total: 0, or 1 when it wraps
+ * 2^64 (*total is then UINT64_MAX). Every total of counts is made here. */
+int fs_stages_count_total(const fs_stages *s, int c, uint64_t *total);
 
 #ifdef __cplusplus
 }

@@ -159,7 +159,11 @@ int fs_gcache_store(const fs_gcache *c, fs_digest key, const fs_gbuffer *g, cons
     fs_provenance_set(&p, "cache_key", hex);
     fs_digest_hex(entry_hash(g, counts), hex);
     fs_provenance_set(&p, "cache_data", hex);
-    if (counts && *counts) fs_provenance_set(&p, "counters", counts);
+    if (counts && *counts) { /* by pointer: a provenance value holds 640 bytes, the counts up to FS_GCACHE_COUNTS */
+        if (p.n == FS_PROV_MAX) return fs_fail(FS_ERR_RUNTIME, "cache entry: no room for the work counts' attribute");
+        p.attr[p.n].name = COUNTS_ATTR;
+        p.attr[p.n++].value = counts;
+    }
     fs_gcache_entry(c, key, path, sizeof path);
     return fs_write_render(path, g, rgba, &p);
 }

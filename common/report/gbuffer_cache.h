@@ -7,12 +7,13 @@
 #include "gbuffer.h"
 #include "hash.h"
 #include "provenance.h"
+#include "stage_counts.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 #define FS_GCACHE_PATH 1100
-#define FS_GCACHE_COUNTS 640 /* the work counts' text (stage_counts.h), as a provenance value */
+#define FS_GCACHE_COUNTS FS_STAGE_COUNTS_MAX /* the work counts' text (stage_counts.h), any run's */
 
 typedef struct fs_gcache {
     char dir[FS_GCACHE_PATH - 64]; /* room for "/gbuffer-<hex>.exr" */

@@ -14,16 +14,24 @@ int fs_run_check_counters(const fs_method *m)
 /* The totals over the stages (the CSV's "total" rows) must not wrap either. */
 static int check_totals(const fs_stages *st)
 {
-    for (int c = 0; c < FS_NCOUNTERS; c++) {
-        uint64_t t = 0;
-        for (int i = 0; i < st->n; i++) {
-            if (t + st->count[i][c] < t)
-                return fs_fail(FS_ERR_RUNTIME, "work counter %s overflowed 2^64 in its total over the stages",
-                               fs_counter_name(c));
-            t += st->count[i][c];
-        }
-    }
+    uint64_t t;
+    for (int c = 0; c < FS_NCOUNTERS; c++)
+        if (fs_stages_count_total(st, c, &t))
+            return fs_fail(FS_ERR_RUNTIME, "work counter %s overflowed 2^64 in its total over the stages",
+                           fs_counter_name(c));
     return FS_OK;
+}
+
+/* Counts made after the last stage (or read from the GL buffer only by
+ * fs_gl_counters_end) belong to no stage: an error, never dropped. */
+static int check_attributed(const fs_method *m, const fs_stages *st)
+{
+    unsigned left = fs_counters_unattributed();
+    if (!left) return FS_OK;
+    int c = 0;
+    while (!(left & FS_CNT_BIT(c))) c++;
+    return fs_fail(FS_ERR_RUNTIME, "method '%s': work counter %s was counted after its last stage (%s); no stage took it",
+                   m->name, fs_counter_name(c), st->n ? st->name[st->n - 1] : "none");
 }
 
 int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, const fs_gl_context *ctx,
@@ -44,6 +52,7 @@ int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, co
     fs_counting_set(0);
     fs_run_close(run);
     if (!rc) rc = fs_counters_check();
+    if (!rc) rc = check_attributed(m, st);
     if (!rc) rc = check_totals(st);
     fs_counters_reset();
     return rc;

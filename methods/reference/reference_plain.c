@@ -3,6 +3,7 @@
  * and phi is stepped with the Lipschitz and monotone-kernel bounds. Kept as the
  * plain path that the accelerated one is checked against. */
 #include "reference.h"
+#include "counters.h"
 #include <math.h>
 #include <string.h>
 
@@ -16,12 +17,13 @@ typedef struct stretch {
     const near_particle *np;
     int n;
     float d[3];
-    ray_work *w;   /* the ray's work counts */
+    ray_work *w;   /* the ray's work counts; NULL when not counting (read once per stretch) */
 } stretch;
 
 /* One field evaluation (value, bound or gradient) over the stretch's particles. */
 static inline void counted(const stretch *S)
 {
+    if (!S->w) return; /* a timed render: no read-modify-write of the ray's counts */
     S->w->evals++;
     S->w->nbrs += (uint64_t)S->n;
 }
@@ -104,7 +106,7 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
     }
     uint32_t runs[FS_GRID_MAX_RUNS][2];
     int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
-    for (int r = 0; r < nr; r++) w->nbrs += runs[r][1] - runs[r][0];
+    for (int r = 0; w && r < nr; r++) w->nbrs += runs[r][1] - runs[r][0];
     for (int r = 0; r < nr; r++)
             for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
                 const float *q = g->pos4 + 4 * (size_t)s;
@@ -172,7 +174,7 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
     float iso = R->f.iso, tol = 1e-4f * R->f.r;
     if (!m->started) {
         m->g = phi_at(S, 0) - iso;
-        S->w->samples++;
+        if (S->w) S->w->samples++;
         m->inside = m->g >= 0; /* the ray starts in the fluid: not a visible crossing */
         m->counting = 0;
         m->started = 1;
@@ -183,14 +185,14 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
         int proven = safe_step(S, m, t, rem, lip, &s, &gn);
         float tn = s >= rem ? len : t + s;
         if (!proven) gn = phi_at(S, tn) - iso;
-        S->w->samples++; /* the step's end, sampled or proven */
+        if (S->w) S->w->samples++; /* the step's end, sampled or proven */
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
         float lo = t, hi = tn;
         while (hi - lo > tol) {
             float mid = 0.5f * (lo + hi);
             if (mid <= lo || mid >= hi) break; /* floats cannot split it further (far along a huge cell) */
-            S->w->samples++;
+            if (S->w) S->w->samples++;
             if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
         }
         float tc = 0.5f * (lo + hi);
@@ -238,9 +240,9 @@ static int plain_visit(void *ctx, const int c[3], uint32_t slot, float t, float 
     }
     uint32_t cnt = R->count27[slot];
     const float *o = P->o, *d = P->d;
-    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}, &P->res->w};
+    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}, fs_counting ? &P->res->w : NULL};
     float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf, &P->res->w);
+    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf, S.w);
     if (S.n) return march_stretch(&S, &P->m, t, t_out - t, R->lip_unit * cnt, P->res);
     fs_ref_leave_fluid(&P->m, P->res, t, R);
     return 0;
