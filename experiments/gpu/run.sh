@@ -168,7 +168,9 @@ write inacio2010_tables "particles_requested,particles,boundary,path,sim_rendere
 write iwasaki2006_density_grid "label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads,gpu_ms,gl_version"
 if [ -f "$TMP/demo/timings.csv" ]; then
   grep -v '^#' "$TMP/demo/timings.csv" | awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}' > "$OUTDIR/demo_timings.csv"
-  grep -v '^#' "$TMP/demo/metrics.csv" > "$OUTDIR/demo_metrics.csv"
+  glr=$(sed -n 's/^gl_renderer,//p' "$OUTDIR/env.csv") # the context the GL methods ran on
+  grep -v '^#' "$TMP/demo/metrics.csv" |
+    awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}' > "$OUTDIR/demo_metrics.csv"
 fi
 echo "run.sh: $(($(date +%s) - START)) s; wrote $OUTDIR: $(cd "$OUTDIR" && ls | tr '\n' ' ')"
 [ $FAILED = 0 ] || { echo "run.sh: some cells did not finish: see $OUTDIR/status.csv" >&2; exit 1; }
