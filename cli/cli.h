@@ -16,6 +16,10 @@ int cmd_view(int argc, char **argv);
 int cli_error(int code);
 /* Usage error: "fluidsurf: MESSAGE" + "try 'fluidsurf CMD --help'", returns 2. */
 int cli_usage(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A method name the registry does not know: one line, FS_ERR_INPUT. It names the
+ * CMake option when this build leaves a built-in method out ("--method levelset
+ * needs a build with FS_WITH_OPENVDB=ON"), else it is cli_usage's "unknown method". */
+int cli_unknown_method(const char *cmd, const char *option, const char *name);
 /* A scene from SCENE.json, or a default scene around a particle file. */
 int cli_scene_from_arg(fs_scene *s, const char *arg);
 /* Parses a positive integer / float option value; 2 on error. */

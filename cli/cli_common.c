@@ -1,4 +1,5 @@
 #include "cli.h"
+#include "method.h"
 #include "fs_error.h"
 #include <errno.h>
 #include <math.h>
@@ -23,6 +24,16 @@ int cli_usage(const char *cmd, const char *fmt, ...)
     fprintf(stderr, " (try 'fluidsurf %s --help')\n", cmd);
     va_end(ap);
     return FS_ERR_INPUT;
+}
+
+int cli_unknown_method(const char *cmd, const char *option, const char *name)
+{
+    const char *need = fs_method_needs_option(name);
+    if (need) {
+        fprintf(stderr, "fluidsurf: %s %s needs a build with %s=ON\n", option, name, need);
+        return FS_ERR_INPUT;
+    }
+    return cli_usage(cmd, "unknown method '%s' (see 'fluidsurf methods')", name);
 }
 
 int cli_scene_from_arg(fs_scene *s, const char *arg)

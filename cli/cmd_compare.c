@@ -339,7 +339,7 @@ static int add_variants(cmp_run *r, const char *methods, const fs_sweep *sweeps,
     }
     for (char *tok = strtok(mlist, ","); tok; tok = strtok(NULL, ",")) {
         const fs_method *m = fs_method_find(tok);
-        if (!m) return cli_usage("compare", "unknown method '%s' (see 'fluidsurf methods')", tok);
+        if (!m) return cli_unknown_method("compare", "--methods", tok);
         static fs_variant vars[CMP_MAX_ENTRIES];
         int n = fs_sweep_variants(m, &r->scene, sweeps, nsweeps, vars, CMP_MAX_ENTRIES - r->nentries);
         if (n < 0) return cli_error(-n);

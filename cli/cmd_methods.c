@@ -26,7 +26,7 @@ int cmd_methods(int argc, char **argv)
                              "set a parameter with --set NAME.PARAM=VALUE in any command that renders.\n"};
     int rc = cli_parse(&cmd, argc, argv);
     if (rc != CLI_GO_ON) return rc;
-    if (name && !fs_method_find(name)) return cli_usage("methods", "unknown method '%s'", name);
+    if (name && !fs_method_find(name)) return cli_unknown_method("methods", "methods", name);
     for (int i = 0; i < fs_method_count(); i++) {
         const fs_method *m = fs_method_at(i);
         if (name && strcmp(name, m->name)) continue;

@@ -209,7 +209,7 @@ int cmd_render(int argc, char **argv)
     if (!input) return cli_usage("render", "no scene or particle file given");
     if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);
-    if (!m) return cli_usage("render", "unknown method '%s' (see 'fluidsurf methods')", mname);
+    if (!m) return cli_unknown_method("render", "--method", mname);
     if ((rc = check_outputs(m, input, out, exports, nexports, own_look))) return rc;
     if ((rc = check_cache(m, cache_dir, out))) return rc;
     if (counters && (rc = fs_run_check_counters(m))) return cli_error(rc);

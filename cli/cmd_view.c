@@ -558,7 +558,7 @@ int cmd_view(int argc, char **argv)
     int mi = 0;
     if (mname) {
         for (mi = 0; mi < fs_method_count() && strcmp(fs_method_at(mi)->name, mname); mi++) {}
-        if (mi == fs_method_count()) return cli_usage("view", "unknown method '%s' (see 'fluidsurf methods')", mname);
+        if (mi == fs_method_count()) return cli_unknown_method("view", "--method", mname);
     }
     const view_options o = {input, simulate, script, events, sets, nsets, W, H, gpu, paused, verbose, max_frames,
                             particles, mi, scale, radius, dt};

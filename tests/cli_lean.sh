@@ -76,6 +76,9 @@ if off OPENVDB; then
   printf 'not a vdb' > "$T/in.vdb"
   OUTFILE= refused OPENVDB "VDB points input" info "$T/in.vdb"
   OUTFILE=$T/grid.vdb refused OPENVDB "VDB density grid export" render "$T/dam.json" --method surfels -q --export "$T/grid.vdb"
+  OUTFILE=$T/ls.exr refused OPENVDB "the levelset method" render "$T/dam.json" --method levelset -q -o "$T/ls.exr"
+  OUTFILE=$T/lscmp/report.md refused OPENVDB "the levelset method in compare" compare "$T/dam.json" --methods levelset -q -o "$T/lscmp"
+  check '! "$BIN" methods | grep -q "^levelset"' "levelset is not registered"
 fi
 if off OIIO; then
   printf 'II*\0not really a tiff' > "$T/img.tif"

@@ -80,6 +80,10 @@ enum { FS_METHOD_HIDDEN = 1 }; /* registered, found by name, not listed */
 int fs_method_register(const fs_method *m, int flags);
 /* The built-in table of methods/registry.c (idempotent). */
 void fs_methods_register_builtin(void);
+/* For a built-in method this build leaves out (it needs an optional library):
+ * the CMake option that builds it ("FS_WITH_OPENVDB"); NULL otherwise
+ * (methods/registry.c). */
+const char *fs_method_needs_option(const char *name);
 /* By name, hidden ones included; NULL when none. */
 const fs_method *fs_method_find(const char *name);
 /* The listed (not hidden) methods, in registration order. */
