@@ -30,7 +30,9 @@ else same_ctx="the same counts on OSMesa and EGL"; fi
 header='method,variant,frame,stage,counter,value'
 
 # 1. the same counts on every context and thread count
-for m in ${METHODS:-spheres reference raycast_pca aniso_ssf surfels volume_raycast}; do
+all="spheres reference raycast_pca aniso_ssf surfels volume_raycast"
+"$BIN" methods | grep -q '^levelset ' && all="$all levelset" # a build with OpenVDB
+for m in ${METHODS:-$all}; do
   counts "$m-${ctx}2" $ctx 2 $m; rc=$?
   counts "$m-${ctx}1" $ctx 1 $m; rc1=$?
   counts "$m-egl2b" egl 2 $m; rc2=$?

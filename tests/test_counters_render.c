@@ -133,6 +133,16 @@ static void check_volume_raycast(const fs_stages *c, const fs_gbuffer *g)
     CHECK(cnt(c, "volume", FS_CNT_TEXELS) == cnt(c, "volume", FS_CNT_FRAGMENTS), "volume_raycast: a voxel per fragment");
 }
 
+/* levelset (a build with OpenVDB): the level set's voxels at upload, one intersector
+ * query per ray for the first hit and two more per layer for the thickness */
+static void check_levelset(const fs_stages *c, const fs_gbuffer *g)
+{
+    uint64_t ms = cnt(c, "trace", FS_CNT_MARCH_SAMPLES), px = (uint64_t)g->w * g->h;
+    CHECK(cnt(c, "upload", FS_CNT_TEXELS) > 0, "levelset: the level set's active voxels at upload");
+    CHECK(ms >= px + covered(g), "levelset: %llu queries for %llu rays, %zu hits (one, then an exit each)",
+          (unsigned long long)ms, (unsigned long long)px, covered(g));
+}
+
 /* The timed render, then the counting render, of method name. */
 static void test_method(const char *name, void (*check)(const fs_stages *, const fs_gbuffer *))
 {
@@ -276,6 +286,7 @@ int main(void)
     test_method("aniso_ssf", check_aniso_ssf);
     test_method("surfels", check_surfels);
     test_method("volume_raycast", check_volume_raycast);
+    if (FS_WITH_OPENVDB) test_method("levelset", check_levelset);
     test_gl_carry();
     test_uncounted();
     test_never_dropped();
