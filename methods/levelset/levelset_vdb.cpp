@@ -138,7 +138,9 @@ extern "C" void fs_ls_trace(fs_ls_tracer *t, const float eye[3], const float dir
     h->queries = 0;
     if (!t->isect) return;
     using Ray = openvdb::math::Ray<openvdb::Real>;
-    const openvdb::Vec3R e(eye[0], eye[1], eye[2]), d(dir[0], dir[1], dir[2]);
+    const openvdb::Vec3R e(eye[0], eye[1], eye[2]);
+    openvdb::Vec3R d(dir[0], dir[1], dir[2]);
+    d.normalize(); // unit in double precision, as Ray::worldToIndex asserts
     openvdb::Vec3R xyz, nml;
     openvdb::Real t0;
     h->queries++;
