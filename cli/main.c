@@ -11,6 +11,7 @@ static const struct { const char *name; int (*run)(int, char **); const char *wh
     {"diff", cmd_diff, "metrics between two EXR outputs, with thresholds for regression checks"},
     {"info", cmd_info, "print a particle file's count, bounds, spacing and density"},
     {"convert", cmd_convert, "convert a particle file to another format"},
+    {"mesh", cmd_mesh, "mesh particles (a file, scene or {} sequence) into .ply/.obj/.vtk/.vtp files"},
     {"methods", cmd_methods, "list the methods, their papers and parameters"},
     {"simulate", cmd_simulate, "run the SPH simulator on a built-in scene; write a particle sequence"},
     {"view", cmd_view, "interactive window: play a scene or run the simulator live, switch methods"},

@@ -17,7 +17,7 @@
 /* Methods that need an optional library: registered only in a build with it
  * (the lean build has none of them), and named by fs_method_needs_option. */
 #if FS_WITH_OPENVDB
-#define OPENVDB_METHODS(X) X(levelset)
+#define OPENVDB_METHODS(X) X(levelset) X(mesh)
 #else
 #define OPENVDB_METHODS(X)
 #endif
@@ -36,6 +36,7 @@ const char *fs_method_needs_option(const char *name)
 {
     static const struct { const char *method, *option; int built; } optional[] = {
         {"levelset", "FS_WITH_OPENVDB", FS_WITH_OPENVDB},
+        {"mesh", "FS_WITH_OPENVDB", FS_WITH_OPENVDB},
     };
     for (size_t i = 0; name && i < sizeof optional / sizeof *optional; i++)
         if (!optional[i].built && !strcmp(name, optional[i].method)) return optional[i].option;

@@ -6,16 +6,16 @@
  * field=anisotropic: Yu & Turk's kernel W(|A_j^-1 (x - c_j)|, H) / det A_j with
  * the centres c_j and stretches A_j of common/field/anisotropy.c. */
 #include "reference.h"
-#include "eigen3.h"
+#include "aniso_params.h"
 #include "fs_error.h"
 #include "method.h"
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
-#include <string.h>
 
 typedef struct reference_params {
-    double step_min, thickness, max_layers, accel, interior, field, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda;
+    double step_min, thickness, max_layers, accel, interior, field;
+    fs_aniso_param_values aniso;
 } reference_params;
 
 #define FIELD(f) FS_PARAM_FIELD(reference_params, f)
@@ -29,12 +29,7 @@ static const fs_param_def params[] = {
     {FIELD(interior), FS_PARAM_ENUM, 0, 0, 2, "auto|on|off",
      "accel, thickness on: fine interior bounds; auto builds them when the rays per cell pay for them"},
     {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
-    {FIELD(aniso_radius), FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "anisotropic: WPCA radius, multiples of r"},
-    {FIELD(kappa), FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "anisotropic: largest/smallest eigenvalue limit"},
-    {FIELD(n_eps), FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "anisotropic: at or below this many neighbours: isotropic"},
-    {FIELD(aniso_scale), FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "anisotropic: stretch scale"},
-    {FIELD(aniso_norm), FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume", "anisotropic: stretch normalisation"},
-    {FIELD(lambda), FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "anisotropic: Laplacian smoothing of centres"},
+    FS_ANISO_PARAM_DEFS(reference_params),
 };
 #undef FIELD
 
@@ -48,9 +43,7 @@ static void destroy(void *self)
     free(R->sz);
     fs_ref_bounds_free(R);
     fs_ref_interior_free(R);
-    free(R->inv);
-    free(R->wscale);
-    fs_grid_free(&R->own);
+    fs_aniso_kernels_free(&R->ak);
     free(R);
 }
 
@@ -64,14 +57,7 @@ static void *create(const fs_method_setup *setup)
     if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
     R->f = *f;
     R->aniso = p.field != 0;
-    fs_aniso_defaults(&R->ap, f->kernel, f->r);
-    R->ap.radius = (float)p.aniso_radius * f->r;
-    R->ap.kappa = (float)p.kappa;
-    R->ap.n_eps = (int)p.n_eps;
-    R->ap.scale = (float)p.aniso_scale;
-    R->ap.per_particle = (int)p.aniso_norm;
-    R->ap.lambda = (float)p.lambda;
-    R->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, R->ap.radius, 2 * f->r);
+    fs_aniso_params_set(&R->ap, &p.aniso, f->kernel, f->r);
     R->reach = f->H;
     R->step_min = (float)p.step_min * f->r;
     R->thickness = p.thickness != 0;
@@ -82,67 +68,21 @@ static void *create(const fs_method_setup *setup)
     return R;
 }
 
-/* field=anisotropic: the kernel centres and stretches of common/field/anisotropy.c,
- * a grid of the centres with cells of at least H times the largest axis (so
- * the 27-cell argument of upload still holds), A^-1 and 1/det A per slot, and
- * the Lipschitz unit V max|W'| max_j (1 / (det A_j a_min,j)): the gradient of
- * W(|A^-1 y|)/det A is W'(|u|) A^-1 u / (|u| det A), at most max|W'| / (det A a_min). */
+/* field=anisotropic: the kernels of common/field/aniso_kernels.c, on a grid of
+ * their centres with cells of at least H times the largest axis (so the
+ * 27-cell argument of upload still holds), and the Lipschitz unit
+ * V max|W'| max_j (1 / (det A_j a_min,j)): the gradient of W(|A^-1 y|)/det A is
+ * W'(|u|) A^-1 u / (|u| det A), at most max|W'| / (det A a_min). */
 static int upload_aniso(reference *R, const fs_particles *p, const fs_grid *g)
 {
-    size_t n = p->n;
-    float *A = malloc((n ? n : 1) * 9 * sizeof *A);
-    fs_particles c;
-    int rc = A ? fs_particles_alloc(&c, n, 0) : fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu particles", n);
-    if (rc) { free(A); return rc; }
-    float *cen = malloc((n ? n : 1) * 3 * sizeof *cen);
-    if (!cen) { free(A); fs_particles_free(&c); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
-    rc = fs_aniso_compute(p, g, &R->ap, cen, A, NULL);
-    float amax = 1, lip = 0;
-    float *inv = malloc((n ? n : 1) * 9 * sizeof *inv), *ws = malloc((n ? n : 1) * sizeof *ws);
-    if (!rc && (!inv || !ws)) rc = fs_fail(FS_ERR_RUNTIME, "reference: out of memory");
-    for (size_t i = 0; !rc && i < n; i++) {
-        c.x[i] = cen[3 * i];
-        c.y[i] = cen[3 * i + 1];
-        c.z[i] = cen[3 * i + 2];
-        double a[9], ev[3], V[9];
-        for (int k = 0; k < 9; k++) a[k] = A[9 * i + k];
-        fs_eigen3_sym(a, ev, V);
-        if (!(ev[0] > 0)) { rc = fs_fail(FS_ERR_RUNTIME, "reference: particle %zu has a degenerate stretch", i); break; }
-        for (int r = 0; r < 3; r++)
-            for (int q = 0; q < 3; q++) {
-                double v = 0;
-                for (int k = 0; k < 3; k++) v += V[3 * k + r] * V[3 * k + q] / ev[k];
-                inv[9 * i + 3 * r + q] = (float)v;
-            }
-        ws[i] = (float)(1.0 / (ev[0] * ev[1] * ev[2]));
-        if (ev[2] > amax) amax = (float)ev[2];
-        if (ws[i] / ev[0] > lip) lip = (float)(ws[i] / ev[0]);
-    }
-    free(A);
-    free(cen);
-    fs_grid_free(&R->own);
-    if (!rc) {
-        fs_particles_bounds(&c);
-        R->reach = R->f.H * amax * 1.0001f; /* a little margin for float rounding of the metric */
-        rc = fs_grid_build(&R->own, &c, R->reach);
-    }
-    fs_particles_free(&c);
-    free(R->inv);
-    free(R->wscale);
+    fs_aniso_kernels_free(&R->ak);
     R->inv = R->wscale = NULL;
-    if (rc) { free(inv); free(ws); return rc; }
-    /* To sorted slot order. */
-    R->inv = malloc((n ? n : 1) * 9 * sizeof *R->inv);
-    R->wscale = malloc((n ? n : 1) * sizeof *R->wscale);
-    if (!R->inv || !R->wscale) { free(inv); free(ws); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
-    for (size_t sl = 0; sl < n; sl++) {
-        uint32_t o = R->own.index[sl];
-        memcpy(R->inv + 9 * sl, inv + 9 * (size_t)o, 9 * sizeof *inv);
-        R->wscale[sl] = ws[o];
-    }
-    free(inv);
-    free(ws);
-    R->lip_unit = R->f.volume * fs_kernel_max_dw(R->f.kernel, R->f.H) * (lip > 0 ? lip : 1);
+    int rc = fs_aniso_kernels_build(&R->ak, p, g, &R->ap, R->f.H);
+    if (rc) return rc;
+    R->inv = R->ak.inv;
+    R->wscale = R->ak.wscale;
+    R->reach = R->ak.reach;
+    R->lip_unit = R->f.volume * fs_kernel_max_dw(R->f.kernel, R->f.H) * R->ak.lip;
     return FS_OK;
 }
 
@@ -206,7 +146,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
         if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
         int rc = upload_aniso(R, p, g);
         if (rc) return rc;
-        g = &R->own;
+        g = &R->ak.grid;
     }
     if (!(g->cell >= R->reach))
         return fs_fail(FS_ERR_INPUT, "reference: grid cell %g is smaller than the kernel support H = %g", g->cell, R->f.H);

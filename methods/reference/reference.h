@@ -5,14 +5,12 @@
  * (sub-cell bounds of phi). */
 #ifndef FS_REFERENCE_H
 #define FS_REFERENCE_H
-#include "anisotropy.h"
+#include "aniso_kernels.h"
 #include "grid.h"
+#include "kernel_shapes.h"
 #include "kernels.h"
 #include <stdint.h>
 
-/* max and min that compile to one instruction (fmaxf's NaN rules keep it a call). */
-static inline float fs_maxf(float a, float b) { return a > b ? a : b; }
-static inline float fs_minf(float a, float b) { return a < b ? a : b; }
 
 /* Sub-cell classes of reference_bounds.c: phi < iso on the whole sub-cell,
  * phi >= iso on the whole sub-cell, or neither proven. */
@@ -34,9 +32,9 @@ typedef struct reference {
     int aniso;
     fs_aniso_params ap;
     float reach;         /* largest distance at which a particle's kernel is nonzero: H (times the largest axis) */
-    fs_grid own;         /* anisotropic: grid of the kernel centres, cell >= reach */
-    float *inv;          /* anisotropic: A^-1 per sorted slot of own (9 floats) */
-    float *wscale;       /* anisotropic: 1 / det A per sorted slot */
+    fs_aniso_kernels ak; /* anisotropic: the kernels, on a grid of their centres (cell >= reach) */
+    float *inv;          /* anisotropic: ak.inv (A^-1 per sorted slot), NULL when isotropic */
+    float *wscale;       /* anisotropic: ak.wscale (1 / det A per sorted slot) */
     float *sx, *sy, *sz; /* accel: sorted positions as structure of arrays */
     int sub;             /* accel: sub-cells per cell edge (0: no sub-cell bounds) */
     uint8_t *lo, *hi;    /* accel: per sub-cell, phi bounds quantised in units of iso / FS_REF_Q, rounded outward */

@@ -47,29 +47,6 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
     N->n = 0;
 }
 
-/* Kernel shapes without branches, q = d / H (the constants of kernels.h are
- * applied once per sum). They equal fs_kernel_w(d, H) / C to float rounding. */
-static inline float shape_cubic(float q)
-{
-    float t = fs_maxf(1.0f - q, 0.0f), inner = (6.0f * q - 6.0f) * q * q + 1.0f, outer = 2.0f * t * t * t;
-    return q <= 0.5f ? inner : outer;
-}
-static inline float shape_poly6(float q)
-{
-    float t = fs_maxf(1.0f - q * q, 0.0f);
-    return t * t * t;
-}
-static inline float shape_spiky(float q)
-{
-    float t = fs_maxf(1.0f - q, 0.0f);
-    return t * t * t;
-}
-static inline float shape_wyvill(float q)
-{
-    float a2 = fs_minf(q * q, 1.0f); /* the polynomial is 0 at a = 1 */
-    return 1.0f + a2 * (-22.0f / 9.0f + a2 * (17.0f / 9.0f - a2 * (4.0f / 9.0f)));
-}
-
 /* Distance along the ray from particle foot u (relative to t) to: the point
  * t (AT), the nearest point of [t, t+s] (NEAR), its farther end (FAR). */
 #define FS_REF_AT(u, s) (u)
@@ -99,17 +76,6 @@ static inline float shape_wyvill(float q)
     else if (mode == 1) { FS_REF_SUM(SHAPE, FS_REF_NEAR) }                                         \
     else { FS_REF_SUM(SHAPE, FS_REF_FAR) }
 
-static float kernel_c(const fs_field *f)
-{
-    double H = f->H, H3 = H * H * H;
-    switch (f->kernel) {
-    case FS_KERNEL_POLY6: return (float)(315.0 / (64.0 * FS_PI) / H3);
-    case FS_KERNEL_SPIKY: return (float)(15.0 / FS_PI / H3);
-    case FS_KERNEL_WYVILL: return (float)(2835.0 / (736.0 * FS_PI) / H3);
-    default: return (float)(8.0 / FS_PI / H3);
-    }
-}
-
 /* phi at local t (mode 0), or its upper (1) or lower (2) monotone-kernel
  * bound on [t, t+s]: every kernel decreases with distance. */
 /* One build for AVX2 machines, one for any x86-64; picked at load time. */
@@ -123,12 +89,12 @@ static float field_sum(const reference *R, const near_soa *N, float t, float s, 
     float inv_h = 1.0f / f->H, sum = 0;
     int n = N->n, aniso = R->inv != NULL;
     switch (f->kernel) {
-    case FS_KERNEL_POLY6: FS_REF_SUMS(shape_poly6) break;
-    case FS_KERNEL_SPIKY: FS_REF_SUMS(shape_spiky) break;
-    case FS_KERNEL_WYVILL: FS_REF_SUMS(shape_wyvill) break;
-    default: FS_REF_SUMS(shape_cubic) break;
+    case FS_KERNEL_POLY6: FS_REF_SUMS(fs_shape_poly6) break;
+    case FS_KERNEL_SPIKY: FS_REF_SUMS(fs_shape_spiky) break;
+    case FS_KERNEL_WYVILL: FS_REF_SUMS(fs_shape_wyvill) break;
+    default: FS_REF_SUMS(fs_shape_cubic) break;
     }
-    return sum * kernel_c(f) * f->volume;
+    return sum * fs_kernel_shape_c(f) * f->volume;
 }
 
 /* field_sum, counted as one field evaluation over the gathered particles. */

@@ -1,0 +1,179 @@
+/* fluidsurf mesh: particles to triangle meshes, one file per frame, without
+ * rendering: the mesh method's pipeline (methods/mesh/mesh_build.h) on its
+ * parameters (--set mesh.P=V), as a drop-in for splashsurf's `reconstruct`
+ * (a {} frame pattern in and out, a progress bar). */
+#include "cli.h"
+#include "frame_source.h"
+#include "fs_error.h"
+#include "method_params.h"
+#include "mesh/mesh.h"
+#include "mesh/mesh_export.h"
+#include "options.h"
+#include "particle_io.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char epilogue[] =
+    "IN is a scene .json (all its frames), a particle file, or a frame pattern with {} or %d\n"
+    "(then --frames A:B). OUT is a .ply, .obj, .vtk or .vtp path; for several frames it needs\n"
+    "{} or %d, replaced by the frame number. Parameters: fluidsurf methods mesh.\n"
+    "--timings prints CSV: frame,stage,ms,vertices,triangles (counts on the total row).\n";
+
+/* "a_{}.ply" -> "a_%d.ply" (and %% for a literal %), into out. */
+static int to_pattern(const char *in, char *out, size_t size)
+{
+    size_t n = 0;
+    for (const char *s = in; *s; s++) {
+        const char *rep = s[0] == '{' && s[1] == '}' ? "%d" : NULL;
+        if (rep) s++;
+        size_t k = rep ? 2 : 1;
+        if (n + k >= size) return fs_fail(FS_ERR_INPUT, "%s: path too long", in);
+        if (rep) memcpy(out + n, rep, 2);
+        else out[n] = *s;
+        n += k;
+    }
+    out[n] = 0;
+    return FS_OK;
+}
+
+static int is_pattern(const char *p) { return strstr(p, "{}") || strchr(p, '%'); }
+
+typedef struct mesh_job {
+    fs_scene *scene;
+    const double *params; /* the method's, in table order */
+    fs_mesh_opts opts;    /* from params once the first frame has settled r */
+    const char *out; /* a pattern when there are several frames */
+    int first, last, timings, quiet;
+    float radius;
+} mesh_job;
+
+static void progress(const mesh_job *j, int done, double t0)
+{
+    if (j->quiet) return;
+    int total = j->last - j->first + 1, width = 30, fill = done * width / total;
+    double el = (fs_now_ms() - t0) / 1000, left = done ? el / done * (total - done) : 0;
+    char bar[64];
+    for (int i = 0; i < width; i++) bar[i] = i < fill ? '#' : '.';
+    bar[width] = 0;
+    int tty = isatty(2);
+    fprintf(stderr, "%smesh: [%s] %d/%d frames, %.1f s, ~%.0f s left%s", tty ? "\r" : "", bar, done, total, el, left,
+            tty && done < total ? "" : "\n");
+    fflush(stderr);
+}
+
+static void print_stages(int frame, const fs_stages *st, const fs_trimesh *m)
+{
+    double total = 0;
+    for (int i = 0; i < st->n; i++) {
+        printf("%d,%s,%.3f,,\n", frame, st->name[i], st->ms[i]);
+        total += st->ms[i];
+    }
+    printf("%d,total,%.3f,%zu,%zu\n", frame, total, m->nv, m->nt);
+    fflush(stdout);
+}
+
+/* One frame: load, grid, mesh, write. */
+static int mesh_frame(mesh_job *j, int frame)
+{
+    fs_particles p;
+    fs_stages st = {0};
+    fs_grid g = {0};
+    fs_trimesh m = {0};
+    char path[4096];
+    double t = fs_now_ms();
+    int rc = fs_scene_load_frame(j->scene, frame, &p);
+    if (rc) return rc;
+    if (frame == j->first && fs_scene_adopt_frame(j->scene, &p, j->radius) && !j->quiet)
+        fprintf(stderr, "fluidsurf: note: used r = %g (set --radius)\n", j->scene->radius);
+    fs_stages_add(&st, "load", fs_now_ms() - t);
+    fs_field f = fs_scene_field(j->scene);
+    if (frame == j->first && (rc = fs_mesh_opts_from_values(j->params, &f, &j->opts))) {
+        fs_particles_free(&p);
+        return rc;
+    }
+    t = fs_now_ms();
+    rc = fs_grid_build(&g, &p, f.H);
+    fs_stages_add(&st, "grid", fs_now_ms() - t);
+    if (!rc) rc = fs_mesh_build(&p, &g, &f, &j->opts, &m, &st);
+    fs_grid_free(&g);
+    fs_particles_free(&p);
+    if (!rc) rc = is_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
+                                     : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
+    t = fs_now_ms();
+    if (!rc) rc = fs_mesh_export(&m, path);
+    fs_stages_add(&st, "write", fs_now_ms() - t);
+    if (!rc && j->timings) print_stages(frame, &st, &m);
+    fs_trimesh_free(&m);
+    return rc;
+}
+
+/* IN as a scene: a .json, a file, or a pattern with --frames. */
+static int scene_of(const char *in, const char *frames, fs_scene *s, int *first, int *last)
+{
+    char pat[FS_PATH_MAX];
+    int rc = cli_scene_from_arg(s, in);
+    if (rc) return cli_error(rc);
+    int json = strlen(in) > 5 && !strcmp(in + strlen(in) - 5, ".json");
+    if (!json && is_pattern(in)) {
+        if (!frames) return cli_usage("mesh", "%s: a frame pattern needs --frames FIRST:LAST", in);
+        if ((rc = to_pattern(in, pat, sizeof pat))) return cli_error(rc);
+        strcpy(s->source, pat);
+        char *end;
+        long a = strtol(frames, &end, 10), b = *end == ':' ? strtol(end + 1, &end, 10) : -1;
+        if (*end || a < 0 || b < a || b > 100000000) return cli_usage("mesh", "--frames %s: expected FIRST:LAST", frames);
+        s->frame_first = (int)a, s->frame_last = (int)b;
+    } else if (frames) return cli_usage("mesh", "--frames: %s is not a frame pattern", in);
+    fs_scene_frames(s, first, last);
+    return FS_OK;
+}
+
+int cmd_mesh(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL, *frames = NULL, *format = NULL;
+    const char *sets[FS_MAX_SETS];
+    int nsets = 0, timings = 0, quiet = 0, rc;
+    static fs_scene scene;
+    mesh_job j = {.scene = &scene};
+    const cli_opt opts[] = {
+        CLI_OPT_OUT(out, "OUT.ply|.obj|.vtk|.vtp", "the mesh file (a {} pattern for several frames)"),
+        CLI_OPT_SET(sets, nsets),
+        CLI_OPT_RADIUS(j.radius, "the scene's, else the file's, else 0.025"),
+        CLI_STRING_OPT("--frames", frames, "A:B", "frames of a pattern input"),
+        CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
+        CLI_FLAG_OPT("--timings", timings, "print per-stage times and the mesh size (CSV on stdout)"),
+        CLI_OPT_QUIET(quiet),
+        CLI_END,
+    };
+    const cli_command cmd = {"mesh", "IN -o OUT.ply [options]", opts, {&in, NULL, 1, "more than one input"}, epilogue};
+    if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
+    fs_note_quiet(quiet);
+    if (!in) return cli_usage("mesh", "no scene or particle file given");
+    if (!out) return cli_usage("mesh", "no output given (-o OUT.ply)");
+    const fs_method *m = fs_method_find("mesh");
+    if (!m) return cli_usage("mesh", "the mesh method is not registered");
+    if (!fs_mesh_export_known(out))
+        return cli_usage("mesh", "%s: unknown mesh format (the mesh exports %s)", out, FS_MESH_EXPORTS);
+    if ((rc = scene_of(in, frames, &scene, &j.first, &j.last))) return rc;
+    if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
+    if (j.last > j.first && !is_pattern(out)) return cli_usage("mesh", "%s: %d frames need {} in -o", out, j.last - j.first + 1);
+    if (cli_same_file(in, out)) return cli_usage("mesh", "%s: output would overwrite the input", out);
+    for (int i = 0; i < nsets; i++)
+        if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);
+    double params[FS_MAX_PARAMS];
+    if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
+    char opat[4096];
+    if ((rc = to_pattern(out, opat, sizeof opat))) return cli_error(rc);
+    j.out = opat;
+    j.timings = timings;
+    j.quiet = quiet;
+    if (timings) printf("frame,stage,ms,vertices,triangles\n");
+    double t0 = fs_now_ms();
+    j.params = params;
+    for (int f = j.first; f <= j.last; f++) {
+        if ((rc = mesh_frame(&j, f))) return cli_error(rc);
+        progress(&j, f - j.first + 1, t0);
+    }
+    return 0;
+}

@@ -1,0 +1,139 @@
+/* The mesh pipeline (mesh_build.h). */
+#include "mesh_build.h"
+#include "aniso_kernels.h"
+#include "counters.h"
+#include "field_eval.h"
+#include "fs_error.h"
+#include "mesh_sample.h"
+#include "mesh_smooth.h"
+#include "mesh_vdb.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Bytes of one OpenVDB float leaf: 512 values, two masks, origin (and slack for
+ * the tree above it). */
+#define LEAF_BYTES (FS_MESH_LEAF3 * 4 + 256)
+
+static void stage(fs_stages *st, const char *name, double t0)
+{
+    if (st) fs_stages_add(st, name, fs_now_ms() - t0);
+}
+
+/* MemAvailable of /proc/meminfo, else the free physical pages. */
+static double memory_available(void)
+{
+    FILE *f = fopen("/proc/meminfo", "r");
+    char line[256];
+    double kb = 0;
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1) break;
+    if (f) fclose(f);
+    if (kb > 0) return kb * 1024;
+    return (double)sysconf(_SC_AVPHYS_PAGES) * (double)sysconf(_SC_PAGESIZE);
+}
+
+/* Refuses a volume that would not fit: its leaves lie in the cells whose 27
+ * neighbours hold a particle (cell >= reach), so their volume bounds the
+ * leaves' (up to the leaves' overhang, one leaf a side). */
+static int check_memory(const fs_grid *g, double cube, double reach, double limit, size_t *max_leaves)
+{
+    size_t near = 0;
+    for (size_t w = 0; w < g->ncells / 32 + 1; w++) near += (size_t)__builtin_popcount(g->near[w]);
+    double leaf = FS_MESH_LEAF * cube, side = g->cell + 2 * leaf;
+    (void)reach;
+    double est = (double)near * side * side * side / (leaf * leaf * leaf) * LEAF_BYTES;
+    *max_leaves = (size_t)fmin(limit / LEAF_BYTES, 1e18);
+    if (est <= limit) return FS_OK;
+    double fit = cube * cbrt(est / limit) * 1.05;
+    return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs about %.3g GB for its sample volume, %.3g GB are available: use cube >= %.3g (scene units)",
+                   cube, est / 1e9, limit / 1e9, fit);
+}
+
+/* Vertex normals -grad phi / |grad phi| at each vertex (0 where the gradient
+ * vanishes: the raster falls back to the face normal there). */
+static int vertex_normals(fs_trimesh *m, const fs_field_eval *e, fs_mesh_work *w)
+{
+    m->nrm = malloc((m->nv ? m->nv : 1) * 3 * sizeof *m->nrm);
+    if (!m->nrm) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu normals", m->nv);
+    long nv = (long)m->nv;
+    uint64_t terms = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : terms)
+    for (long v = 0; v < nv; v++) {
+        float phi, g[3], *n = m->nrm + 3 * v;
+        terms += fs_field_eval_at(e, m->pos + 3 * v, &phi, g);
+        float len = sqrtf(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        for (int a = 0; a < 3; a++) n[a] = len > 0 ? -g[a] / len : 0;
+    }
+    w->voxels += (uint64_t)m->nv;
+    w->terms += terms;
+    return FS_OK;
+}
+
+/* The sample volume and its values. */
+static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o,
+                  const fs_aniso_kernels *ak, fs_mesh_volume **vol, fs_mesh_work *w)
+{
+    const fs_grid *cg = ak ? &ak->grid : g;
+    double reach = ak ? ak->reach : f->H, limit = o->mem_limit > 0 ? o->mem_limit : memory_available();
+    size_t max_leaves, need = 0;
+    int rc = check_memory(cg, o->cube, reach, limit, &max_leaves);
+    if (rc) return rc;
+    /* the volume is found from the kernel centres (the particles, when isotropic) */
+    const float *x = p->x, *y = p->y, *z = p->z;
+    float *cx = NULL;
+    if (ak) {
+        size_t n = cg->n;
+        cx = malloc((n ? n : 1) * 3 * sizeof *cx);
+        if (!cx) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory");
+        for (size_t s = 0; s < n; s++)
+            for (int a = 0; a < 3; a++) cx[a * n + s] = cg->pos4[4 * s + a];
+        x = cx, y = cx + n, z = cx + 2 * n;
+    }
+    *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, max_leaves, &need);
+    free(cx);
+    if (!*vol && need)
+        return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g",
+                       o->cube, need, (double)need * LEAF_BYTES / 1e9, limit / 1e9,
+                       o->cube * cbrt((double)need * LEAF_BYTES / limit) * 1.05);
+    if (!*vol) return FS_ERR_RUNTIME;
+    return fs_mesh_sample(*vol, o->cube, f, g, ak, w);
+}
+
+int fs_mesh_build(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o, fs_trimesh *out,
+                  fs_stages *st)
+{
+    memset(out, 0, sizeof *out);
+    fs_aniso_kernels ak;
+    memset(&ak, 0, sizeof ak);
+    fs_mesh_volume *vol = NULL;
+    fs_mesh_work w = {0, 0};
+    double t0 = fs_now_ms();
+    int rc = o->aniso ? fs_aniso_kernels_build(&ak, p, g, &o->ap, f->H) : FS_OK;
+    if (!rc) rc = sample(p, g, f, o, o->aniso ? &ak : NULL, &vol, &w);
+    fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
+    fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
+    if (!rc) stage(st, "field", t0);
+    double t1 = fs_now_ms();
+    if (!rc) rc = fs_mesh_volume_mesh(vol, f->iso, out);
+    fs_mesh_volume_free(vol);
+    if (!rc && fs_trimesh_volume6(out) < 0) fs_trimesh_flip(out); /* wound outward, whatever the library does */
+    if (!rc) stage(st, "mesh", t1);
+    double t2 = fs_now_ms();
+    if (!rc && o->smooth && o->smooth_iters > 0) {
+        rc = fs_mesh_smooth(out, o->smooth, o->smooth_iters);
+        if (!rc) stage(st, "smooth", t2);
+    }
+    double t3 = fs_now_ms();
+    fs_field_eval e = {*f, g, o->aniso ? &ak : NULL};
+    w = (fs_mesh_work){0, 0};
+    if (!rc) rc = vertex_normals(out, &e, &w);
+    fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
+    fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
+    if (!rc) stage(st, "normals", t3);
+    fs_aniso_kernels_free(&ak);
+    if (rc) fs_trimesh_free(out);
+    return rc;
+}

@@ -1,0 +1,144 @@
+/* The field sampler (mesh_sample.h). Leaves are filled in parallel, each by
+ * its own thread, so no sum is shared. For one leaf, every particle whose
+ * support reaches the leaf's box is splatted: its support is the ellipsoid
+ * d^T M d < H^2 (M = A^-T A^-1; the identity when isotropic), added row by
+ * row along z over the rows that it meets, each row of 8 voxels one vector
+ * loop. */
+#include "mesh_sample.h"
+#include "fs_error.h"
+#include "kernel_shapes.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* One particle's kernel: centre, metric M (row-major, symmetric) and its
+ * bounding half-extents. */
+typedef struct splat {
+    float c[3], M[9], e[3];
+} splat;
+
+static void splat_of(splat *s, const float *pos, const float *inv, float H)
+{
+    for (int a = 0; a < 3; a++) s->c[a] = pos[a];
+    if (!inv) {
+        memset(s->M, 0, sizeof s->M);
+        s->M[0] = s->M[4] = s->M[8] = 1;
+        s->e[0] = s->e[1] = s->e[2] = H;
+        return;
+    }
+    for (int r = 0; r < 3; r++) /* inv is symmetric: M = inv inv */
+        for (int q = 0; q < 3; q++)
+            s->M[3 * r + q] = inv[3 * r] * inv[q] + inv[3 * r + 1] * inv[3 + q] + inv[3 * r + 2] * inv[6 + q];
+    /* half-extent along a: H sqrt((M^-1)_aa), from the cofactors of M */
+    const float *M = s->M;
+    float c0 = M[4] * M[8] - M[5] * M[7], c1 = M[0] * M[8] - M[2] * M[6], c2 = M[0] * M[4] - M[1] * M[3];
+    float det = M[0] * c0 - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]);
+    float cof[3] = {c0, c1, c2};
+    for (int a = 0; a < 3; a++) s->e[a] = H * sqrtf(fmaxf(cof[a] / det, 0.0f)) * 1.0001f;
+}
+
+/* row[0..8) += w shape(sqrt(c + dz (2 b + m22 dz)) / H), dz = z0 + cube k: a
+ * whole leaf row in one vector loop (voxels outside the support add 0, the
+ * shapes being 0 for q >= 1), cheaper than finding the row's ends. */
+#define FS_MESH_ROW(SHAPE)                                                                          \
+    _Pragma("omp simd") for (int k = 0; k < FS_MESH_LEAF; k++)                                      \
+    {                                                                                               \
+        float dz = z0 + cube * (float)k, q = fs_maxf(c + dz * (2 * b + m22 * dz), 0.0f);            \
+        row[k] += w * SHAPE(sqrtf(q) * inv_h);                                                      \
+    }
+
+static inline __attribute__((always_inline)) void add_row(float *restrict row, float z0, float cube, float c, float b, float m22, float w,
+                           float inv_h, fs_kernel k)
+{
+    switch (k) {
+    case FS_KERNEL_POLY6: FS_MESH_ROW(fs_shape_poly6) break;
+    case FS_KERNEL_SPIKY: FS_MESH_ROW(fs_shape_spiky) break;
+    case FS_KERNEL_WYVILL: FS_MESH_ROW(fs_shape_wyvill) break;
+    default: FS_MESH_ROW(fs_shape_cubic) break;
+    }
+}
+
+/* Adds splat s onto leaf buf (origin o, voxel size cube; wc: the kernel's
+ * constant times V / det A): every row of the leaf that the support meets.
+ * Returns the terms added (voxels of those rows). */
+static inline __attribute__((always_inline)) uint64_t add_splat(float *buf, const int o[3], float cube, const splat *s, const fs_field *f, float wc)
+{
+    int lo[2], hi[2];
+    for (int a = 0; a < 3; a++) {
+        int l = (int)ceilf((s->c[a] - s->e[a]) / cube) - o[a], h = (int)floorf((s->c[a] + s->e[a]) / cube) - o[a];
+        if (l < 0) l = 0;
+        if (h > FS_MESH_LEAF - 1) h = FS_MESH_LEAF - 1;
+        if (l > h) return 0;
+        if (a < 2) lo[a] = l, hi[a] = h;
+    }
+    const float *M = s->M, H = f->H, H2 = H * H, z0 = (float)o[2] * cube - s->c[2];
+    uint64_t terms = 0;
+    for (int i = lo[0]; i <= hi[0]; i++) {
+        float dx = (float)(o[0] + i) * cube - s->c[0];
+        for (int j = lo[1]; j <= hi[1]; j++) {
+            float dy = (float)(o[1] + j) * cube - s->c[1];
+            /* d^T M d = c + 2 b dz + M22 dz^2; its minimum over dz is c - b^2 / M22 */
+            float b = M[2] * dx + M[5] * dy, c = M[0] * dx * dx + 2 * M[1] * dx * dy + M[4] * dy * dy;
+            if (c - b * b / M[8] >= H2) continue;
+            add_row(buf + (i * FS_MESH_LEAF + j) * FS_MESH_LEAF, z0, cube, c, b, M[8], wc, 1.0f / H, f->kernel);
+            terms += FS_MESH_LEAF;
+        }
+    }
+    return terms;
+}
+
+/* Fills one leaf: every particle of the cells that the leaf's box grown by
+ * reach touches. One build for AVX2 machines, one for any x86-64. */
+#if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static uint64_t fill_leaf(float *buf, const int o[3], float cube, const fs_field *f, const fs_grid *g,
+                          const fs_aniso_kernels *ak)
+{
+    float reach = ak ? ak->reach : f->H;
+    memset(buf, 0, FS_MESH_LEAF3 * sizeof *buf);
+    int c0[3], c1[3];
+    for (int a = 0; a < 3; a++) {
+        c0[a] = fs_grid_coord(g, a, (float)o[a] * cube - reach);
+        c1[a] = fs_grid_coord(g, a, (float)(o[a] + FS_MESH_LEAF - 1) * cube + reach);
+    }
+    uint64_t terms = 0;
+    float wc = fs_kernel_shape_c(f) * f->volume;
+    splat s;
+    for (int k = c0[2]; k <= c1[2]; k++)
+        for (int j = c0[1]; j <= c1[1]; j++)
+            for (int i = c0[0], ie; i <= c1[0]; i = ie + 1) {
+                uint32_t s0, s1;
+                ie = fs_grid_row_run(g, i, c1[0], j, k, &s0, &s1);
+                for (uint32_t sl = s0; sl < s1; sl++) {
+                    splat_of(&s, g->pos4 + 4 * (size_t)sl, ak ? ak->inv + 9 * (size_t)sl : NULL, f->H);
+                    terms += add_splat(buf, o, cube, &s, f, wc * (ak ? ak->wscale[sl] : 1.0f));
+                }
+            }
+    return terms;
+}
+
+int fs_mesh_sample(fs_mesh_volume *v, double cube, const fs_field *f, const fs_grid *g,
+                   const fs_aniso_kernels *ak, fs_mesh_work *w)
+{
+    if (ak) g = &ak->grid;
+    size_t n = fs_mesh_volume_leaves(v);
+    /* the leaf buffers, fetched on one thread (OpenVDB may load a buffer on first access) */
+    float **buf = malloc((n ? n : 1) * sizeof *buf);
+    int *org = malloc((n ? n : 1) * 3 * sizeof *org);
+    if (!buf || !org) {
+        free(buf);
+        free(org);
+        return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu leaves", n);
+    }
+    for (size_t i = 0; i < n; i++) buf[i] = fs_mesh_volume_leaf(v, i, org + 3 * i);
+    uint64_t terms = 0;
+    long nl = (long)n;
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : terms)
+    for (long i = 0; i < nl; i++) terms += fill_leaf(buf[i], org + 3 * i, (float)cube, f, g, ak);
+    free(buf);
+    free(org);
+    w->voxels += (uint64_t)n * FS_MESH_LEAF3;
+    w->terms += terms;
+    return FS_OK;
+}

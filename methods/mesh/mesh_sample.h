@@ -1,0 +1,22 @@
+/* The mesh method's field sampler: phi on every voxel of the sparse volume's
+ * leaves, by splatting each particle's kernel onto the voxels inside its
+ * support (an exact sum: the same kernels, H and V as the reference). */
+#ifndef FS_MESH_SAMPLE_H
+#define FS_MESH_SAMPLE_H
+#include "aniso_kernels.h"
+#include "grid.h"
+#include "kernels.h"
+#include "mesh_vdb.h"
+#include <stdint.h>
+
+typedef struct fs_mesh_work {
+    uint64_t voxels; /* voxels sampled */
+    uint64_t terms;  /* kernel terms added (voxel-particle pairs inside the support) */
+} fs_mesh_work;
+
+/* Fills v. Isotropic: ak NULL and g the particles' grid (cell >= H);
+ * anisotropic: ak's kernels (g unused). FS_ERR_RUNTIME (fs_fail) out of memory. */
+int fs_mesh_sample(fs_mesh_volume *v, double cube, const fs_field *f, const fs_grid *g,
+                   const fs_aniso_kernels *ak, fs_mesh_work *w);
+
+#endif

@@ -1,0 +1,77 @@
+// Thin VTK 9 adapter of the mesh export (mesh_export.h): the mesh as
+// vtkPolyData (float points, triangle cells, point normals) written by
+// vtkPolyDataWriter (legacy binary .vtk) or vtkXMLPolyDataWriter (.vtp,
+// appended binary, zlib).
+#include "mesh_export.h"
+#include "fs_error.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <exception>
+#include <new>
+
+namespace {
+
+void fill(vtkPolyData *pd, const fs_trimesh *m)
+{
+    vtkNew<vtkFloatArray> xyz, nrm;
+    xyz->SetNumberOfComponents(3);
+    nrm->SetNumberOfComponents(3);
+    nrm->SetName("Normals");
+    xyz->SetNumberOfTuples((vtkIdType)m->nv);
+    nrm->SetNumberOfTuples((vtkIdType)m->nv);
+    for (size_t i = 0; i < 3 * m->nv; i++) {
+        xyz->SetValue((vtkIdType)i, m->pos[i]);
+        nrm->SetValue((vtkIdType)i, m->nrm[i]);
+    }
+    vtkNew<vtkPoints> pts;
+    pts->SetData(xyz);
+    vtkNew<vtkIdTypeArray> offsets, conn;
+    offsets->SetNumberOfTuples((vtkIdType)m->nt + 1);
+    conn->SetNumberOfTuples((vtkIdType)(3 * m->nt));
+    for (size_t t = 0; t <= m->nt; t++) offsets->SetValue((vtkIdType)t, (vtkIdType)(3 * t));
+    for (size_t i = 0; i < 3 * m->nt; i++) conn->SetValue((vtkIdType)i, (vtkIdType)m->tri[i]);
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(offsets, conn);
+    pd->SetPoints(pts);
+    pd->SetPolys(polys);
+    pd->GetPointData()->SetNormals(nrm);
+}
+
+} // namespace
+
+extern "C" int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml)
+{
+    try {
+        vtkNew<vtkPolyData> pd;
+        fill(pd, m);
+        int ok;
+        if (xml) {
+            vtkNew<vtkXMLPolyDataWriter> w;
+            w->SetFileName(tmp);
+            w->SetInputData(pd);
+            w->SetDataModeToAppended();
+            w->SetCompressorTypeToZLib();
+            ok = w->Write() == 1 && w->GetErrorCode() == 0;
+        } else {
+            vtkNew<vtkPolyDataWriter> w;
+            w->SetFileName(tmp);
+            w->SetInputData(pd);
+            w->SetFileTypeToBinary();
+            ok = w->Write() == 1 && w->GetErrorCode() == 0;
+        }
+        return ok ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: VTK could not write the mesh", path);
+    } catch (const std::bad_alloc &) {
+        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory writing the mesh through VTK", path);
+    } catch (const std::exception &e) {
+        return fs_fail(FS_ERR_RUNTIME, "%s: VTK: %s", path, e.what());
+    }
+}
