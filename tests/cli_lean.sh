@@ -79,6 +79,9 @@ if off OPENVDB; then
   OUTFILE=$T/ls.exr refused OPENVDB "the levelset method" render "$T/dam.json" --method levelset -q -o "$T/ls.exr"
   OUTFILE=$T/lscmp/report.md refused OPENVDB "the levelset method in compare" compare "$T/dam.json" --methods levelset -q -o "$T/lscmp"
   check '! "$BIN" methods | grep -q "^levelset"' "levelset is not registered"
+  OUTFILE=$T/me.exr refused OPENVDB "the mesh method" render "$T/dam.json" --method mesh -q -o "$T/me.exr"
+  OUTFILE=$T/me.ply refused OPENVDB "fluidsurf mesh" mesh "$T/dam.ply" -q -o "$T/me.ply"
+  check '! "$BIN" methods | grep -q "^mesh"' "mesh is not registered"
 fi
 if off OIIO; then
   printf 'II*\0not really a tiff' > "$T/img.tif"
