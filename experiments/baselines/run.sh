@@ -34,7 +34,7 @@ prov="# commit=$(git describe --always --dirty); cpu=$(grep -m1 'model name' /pr
   -o "$tmp/q" > /dev/null
 "$BIN" compare experiments/scenes/dam_break.json --methods mesh --set mesh.smooth=taubin --no-cache -q --repeat 1 \
   -o "$tmp/qs" > /dev/null
-{ echo "$prov"; grep -v '^#' "$tmp/q/metrics.csv"; grep -v '^#' "$tmp/qs/metrics.csv" | awk -F, 'NR > 1 && $1 == "mesh"'; } > "$OUT/quality.csv"
+{ echo "$prov"; grep -v '^#' "$tmp/q/metrics.csv"; grep -v '^#' "$tmp/qs/metrics.csv" | awk -F, -v OFS=, 'NR > 1 && $1 == "mesh" {$2 = "smooth=taubin"; print}'; } > "$OUT/quality.csv"
 
 # ---- convergence: mesh against the reference as cube shrinks from 1 r to 0.25 r
 "$BIN" compare experiments/scenes/dam_break.json --methods mesh --set mesh.cube=1,0.75,0.5,0.35,0.25 --no-cache -q \
