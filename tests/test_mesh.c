@@ -93,7 +93,8 @@ static void ball_mesh(void)
     const char *want[] = {"field", "mesh", "normals", NULL}, *miss = fs_test_missing_stage(&st, want);
     CHECK(miss == NULL, "ball: no stage %s", miss);
     CHECK(m.nt > 1000 && m.nv > 500, "ball: %zu triangles, %zu vertices", m.nt, m.nv);
-    CHECK(edges_not_twice(&m) == 0, "ball: %d edges not shared by exactly two triangles", edges_not_twice(&m));
+    int open_edges = edges_not_twice(&m);
+    CHECK(open_edges == 0, "ball: %d edges not shared by exactly two triangles", open_edges);
     double vol = fs_trimesh_volume6(&m) / 6;
     fs_field_eval e = {f, &g, NULL};
     double want_v = inside_volume(&e, &p, 0.25f * r);

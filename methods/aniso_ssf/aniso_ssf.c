@@ -4,6 +4,7 @@
  * normals from the filtered depth, thickness by additive splatting. README.md
  * maps the paper's parameters onto fluidsurf's units. */
 #include "aniso_ssf/aniso_gl.h"
+#include "aniso_params.h"
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_stage.h"
@@ -19,7 +20,9 @@ enum { F_NONE, F_GAUSSIAN, F_BILATERAL, F_CURVATURE, F_NARROW };
 
 typedef struct aniso_ssf_params {
     double anisotropy, filter, iterations, sigma, sigma_depth, range, narrow_threshold, narrow_clamp;
-    double max_radius_px, aniso_radius, kappa, n_eps, aniso_scale, aniso_norm, lambda, thickness;
+    double max_radius_px;
+    fs_aniso_param_values aniso;
+    double thickness;
 } aniso_ssf_params;
 
 #define FIELD(f) FS_PARAM_FIELD(aniso_ssf_params, f)
@@ -35,13 +38,7 @@ static const fs_param_def params[] = {
     {FIELD(narrow_clamp), FS_PARAM_FLOAT, 1.0, 0.0, 100.0, NULL,
      "narrow-range filter: samples behind the range (or empty) count as z + mu, mu in multiples of r"},
     {FIELD(max_radius_px), FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
-    {FIELD(aniso_radius), FS_PARAM_FLOAT, FS_ANISO_RADIUS_R, 1.0, 40.0, NULL, "WPCA neighbourhood radius R, multiples of r"},
-    {FIELD(kappa), FS_PARAM_FLOAT, FS_ANISO_KAPPA, 1.0, 100.0, NULL, "largest/smallest eigenvalue limit"},
-    {FIELD(n_eps), FS_PARAM_INT, FS_ANISO_N_EPS, 0, 10000, NULL, "at or below this many neighbours: isotropic"},
-    {FIELD(aniso_scale), FS_PARAM_FLOAT, FS_ANISO_SCALE, 0.05, 20.0, NULL, "stretch = scale sigma_k / sigma_bulk (paper s)"},
-    {FIELD(aniso_norm), FS_PARAM_ENUM, FS_ANISO_PER_PARTICLE, 0, 1, "global|volume",
-     "stretch normalisation: global s (paper) or determinant 1 per particle"},
-    {FIELD(lambda), FS_PARAM_FLOAT, FS_ANISO_LAMBDA, 0.0, 1.0, NULL, "Laplacian smoothing of kernel centres (Yu & Turk)"},
+    FS_ANISO_PARAM_DEFS(aniso_ssf_params),
     {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
 };
 #undef FIELD
@@ -101,14 +98,7 @@ static void *create(const fs_method_setup *setup)
     if (!s) { fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory"); return NULL; }
     s->f = *f;
     if (fs_method_params_copy("aniso_ssf", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
-    fs_aniso_defaults(&s->ap, f->kernel, f->r);
-    s->ap.radius = (float)s->params.aniso_radius * f->r;
-    s->ap.kappa = (float)s->params.kappa;
-    s->ap.n_eps = (int)s->params.n_eps;
-    s->ap.scale = (float)s->params.aniso_scale;
-    s->ap.lambda = (float)s->params.lambda;
-    s->ap.per_particle = (int)s->params.aniso_norm;
-    s->ap.sigma_ref = (float)fs_aniso_sigma_ref(f->kernel, s->ap.radius, 2 * f->r);
+    fs_aniso_params_set(&s->ap, &s->params.aniso, f->kernel, f->r);
     const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
     if (!(s->prog_sph = fs_program_build(sph, NULL)) || !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||

@@ -36,14 +36,13 @@ static double memory_available(void)
 }
 
 /* Refuses a volume that would not fit: its leaves lie in the cells whose 27
- * neighbours hold a particle (cell >= reach), so their volume bounds the
- * leaves' (up to the leaves' overhang, one leaf a side). */
-static int check_memory(const fs_grid *g, double cube, double reach, double limit, size_t *max_leaves)
+ * neighbours hold a particle (g's cell >= the reach), so their volume bounds
+ * the leaves' (up to the leaves' overhang, one leaf a side). */
+static int check_memory(const fs_grid *g, double cube, double limit, size_t *max_leaves)
 {
     size_t near = 0;
     for (size_t w = 0; w < g->ncells / 32 + 1; w++) near += (size_t)__builtin_popcount(g->near[w]);
     double leaf = FS_MESH_LEAF * cube, side = g->cell + 2 * leaf;
-    (void)reach;
     double est = (double)near * side * side * side / (leaf * leaf * leaf) * LEAF_BYTES;
     *max_leaves = (size_t)fmin(limit / LEAF_BYTES, 1e18);
     if (est <= limit) return FS_OK;
@@ -79,7 +78,7 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
     const fs_grid *cg = ak ? &ak->grid : g;
     double reach = ak ? ak->reach : f->H, limit = o->mem_limit > 0 ? o->mem_limit : memory_available();
     size_t max_leaves, need = 0;
-    int rc = check_memory(cg, o->cube, reach, limit, &max_leaves);
+    int rc = check_memory(cg, o->cube, limit, &max_leaves);
     if (rc) return rc;
     /* the volume is found from the kernel centres (the particles, when isotropic) */
     const float *x = p->x, *y = p->y, *z = p->z;

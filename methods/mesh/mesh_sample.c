@@ -95,8 +95,7 @@ __attribute__((target_clones("avx2", "default")))
 static uint64_t fill_leaf(float *buf, const int o[3], float cube, const fs_field *f, const fs_grid *g,
                           const fs_aniso_kernels *ak)
 {
-    float reach = ak ? ak->reach : f->H;
-    memset(buf, 0, FS_MESH_LEAF3 * sizeof *buf);
+    float reach = ak ? ak->reach : f->H; /* buf starts at 0: fs_mesh_volume_create's values */
     int c0[3], c1[3];
     for (int a = 0; a < 3; a++) {
         c0[a] = fs_grid_coord(g, a, (float)o[a] * cube - reach);

@@ -17,8 +17,8 @@ extern "C" {
 typedef struct fs_mesh_volume fs_mesh_volume;
 
 /* Leaves of voxel size `cube` (voxel (i,j,k) sits at (i,j,k) cube) that hold a
- * voxel within `reach` of one of the n points, every voxel active (values are
- * the sampler's to fill). When they would be more than max_leaves (0: no
+ * voxel within `reach` of one of the n points, every voxel active and 0 (the
+ * field far from every particle; the sampler adds to it). When they would be more than max_leaves (0: no
  * bound), returns NULL with *need = their count and fs_fail not set; NULL with
  * fs_fail set on any other failure. */
 fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n, double cube,
