@@ -2,3 +2,25 @@
 
 # median: the median of the numbers on stdin, one per line (empty when there are none).
 median() { sort -g | awk '{a[NR]=$1} END {if (NR == 0) print ""; else print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+
+# exr_attr FILE NAME: a fluidsurf provenance attribute of an EXR (iinfo: openimageio-tools)
+exr_attr() { iinfo -v "$1" | sed -n "s/^ *fluidsurf:$2: \"\(.*\)\"$/\1/p" | head -1; }
+# kv "eye=a,b,c;target=..." KEY
+kv() { tr ';' '\n' <<<"$1" | sed -n "s/^$2=//p"; }
+json_vec() { echo "[${1//,/, }]"; }
+
+# auto_camera BIN SCENE.json WORK: the camera fluidsurf frames SCENE with (read back
+# from a 16x16 render's provenance). Sets P_R, P_EYE, P_TGT, P_UP, FOV, and P_CAMERA
+# (the camera as JSON, without its size) so other tools can be given the same view.
+auto_camera() {
+  local bin=$1 scene=$2 exr=$3/$(basename "$2" .json).cam.exr cam
+  "$bin" render "$scene" --method reference -W 16 -H 16 -q -o "$exr"
+  cam=$(exr_attr "$exr" camera)
+  P_R=$(exr_attr "$exr" r)
+  P_EYE=$(kv "$cam" eye); P_TGT=$(kv "$cam" target); P_UP=$(kv "$cam" up); FOV=$(kv "$cam" fov)
+  P_CAMERA="\"eye\": $(json_vec "$P_EYE"), \"target\": $(json_vec "$P_TGT"), \"up\": $(json_vec "$P_UP"), \"fov\": $FOV"
+}
+
+# vdb_aperture FOV_DEG: vdb_tool -render's aperture for a vertical field of view
+# (its focal length is 100: aperture = 100 tan(fov / 2))
+vdb_aperture() { awk -v f="$1" 'BEGIN {printf "%.4g", 100 * sin(f * 3.14159265358979 / 360) / cos(f * 3.14159265358979 / 360)}'; }

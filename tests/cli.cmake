@@ -32,3 +32,9 @@ if(NOT FS_SANITIZE)
            ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/gpu_quick)
   set_tests_properties(gpu_quick PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()
+# The OpenImageIO module: loaded only when an image is written or read, found in an installed tree.
+if(FS_WITH_OIIO)
+  add_test(NAME cli_plugin COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_plugin.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_plugin)
+  set_tests_properties(cli_plugin PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+endif()

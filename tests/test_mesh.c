@@ -3,13 +3,15 @@
  * its normals outward; its volume matches the field's inside; Taubin keeps
  * the volume where Laplacian shrinks it; the render of the bundled dam break
  * against the reference (depth, normals, thickness); the anisotropic field;
- * the memory refusal. */
+ * the memory refusal; inside leaves made tiles change no vertex. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl_context.h"
 #include "grid.h"
 #include "mesh/mesh_build.h"
+#include "mesh/mesh_sample.h"
 #include "mesh/mesh_smooth.h"
+#include "mesh/mesh_vdb.h"
 #include "method.h"
 #include "metrics.h"
 #include "field_eval.h"
@@ -196,9 +198,50 @@ static void dam_break(void)
     fs_particles_free(&p);
 }
 
+/* The mesh of p's volume, every leaf kept or inside leaves made tiles; *kept, *leaves. */
+static int volume_mesh(const fs_particles *p, const fs_grid *g, const fs_field *f, double cube, int keep_all,
+                       fs_trimesh *m, size_t *kept, size_t *leaves)
+{
+    size_t need = 0;
+    fs_mesh_volume *v = fs_mesh_volume_create(p->x, p->y, p->z, p->n, cube, f->H, f->iso, keep_all, 0, &need);
+    fs_mesh_work w = {0, 0};
+    int rc = v ? fs_mesh_sample(v, cube, f, g, NULL, &w) : FS_ERR_RUNTIME;
+    if (!rc) rc = fs_mesh_volume_mesh(v, f->iso, m);
+    if (v) *kept = fs_mesh_volume_kept(v), *leaves = fs_mesh_volume_leaves(v);
+    if (v) fs_mesh_volume_free(v);
+    return rc;
+}
+
+/* On the dam break, the leaves inside the liquid become tiles, and the mesh is
+ * the same to the bit as with every leaf kept. */
+static void interior_tiles(void)
+{
+    fs_particles p;
+    static fs_scene s;
+    fs_field f;
+    if (fs_test_load_dam(&p, &s, &f)) { CHECK(0, "dam: %s", fs_error_message()); return; }
+    fs_grid g;
+    CHECK(fs_grid_build(&g, &p, f.H) == FS_OK, "grid: %s", fs_error_message());
+    fs_trimesh a, b;
+    size_t ka, kb, la, lb;
+    double cube = 0.5 * f.r;
+    CHECK(volume_mesh(&p, &g, &f, cube, 0, &a, &ka, &la) == FS_OK, "tiles: %s", fs_error_message());
+    CHECK(volume_mesh(&p, &g, &f, cube, 1, &b, &kb, &lb) == FS_OK, "all leaves: %s", fs_error_message());
+    printf("interior tiles: %zu of %zu leaves kept (all kept: %zu); %zu and %zu vertices\n", ka, la, kb, a.nv, b.nv);
+    CHECK(la == lb && kb == lb && ka < 0.9 * la, "interior tiles: kept %zu of %zu (all: %zu of %zu)", ka, la, kb, lb);
+    int same = a.nv == b.nv && a.nt == b.nt && !memcmp(a.pos, b.pos, 3 * a.nv * sizeof *a.pos) &&
+               !memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri);
+    CHECK(same, "interior tiles: the mesh changed (%zu/%zu vertices, %zu/%zu triangles)", a.nv, b.nv, a.nt, b.nt);
+    fs_trimesh_free(&a);
+    fs_trimesh_free(&b);
+    fs_grid_free(&g);
+    fs_particles_free(&p);
+}
+
 int main(void)
 {
     ball_mesh();
+    interior_tiles();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
     dam_break();

@@ -3,18 +3,31 @@
 #include <stdio.h>
 
 static _Thread_local char fs_msg[1024];
+static _Thread_local int fs_code;
+
+int fs_vfail(int code, const char *fmt, va_list ap)
+{
+    vsnprintf(fs_msg, sizeof fs_msg, fmt, ap);
+    fs_code = code;
+    return code;
+}
 
 int fs_fail(int code, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(fs_msg, sizeof fs_msg, fmt, ap);
+    fs_vfail(code, fmt, ap);
     va_end(ap);
     return code;
 }
 
 const char *fs_error_message(void) { return fs_msg[0] ? fs_msg : "unknown error"; }
-void fs_error_clear(void) { fs_msg[0] = 0; }
+int fs_error_code(void) { return fs_msg[0] && fs_code ? fs_code : FS_ERR_RUNTIME; }
+void fs_error_clear(void)
+{
+    fs_msg[0] = 0;
+    fs_code = 0;
+}
 
 static int fs_quiet;
 void fs_note_quiet(int quiet) { fs_quiet = quiet; }

@@ -1,6 +1,7 @@
 /* One-line errors ("FILE: what is wrong") and the exit codes of docs/DESIGN.md. */
 #ifndef FS_ERROR_H
 #define FS_ERROR_H
+#include <stdarg.h>
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -10,7 +11,11 @@ enum { FS_OK = 0, FS_ERR_RUNTIME = 1, FS_ERR_INPUT = 2, FS_ERR_DIFF = 3 };
 /* Stores a formatted message (thread-local) and returns code, so callers write
  * `return fs_fail(FS_ERR_INPUT, "%s: truncated POINTS section", path);` */
 int fs_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+int fs_vfail(int code, const char *fmt, va_list ap);
 const char *fs_error_message(void);
+/* The code of the last fs_fail on this thread (FS_ERR_RUNTIME when none is
+ * recorded): for layers that report a failure below them without the code. */
+int fs_error_code(void);
 void fs_error_clear(void);
 /* A one-line note on stderr ("fluidsurf: note: ..."), for what a run leaves out
  * on purpose (far stray particles); silenced by fs_note_quiet(1) (the CLI's -q). */

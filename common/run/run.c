@@ -70,7 +70,9 @@ int fs_run_open(fs_run **out, const fs_method *m, const fs_scene *s, const doubl
     /* create() receives the method's filled parameter struct and copies it */
     fs_method_setup setup = {fs_scene_field(s), rc ? NULL : fs_method_params_alloc(m, r->values), s};
     if (!rc && !setup.params) rc = FS_ERR_RUNTIME;
-    if (!rc && !(r->self = m->create(&setup))) rc = FS_ERR_RUNTIME;
+    /* a failed create() reports through fs_fail: its code decides the exit status */
+    if (!rc) fs_error_clear();
+    if (!rc && !(r->self = m->create(&setup))) rc = fs_error_code();
     free((void *)setup.params);
     if (rc) { free(r); return rc; }
     *out = r;

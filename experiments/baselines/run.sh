@@ -1,25 +1,36 @@
 #!/usr/bin/env bash
 # The baselines study (issue 15): levelset and mesh against the reference on the
 # bundled dam break, the mesh's convergence as cube shrinks, and the speed and
-# peak memory of `fluidsurf mesh` and `levelset` against OpenVDB's vdb_tool
+# peak memory of `fluidsurf mesh` and of `levelset` against OpenVDB's vdb_tool
 # whole pipeline on the same frames, measured in the same run (medians of RUNS).
 #
-#   experiments/baselines/run.sh [-o DIR] [--sets "dam box_100k box_1m"]
+#   experiments/baselines/run.sh [-o DIR] [--sets "dam splash_seq box_100k box_1m box_10m"]
+#                                [--render-sets "dam splash box_1m"]
 #
-# Writes DIR (default results/baselines): quality.csv, convergence.csv,
-# speed.csv (one row per tool, set and run: wall s, peak RSS), stages.csv
-# (fluidsurf mesh --timings), convergence.png, and README.md from them.
+# Sets: dam (the bundled splashsurf frame), splash_seq (frames 6-10 of fluidsurf's
+# own 100k dam break simulation, made once into FS_BENCH_CACHE: 15-30 minutes),
+# splash (its frame 10, committed as experiments/data/splash/), box_* (synthetic
+# scenes of experiments/scenes/). Writes DIR (default results/baselines):
+# quality.csv, convergence.csv, speed.csv (one row per tool, set and run: wall s,
+# peak RSS), stages.csv (fluidsurf mesh --timings), render.csv (levelset against
+# vdb_tool -render, the same view), convergence.png, and README.md from them.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 OUT=results/baselines
-SETS="dam box_100k box_1m"
+SETS="dam splash_seq box_100k box_1m box_10m"
+RENDER_SETS="dam splash box_1m"
 while [ $# -gt 0 ]; do
   case $1 in
     -o) OUT=$2; shift 2 ;;
     --sets) SETS=$2; shift 2 ;;
-    *) echo "usage: $0 [-o DIR] [--sets \"dam box_100k box_1m box_10m\"]" >&2; exit 2 ;;
+    --render-sets) RENDER_SETS=$2; shift 2 ;;
+    *) echo "usage: $0 [-o DIR] [--sets \"dam splash_seq box_100k box_1m box_10m\"] [--render-sets \"dam splash box_1m\"]" >&2; exit 2 ;;
   esac
 done
+source experiments/lib.sh # median, auto_camera, vdb_aperture
+CACHE=${FS_BENCH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/fluidsurf-bench}
+SEQ=$CACHE/splash_seq # frames f_0006.ply .. f_0010.ply
+SIZE=${SIZE:-1024}    # levelset against vdb_tool -render
 BIN=${BIN:-./build/fluidsurf}
 RUNS=${RUNS:-3}
 [ -x "$BIN" ] || bash scripts/build.sh "$(dirname "$BIN")"
@@ -52,33 +63,78 @@ GP
 fi
 
 # ---- speed and memory: the same PLY for every tool; wall time and peak RSS of the whole process
-set_file() { # NAME -> the PLY path
+set_file() { # NAME -> the PLY path (splash_seq: the frame pattern)
   case $1 in
     dam) echo experiments/data/splashsurf/dam_break_frame_23_24389_particles.ply ;;
+    splash) echo experiments/data/splash/dam_break_splash_100k.ply ;;
+    splash_seq)
+      if [ ! -s "$SEQ/f_0010.ply" ]; then
+        echo "run.sh: simulating the splash sequence into $SEQ (once; 15-30 minutes)" >&2
+        mkdir -p "$SEQ"
+        "$BIN" simulate dam_break --cpu --particles 100000 --fps 10 --frames 10 -q -o "$SEQ/f_%04d.ply" >&2
+      fi
+      echo "$SEQ/f_%04d.ply" ;;
     *) [ -s "$tmp/$1.ply" ] || "$BIN" convert "experiments/scenes/$1.json" -o "$tmp/$1.ply" >&2; echo "$tmp/$1.ply" ;;
   esac
 }
+SEQ_FIRST=6 SEQ_LAST=10
+frames_of() { # PLY (or pattern) -> the frame files, one per line
+  if [ "$1" = "${1/\%04d/}" ]; then echo "$1"; else for f in $(seq $SEQ_FIRST $SEQ_LAST); do printf "$1\n" "$f"; done; fi
+}
+# the vdb_tool pipeline over every frame, in one timed shell: vdb_points ARGS... -- FILES...
+VDB_LOOP='args=(); while [ "$1" != -- ]; do args+=("$1"); shift; done; shift
+for f in "$@"; do vdb_tool -read "$f" "${args[@]}" || exit 1; done'
 timed() { # SET TOOL RUN CMD...: appends a speed.csv row
   local set=$1 tool=$2 run=$3; shift 3
   /usr/bin/time -f "%e %M" -o "$tmp/time" "$@" > "$tmp/stdout" 2> "$tmp/stderr" || { echo "run.sh: $tool on $set failed: $(tail -2 "$tmp/stderr")" >&2; return 1; }
   read -r wall kb < "$tmp/time"
-  echo "$set,$tool,$run,$N,$wall,$kb" >> "$OUT/speed.csv"
+  echo "$set,$tool,$run,$N,$F,$wall,$kb" >> "$CSV"
 }
-{ echo "$prov"; echo "set,tool,run,particles,wall_s,peak_rss_kb"; } > "$OUT/speed.csv"
+CSV=$OUT/speed.csv
+{ echo "$prov"; echo "set,tool,run,particles,frames,wall_s,peak_rss_kb"; } > "$CSV"
 { echo "$prov"; echo "set,settings,run,frame,stage,ms,vertices,triangles"; } > "$OUT/stages.csv"
 r=0.025
+vox=$(awk -v r=$r 'BEGIN {print r / 2}')
 for set in $SETS; do
   ply=$(set_file "$set")
-  N=$("$BIN" info "$ply" --radius $r | awk '/^particles:/ {print $2}')
+  mapfile -t files < <(frames_of "$ply")
+  F=${#files[@]}
+  N=$("$BIN" info "${files[0]}" --radius $r | awk '/^particles:/ {print $2}')
+  io=("$ply"); out=$tmp/m.ply
+  [ "$F" = 1 ] || { io+=(--frames $SEQ_FIRST:$SEQ_LAST); out=$tmp/m_{}.ply; }
   for run in $(seq 1 "$RUNS"); do
     # one run of each tool in turn, so load on the machine hits them alike
-    timed "$set" "fluidsurf mesh" "$run" "$BIN" mesh "$ply" --radius $r -q --timings -o "$tmp/m.ply"
+    timed "$set" "fluidsurf mesh" "$run" "$BIN" mesh "${io[@]}" --radius $r -q --timings -o "$out"
     sed "s/^/$set,cube=0.5,$run,/" "$tmp/stdout" | tail -n +2 >> "$OUT/stages.csv"
-    timed "$set" "vdb_tool points2ls+ls2mesh" "$run" vdb_tool -read "$ply" -points2ls voxel=$(awk -v r=$r 'BEGIN {print r / 2}') radius=4 width=3 -ls2mesh -write "$tmp/v.ply"
-    timed "$set" "vdb_tool points2ls" "$run" vdb_tool -read "$ply" -points2ls voxel=$(awk -v r=$r 'BEGIN {print r / 2}') radius=4 width=3
-    timed "$set" "fluidsurf mesh cube=1.5" "$run" "$BIN" mesh "$ply" --radius $r -q --timings --set mesh.cube=1.5 -o "$tmp/m15.ply"
+    timed "$set" "vdb_tool points2ls+ls2mesh" "$run" bash -c "$VDB_LOOP" _ -points2ls voxel=$vox radius=4 width=3 \
+      -ls2mesh -write "$tmp/v.ply" -- "${files[@]}"
+    timed "$set" "vdb_tool points2ls" "$run" bash -c "$VDB_LOOP" _ -points2ls voxel=$vox radius=4 width=3 -- "${files[@]}"
+    timed "$set" "fluidsurf mesh cube=1.5" "$run" "$BIN" mesh "${io[@]}" --radius $r -q --timings --set mesh.cube=1.5 -o "$out"
     sed "s/^/$set,cube=1.5,$run,/" "$tmp/stdout" | tail -n +2 >> "$OUT/stages.csv"
     timed "$set" "fluidsurf startup" "$run" "$BIN" --version
+  done
+done
+
+# ---- levelset (thickness off, its defaults: voxel r/2, radius 2r = 4 voxels, half width 3) against
+# vdb_tool -points2ls voxel=r/2 radius=4 width=3 -render, the same view (the camera fluidsurf frames
+# the set with) and the same SIZE x SIZE image; the last run's images stay in out/baselines/
+CSV=$OUT/render.csv
+{ echo "$prov; image=${SIZE}x$SIZE"; echo "set,tool,run,particles,frames,wall_s,peak_rss_kb"; } > "$CSV"
+F=1 IMG=out/baselines
+mkdir -p "$IMG"
+for set in $RENDER_SETS; do
+  ply=$(realpath "$(set_file "$set")")
+  printf '{"particles": "%s", "radius": %s}\n' "$ply" $r > "$tmp/$set.json"
+  auto_camera "$BIN" "$tmp/$set.json" "$tmp"
+  printf '{"particles": "%s", "radius": %s, "camera": {%s, "width": %d, "height": %d}}\n' \
+    "$ply" $r "$P_CAMERA" "$SIZE" "$SIZE" > "$tmp/$set.json"
+  N=$("$BIN" info "$ply" --radius $r | awk '/^particles:/ {print $2}')
+  for run in $(seq 1 "$RUNS"); do
+    timed "$set" "levelset" "$run" "$BIN" render "$tmp/$set.json" --method levelset --set levelset.thickness=off -q \
+      -o "$IMG/${set}_levelset.png"
+    timed "$set" "vdb_tool points2ls+render" "$run" vdb_tool -read "$ply" -points2ls voxel=$vox radius=4 width=3 \
+      -render image="${SIZE}x$SIZE" translate="($P_EYE)" target="($P_TGT)" up="($P_UP)" aperture="$(vdb_aperture "$FOV")" \
+      "$IMG/${set}_vdb_tool.png"
   done
 done
 bash experiments/baselines/report.sh "$OUT"

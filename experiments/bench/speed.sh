@@ -28,7 +28,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
-source experiments/lib.sh # median
+source experiments/lib.sh # median, auto_camera, vdb_aperture
 
 QUICK=0
 case "${1:-}" in
@@ -97,12 +97,6 @@ else
   GROWTH="box_100k box_1m box_10m"
 fi
 
-# exr_attr FILE NAME: a fluidsurf provenance attribute of an EXR
-exr_attr() { iinfo -v "$1" | sed -n "s/^ *fluidsurf:$2: \"\(.*\)\"$/\1/p" | head -1; }
-# kv "eye=a,b,c;target=..." KEY
-kv() { tr ';' '\n' <<<"$1" | sed -n "s/^$2=//p"; }
-json_vec() { echo "[${1//,/, }]"; }
-
 # prepare_set I: writes $WORK/NAME.json (particles + r + the camera written out)
 # and $CACHE/sets/NAME.ply (the points for vdb_tool); sets P_N, P_R, P_EYE, P_TGT, P_UP
 prepare_set() {
@@ -115,16 +109,10 @@ prepare_set() {
   fi
   # today's auto-framed camera at this aspect (framing depends on the aspect, not the size)
   printf '{"description": "speed benchmark set %s", "particles": %s}\n' "$name" "$part" > "$WORK/$name.auto.json"
-  "$BIN" render "$WORK/$name.auto.json" --method reference -W 16 -H 16 -q -o "$WORK/$name.cam.exr"
-  local cam; cam=$(exr_attr "$WORK/$name.cam.exr" camera)
-  P_R=$(exr_attr "$WORK/$name.cam.exr" r)
-  P_EYE=$(kv "$cam" eye); P_TGT=$(kv "$cam" target); P_UP=$(kv "$cam" up)
-  local fov; fov=$(kv "$cam" fov)
+  auto_camera "$BIN" "$WORK/$name.auto.json" "$WORK"
   [ "$kind" = synthetic ] || part="$part, \"radius\": $P_R"
-  printf '{"description": "speed benchmark set %s, camera as fluidsurf %s frames it",\n "particles": %s,\n "camera": {"eye": %s, "target": %s, "up": %s, "fov": %s, "width": %d, "height": %d}}\n' \
-    "$name" "$(git rev-parse --short HEAD)" "$part" "$(json_vec "$P_EYE")" "$(json_vec "$P_TGT")" "$(json_vec "$P_UP")" \
-    "$fov" "$SIZE" "$SIZE" > "$WORK/$name.json"
-  FOV=$fov
+  printf '{"description": "speed benchmark set %s, camera as fluidsurf %s frames it",\n "particles": %s,\n "camera": {%s, "width": %d, "height": %d}}\n' \
+    "$name" "$(git rev-parse --short HEAD)" "$part" "$P_CAMERA" "$SIZE" "$SIZE" > "$WORK/$name.json"
   local ply=$CACHE/sets/$name.ply key
   key=$(printf '%s|%s' "$part" "$( [ "$kind" = file ] && stat -c '%s %Y' "$src")" | md5sum | cut -c1-12)
   if [ ! -s "$ply" ] || [ "$(cat "$ply.key" 2>/dev/null)" != "$key" ]; then
@@ -222,7 +210,7 @@ for i in "${!SET_NAMES[@]}"; do
   bench "$name" "$P_N" spheres "$SIZE" "$SIZE" "$im.spheres.exr" $(fs) --method spheres -o "$im.spheres.exr"
   bench "$name" "$P_N" raycast_pca "$SIZE" "$SIZE" "$im.raycast_pca.exr" $(fs) --method raycast_pca -o "$im.raycast_pca.exr"
   voxel=$(awk -v r="$P_R" 'BEGIN {printf "%.9g", r / 2}')
-  aperture=$(awk -v f="$FOV" 'BEGIN {printf "%.4g", 100 * sin(f * 3.14159265358979 / 360) / cos(f * 3.14159265358979 / 360)}')
+  aperture=$(vdb_aperture "$FOV")
   bench "$name" "$P_N" vdb_tool "$SIZE" "$SIZE" "$im.vdb_tool.png" "$VDB_TOOL" -read "$CACHE/sets/$name.ply" \
     -points2ls voxel="$voxel" radius=4 width=3 \
     -render image="${SIZE}x$SIZE" translate="($P_EYE)" target="($P_TGT)" up="($P_UP)" aperture="$aperture" "$im.vdb_tool.png"

@@ -37,7 +37,6 @@ typedef struct levelset {
     fs_field field;
     fs_ls_build b;
     int thickness;
-    double radius_r, voxel_r; /* the parameters, for the refusal below */
     fs_ls_grid *grid;
 } levelset;
 
@@ -54,6 +53,11 @@ static void *create(const fs_method_setup *setup)
     levelset_params p;
     if (fs_method_check_field("levelset", &setup->field)) return NULL;
     if (fs_method_params_copy("levelset", setup, &p, sizeof p)) return NULL;
+    if (p.radius < 1.5 * p.voxel) {
+        fs_fail(FS_ERR_INPUT, "levelset: radius %g r is under 1.5 voxels (voxel %g r): OpenVDB's rasteriser drops such particles",
+                p.radius, p.voxel);
+        return NULL;
+    }
     levelset *s = calloc(1, sizeof *s);
     if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
     s->field = setup->field;
@@ -62,8 +66,6 @@ static void *create(const fs_method_setup *setup)
                          .dilate = (int)p.dilate, .smooth = (int)p.smooth, .smooth_iters = (int)p.smooth_iters,
                          .erode = (int)p.erode};
     s->thickness = p.thickness != 0;
-    s->radius_r = p.radius;
-    s->voxel_r = p.voxel;
     return s;
 }
 
@@ -73,12 +75,6 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     (void)g;
     levelset *s = self;
-    /* Refused here rather than in create, whose failure the run layer reports as
-     * a runtime error: bad input, exit status 2, before any output. */
-    if (s->radius_r < 1.5 * s->voxel_r)
-        return fs_fail(FS_ERR_INPUT,
-                       "levelset: radius %g r is under 1.5 voxels (voxel %g r): OpenVDB's rasteriser drops such particles",
-                       s->radius_r, s->voxel_r);
     fs_ls_grid_free(s->grid);
     s->grid = fs_ls_grid_build(p->x, p->y, p->z, p->n, &s->b);
     if (!s->grid) return FS_ERR_RUNTIME; /* fs_fail set */

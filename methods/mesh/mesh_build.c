@@ -91,7 +91,7 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
             for (int a = 0; a < 3; a++) cx[a * n + s] = cg->pos4[4 * s + a];
         x = cx, y = cx + n, z = cx + 2 * n;
     }
-    *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, max_leaves, &need);
+    *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, f->iso, o->keep_all, max_leaves, &need);
     free(cx);
     if (!*vol && need)
         return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g",

@@ -18,6 +18,7 @@ typedef struct fs_mesh_opts {
     int aniso;             /* 1: the anisotropic field with ap */
     fs_aniso_params ap;
     double mem_limit;      /* bytes the sample volume may take; 0: the memory available now */
+    int keep_all;          /* 1: keep every leaf's voxels, inside ones too (tests; mesh_vdb.h) */
 } fs_mesh_opts;
 
 /* Builds the mesh of frame p (g: its grid, cell >= H) into out, adding the

@@ -1,5 +1,5 @@
-/* The field sampler (mesh_sample.h). Leaves are filled in parallel, each by
- * its own thread, so no sum is shared. For one leaf, every particle whose
+/* The field sampler (mesh_sample.h). The leaves of one slab are filled in
+ * parallel, each by its own thread, so no sum is shared. For one leaf, every particle whose
  * support reaches the leaf's box is splatted: its support is the ellipsoid
  * d^T M d < H^2 (M = A^-T A^-1; the identity when isotropic), added row by
  * row along z over the rows that it meets, each row of 8 voxels one vector
@@ -95,7 +95,7 @@ __attribute__((target_clones("avx2", "default")))
 static uint64_t fill_leaf(float *buf, const int o[3], float cube, const fs_field *f, const fs_grid *g,
                           const fs_aniso_kernels *ak)
 {
-    float reach = ak ? ak->reach : f->H; /* buf starts at 0: fs_mesh_volume_create's values */
+    float reach = ak ? ak->reach : f->H; /* buf starts at 0: fs_mesh_volume_slab's zeros */
     int c0[3], c1[3];
     for (int a = 0; a < 3; a++) {
         c0[a] = fs_grid_coord(g, a, (float)o[a] * cube - reach);
@@ -121,23 +121,21 @@ int fs_mesh_sample(fs_mesh_volume *v, double cube, const fs_field *f, const fs_g
                    const fs_aniso_kernels *ak, fs_mesh_work *w)
 {
     if (ak) g = &ak->grid;
-    size_t n = fs_mesh_volume_leaves(v);
-    /* the leaf buffers, fetched on one thread (OpenVDB may load a buffer on first access) */
-    float **buf = malloc((n ? n : 1) * sizeof *buf);
-    int *org = malloc((n ? n : 1) * 3 * sizeof *org);
-    if (!buf || !org) {
-        free(buf);
-        free(org);
-        return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu leaves", n);
-    }
-    for (size_t i = 0; i < n; i++) buf[i] = fs_mesh_volume_leaf(v, i, org + 3 * i);
     uint64_t terms = 0;
-    long nl = (long)n;
-#pragma omp parallel for schedule(dynamic, 16) reduction(+ : terms)
-    for (long i = 0; i < nl; i++) terms += fill_leaf(buf[i], org + 3 * i, (float)cube, f, g, ak);
-    free(buf);
-    free(org);
-    w->voxels += (uint64_t)n * FS_MESH_LEAF3;
+    size_t slabs = fs_mesh_volume_slabs(v);
+    for (size_t s = 0; s < slabs; s++) {
+        size_t n;
+        const int *org;
+        float *buf = fs_mesh_volume_slab(v, s, &n, &org);
+        if (!buf) return FS_ERR_RUNTIME;
+        long nl = (long)n;
+#pragma omp parallel for schedule(dynamic, 4) reduction(+ : terms)
+        for (long i = 0; i < nl; i++)
+            terms += fill_leaf(buf + (size_t)i * FS_MESH_LEAF3, org + 3 * i, (float)cube, f, g, ak);
+        int rc = fs_mesh_volume_slab_done(v, s);
+        if (rc) return rc;
+    }
+    w->voxels += (uint64_t)fs_mesh_volume_leaves(v) * FS_MESH_LEAF3;
     w->terms += terms;
     return FS_OK;
 }

@@ -1,6 +1,7 @@
 // Thin OpenVDB adapter of the mesh method (mesh_vdb.h): the leaves near the
-// particles, found in parallel as a mask tree, become a float grid whose leaf
-// buffers the C sampler fills; volumeToMesh meshes it.
+// particles are found in parallel as a mask tree; the C sampler fills them slab
+// by slab into plain buffers, and the leaves the surface can cross go into a
+// float grid, the others become tiles; volumeToMesh meshes it.
 #include "mesh_vdb.h"
 #include "fs_error.h"
 
@@ -9,16 +10,30 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <new>
+#include <unordered_map>
 #include <vector>
 
 using FloatLeaf = openvdb::FloatTree::LeafNodeType;
+// Per leaf: the minimum of all its values, then of its faces -x, +x, -y, +y, -z, +z.
+using LeafMins = std::array<float, 7>;
+
 struct fs_mesh_volume {
     openvdb::FloatGrid::Ptr grid;
-    std::vector<FloatLeaf *> leaves;
+    std::vector<int> origin;         // 3 per leaf, sorted by x, then y, then z
+    std::vector<size_t> slab;        // slab s: leaves slab[s] .. slab[s + 1] - 1
+    std::vector<LeafMins> mins;      // per leaf, once its slab is filled
+    std::unordered_map<uint64_t, size_t> index; // leaf lattice position -> leaf
+    std::vector<std::vector<float>> buf; // per slab, alive while it or its neighbour is undecided
+    float iso;
+    bool keep_all;
+    size_t kept = 0;
 };
 
 namespace {
@@ -54,28 +69,109 @@ struct TouchLeaves {
 
 } // namespace
 
+namespace {
+
+uint64_t lattice_key(const int *o)
+{
+    uint64_t k = 0;
+    for (int a = 0; a < 3; a++) k = k << 21 | ((uint64_t)(o[a] / FS_MESH_LEAF) & 0x1fffff);
+    return k;
+}
+
+LeafMins mins_of(const float *b)
+{
+    const int L = FS_MESH_LEAF;
+    LeafMins m;
+    m.fill(INFINITY);
+    for (int x = 0; x < L; x++)
+        for (int y = 0; y < L; y++)
+            for (int z = 0; z < L; z++) {
+                float v = b[(x * L + y) * L + z];
+                m[0] = std::min(m[0], v);
+                if (x == 0) m[1] = std::min(m[1], v);
+                if (x == L - 1) m[2] = std::min(m[2], v);
+                if (y == 0) m[3] = std::min(m[3], v);
+                if (y == L - 1) m[4] = std::min(m[4], v);
+                if (z == 0) m[5] = std::min(m[5], v);
+                if (z == L - 1) m[6] = std::min(m[6], v);
+            }
+    return m;
+}
+
+// 1 when no edge of leaf i's voxels crosses iso: it is inside, and so is the
+// facing layer of each face neighbour (a missing one is background, outside).
+bool interior(const fs_mesh_volume *v, size_t i)
+{
+    if (!(v->mins[i][0] > v->iso)) return false;
+    const int *o = &v->origin[3 * i];
+    for (int a = 0; a < 3; a++)
+        for (int side = 0; side < 2; side++) {
+            int n[3] = {o[0], o[1], o[2]};
+            n[a] += side ? FS_MESH_LEAF : -FS_MESH_LEAF;
+            auto it = v->index.find(lattice_key(n));
+            if (it == v->index.end() || !(v->mins[it->second][1 + 2 * a + (1 - side)] > v->iso)) return false;
+        }
+    return true;
+}
+
+// Slab s: its surface leaves into the grid, the others as tiles; frees its buffer.
+void decide(fs_mesh_volume *v, size_t s)
+{
+    openvdb::tree::ValueAccessor<openvdb::FloatTree> acc(v->grid->tree());
+    const float *b = v->buf[s].data();
+    for (size_t i = v->slab[s]; i < v->slab[s + 1]; i++, b += FS_MESH_LEAF3) {
+        openvdb::Coord c(v->origin[3 * i], v->origin[3 * i + 1], v->origin[3 * i + 2]);
+        if (!v->keep_all && interior(v, i)) {
+            acc.addTile(1, c, v->mins[i][0], true);
+            continue;
+        }
+        FloatLeaf *leaf = new FloatLeaf(c, 0.0f, true);
+        std::memcpy(leaf->buffer().data(), b, FS_MESH_LEAF3 * sizeof(float));
+        acc.addLeaf(leaf);
+        v->kept++;
+    }
+    std::vector<float>().swap(v->buf[s]);
+}
+
+} // namespace
+
 extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n,
-                                                 double cube, double reach, size_t max_leaves, size_t *need)
+                                                 double cube, double reach, double iso, int keep_all,
+                                                 size_t max_leaves, size_t *need)
 {
     fs_mesh_volume *v = nullptr;
     try {
         openvdb::initialize();
         TouchLeaves touch(x, y, z, cube, reach);
         tbb::parallel_reduce(tbb::blocked_range<size_t>(0, n, 4096), touch);
+        touch.tree.voxelizeActiveTiles(); // a union may have merged full leaves into tiles
         size_t count = touch.tree.leafCount();
         if (max_leaves && count > max_leaves) {
             *need = count;
             return nullptr;
         }
         v = new fs_mesh_volume;
-        openvdb::FloatTree::Ptr tree(new openvdb::FloatTree(touch.tree, 0.0f, openvdb::TopologyCopy()));
+        v->iso = (float)iso;
+        v->keep_all = keep_all != 0;
+        std::vector<std::array<int, 3>> org;
+        org.reserve(count);
+        for (auto it = touch.tree.cbeginLeaf(); it; ++it)
+            org.push_back({it->origin()[0], it->origin()[1], it->origin()[2]});
         touch.tree.clear();
-        tree->voxelizeActiveTiles(); // a union may have merged full leaves into tiles
-        v->grid = openvdb::FloatGrid::create(tree);
+        std::sort(org.begin(), org.end());
+        v->origin.resize(3 * count);
+        v->index.reserve(count);
+        for (size_t i = 0; i < count; i++) {
+            std::memcpy(&v->origin[3 * i], org[i].data(), sizeof org[i]);
+            v->index.emplace(lattice_key(org[i].data()), i);
+            if (i == 0 || org[i][0] != org[i - 1][0]) v->slab.push_back(i);
+        }
+        v->slab.push_back(count);
+        v->mins.resize(count);
+        v->buf.resize(v->slab.size() - 1);
+        v->grid = openvdb::FloatGrid::create(0.0f);
         v->grid->setTransform(openvdb::math::Transform::createLinearTransform(cube));
         v->grid->setName("density");
-        v->leaves.reserve(tree->leafCount());
-        tree->getNodes(v->leaves);
         return v;
     } catch (const std::bad_alloc &) {
         fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for the sample volume (%zu particles)", n);
@@ -86,13 +182,37 @@ extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y,
     return nullptr;
 }
 
-extern "C" size_t fs_mesh_volume_leaves(const fs_mesh_volume *v) { return v->leaves.size(); }
+extern "C" size_t fs_mesh_volume_leaves(const fs_mesh_volume *v) { return v->origin.size() / 3; }
+extern "C" size_t fs_mesh_volume_slabs(const fs_mesh_volume *v) { return v->slab.size() - 1; }
+extern "C" size_t fs_mesh_volume_kept(const fs_mesh_volume *v) { return v->kept; }
 
-extern "C" float *fs_mesh_volume_leaf(fs_mesh_volume *v, size_t i, int origin[3])
+extern "C" float *fs_mesh_volume_slab(fs_mesh_volume *v, size_t s, size_t *count, const int **origins)
 {
-    FloatLeaf *l = v->leaves[i];
-    for (int a = 0; a < 3; a++) origin[a] = l->origin()[a];
-    return l->buffer().data();
+    *count = v->slab[s + 1] - v->slab[s];
+    *origins = &v->origin[3 * v->slab[s]];
+    try {
+        v->buf[s].assign(*count * FS_MESH_LEAF3, 0.0f);
+        return v->buf[s].data();
+    } catch (const std::bad_alloc &) {
+        fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for a slab of %zu leaves", *count);
+        return nullptr;
+    }
+}
+
+extern "C" int fs_mesh_volume_slab_done(fs_mesh_volume *v, size_t s)
+{
+    try {
+        const float *b = v->buf[s].data();
+        for (size_t i = v->slab[s]; i < v->slab[s + 1]; i++, b += FS_MESH_LEAF3) v->mins[i] = mins_of(b);
+        // slab s - 1's x neighbours (s - 2 and s) are filled now; the last slab has none after it
+        if (s > 0) decide(v, s - 1);
+        if (s + 1 == fs_mesh_volume_slabs(v)) decide(v, s);
+        return FS_OK;
+    } catch (const std::bad_alloc &) {
+        return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for the sample volume's leaves");
+    } catch (const std::exception &e) {
+        return fs_fail(FS_ERR_RUNTIME, "mesh: OpenVDB: %s", e.what());
+    }
 }
 
 extern "C" size_t fs_mesh_volume_bytes(const fs_mesh_volume *v) { return (size_t)v->grid->memUsage(); }

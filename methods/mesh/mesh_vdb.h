@@ -16,19 +16,33 @@ extern "C" {
 
 typedef struct fs_mesh_volume fs_mesh_volume;
 
-/* Leaves of voxel size `cube` (voxel (i,j,k) sits at (i,j,k) cube) that hold a
- * voxel within `reach` of one of the n points, every voxel active and 0 (the
- * field far from every particle; the sampler adds to it). When they would be more than max_leaves (0: no
+/* The sample volume: the leaves of voxel size `cube` (voxel (i,j,k) sits at
+ * (i,j,k) cube) that hold a voxel within `reach` of one of the n points. It is
+ * filled one slab at a time (the leaves of one x position of the leaf lattice,
+ * in order), and only the leaves the iso-surface can pass through keep their
+ * voxels: a leaf that is inside (every value > iso) and whose six face
+ * neighbours' facing layers are inside too has no edge that crosses iso, so it
+ * becomes one tile of OpenVDB's tree, valued at its minimum. The mesh is the
+ * same; the voxels held are those kept plus two slabs. keep_all keeps every
+ * leaf (for tests). When the leaves would be more than max_leaves (0: no
  * bound), returns NULL with *need = their count and fs_fail not set; NULL with
  * fs_fail set on any other failure. */
 fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n, double cube,
-                                      double reach, size_t max_leaves, size_t *need);
-/* The volume's leaf count. */
+                                      double reach, double iso, int keep_all, size_t max_leaves, size_t *need);
+/* The volume's leaf count and slab count. */
 size_t fs_mesh_volume_leaves(const fs_mesh_volume *v);
-/* Leaf i's 512 values (x slowest, z fastest: offset (x * 64 + y * 8 + z)) and
- * the voxel coordinates of its first voxel. */
-float *fs_mesh_volume_leaf(fs_mesh_volume *v, size_t i, int origin[3]);
-/* Bytes the volume holds (OpenVDB's memUsage). */
+size_t fs_mesh_volume_slabs(const fs_mesh_volume *v);
+/* Slab s (filled in order, 0 first): its leaf count, their origins (the voxel
+ * coordinates of each first voxel, 3 ints a leaf) and a buffer of count x 512
+ * zeros to add the values into (leaf after leaf, x slowest, z fastest: offset
+ * x * 64 + y * 8 + z). NULL (fs_fail set) out of memory. */
+float *fs_mesh_volume_slab(fs_mesh_volume *v, size_t s, size_t *count, const int **origins);
+/* Slab s is filled: decides slab s - 1 (its leaves kept or made tiles) and
+ * frees its buffer; after the last slab, decides that one too. FS_ERR_RUNTIME
+ * (fs_fail) on failure. */
+int fs_mesh_volume_slab_done(fs_mesh_volume *v, size_t s);
+/* Leaves that kept their voxels, and the bytes the tree holds (memUsage). */
+size_t fs_mesh_volume_kept(const fs_mesh_volume *v);
 size_t fs_mesh_volume_bytes(const fs_mesh_volume *v);
 /* The iso-surface value = iso as a mesh (volumeToMesh, adaptivity 0, quads
  * split in two), wound outward (towards lower values). FS_ERR_RUNTIME on failure. */

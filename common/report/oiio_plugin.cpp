@@ -1,0 +1,37 @@
+// The entry point of the OpenImageIO module (oiio_plugin.h). image_oiio.cpp and
+// image_text.cpp are compiled into the module unchanged: the fluidsurf functions
+// they call are defined here as forwards to the host's, and everything but the
+// entry point is hidden, so nothing clashes with the host's own definitions.
+#include "oiio_plugin.h"
+#include "fs_error.h"
+#include "output_file.h"
+#include "text_blend.h"
+
+namespace {
+const fs_oiio_host *host;
+}
+
+extern "C" int fs_fail(int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int rc = host->vfail(code, fmt, ap);
+    va_end(ap);
+    return rc;
+}
+
+extern "C" int fs_output_begin(const char *final, char *tmp, int size) { return host->output_begin(final, tmp, size); }
+extern "C" int fs_output_end(const char *final, const char *tmp, int ok) { return host->output_end(final, tmp, ok); }
+extern "C" void fs_image_free(fs_image *img) { host->image_free(img); }
+extern "C" void fs_text_blend(fs_rgba_image *im, int x, int y, const float *cover, int cw, int ch, const float rgb[3])
+{
+    host->text_blend(im, x, y, cover, cw, ch, rgb);
+}
+
+extern "C" __attribute__((visibility("default"))) int fs_oiio_plugin_init(const fs_oiio_host *h, fs_oiio_api *api)
+{
+    if (!h || h->abi != FS_OIIO_PLUGIN_ABI) return -1;
+    host = h;
+    *api = fs_oiio_api{fs_write_exr, fs_write_png8, fs_read_image, fs_read_image_attr, fs_text_size, fs_draw_text};
+    return 0;
+}
