@@ -13,10 +13,6 @@
 #include <string.h>
 #include <unistd.h>
 
-/* Bytes of one OpenVDB float leaf: 512 values, two masks, origin (and slack for
- * the tree above it). */
-#define LEAF_BYTES (FS_MESH_LEAF3 * 4 + 256)
-
 static void stage(fs_stages *st, const char *name, double t0)
 {
     if (st) fs_stages_add(st, name, fs_now_ms() - t0);
@@ -35,16 +31,16 @@ static double memory_available(void)
     return (double)sysconf(_SC_AVPHYS_PAGES) * (double)sysconf(_SC_PAGESIZE);
 }
 
-/* Refuses a volume that would not fit: its leaves lie in the cells whose 27
- * neighbours hold a particle (g's cell >= the reach), so their volume bounds
- * the leaves' (up to the leaves' overhang, one leaf a side). */
-static int check_memory(const fs_grid *g, double cube, double limit, size_t *max_leaves)
+/* Refuses a volume whose bookkeeping would not fit: its leaves lie in the cells
+ * whose 27 neighbours hold a particle (g's cell >= the reach), and a cell meets
+ * at most (ceil(cell / leaf) + 1)^3 leaves. The voxels kept are checked slab by
+ * slab while sampling (mesh_vdb.h). */
+static int check_memory(const fs_grid *g, double cube, double limit)
 {
     size_t near = 0;
     for (size_t w = 0; w < g->ncells / 32 + 1; w++) near += (size_t)__builtin_popcount(g->near[w]);
-    double leaf = FS_MESH_LEAF * cube, side = g->cell + 2 * leaf;
-    double est = (double)near * side * side * side / (leaf * leaf * leaf) * LEAF_BYTES;
-    *max_leaves = (size_t)fmin(limit / LEAF_BYTES, 1e18);
+    double per_cell = ceil(g->cell / (FS_MESH_LEAF * cube)) + 1;
+    double est = (double)near * per_cell * per_cell * per_cell * FS_MESH_INDEX_BYTES;
     if (est <= limit) return FS_OK;
     double fit = cube * cbrt(est / limit) * 1.05;
     return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs about %.3g GB for its sample volume, %.3g GB are available: use cube >= %.3g (scene units)",
@@ -77,8 +73,8 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
 {
     const fs_grid *cg = ak ? &ak->grid : g;
     double reach = ak ? ak->reach : f->H, limit = o->mem_limit > 0 ? o->mem_limit : memory_available();
-    size_t max_leaves, need = 0;
-    int rc = check_memory(cg, o->cube, limit, &max_leaves);
+    size_t need = 0;
+    int rc = check_memory(cg, o->cube, limit);
     if (rc) return rc;
     /* the volume is found from the kernel centres (the particles, when isotropic) */
     const float *x = p->x, *y = p->y, *z = p->z;
@@ -91,12 +87,12 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
             for (int a = 0; a < 3; a++) cx[a * n + s] = cg->pos4[4 * s + a];
         x = cx, y = cx + n, z = cx + 2 * n;
     }
-    *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, f->iso, o->keep_all, max_leaves, &need);
+    *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, f->iso, o->keep_all, limit, &need);
     free(cx);
     if (!*vol && need)
         return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g",
-                       o->cube, need, (double)need * LEAF_BYTES / 1e9, limit / 1e9,
-                       o->cube * cbrt((double)need * LEAF_BYTES / limit) * 1.05);
+                       o->cube, need, (double)need * FS_MESH_INDEX_BYTES / 1e9, limit / 1e9,
+                       o->cube * cbrt((double)need * FS_MESH_INDEX_BYTES / limit) * 1.05);
     if (!*vol) return FS_ERR_RUNTIME;
     return fs_mesh_sample(*vol, o->cube, f, g, ak, w);
 }

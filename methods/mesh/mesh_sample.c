@@ -127,7 +127,7 @@ int fs_mesh_sample(fs_mesh_volume *v, double cube, const fs_field *f, const fs_g
         size_t n;
         const int *org;
         float *buf = fs_mesh_volume_slab(v, s, &n, &org);
-        if (!buf) return FS_ERR_RUNTIME;
+        if (!buf) return fs_error_code(); /* fs_fail set: over the memory limit, or out of memory */
         long nl = (long)n;
 #pragma omp parallel for schedule(dynamic, 4) reduction(+ : terms)
         for (long i = 0; i < nl; i++)

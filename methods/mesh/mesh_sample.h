@@ -15,7 +15,8 @@ typedef struct fs_mesh_work {
 } fs_mesh_work;
 
 /* Fills v. Isotropic: ak NULL and g the particles' grid (cell >= H);
- * anisotropic: ak's kernels (g unused). FS_ERR_RUNTIME (fs_fail) out of memory. */
+ * anisotropic: ak's kernels (g unused). FS_ERR_INPUT (fs_fail) over the volume's
+ * memory limit (mesh_vdb.h), FS_ERR_RUNTIME out of memory. */
 int fs_mesh_sample(fs_mesh_volume *v, double cube, const fs_field *f, const fs_grid *g,
                    const fs_aniso_kernels *ak, fs_mesh_work *w);
 

@@ -33,6 +33,7 @@ struct fs_mesh_volume {
     std::vector<std::vector<float>> buf; // per slab, alive while it or its neighbour is undecided
     float iso;
     bool keep_all;
+    double cube, mem_limit;
     size_t kept = 0;
 };
 
@@ -137,7 +138,7 @@ void decide(fs_mesh_volume *v, size_t s)
 
 extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n,
                                                  double cube, double reach, double iso, int keep_all,
-                                                 size_t max_leaves, size_t *need)
+                                                 double mem_limit, size_t *need)
 {
     fs_mesh_volume *v = nullptr;
     try {
@@ -146,13 +147,15 @@ extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y,
         tbb::parallel_reduce(tbb::blocked_range<size_t>(0, n, 4096), touch);
         touch.tree.voxelizeActiveTiles(); // a union may have merged full leaves into tiles
         size_t count = touch.tree.leafCount();
-        if (max_leaves && count > max_leaves) {
+        if (mem_limit > 0 && (double)count * FS_MESH_INDEX_BYTES > mem_limit) {
             *need = count;
             return nullptr;
         }
         v = new fs_mesh_volume;
         v->iso = (float)iso;
         v->keep_all = keep_all != 0;
+        v->cube = cube;
+        v->mem_limit = mem_limit;
         std::vector<std::array<int, 3>> org;
         org.reserve(count);
         for (auto it = touch.tree.cbeginLeaf(); it; ++it)
@@ -190,6 +193,18 @@ extern "C" float *fs_mesh_volume_slab(fs_mesh_volume *v, size_t s, size_t *count
 {
     *count = v->slab[s + 1] - v->slab[s];
     *origins = &v->origin[3 * v->slab[s]];
+    size_t leaves = fs_mesh_volume_leaves(v), before = s ? v->slab[s] - v->slab[s - 1] : 0;
+    double held = (double)leaves * FS_MESH_INDEX_BYTES + (double)v->kept * FS_MESH_LEAF_BYTES +
+                  (double)(*count + before) * FS_MESH_LEAF3 * sizeof(float);
+    if (v->mem_limit > 0 && held > v->mem_limit) {
+        // the kept surface grows about as 1 / cube^2: extrapolate it to the whole volume
+        double total = (double)leaves * FS_MESH_INDEX_BYTES +
+                       (double)v->kept * FS_MESH_LEAF_BYTES * (double)fs_mesh_volume_slabs(v) / (double)(s ? s : 1);
+        fs_fail(FS_ERR_INPUT, "mesh: cube %g: the surface needs more than the %.3g GB available (%zu leaves kept after %zu of %zu slabs): use cube >= %.3g",
+                v->cube, v->mem_limit / 1e9, v->kept, s, fs_mesh_volume_slabs(v),
+                v->cube * std::sqrt(std::max(total, held) / v->mem_limit) * 1.1);
+        return nullptr;
+    }
     try {
         v->buf[s].assign(*count * FS_MESH_LEAF3, 0.0f);
         return v->buf[s].data();

@@ -101,8 +101,7 @@ int fs_particles_writable(const char *path, const char *format)
     const char *fmt;
     int rc = pick_format(path, format, &fmt);
     if (rc) return rc;
-    /* The stubs (io_vtk_none.c, io_vdb_none.c) refuse without looking at the particles. */
-    if (!FS_WITH_VTK && strcasecmp(fmt, "vtk") == 0) return fs_write_vtk(NULL, path);
+    /* The stub (io_vdb_none.c) refuses without looking at the particles. */
     if (!FS_WITH_OPENVDB && strcasecmp(fmt, "vdb") == 0) return fs_write_vdb(NULL, path);
     return FS_OK;
 }
