@@ -1,0 +1,3 @@
+/* libFuzzer harness: the bgeo particle reader (fuzz_particles.h). */
+#define FS_FUZZ_FORMAT "bgeo"
+#include "fuzz_particles.h"

@@ -1,0 +1,3 @@
+/* libFuzzer harness: the vdb particle reader (fuzz_particles.h). */
+#define FS_FUZZ_FORMAT "vdb"
+#include "fuzz_particles.h"

@@ -1,0 +1,3 @@
+/* libFuzzer harness: the vtu particle reader (fuzz_particles.h). */
+#define FS_FUZZ_FORMAT "vtu"
+#include "fuzz_particles.h"
