@@ -417,7 +417,7 @@ static int load_frames(cmp_run *r, float radius, fs_particles *frames_p, fs_grid
     int rc = FS_OK;
     for (int f = 0; f < r->nframes && !rc; f++) {
         rc = fs_scene_load_frame(&r->scene, r->first_frame + f, &frames_p[f]);
-        if (!rc && f == 0) fs_scene_adopt_frame(&r->scene, &frames_p[0], radius);
+        if (!rc && f == 0) fs_scene_adopt_frame(&r->scene, &frames_p[0], radius, r->radius_note, sizeof r->radius_note);
         if (!rc) rc = fs_grid_build(&grids[f], &frames_p[f], fs_scene_field(&r->scene).H);
     }
     return rc;
@@ -554,6 +554,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     if (!rc) rc = alloc_results(r);
     if (!rc) rc = render_all(r, frames_p, grids, &ctx, t_start);
     if (!rc) rc = write_outputs(r, o);
+    if (!rc && r->radius_note[0]) fs_note("%s", r->radius_note);
     if (!rc && !r->quiet) fprintf(stderr, "compare: done in %.1f s, outputs in %s/\n", since_s(t_start), r->outdir);
     if (rc) cli_error(rc);
     free_results(r, frames_p, grids);

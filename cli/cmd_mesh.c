@@ -85,8 +85,9 @@ static int mesh_frame(mesh_job *j, int frame)
     double t = fs_now_ms();
     int rc = fs_scene_load_frame(j->scene, frame, &p);
     if (rc) return rc;
-    if (frame == j->first && fs_scene_adopt_frame(j->scene, &p, j->radius) && !j->quiet)
-        fprintf(stderr, "fluidsurf: note: used r = %g (set --radius)\n", j->scene->radius);
+    char note[1024] = "";
+    if (frame == j->first) fs_scene_adopt_frame(j->scene, &p, j->radius, note, sizeof note);
+    if (note[0] && !j->quiet) fs_note("%s", note);
     fs_stages_add(&st, "load", fs_now_ms() - t);
     fs_field f = fs_scene_field(j->scene);
     if (frame == j->first && (rc = fs_mesh_opts_from_values(j->params, &f, &j->opts))) {

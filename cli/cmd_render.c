@@ -140,8 +140,7 @@ static int frame_to_render(const fs_scene *scene, int frame, int *first)
 }
 
 /* Loads the frame (timed as "load"), settles r and the camera, runs the job. */
-static int load_and_render(fs_scene *scene, const render_job *job, float radius, int quiet, fs_ctx_kind kind,
-                           const char *input)
+static int load_and_render(fs_scene *scene, const render_job *job, float radius, fs_ctx_kind kind)
 {
     fs_particles p;
     fs_stages st = {0};
@@ -150,10 +149,11 @@ static int load_and_render(fs_scene *scene, const render_job *job, float radius,
     int rc = fs_scene_load_frame(scene, job->frame, &p);
     if (rc) return cli_error(rc);
     fs_stages_add(&st, "load", fs_now_ms() - tl);
-    int radius_note = fs_scene_adopt_frame(scene, &p, radius) && !quiet;
+    char note[1024];
+    fs_scene_adopt_frame(scene, &p, radius, note, sizeof note);
     rc = render_one(scene, &p, job, kind, &st);
     /* after success only, so a failing run prints exactly one line */
-    if (!rc && radius_note) fprintf(stderr, "fluidsurf: note: %s: used r = %g (set --radius)\n", input, scene->radius);
+    if (!rc && note[0]) fs_note("%s", note);
     if (rc) cli_error(rc);
     fs_particles_free(&p);
     return rc;
@@ -230,5 +230,5 @@ int cmd_render(int argc, char **argv)
     cache.counters = counters;
     const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED,
                             timings, counters, cache_dir ? &cache : NULL};
-    return load_and_render(&scene, &job, radius, quiet, ctx_kind, input);
+    return load_and_render(&scene, &job, radius, ctx_kind);
 }

@@ -445,7 +445,9 @@ static int load_scene(viewer *w, const view_options *o)
     w->cur = w->first;
     if (o->radius > 0) w->scene.radius = o->radius; /* before a synthetic scene is generated */
     int rc = next_particles(w, 0);
-    if (!rc) fs_scene_adopt_frame(&w->scene, &w->p, o->radius);
+    char note[1024] = "";
+    if (!rc) fs_scene_adopt_frame(&w->scene, &w->p, o->radius, note, sizeof note);
+    if (note[0]) fs_note("%s", note);
     return rc;
 }
 

@@ -51,6 +51,7 @@ typedef struct cmp_entry {
 
 typedef struct cmp_run {
     fs_scene scene;
+    char radius_note[1024]; /* fs_scene_adopt_frame's note, printed after success */
     char outdir[1024];
     char command[4096];
     int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;

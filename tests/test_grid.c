@@ -7,6 +7,7 @@
 #include "particle_io.h"
 #include "particle_stats.h"
 #include "timing.h"
+#include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -380,6 +381,40 @@ static void thread_independence(void)
     fs_particles_free(&p);
 }
 
+/* The radius the spacing implies, on every bundled frame (all made at r = 0.025):
+ * within 10% on the lattices (a block, and a dam break's first frame), within 20%
+ * on developed flows (splashsurf's dam breaks after impact, fluidsurf's own
+ * splash frame). */
+static void radius_estimates(void)
+{
+    static const struct { const char *file; double tol; } frames[] = {
+        {"splashsurf/cube_2366_particles.vtk", 0.10},
+        {"splashsurf/double_dam_break_frame_01_4732_particles.vtk", 0.10},
+        {"splashsurf/dam_break_frame_23_24389_particles.vtk", 0.20},
+        {"splashsurf/double_dam_break_frame_26_4732_particles.vtk", 0.20},
+        {"splashsurf/dam_break_frame_9_6859_particles.bgeo", 0.20},
+        {"splash/dam_break_splash_100k.ply", 0.20},
+    };
+    for (size_t i = 0; i < sizeof frames / sizeof frames[0]; i++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", FS_TEST_DATA, frames[i].file);
+        fs_particles p;
+        float r = 0, r2 = 0;
+        CHECK(fs_particles_read(&p, path, NULL) == FS_OK, "read %s: %s", path, fs_error_message());
+        CHECK(fs_particles_estimate_radius(&p, &r) == FS_OK, "estimate %s: %s", path, fs_error_message());
+        CHECK(fs_particles_estimate_radius(&p, &r2) == FS_OK && r2 == r, "estimate %s: not repeatable", path);
+        printf("radius estimate %s: %.5f (%.3f of 0.025)\n", frames[i].file, r, r / 0.025);
+        CHECK(fabs(r / 0.025 - 1) <= frames[i].tol, "%s: estimated r %.5f, more than %.0f%% off 0.025", frames[i].file,
+              r, 100 * frames[i].tol);
+        fs_particles_free(&p);
+    }
+    fs_particles one = {0};
+    CHECK(fs_particles_alloc(&one, 1, 0) == FS_OK, "alloc");
+    float r;
+    CHECK(fs_particles_estimate_radius(&one, &r) == FS_ERR_INPUT, "one particle: no estimate");
+    fs_particles_free(&one);
+}
+
 int main(void)
 {
     fs_particles p;
@@ -391,13 +426,10 @@ int main(void)
     check_grid(&p, 0.05f, radii, 4, 20, "random 3");
     fs_particles_free(&p);
 
-#if FS_WITH_VTK
     real_file("cube_2366_particles.vtk", 0.05f);
     real_file("dam_break_frame_23_24389_particles.vtk", 0);
-#else
-    real_file("dam_break_frame_9_6859_particles.bgeo", 0); /* the lean build reads no VTK */
-#endif
     lattice_density();
+    radius_estimates();
     refusals();
     strays();
     thread_independence();

@@ -8,6 +8,11 @@ static _Thread_local int fs_code;
 int fs_vfail(int code, const char *fmt, va_list ap)
 {
     vsnprintf(fs_msg, sizeof fs_msg, fmt, ap);
+    /* One line whatever the file said: names and keys read from input are echoed
+     * into messages, so control characters (a newline in a BGEO attribute name)
+     * become '?' here, once for every caller. */
+    for (char *c = fs_msg; *c; c++)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
     fs_code = code;
     return code;
 }

@@ -8,7 +8,8 @@ extern "C" {
 
 enum { FS_OK = 0, FS_ERR_RUNTIME = 1, FS_ERR_INPUT = 2, FS_ERR_DIFF = 3 };
 
-/* Stores a formatted message (thread-local) and returns code, so callers write
+/* Stores a formatted message (thread-local; control characters replaced by '?',
+ * so it is always one line) and returns code, so callers write
  * `return fs_fail(FS_ERR_INPUT, "%s: truncated POINTS section", path);` */
 int fs_fail(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 int fs_vfail(int code, const char *fmt, va_list ap);

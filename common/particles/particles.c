@@ -82,6 +82,9 @@ void fs_particles_bounds(fs_particles *p)
 int fs_particles_validate(const fs_particles *p, const char *name)
 {
     if (p->n == 0 || !p->x) return fs_fail(FS_ERR_INPUT, "%s: no particles", name);
+    /* the range a scene's "radius" takes; 0 means the file gives none */
+    if (!(p->radius == 0 || (p->radius >= 1e-9f && p->radius <= 1e9f)))
+        return fs_fail(FS_ERR_INPUT, "%s: the file's particle radius %g lies outside [1e-09, 1e+09]", name, p->radius);
     for (size_t i = 0; i < p->n; i++)
         if (!isfinite(p->x[i]) || !isfinite(p->y[i]) || !isfinite(p->z[i]))
             return fs_fail(FS_ERR_INPUT, "%s: particle %zu has a non-finite position", name, i);

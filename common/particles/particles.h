@@ -25,7 +25,8 @@ int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields);
 void fs_particles_free(fs_particles *p);
 unsigned fs_particles_fields(const fs_particles *p);
 void fs_particles_bounds(fs_particles *p);
-/* FS_ERR_INPUT with "name: ..." when there are no particles or a position is NaN/Inf. */
+/* FS_ERR_INPUT with "name: ..." when there are no particles, a position is NaN/Inf
+ * or the radius (0: none given) lies outside [1e-9, 1e9]. */
 int fs_particles_validate(const fs_particles *p, const char *name);
 /* Per-axis quantile box [frac, 1 - frac] (from at most 65536 evenly spaced
  * particles): frames the body of the fluid without far-flung spray. */

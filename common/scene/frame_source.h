@@ -15,9 +15,11 @@ void fs_scene_frames(const fs_scene *s, int *first, int *last);
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
 /* Settles what the first frame decides for the whole run, once: a scene given
  * as a bare particle file takes r from the file, unless radius_opt > 0 sets it
- * (a scene file's r stays); the camera frames the particles unless the scene
- * places it. Returns 1 when r is the default because nothing gave one. */
-int fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt);
+ * (a scene file's r stays); a file without one gets the r its spacing implies
+ * (fs_particles_estimate_radius). The camera frames the particles unless the
+ * scene places it. note receives one line for stderr, or "": the estimate, or
+ * a given r more than 4 times off the estimate either way. */
+void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size);
 
 #ifdef __cplusplus
 }

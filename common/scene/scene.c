@@ -116,8 +116,19 @@ static int bad(jctx *c, const char *key, const char *what)
     return c->rc;
 }
 
+/* Each key of obj appears once: cJSON would let the first of two "radius" keys
+ * win without a word. */
+static void check_unique(jctx *c, const cJSON *obj)
+{
+    for (const cJSON *it = obj->child; it && !c->rc; it = it->next)
+        for (const cJSON *later = it->next; later && !c->rc; later = later->next)
+            if (it->string && later->string && !strcmp(it->string, later->string)) bad(c, it->string, "appears twice");
+}
+
+/* Every key of obj must be one of allowed, and appear once. */
 static void check_keys(jctx *c, const cJSON *obj, const char *where, const char *const *allowed)
 {
+    check_unique(c, obj);
     for (const cJSON *it = obj->child; it && !c->rc; it = it->next) {
         int ok = 0;
         for (const char *const *a = allowed; *a; a++) ok |= !strcmp(*a, it->string);
@@ -143,12 +154,22 @@ static void get_num(jctx *c, const cJSON *o, const char *key, float *out, double
     *out = (float)v->valuedouble;
 }
 
+/* Integers are read as the double JSON holds (not through a float, which has 24
+ * bits), checked against [lo, hi] before the conversion. */
 static void get_int(jctx *c, const cJSON *o, const char *key, int *out, int lo, int hi)
 {
-    float f = (float)*out;
-    get_num(c, o, key, &f, lo, hi);
-    if (!c->rc && f != floorf(f)) bad(c, key, "must be an integer");
-    *out = (int)f;
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    if (!v || c->rc) return;
+    if (!cJSON_IsNumber(v)) { bad(c, key, "must be a number"); return; }
+    double d = v->valuedouble;
+    if (!(d >= lo && d <= hi)) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "must lie in [%d, %d], got %g", lo, hi, d);
+        bad(c, key, msg);
+        return;
+    }
+    if (d != floor(d)) { bad(c, key, "must be an integer"); return; }
+    *out = (int)d;
 }
 
 static void get_vec3(jctx *c, const cJSON *o, const char *key, float out[3])
@@ -268,8 +289,10 @@ static void parse_material(fs_scene *s, jctx *c, const cJSON *v)
 static void parse_methods(fs_scene *s, jctx *c, const cJSON *v)
 {
     if (!cJSON_IsObject(v)) { bad(c, "methods", "must be an object of method parameter objects"); return; }
+    check_unique(c, v);
     for (const cJSON *m = v->child; m && !c->rc; m = m->next) {
         if (!cJSON_IsObject(m)) { bad(c, m->string, "must be an object of parameters"); return; }
+        check_unique(c, m);
         for (const cJSON *p = m->child; p && !c->rc; p = p->next) {
             char set[200];
             if (cJSON_IsNumber(p)) snprintf(set, sizeof set, "%s.%s=%.17g", m->string, p->string, p->valuedouble);

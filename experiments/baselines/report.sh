@@ -116,6 +116,21 @@ for s in $(awk -F, 'NR > 2 {print $1}' "$D/render.csv" | awk '!seen[$0]++'); do
   awk -v s="$s" -v n="$n" -v a="$a" -v b="$b" -v ma="$ma" -v mb="$mb" 'BEGIN {printf "| %s | %d | %.2f | %.2f | %.2f | %.0f | %.0f | **%s** |\n", s, n, a, b, b / a, ma / 1024, mb / 1024, a <= b ? "met" : "not met"}'
 done
 echo
+echo "Where \`levelset\`'s time goes (\`render_stages.csv\`, medians; the rest of the wall time is the process:"
+echo "start-up, loading the OpenImageIO module for the PNG, writing it):"
+echo
+echo "| set | load | upload (level set) | trace | shade | stages total (ms) | wall (ms) |"
+echo "|---|---|---|---|---|---|---|"
+for s in $(awk -F, 'NR > 2 {print $1}' "$D/render_stages.csv" | awk '!seen[$0]++'); do
+  row="| $s"; tot=0
+  for stg in load upload trace shade; do
+    v=$(awk -F, -v s="$s" -v g="$stg" '$1 == s && $3 == g {print $4}' "$D/render_stages.csv" | med)
+    row="$row | ${v:-0}"; tot=$(awk -v a="$tot" -v b="${v:-0}" 'BEGIN {print a + b}')
+  done
+  wall=$(col render.csv "$s" levelset $W | med)
+  echo "$row | $(awk -v t="$tot" 'BEGIN {printf "%.0f", t}') | $(awk -v w="$wall" 'BEGIN {printf "%.0f", w * 1000}') |"
+done
+echo
 cat <<'TXT'
 ## Reading it
 
@@ -124,10 +139,9 @@ cat <<'TXT'
   loaded on the first image call, so `fluidsurf mesh`, which writes no image, never loads it;
   `render` to a PNG or EXR does.
 - At cube r/2 the field stage dominates: every voxel within H of a particle is summed, the inside
-  of the liquid included, and the whole sample volume (about 2.3 kB per leaf of 512 voxels) is
-  held while meshing. That is why the memory target is missed where it is; keeping only the leaves
-  near the iso-surface needs a proof that a leaf is uniformly inside, which the reference's bounds
-  show is costly.
+  of the liquid included. Only the leaves the surface can cross keep their voxels (the others
+  become tiles, slab by slab), so memory grows with the surface and the particles, not with the
+  liquid's volume.
 - `levelset` and vdb_tool build the same level set with the same library (OpenVDB's particle
   rasteriser at the same voxel, radius and width); the difference is the G-buffer tracer, the
   image written and the process around them.

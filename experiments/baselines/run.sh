@@ -13,7 +13,8 @@
 # scenes of experiments/scenes/). Writes DIR (default results/baselines):
 # quality.csv, convergence.csv, speed.csv (one row per tool, set and run: wall s,
 # peak RSS), stages.csv (fluidsurf mesh --timings), render.csv (levelset against
-# vdb_tool -render, the same view), convergence.png, and README.md from them.
+# vdb_tool -render, the same view) with render_stages.csv (levelset's --timings),
+# convergence.png, and README.md from them.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 OUT=results/baselines
@@ -120,6 +121,7 @@ done
 # the set with) and the same SIZE x SIZE image; the last run's images stay in out/baselines/
 CSV=$OUT/render.csv
 { echo "$prov; image=${SIZE}x$SIZE"; echo "set,tool,run,particles,frames,wall_s,peak_rss_kb"; } > "$CSV"
+{ echo "$prov; image=${SIZE}x$SIZE"; echo "set,run,stage,ms"; } > "$OUT/render_stages.csv"
 F=1 IMG=out/baselines
 mkdir -p "$IMG"
 for set in $RENDER_SETS; do
@@ -131,7 +133,8 @@ for set in $RENDER_SETS; do
   N=$("$BIN" info "$ply" --radius $r | awk '/^particles:/ {print $2}')
   for run in $(seq 1 "$RUNS"); do
     timed "$set" "levelset" "$run" "$BIN" render "$tmp/$set.json" --method levelset --set levelset.thickness=off -q \
-      -o "$IMG/${set}_levelset.png"
+      --timings -o "$IMG/${set}_levelset.png"
+    awk -F, -v s="$set" -v r="$run" 'NR > 1 {print s "," r "," $1 "," $2}' "$tmp/stdout" >> "$OUT/render_stages.csv"
     timed "$set" "vdb_tool points2ls+render" "$run" vdb_tool -read "$ply" -points2ls voxel=$vox radius=4 width=3 \
       -render image="${SIZE}x$SIZE" translate="($P_EYE)" target="($P_TGT)" up="($P_UP)" aperture="$(vdb_aperture "$FOV")" \
       "$IMG/${set}_vdb_tool.png"

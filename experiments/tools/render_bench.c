@@ -77,7 +77,8 @@ static int bench_size(const bench *b, fs_run *run, const fs_scene *base, int siz
     static fs_scene s; /* large: not on the stack */
     s = *base;
     s.camera.width = s.camera.height = size;
-    fs_scene_adopt_frame(&s, b->p, 0);
+    char note[1024];
+    fs_scene_adopt_frame(&s, b->p, 0, note, sizeof note);
     fs_run_image im = {0};
     int rc = fs_run_render(run, &s.camera, &im, NULL);
     for (int r = 1; !rc && r <= runs; r++) {
@@ -143,7 +144,9 @@ int main(int argc, char **argv)
     fs_particles p;
     double t0 = fs_now_ms();
     if (fs_scene_load(&scene, argv[1]) || fs_scene_load_frame(&scene, 0, &p)) return die(argv[1]);
-    fs_scene_adopt_frame(&scene, &p, 0);
+    char note[1024];
+    fs_scene_adopt_frame(&scene, &p, 0, note, sizeof note);
+    if (note[0]) fprintf(stderr, "render_bench: note: %s\n", note);
     b.p = &p;
     fs_gl_context ctx = {0};
     if (b.m->needs_gl && fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");

@@ -220,6 +220,10 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
 
     double val[MAX_PROPS];
     for (int e = 0; e < vi; e++)
+        if (el[e].count && !el[e].nprops) /* nothing to read: a count no data backs */
+            return fs_fail(FS_ERR_INPUT, "%s: PLY element '%s' has %llu records but no properties", path, el[e].name,
+                           el[e].count);
+    for (int e = 0; e < vi; e++)
         for (unsigned long long i = 0; i < el[e].count; i++)
             for (int k = 0; k < el[e].nprops; k++)
                 if (!read_prop(r, fmt, &el[e].props[k], &val[k]))

@@ -128,6 +128,9 @@ int fs_read_csv(fs_particles *p, const char *path)
     size_t size = 0;
     int rc = load_text(path, &text, &size);
     if (rc) return rc;
+    /* Old Mac files end lines with a lone CR: make every line end in LF. */
+    for (size_t i = 0; i < size; i++)
+        if (text[i] == '\r' && text[i + 1] != '\n') text[i] = '\n';
     size_t max_rows = 1;
     for (size_t i = 0; i < size; i++) max_rows += text[i] == '\n';
 

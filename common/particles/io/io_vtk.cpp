@@ -29,6 +29,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
+#include <new>
 #include <string>
 #include <strings.h>
 #include <sys/stat.h>
@@ -171,20 +173,51 @@ int fail_vtk(const char *path, const ErrorLog &log, const char *fallback)
     return fs_fail(FS_ERR_INPUT, "%s: %s", path, log.count ? log.first.c_str() : fallback);
 }
 
+// A forged VTU can declare far more points than its bytes hold; VTK would then
+// allocate for them. The declared NumberOfPoints of every Piece, at 12 bytes a
+// point, must fit in 1032 times the file's size (zlib's largest ratio; raw and
+// base64 data need at least the size itself).
+int check_vtu_counts(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
+    struct stat st;
+    std::string head(65536, '\0');
+    size_t got = fstat(fileno(f), &st) == 0 ? fread(&head[0], 1, head.size(), f) : 0;
+    fclose(f);
+    head.resize(got);
+    double declared = 0;
+    for (size_t at = head.find("NumberOfPoints=\""); at != std::string::npos; at = head.find("NumberOfPoints=\"", at + 1)) {
+        double n = strtod(head.c_str() + at + 16, nullptr);
+        if (!(n >= 0)) return fs_fail(FS_ERR_INPUT, "%s: bad NumberOfPoints in the VTU file", path);
+        declared += n;
+    }
+    if (declared * 12 > 1032.0 * static_cast<double>(st.st_size))
+        return fs_fail(FS_ERR_INPUT, "%s: VTU file declares %.0f points, more than its %lld bytes can hold", path, declared,
+                       static_cast<long long>(st.st_size));
+    return FS_OK;
+}
+
 } // namespace
 
 extern "C" int fs_read_vtu(fs_particles *p, const char *path)
 {
+    int rc = check_vtu_counts(path);
+    if (rc) return rc;
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     ErrorLog log;
     vtkDataSet *ds = nullptr;
-    {
+    try { // VTK's XML parser throws std::length_error / std::bad_alloc on forged compression headers
         ErrorCapture capture(reader, &log);
         if (!reader->CanReadFile(path))
             return fs_fail(FS_ERR_INPUT, "%s: not a VTK XML UnstructuredGrid (.vtu) file", path);
         reader->SetFileName(path);
         reader->Update();
         ds = reader->GetOutput();
+    } catch (const std::bad_alloc &) {
+        return fs_fail(FS_ERR_INPUT, "%s: VTK ran out of memory reading the file (a forged size?)", path);
+    } catch (const std::exception &e) {
+        return fs_fail(FS_ERR_INPUT, "%s: VTK: %s", path, e.what());
     }
     if (log.count || !ds || reader->GetErrorCode()) return fail_vtk(path, log, "VTK could not read the file");
     if (ds->GetNumberOfPoints() != reader->GetNumberOfPoints())

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target of tests/fuzz for SECONDS each (CI: 30, the smoke test).
+# Builds them first into BUILD (default build-fuzz: clang, -DFS_FUZZ=ON, ASan + UBSan).
+# Each target starts from its committed seeds (corpus_NAME/) plus what earlier runs
+# found (out/fuzz/NAME/corpus, not committed); a crash, leak, hang (-timeout) or
+# over-large allocation (-rss_limit_mb, -malloc_limit_mb) stops the target, keeps
+# the input in out/fuzz/NAME/ and fails the run.
+#   tests/fuzz/run.sh SECONDS [BUILD]
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+SECONDS_EACH=${1:?usage: tests/fuzz/run.sh SECONDS [BUILD]}
+BUILD=${2:-build-fuzz}
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+  launcher=()
+  command -v ccache > /dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  cmake -S . -B "$BUILD" -DFS_FUZZ=ON -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo "${launcher[@]}" > /dev/null || exit 1
+fi
+cmake --build "$BUILD" --target fuzz_all -j"$(nproc)" > "$BUILD/fuzz_build.log" 2>&1 ||
+  { tail -20 "$BUILD/fuzz_build.log"; echo "fuzz: the build failed ($BUILD/fuzz_build.log)" >&2; exit 1; }
+failed=()
+for exe in "$BUILD"/tests/fuzz/fuzz_*; do
+  [ -x "$exe" ] || continue
+  name=${exe##*/fuzz_}
+  out=out/fuzz/$name
+  mkdir -p "$out/corpus"
+  dict=tests/fuzz/$name.dict
+  args=(-max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024
+        -max_len=65536 -artifact_prefix="$out/" -print_final_stats=1)
+  [ -f "$dict" ] && args+=(-dict="$dict")
+  # the first corpus folder receives new inputs: keep the committed seeds untouched
+  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$exe" "${args[@]}" "$out/corpus" "tests/fuzz/corpus_$name" > "$out/log.txt" 2>&1
+  rc=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/log.txt")
+  if [ $rc -eq 0 ]; then
+    echo "fuzz $name: ok, ${runs:-?} runs in ${SECONDS_EACH} s"
+  else
+    echo "fuzz $name: FAILED (exit $rc); input kept in $out/, log $out/log.txt:"
+    grep -m3 -E "ERROR|SUMMARY|runtime error|fuzz:" "$out/log.txt" | sed 's/^/  /'
+    failed+=("$name")
+  fi
+done
+[ ${#failed[@]} -eq 0 ] || { echo "fuzz: ${#failed[@]} target(s) failed: ${failed[*]}" >&2; exit 1; }
