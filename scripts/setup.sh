@@ -7,6 +7,7 @@ PKGS=(build-essential cmake pkg-config git
       libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
       libopenimageio-dev openimageio-tools libvtk9-dev libcjson-dev zlib1g-dev
       libopenexr-dev libstb-dev
+      clang libclang-rt-14-dev
       xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9)
 missing=()
 for p in "${PKGS[@]}"; do

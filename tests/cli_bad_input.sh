@@ -77,6 +77,96 @@ expect_bad convert_bad_target "out.xyz9" convert "$vtk" -o "$T/out.xyz9"
 expect_bad convert_onto_input "overwrite" convert "$T/nan.csv" -o "$T/nan.csv"
 expect_bad no_command "unknown command" frobnicate
 
+# ---- every reader: absurd counts, forged headers, wrong content
+printf 'ply\nformat binary_little_endian 1.0\nelement pad 18446744073709551615\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > "$T/noprops.ply"
+printf 'ply\nformat ascii 1.0\ncomment radius 1e30\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n' > "$T/hugeradius.ply"
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > "$T/hugecount.ply"
+printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n' > "$T/noz.ply"
+printf 'ply\nformat utf8 1.0\nend_header\n' > "$T/badformat.ply"
+printf '# vtk DataFile Version 3.0\nt\nBINARY\nDATASET POLYDATA\nPOINTS 1000000000 float\n' > "$T/hugecount.vtk"
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 100000 100000 100000\n' > "$T/structured.vtk"
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 1 1\nVERTICES 2 1000000000\n' > "$T/hugecells.vtk"
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 1 1\nPOINT_DATA 3\n' > "$T/pointdata.vtk"
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 bit\n0 0 0 1 1 1\n' > "$T/bittype.vtk"
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 1 1\nFROB\n' > "$T/badsection.vtk"
+printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n<UnstructuredGrid>\n<Piece NumberOfPoints="1000000000000" NumberOfCells="0">\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n' > "$T/hugecount.vtu"
+printf 'not xml at all\n' > "$T/notxml.vtu"
+head -c 37 /dev/zero > "$T/odd.raw"
+printf 'x,y,z\n' > "$T/headeronly.csv"
+printf 'x,y\n0,0\n' > "$T/noz.csv"
+printf 'NOTBGEO' > "$T/magic.bgeo"
+printf 'not a vdb file' > "$T/magic.vdb"
+mkdir -p "$T/folder.ply"
+render noprops_huge_count "no properties" "$T/noprops.ply"
+render ply_huge_radius "radius" "$T/hugeradius.ply"
+render ply_huge_count "4000000000" "$T/hugecount.ply"
+render ply_no_z "lacks x, y or z" "$T/noz.ply"
+render ply_bad_format "utf8" "$T/badformat.ply"
+render vtk_huge_count "truncated VTK file" "$T/hugecount.vtk"
+render vtk_structured_points "STRUCTURED_POINTS" "$T/structured.vtk"
+render vtk_huge_cells "VERTICES" "$T/hugecells.vtk"
+render vtk_point_data_mismatch "POINT_DATA" "$T/pointdata.vtk"
+render vtk_bit_type "bit" "$T/bittype.vtk"
+render vtk_unknown_section "FROB" "$T/badsection.vtk"
+render vtu_huge_count "1000000000000" "$T/hugecount.vtu"
+render vtu_not_xml "notxml.vtu" "$T/notxml.vtu"
+render raw_odd_size "odd.raw" "$T/odd.raw"
+render csv_header_only "headeronly.csv" "$T/headeronly.csv"
+render csv_no_z "x, y, z" "$T/noz.csv"
+render bgeo_magic "magic.bgeo" "$T/magic.bgeo"
+render vdb_magic "magic.vdb" "$T/magic.vdb"
+render folder_as_file "folder" "$T/folder.ply"
+render forced_unknown_format "frob" "$vtk" --format frob
+
+# ---- scenes: duplicate keys, integers that a float would round or overflow
+printf '{"particles": "%s", "radius": 0.025, "radius": 0.03}' "$vtk" > "$T/dupkey.json"
+printf '{"particles": "%s", "camera": {"width": 64, "width": 32}}' "$vtk" > "$T/dupcam.json"
+printf '{"particles": "%s", "methods": {"spheres": {}, "spheres": {}}}' "$vtk" > "$T/dupmethods.json"
+printf '{"particles": {"synthetic": "box", "size": [3, 3, 3], "seed": 2147483648}, "radius": 0.025}' > "$T/seedover.json"
+printf '{"particles": {"synthetic": "box", "size": [3, 3, 3], "seed": 1.5}, "radius": 0.025}' > "$T/seedfrac.json"
+printf '{"particles": {"synthetic": "box", "size": [3, 3, 3], "seed": 1}, "radius": 1e300}' > "$T/radiusover.json"
+printf '[1, 2, 3]' > "$T/array.json"
+: > "$T/empty.json"
+render duplicate_key "appears twice" "$T/dupkey.json"
+render duplicate_camera_key "appears twice" "$T/dupcam.json"
+render duplicate_method "appears twice" "$T/dupmethods.json"
+render seed_overflow "seed" "$T/seedover.json"
+render seed_fraction "seed" "$T/seedfrac.json"
+render radius_overflow "radius" "$T/radiusover.json"
+render scene_not_object "top level" "$T/array.json"
+render empty_scene "empty" "$T/empty.json"
+
+# ---- every subcommand
+expect_bad info_folder "folder" info "$T/folder.ply"
+expect_bad info_no_file "no particle file" info
+expect_bad convert_missing "missing.ply" convert "$T/missing.ply" -o "$T/out.ply"
+expect_bad convert_into_missing_dir "nodir" convert "$vtk" -o "$T/nodir/out.ply"
+expect_bad diff_missing "missing.exr" diff "$T/missing.exr" "$T/missing.exr"
+expect_bad diff_not_image "not an EXR or PNG" diff "$T/nan.csv" "$T/nan.csv"
+expect_bad methods_unknown "nosuch" methods nosuch
+expect_bad mesh_bad_cube "cube" mesh "$vtk" --set mesh.cube=-1 -o "$T/out.ply"
+expect_bad mesh_bad_output "out.stl" mesh "$vtk" -o "$T/out.stl"
+expect_bad mesh_truncated "truncated.ply" mesh "$T/truncated.ply" -o "$T/out.ply"
+expect_bad compare_bad_import "expected NAME=FILE" compare "$vtk" --import frob -o "$T/out"
+expect_bad compare_unknown_method "nosuchmethod" compare "$vtk" --methods nosuchmethod -o "$T/out"
+expect_bad simulate_no_frames "frames" simulate dam_break --frames 0 -o "$T/out_%04d.ply"
+expect_bad simulate_bad_pattern "pattern" simulate dam_break --frames 1 -o "$T/out.ply"
+expect_bad render_output_is_folder "folder.ply" render "$vtk" -W 16 -H 16 -o "$T/folder.ply"
+
+# ---- inputs that broke a reader once (tests/fuzz/regress_FORMAT/): refused in one line
+for d in "$(dirname "$0")"/fuzz/regress_*/; do
+  [ -d "$d" ] || continue
+  fmt=$(basename "$d"); fmt=${fmt#regress_}
+  for f in "$d"*; do
+    [ -f "$f" ] || continue
+    case $fmt in
+      scene) cp "$f" "$T/regress.json"; render "regress_${fmt}_$(basename "$f")" "regress.json" "$T/regress.json" ;;
+      oiio|exr_core) expect_bad "regress_${fmt}_$(basename "$f")" "$(basename "$f")" diff "$f" "$f" ;;
+      *) expect_bad "regress_${fmt}_$(basename "$f")" "$(basename "$f")" info "$f" --format "$fmt" ;;
+    esac
+  done
+done
+
 # A failed render must not clobber an existing output.
 n=$((n + 1))
 echo precious > "$T/keep.png"
