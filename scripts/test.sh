@@ -3,9 +3,9 @@
 # lean build (scripts/build_lean.sh: no VTK, OpenVDB, OpenImageIO, GLFW, OSMesa)
 # with its own tests on EGL, and every method rendered by both builds compared
 # (tests/lean_vs_full.sh); then once more under AddressSanitizer +
-# UndefinedBehaviorSanitizer (suppressions only for Mesa/LLVM, tests/lsan.supp);
-# then every libFuzzer target of tests/fuzz for 30 s (clang, ASan + UBSan).
-# Set FS_NO_SANITIZE=1 to skip the last two.
+# UndefinedBehaviorSanitizer (suppressions only for Mesa/LLVM and two libraries'
+# error paths, tests/lsan.supp), which also replays the fuzz seeds and regression
+# files (tests/fuzz). Set FS_NO_SANITIZE=1 to skip the last.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -20,5 +20,4 @@ if [ "${FS_NO_SANITIZE:-0}" != 1 ]; then
   # registration (libgcc's unwinder lock re-entered through malloc).
   (cd build-asan && ASAN_OPTIONS=detect_leaks=1 \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j2)
-  bash tests/fuzz/run.sh 30
 fi

@@ -7,13 +7,16 @@
 #include "output_file.h"
 
 #include <OpenImageIO/imageio.h>
+#include <zlib.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sys/stat.h>
 #include <memory>
 #include <string>
+#include <vector>
 
 using namespace OIIO;
 
@@ -43,6 +46,28 @@ const char *sniff(const char *path)
     return nullptr;
 }
 
+// A PNG's chunks, walked before libpng sees them: each within the file, its CRC
+// right, IEND last. libpng prints its own errors on stderr ("libpng error: ...")
+// whatever OpenImageIO's callbacks do, so a damaged file is refused here, in one line.
+bool png_chunks_ok(const char *path, std::string *why)
+{
+    FILE *f = std::fopen(path, "rb");
+    if (!f) return *why = "cannot open", false;
+    std::vector<unsigned char> b;
+    unsigned char buf[65536];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) b.insert(b.end(), buf, buf + n);
+    std::fclose(f);
+    for (size_t at = 8; at + 12 <= b.size();) {
+        uint32_t len = (uint32_t)b[at] << 24 | b[at + 1] << 16 | b[at + 2] << 8 | b[at + 3];
+        if (len > b.size() - at - 12) return *why = "truncated PNG chunk", false;
+        uint32_t crc = (uint32_t)b[at + 8 + len] << 24 | b[at + 9 + len] << 16 | b[at + 10 + len] << 8 | b[at + 11 + len];
+        if (crc32(0, b.data() + at + 4, len + 4) != crc) return *why = "PNG chunk with a bad CRC", false;
+        if (!std::memcmp(b.data() + at + 4, "IEND", 4)) return true;
+        at += 12 + (size_t)len;
+    }
+    return *why = "PNG ends before its IEND chunk", false;
+}
+
 // Opens path with the plugin of its magic number; nullptr with fs_fail set otherwise.
 std::unique_ptr<ImageInput> open_image(const char *path, const ImageSpec *config)
 {
@@ -52,6 +77,11 @@ std::unique_ptr<ImageInput> open_image(const char *path, const ImageSpec *config
         if (!f) fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, std::strerror(errno));
         else fs_fail(FS_ERR_INPUT, "%s: not an EXR or PNG image", path);
         if (f) std::fclose(f);
+        return nullptr;
+    }
+    std::string why;
+    if (!std::strcmp(format, "png") && !png_chunks_ok(path, &why)) {
+        fs_fail(FS_ERR_INPUT, "%s: %s", path, why.c_str());
         return nullptr;
     }
     auto in = ImageInput::create(format);
@@ -129,6 +159,11 @@ extern "C" int fs_read_image(const char *path, fs_image *img)
     const ImageSpec &spec = in->spec();
     int w = spec.width, h = spec.height, nch = spec.nchannels;
     if (w <= 0 || h <= 0 || nch <= 0) return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
+    // what the header declares must be what the file's bytes can unpack to (zlib: at most 1032:1)
+    struct stat st;
+    if (stat(path, &st) == 0 && (double)w * h * nch * 4 > 2064.0 * (double)st.st_size + 1e6)
+        return fs_fail(FS_ERR_INPUT, "%s: image of %dx%dx%d is more than the file's %lld bytes can hold", path, w, h, nch,
+                       (long long)st.st_size);
     size_t count = (size_t)w * h * nch;
     float *pix = (float *)std::malloc(count * sizeof(float));
     const char **names = (const char **)std::calloc(nch, sizeof(char *));

@@ -33,6 +33,7 @@ for exe in "$BUILD"/tests/fuzz/fuzz_*; do
   [ -f "$dict" ] && args+=(-dict="$dict")
   # the first corpus folder receives new inputs: keep the committed seeds untouched
   ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
     "$exe" "${args[@]}" "$out/corpus" "tests/fuzz/corpus_$name" > "$out/log.txt" 2>&1
   rc=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/log.txt")

@@ -198,11 +198,83 @@ int check_vtu_counts(const char *path)
     return FS_OK;
 }
 
+// The value of attribute `name` in the tag that holds position at, or "".
+std::string attr_in_tag(const std::string &s, size_t at, const char *name)
+{
+    size_t lo = s.rfind('<', at), hi = s.find('>', at);
+    if (lo == std::string::npos || hi == std::string::npos) return "";
+    std::string tag = s.substr(lo, hi - lo), key = std::string(" ") + name + "=\"";
+    size_t k = tag.find(key);
+    if (k == std::string::npos) return "";
+    size_t v = k + key.size(), e = tag.find('"', v);
+    return e == std::string::npos ? "" : tag.substr(v, e - v);
+}
+
+// Appended raw data (VTK's own writer's default): every array's header, read
+// here before VTK sizes its buffers from it. Uncompressed: its byte count must
+// fit in the file. Compressed: its block count and compressed sizes must fit in
+// the file, and what they unpack to within zlib's largest ratio (1032:1).
+int check_vtu_appended(const char *path, const std::string &f)
+{
+    size_t app = f.find("<AppendedData");
+    if (app == std::string::npos || attr_in_tag(f, app + 1, "encoding") != "raw") return FS_OK;
+    size_t base = f.find('_', app);
+    if (base == std::string::npos) return fs_fail(FS_ERR_INPUT, "%s: VTU appended data has no '_' marker", path);
+    base++;
+    size_t root = f.find("<VTKFile");
+    int hs = root != std::string::npos && attr_in_tag(f, root + 1, "header_type") == "UInt64" ? 8 : 4;
+    bool zipped = root != std::string::npos && !attr_in_tag(f, root + 1, "compressor").empty();
+    bool little = root == std::string::npos || attr_in_tag(f, root + 1, "byte_order") != "BigEndian";
+    auto word = [&](size_t at, double *v) {
+        if (at + hs > f.size()) return false;
+        uint64_t u = 0;
+        for (int b = 0; b < hs; b++) u |= static_cast<uint64_t>(static_cast<unsigned char>(f[at + (little ? b : hs - 1 - b)])) << (8 * b);
+        *v = static_cast<double>(u);
+        return true;
+    };
+    const double size = static_cast<double>(f.size());
+    for (size_t at = f.find("format=\"appended\""); at != std::string::npos && at < app;
+         at = f.find("format=\"appended\"", at + 1)) {
+        std::string off = attr_in_tag(f, at, "offset");
+        char *end;
+        double o = strtod(off.c_str(), &end);
+        double nb, bs, lbs, cs = 0, c;
+        bool ok = !off.empty() && !*end && o >= 0 && base + o < size && word(base + static_cast<size_t>(o), &nb);
+        if (ok && !zipped) ok = nb <= size;
+        if (ok && zipped) {
+            size_t h = base + static_cast<size_t>(o);
+            ok = nb * hs <= size && word(h + hs, &bs) && word(h + 2 * hs, &lbs);
+            for (double k = 0; ok && k < nb; k++) ok = word(h + static_cast<size_t>(3 + k) * hs, &c) && (cs += c) <= size;
+            ok = ok && (nb == 0 || (nb - 1) * bs + (lbs > 0 ? lbs : bs) <= 1032.0 * cs + 1032.0);
+        }
+        if (!ok) return fs_fail(FS_ERR_INPUT, "%s: VTU array header at appended offset '%.32s' does not fit the file", path,
+                                off.c_str());
+    }
+    return FS_OK;
+}
+
+// Reads the file (a VTU the checks can see whole: a forged one is small; a real
+// one larger than 256 MB is left to VTK after the count check).
+int check_vtu_headers(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
+    struct stat st;
+    int rc = FS_OK;
+    if (fstat(fileno(fp), &st) == 0 && st.st_size > 0 && st.st_size <= (256 << 20)) {
+        std::string f(static_cast<size_t>(st.st_size), '\0');
+        if (fread(&f[0], 1, f.size(), fp) == f.size()) rc = check_vtu_appended(path, f);
+    }
+    fclose(fp);
+    return rc;
+}
+
 } // namespace
 
 extern "C" int fs_read_vtu(fs_particles *p, const char *path)
 {
     int rc = check_vtu_counts(path);
+    if (!rc) rc = check_vtu_headers(path);
     if (rc) return rc;
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     ErrorLog log;
