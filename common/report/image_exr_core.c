@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 /* OpenEXRCore reports through a callback; keep its last message for the one-line error. */
@@ -167,10 +166,7 @@ static int read_pixels(exr_context_t f, const char *path, fs_image *img)
         (uint64_t)(w * h) > SIZE_MAX / sizeof(float) / (uint64_t)nch)
         return fs_fail(FS_ERR_INPUT, "%s: image of %lldx%lld is too large", path, (long long)w, (long long)h);
     /* what the header declares must be what the file's bytes can unpack to (zlib: at most 1032:1) */
-    struct stat fst;
-    if (stat(path, &fst) == 0 && (double)w * (double)h * nch * 4 > 2064.0 * (double)fst.st_size + 1e6)
-        return fs_fail(FS_ERR_INPUT, "%s: image of %lldx%lldx%d is more than the file's %lld bytes can hold", path,
-                       (long long)w, (long long)h, nch, (long long)fst.st_size);
+    if (fs_image_fits_file(path, (double)w, (double)h, nch)) return FS_ERR_INPUT;
     /* order[k]: the file's channel k goes to output channel order[k]. */
     int order[1024];
     if (nch > 1024) return fs_fail(FS_ERR_INPUT, "%s: %d channels (at most 1024 are read)", path, nch);

@@ -32,6 +32,10 @@ int fs_read_image(const char *path, fs_image *img);
  * 0 if absent (buf = ""), -1 if the file cannot be read (fs_error_message says why). */
 int fs_read_image_attr(const char *path, const char *name, char *buf, int size);
 void fs_image_free(fs_image *img);
+/* FS_ERR_INPUT (fs_fail) when a header's w x h x nch floats are more than the
+ * file's bytes can unpack to (zlib's largest ratio, 1032:1, plus 1 MB): checked by
+ * every reader before it allocates. */
+int fs_image_fits_file(const char *path, double w, double h, int nch);
 /* Index of the channel called name, -1 if absent. */
 int fs_image_channel(const fs_image *img, const char *name);
 

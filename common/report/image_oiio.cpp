@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sys/stat.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -159,11 +158,7 @@ extern "C" int fs_read_image(const char *path, fs_image *img)
     const ImageSpec &spec = in->spec();
     int w = spec.width, h = spec.height, nch = spec.nchannels;
     if (w <= 0 || h <= 0 || nch <= 0) return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
-    // what the header declares must be what the file's bytes can unpack to (zlib: at most 1032:1)
-    struct stat st;
-    if (stat(path, &st) == 0 && (double)w * h * nch * 4 > 2064.0 * (double)st.st_size + 1e6)
-        return fs_fail(FS_ERR_INPUT, "%s: image of %dx%dx%d is more than the file's %lld bytes can hold", path, w, h, nch,
-                       (long long)st.st_size);
+    if (fs_image_fits_file(path, w, h, nch)) return FS_ERR_INPUT;
     size_t count = (size_t)w * h * nch;
     float *pix = (float *)std::malloc(count * sizeof(float));
     const char **names = (const char **)std::calloc(nch, sizeof(char *));

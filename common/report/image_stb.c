@@ -121,11 +121,7 @@ static int read_png(const char *path, fs_image *img)
 {
     int w, h, nch;
     /* what the header declares must be what the file's bytes can unpack to (zlib: at most 1032:1) */
-    struct stat st;
-    if (stbi_info(path, &w, &h, &nch) && stat(path, &st) == 0 &&
-        (double)w * h * nch * 4 > 2064.0 * (double)st.st_size + 1e6)
-        return fs_fail(FS_ERR_INPUT, "%s: image of %dx%dx%d is more than the file's %lld bytes can hold", path, w, h, nch,
-                       (long long)st.st_size);
+    if (stbi_info(path, &w, &h, &nch) && fs_image_fits_file(path, w, h, nch)) return FS_ERR_INPUT;
     int sixteen = stbi_is_16_bit(path);
     void *data = sixteen ? (void *)stbi_load_16(path, &w, &h, &nch, 0) : (void *)stbi_load(path, &w, &h, &nch, 0);
     if (!data) return fs_fail(FS_ERR_INPUT, "%s: bad PNG: %s", path, stbi_failure_reason());

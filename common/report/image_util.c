@@ -1,11 +1,13 @@
 /* Image helpers that need no OpenImageIO, shared by both builds' image files
- * (image_oiio.cpp, and image_stb.c without it): channel lookup, the linear to
- * sRGB 8-bit conversion of fs_write_png, and fs_image_free. */
+ * (image_oiio.cpp, compiled into the OpenImageIO module with this file, and
+ * image_stb.c / image_exr_core.c without it): channel lookup, the linear to sRGB
+ * 8-bit conversion of fs_write_png, the size check of a read, and fs_image_free. */
 #include "image_io.h"
 #include "fs_error.h"
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int fs_image_channel(const fs_image *img, const char *name)
 {
@@ -34,6 +36,15 @@ int fs_write_png(const char *path, const fs_image *img)
     int rc = fs_write_png8(path, buf, img->w, img->h, out_nch);
     free(buf);
     return rc;
+}
+
+int fs_image_fits_file(const char *path, double w, double h, int nch)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && w * h * nch * 4 > 2064.0 * (double)st.st_size + 1e6)
+        return fs_fail(FS_ERR_INPUT, "%s: image of %.0fx%.0fx%d is more than the file's %lld bytes can hold", path, w, h,
+                       nch, (long long)st.st_size);
+    return FS_OK;
 }
 
 void fs_image_free(fs_image *img)

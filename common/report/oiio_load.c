@@ -19,8 +19,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail, fs_output_begin, fs_output_end, fs_image_free,
-                                  fs_text_blend};
+static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail, fs_output_begin, fs_output_end, fs_text_blend};
 static fs_oiio_api api;
 static char load_error[1024];
 static pthread_once_t once = PTHREAD_ONCE_INIT;

@@ -1,6 +1,6 @@
-// The entry point of the OpenImageIO module (oiio_plugin.h). image_oiio.cpp and
-// image_text.cpp are compiled into the module unchanged: the fluidsurf functions
-// they call are defined here as forwards to the host's, and everything but the
+// The entry point of the OpenImageIO module (oiio_plugin.h). image_oiio.cpp,
+// image_text.cpp and image_util.c are compiled into the module unchanged: the
+// other fluidsurf functions they call are defined here as forwards to the host's, and everything but the
 // entry point is hidden, so nothing clashes with the host's own definitions.
 #include "oiio_plugin.h"
 #include "fs_error.h"
@@ -22,7 +22,6 @@ extern "C" int fs_fail(int code, const char *fmt, ...)
 
 extern "C" int fs_output_begin(const char *final, char *tmp, int size) { return host->output_begin(final, tmp, size); }
 extern "C" int fs_output_end(const char *final, const char *tmp, int ok) { return host->output_end(final, tmp, ok); }
-extern "C" void fs_image_free(fs_image *img) { host->image_free(img); }
 extern "C" void fs_text_blend(fs_rgba_image *im, int x, int y, const float *cover, int cw, int ch, const float rgb[3])
 {
     host->text_blend(im, x, y, cover, cw, ch, rgb);

@@ -13,7 +13,7 @@
 extern "C" {
 #endif
 
-#define FS_OIIO_PLUGIN_ABI 1
+#define FS_OIIO_PLUGIN_ABI 2
 #define FS_OIIO_PLUGIN_FILE "fluidsurf-oiio.so"
 #define FS_OIIO_PLUGIN_ENTRY "fs_oiio_plugin_init"
 
@@ -22,7 +22,6 @@ typedef struct fs_oiio_host {
     int (*vfail)(int code, const char *fmt, va_list ap);
     int (*output_begin)(const char *final, char *tmp, int size);
     int (*output_end)(const char *final, const char *tmp, int ok);
-    void (*image_free)(fs_image *img);
     void (*text_blend)(fs_rgba_image *im, int x, int y, const float *cover, int cw, int ch, const float rgb[3]);
 } fs_oiio_host;
 

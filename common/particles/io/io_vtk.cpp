@@ -176,25 +176,18 @@ int fail_vtk(const char *path, const ErrorLog &log, const char *fallback)
 // A forged VTU can declare far more points than its bytes hold; VTK would then
 // allocate for them. The declared NumberOfPoints of every Piece, at 12 bytes a
 // point, must fit in 1032 times the file's size (zlib's largest ratio; raw and
-// base64 data need at least the size itself).
-int check_vtu_counts(const char *path)
+// base64 data need at least the size itself). head: the file's start.
+int check_vtu_counts(const char *path, const std::string &head, double file_size)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
-    struct stat st;
-    std::string head(65536, '\0');
-    size_t got = fstat(fileno(f), &st) == 0 ? fread(&head[0], 1, head.size(), f) : 0;
-    fclose(f);
-    head.resize(got);
     double declared = 0;
     for (size_t at = head.find("NumberOfPoints=\""); at != std::string::npos; at = head.find("NumberOfPoints=\"", at + 1)) {
         double n = strtod(head.c_str() + at + 16, nullptr);
         if (!(n >= 0)) return fs_fail(FS_ERR_INPUT, "%s: bad NumberOfPoints in the VTU file", path);
         declared += n;
     }
-    if (declared * 12 > 1032.0 * static_cast<double>(st.st_size))
-        return fs_fail(FS_ERR_INPUT, "%s: VTU file declares %.0f points, more than its %lld bytes can hold", path, declared,
-                       static_cast<long long>(st.st_size));
+    if (declared * 12 > 1032.0 * file_size)
+        return fs_fail(FS_ERR_INPUT, "%s: VTU file declares %.0f points, more than its %.0f bytes can hold", path, declared,
+                       file_size);
     return FS_OK;
 }
 
@@ -253,19 +246,20 @@ int check_vtu_appended(const char *path, const std::string &f)
     return FS_OK;
 }
 
-// Reads the file (a VTU the checks can see whole: a forged one is small; a real
-// one larger than 256 MB is left to VTK after the count check).
-int check_vtu_headers(const char *path)
+// Reads the file once for both checks: whole up to 256 MB (a forged file is
+// small), else its first 64 kB for the counts, the rest left to VTK.
+int check_vtu(const char *path)
 {
     FILE *fp = fopen(path, "rb");
     if (!fp) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
     struct stat st;
-    int rc = FS_OK;
-    if (fstat(fileno(fp), &st) == 0 && st.st_size > 0 && st.st_size <= (256 << 20)) {
-        std::string f(static_cast<size_t>(st.st_size), '\0');
-        if (fread(&f[0], 1, f.size(), fp) == f.size()) rc = check_vtu_appended(path, f);
-    }
+    int rc = fstat(fileno(fp), &st) == 0 ? FS_OK : fs_fail(FS_ERR_INPUT, "%s: cannot stat", path);
+    bool whole = !rc && st.st_size <= (256 << 20);
+    std::string f(rc ? 0 : whole ? static_cast<size_t>(st.st_size) : 65536, '\0');
+    f.resize(fread(&f[0], 1, f.size(), fp));
     fclose(fp);
+    if (!rc) rc = check_vtu_counts(path, f.substr(0, 65536), static_cast<double>(st.st_size));
+    if (!rc && whole) rc = check_vtu_appended(path, f);
     return rc;
 }
 
@@ -273,8 +267,7 @@ int check_vtu_headers(const char *path)
 
 extern "C" int fs_read_vtu(fs_particles *p, const char *path)
 {
-    int rc = check_vtu_counts(path);
-    if (!rc) rc = check_vtu_headers(path);
+    int rc = check_vtu(path);
     if (rc) return rc;
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     ErrorLog log;
