@@ -16,6 +16,9 @@ int fs_output_begin(const char *final, char *tmp, int size)
     struct stat st;
     if (stat(final, &st) == 0 && S_ISDIR(st.st_mode))
         return fs_fail(FS_ERR_INPUT, "%s: output path is a folder", final);
+    /* the rename would replace a device node or FIFO (run as root, /dev/null itself) */
+    if (stat(final, &st) == 0 && !S_ISREG(st.st_mode))
+        return fs_fail(FS_ERR_INPUT, "%s: not a regular file; outputs replace only regular files", final);
     if (snprintf(tmp, size, "%.*s.%s.tmpXXXXXX", dirlen, final, final + dirlen) >= size)
         return fs_fail(FS_ERR_INPUT, "%s: output path too long", final);
     int fd = mkstemp(tmp);

@@ -7,7 +7,8 @@ extern "C" {
 #endif
 
 /* Fills tmp with a fresh temporary path next to final (created empty, mode 0644).
- * FS_ERR_INPUT when the folder does not exist or is not writable. */
+ * FS_ERR_INPUT when the folder does not exist or is not writable, or when final
+ * exists and is not a regular file (a device node, a FIFO: never replaced). */
 int fs_output_begin(const char *final, char *tmp, int size);
 /* ok != 0: rename tmp to final; else unlink tmp. Returns FS_OK or an error. */
 int fs_output_end(const char *final, const char *tmp, int ok);

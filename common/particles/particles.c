@@ -1,8 +1,10 @@
 /* Particle set storage: allocation, bounds and validation (stats live in particle_stats.c). */
 #include "particles.h"
 #include "fs_error.h"
+#include "memory.h"
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,6 +18,12 @@ static void *zalloc(size_t n, size_t elem)
 int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields)
 {
     memset(p, 0, sizeof *p);
+    /* refused up front: a header can declare (and a sparse file back) more than fits */
+    int per = 3 + (fields & FS_HAS_VELOCITY ? 3 : 0) + (fields & FS_HAS_COLOR ? 3 : 0) + (fields & FS_HAS_PHASE ? 1 : 0);
+    char what[64];
+    snprintf(what, sizeof what, "%zu particles", n);
+    int rc = fs_memory_check((double)n * per * 4, what);
+    if (rc) return rc;
     p->n = n;
     p->x = zalloc(n, sizeof(float));
     p->y = zalloc(n, sizeof(float));

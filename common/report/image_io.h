@@ -36,6 +36,10 @@ void fs_image_free(fs_image *img);
  * file's bytes can unpack to (zlib's largest ratio, 1032:1, plus 1 MB): checked by
  * every reader before it allocates. */
 int fs_image_fits_file(const char *path, double w, double h, int nch);
+/* FS_ERR_INPUT (fs_fail) when a PNG's chunks or an EXR's header attributes do not
+ * lie within the file (libraries size buffers from them): checked before a library
+ * opens the file. Other files pass. */
+int fs_image_structure_check(const char *path);
 /* Index of the channel called name, -1 if absent. */
 int fs_image_channel(const fs_image *img, const char *name);
 

@@ -1,13 +1,14 @@
-// Thin OpenImageIO adapter behind image_io.h. Every write goes to a temporary
-// file next to the target (output_file.h), so the format is named explicitly:
-// the temporary name has no useful extension. fs_write_png's sRGB conversion
-// and fs_image_free are in image_util.c, shared with the build without OIIO.
+// Thin OpenImageIO adapter behind image_io.h: EXR writing, and reading EXR and PNG.
+// Every write goes to a temporary file next to the target (output_file.h), so the
+// format is named explicitly: the temporary name has no useful extension. PNGs are
+// written by png_write.c in every build; fs_image_free and the checks before a read
+// are in image_util.c, shared with the build without OIIO.
 #include "image_io.h"
+#include "alloc_cap.h"
 #include "fs_error.h"
 #include "output_file.h"
 
 #include <OpenImageIO/imageio.h>
-#include <zlib.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -15,7 +16,6 @@
 #include <cstring>
 #include <memory>
 #include <string>
-#include <vector>
 
 using namespace OIIO;
 
@@ -45,28 +45,6 @@ const char *sniff(const char *path)
     return nullptr;
 }
 
-// A PNG's chunks, walked before libpng sees them: each within the file, its CRC
-// right, IEND last. libpng prints its own errors on stderr ("libpng error: ...")
-// whatever OpenImageIO's callbacks do, so a damaged file is refused here, in one line.
-bool png_chunks_ok(const char *path, std::string *why)
-{
-    FILE *f = std::fopen(path, "rb");
-    if (!f) return *why = "cannot open", false;
-    std::vector<unsigned char> b;
-    unsigned char buf[65536];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) b.insert(b.end(), buf, buf + n);
-    std::fclose(f);
-    for (size_t at = 8; at + 12 <= b.size();) {
-        uint32_t len = (uint32_t)b[at] << 24 | b[at + 1] << 16 | b[at + 2] << 8 | b[at + 3];
-        if (len > b.size() - at - 12) return *why = "truncated PNG chunk", false;
-        uint32_t crc = (uint32_t)b[at + 8 + len] << 24 | b[at + 9 + len] << 16 | b[at + 10 + len] << 8 | b[at + 11 + len];
-        if (crc32(0, b.data() + at + 4, len + 4) != crc) return *why = "PNG chunk with a bad CRC", false;
-        if (!std::memcmp(b.data() + at + 4, "IEND", 4)) return true;
-        at += 12 + (size_t)len;
-    }
-    return *why = "PNG ends before its IEND chunk", false;
-}
-
 // Opens path with the plugin of its magic number; nullptr with fs_fail set otherwise.
 std::unique_ptr<ImageInput> open_image(const char *path, const ImageSpec *config)
 {
@@ -78,11 +56,9 @@ std::unique_ptr<ImageInput> open_image(const char *path, const ImageSpec *config
         if (f) std::fclose(f);
         return nullptr;
     }
-    std::string why;
-    if (!std::strcmp(format, "png") && !png_chunks_ok(path, &why)) {
-        fs_fail(FS_ERR_INPUT, "%s: %s", path, why.c_str());
-        return nullptr;
-    }
+    // libpng prints its own errors on stderr whatever OpenImageIO's callbacks do, and
+    // it and OpenEXR size buffers from the file: a damaged file is refused here, in one line
+    if (fs_image_structure_check(path)) return nullptr;
     auto in = ImageInput::create(format);
     ImageSpec spec;
     if (!in || !in->open(path, spec, config ? *config : ImageSpec())) {
@@ -136,21 +112,10 @@ extern "C" int fs_write_exr(const char *path, const fs_image *img, const fs_attr
     return write_safely(path, "openexr", spec, TypeDesc::FLOAT, img->pix);
 }
 
-extern "C" int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
-{
-    if (!pix || w <= 0 || h <= 0 || nch < 1 || nch > 4)
-        return fs_fail(FS_ERR_INPUT, "%s: no 8-bit image with 1 to 4 channels to write", path);
-    ImageSpec spec(w, h, nch, TypeDesc::UINT8);
-    spec.alpha_channel = (nch == 2 || nch == 4) ? nch - 1 : -1;
-    // Our alpha is straight (not premultiplied): keep OIIO from dividing by it.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    return write_safely(path, "png", spec, TypeDesc::UINT8, pix);
-}
+namespace {
 
-extern "C" int fs_read_image(const char *path, fs_image *img)
+int read_image(const char *path, fs_image *img)
 {
-    std::memset(img, 0, sizeof *img);
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // pixels as stored
     auto in = open_image(path, &config);
@@ -186,9 +151,8 @@ extern "C" int fs_read_image(const char *path, fs_image *img)
     return FS_OK;
 }
 
-extern "C" int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
+int read_image_attr(const char *path, const char *name, char *buf, int size)
 {
-    if (size > 0) buf[0] = 0;
     auto in = open_image(path, nullptr);
     if (!in) return -1;
     const ParamValue *p = in->spec().find_attribute(name, TypeDesc::STRING);
@@ -198,4 +162,36 @@ extern "C" int fs_read_image_attr(const char *path, const char *name, char *buf,
         buf[size - 1] = 0;
     }
     return 1;
+}
+
+// OpenEXR sizes header attributes (strings, previews) from the file before reading
+// them: under the cap, such a size throws std::bad_alloc instead of taking the memory.
+template <class F> int capped(const char *path, int failed, F read)
+{
+    try {
+        fs::AllocCap cap(path);
+        return read();
+    } catch (const std::bad_alloc &) {
+        fs_fail(FS_ERR_INPUT, "%s: OpenImageIO asked for a buffer larger than the file can fill (a damaged or forged size)",
+                path);
+    } catch (const std::exception &e) {
+        fs_fail(FS_ERR_INPUT, "%s: %s", path, first_line(e.what()).c_str());
+    }
+    return failed;
+}
+
+} // namespace
+
+extern "C" int fs_read_image(const char *path, fs_image *img)
+{
+    std::memset(img, 0, sizeof *img);
+    int rc = capped(path, FS_ERR_INPUT, [&] { return read_image(path, img); });
+    if (rc) fs_image_free(img);
+    return rc;
+}
+
+extern "C" int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
+{
+    if (size > 0) buf[0] = 0;
+    return capped(path, -1, [&] { return read_image_attr(path, name, buf, size); });
 }

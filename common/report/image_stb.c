@@ -1,36 +1,17 @@
-/* PNG files through header-only stb (libstb-dev), and the image readers'
+/* PNG reading through header-only stb (libstb-dev), and the image readers'
  * dispatch, for the build without OpenImageIO (FS_WITH_OIIO=OFF). A file is
  * read by its first bytes: EXR goes to image_exr_core.c, PNG to stb_image;
  * any other format is refused with one line naming the option. */
 #include "image_exr_core.h"
 #include "image_io.h"
 #include "fs_error.h"
-#include "output_file.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <zlib.h>
 
-/* zlib instead of stb's own deflate: smaller files, and the library is linked anyway. */
-static unsigned char *zlib_compress(unsigned char *data, int len, int *out_len, int quality)
-{
-    (void)quality;
-    uLongf n = compressBound((uLong)len);
-    unsigned char *out = malloc(n);
-    if (!out || compress2(out, &n, data, (uLong)len, 6) != Z_OK) {
-        free(out);
-        return NULL;
-    }
-    *out_len = (int)n;
-    return out;
-}
-#define STBIW_ZLIB_COMPRESS zlib_compress
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -39,57 +20,13 @@ static unsigned char *zlib_compress(unsigned char *data, int len, int *out_len, 
 /* -Wunused-function is off for the whole file, on purpose before the push: stb
  * declares static functions that STBI_ONLY_PNG leaves undefined
  * (stbi_load_gif_from_memory, ...), and GCC reports "declared 'static' but never
- * defined" at the end of the file, where a pop would have restored the warning.
- * (Unused static functions that stb does define, such as stbi_write_png, are
- * judged where they are defined and would be covered by the push alone.) */
+ * defined" at the end of the file, where a pop would have restored the warning. */
 #pragma GCC diagnostic ignored "-Wunused-function"
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wsign-compare"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #include <stb_image.h>
-#include <stb_image_write.h>
 #pragma GCC diagnostic pop
-
-/* Writes n bytes to path (an fs_output_begin temporary), checking every step. */
-static int write_all(const char *path, const char *tmp, const unsigned char *data, size_t n)
-{
-    FILE *f = fopen(tmp, "wb");
-    if (!f) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(errno));
-    int ok = fwrite(data, 1, n, f) == n && fflush(f) == 0;
-    int err = ok ? 0 : errno;
-    if (fclose(f) != 0 && ok) ok = 0, err = errno;
-    if (!ok) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(err ? err : EIO));
-    return FS_OK;
-}
-
-int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
-{
-    if (!pix || w <= 0 || h <= 0 || nch < 1 || nch > 4)
-        return fs_fail(FS_ERR_INPUT, "%s: no 8-bit image with 1 to 4 channels to write", path);
-    /* libpng's (so OpenImageIO's) limit, kept so both builds accept the same images. */
-    if (w > 1000000 || h > 1000000)
-        return fs_fail(FS_ERR_RUNTIME, "%s: a %dx%d PNG exceeds 1000000 pixels a side", path, w, h);
-    /* stb_image_write sizes its filtered copy, (w*nch + 1) * h bytes, in int. */
-    if (((size_t)w * nch + 1) * (size_t)h > INT_MAX)
-        return fs_fail(FS_ERR_INPUT,
-                       "%s: a %dx%d PNG of %d channels is too large to write without OpenImageIO (FS_WITH_OIIO=ON)",
-                       path, w, h, nch);
-    int len = 0;
-    unsigned char *png = stbi_write_png_to_mem(pix, w * nch, w, h, nch, &len);
-    if (!png || len <= 0) {
-        free(png);
-        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, w, h);
-    }
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
-    if (!rc) {
-        rc = write_all(path, tmp, png, (size_t)len);
-        if (rc) fs_output_end(path, tmp, 0);
-        else rc = fs_output_end(path, tmp, 1);
-    }
-    free(png);
-    return rc;
-}
 
 typedef enum { KIND_EXR, KIND_PNG, KIND_OTHER } file_kind;
 
@@ -148,6 +85,7 @@ int fs_read_image(const char *path, fs_image *img)
     memset(img, 0, sizeof *img);
     file_kind kind;
     int rc = sniff(path, &kind);
+    if (!rc) rc = fs_image_structure_check(path);
     if (rc) return rc;
     return kind == KIND_EXR ? fs_exr_read(path, img) : read_png(path, img);
 }
@@ -156,7 +94,7 @@ int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
 {
     if (size > 0) buf[0] = 0;
     file_kind kind;
-    if (sniff(path, &kind)) return -1;
+    if (sniff(path, &kind) || fs_image_structure_check(path)) return -1;
     if (kind == KIND_EXR) return fs_exr_read_attr(path, name, buf, size);
     return 0; /* our PNGs carry no attributes */
 }

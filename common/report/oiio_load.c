@@ -4,6 +4,7 @@
  * it is set; else in LIBDIR/fluidsurf of the installed tree the running binary or
  * library sits in (wherever that tree was moved), then in the build tree. */
 #define _GNU_SOURCE
+#include "alloc_cap.h"
 #include "figure.h"
 #include "fs_error.h"
 #include "image_io.h"
@@ -19,7 +20,8 @@
 #include <string.h>
 #include <unistd.h>
 
-static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail, fs_output_begin, fs_output_end, fs_text_blend};
+static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail,           fs_output_begin,   fs_output_end,
+                                  fs_text_blend,      fs_alloc_cap_begin, fs_alloc_cap_end};
 static fs_oiio_api api;
 static char load_error[1024];
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -85,11 +87,6 @@ static int ready(const char *what)
 int fs_write_exr(const char *path, const fs_image *img, const fs_attr *attrs, int nattrs)
 {
     return ready(path) ? api.write_exr(path, img, attrs, nattrs) : FS_ERR_RUNTIME;
-}
-
-int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
-{
-    return ready(path) ? api.write_png8(path, pix, w, h, nch) : FS_ERR_RUNTIME;
 }
 
 int fs_read_image(const char *path, fs_image *img)

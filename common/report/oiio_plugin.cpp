@@ -3,6 +3,7 @@
 // other fluidsurf functions they call are defined here as forwards to the host's, and everything but the
 // entry point is hidden, so nothing clashes with the host's own definitions.
 #include "oiio_plugin.h"
+#include "alloc_cap.h"
 #include "fs_error.h"
 #include "output_file.h"
 #include "text_blend.h"
@@ -27,10 +28,13 @@ extern "C" void fs_text_blend(fs_rgba_image *im, int x, int y, const float *cove
     host->text_blend(im, x, y, cover, cw, ch, rgb);
 }
 
+extern "C" size_t fs_alloc_cap_begin(const char *path) { return host->alloc_cap_begin(path); }
+extern "C" void fs_alloc_cap_end(size_t previous) { host->alloc_cap_end(previous); }
+
 extern "C" __attribute__((visibility("default"))) int fs_oiio_plugin_init(const fs_oiio_host *h, fs_oiio_api *api)
 {
     if (!h || h->abi != FS_OIIO_PLUGIN_ABI) return -1;
     host = h;
-    *api = fs_oiio_api{fs_write_exr, fs_write_png8, fs_read_image, fs_read_image_attr, fs_text_size, fs_draw_text};
+    *api = fs_oiio_api{fs_write_exr, fs_read_image, fs_read_image_attr, fs_text_size, fs_draw_text};
     return 0;
 }

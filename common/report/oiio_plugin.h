@@ -9,11 +9,12 @@
 #define FS_OIIO_PLUGIN_H
 #include "figure.h"
 #include <stdarg.h>
+#include <stddef.h>
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-#define FS_OIIO_PLUGIN_ABI 2
+#define FS_OIIO_PLUGIN_ABI 3
 #define FS_OIIO_PLUGIN_FILE "fluidsurf-oiio.so"
 #define FS_OIIO_PLUGIN_ENTRY "fs_oiio_plugin_init"
 
@@ -23,12 +24,13 @@ typedef struct fs_oiio_host {
     int (*output_begin)(const char *final, char *tmp, int size);
     int (*output_end)(const char *final, const char *tmp, int ok);
     void (*text_blend)(fs_rgba_image *im, int x, int y, const float *cover, int cw, int ch, const float rgb[3]);
+    size_t (*alloc_cap_begin)(const char *path); /* alloc_cap.h: the host's operator new honours it */
+    void (*alloc_cap_end)(size_t previous);
 } fs_oiio_host;
 
 /* The functions of image_io.h and figure.h that OpenImageIO implements. */
 typedef struct fs_oiio_api {
     int (*write_exr)(const char *path, const fs_image *img, const fs_attr *attrs, int nattrs);
-    int (*write_png8)(const char *path, const unsigned char *pix, int w, int h, int nch);
     int (*read_image)(const char *path, fs_image *img);
     int (*read_image_attr)(const char *path, const char *name, char *buf, int size);
     int (*text_size)(const char *text, int size, int *w, int *h);

@@ -4,6 +4,7 @@
 #include "counters.h"
 #include "field_eval.h"
 #include "fs_error.h"
+#include "memory.h"
 #include "mesh_sample.h"
 #include "mesh_smooth.h"
 #include "mesh_vdb.h"
@@ -11,24 +12,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 static void stage(fs_stages *st, const char *name, double t0)
 {
     if (st) fs_stages_add(st, name, fs_now_ms() - t0);
-}
-
-/* MemAvailable of /proc/meminfo, else the free physical pages. */
-static double memory_available(void)
-{
-    FILE *f = fopen("/proc/meminfo", "r");
-    char line[256];
-    double kb = 0;
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "MemAvailable: %lf kB", &kb) == 1) break;
-    if (f) fclose(f);
-    if (kb > 0) return kb * 1024;
-    return (double)sysconf(_SC_AVPHYS_PAGES) * (double)sysconf(_SC_PAGESIZE);
 }
 
 /* Refuses a volume whose bookkeeping would not fit: its leaves lie in the cells
@@ -72,7 +59,7 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
                   const fs_aniso_kernels *ak, fs_mesh_volume **vol, fs_mesh_work *w)
 {
     const fs_grid *cg = ak ? &ak->grid : g;
-    double reach = ak ? ak->reach : f->H, limit = o->mem_limit > 0 ? o->mem_limit : memory_available();
+    double reach = ak ? ak->reach : f->H, limit = o->mem_limit > 0 ? o->mem_limit : (double)fs_memory_available();
     size_t need = 0;
     int rc = check_memory(cg, o->cube, limit);
     if (rc) return rc;

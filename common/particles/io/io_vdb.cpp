@@ -4,6 +4,7 @@
 // radius travels as grid metadata "radius". VDB stores points voxel by voxel,
 // so the order of the particles changes on a round trip.
 #include "particle_io.h"
+#include "alloc_cap.h"
 #include "fs_error.h"
 #include "output_file.h"
 
@@ -115,9 +116,14 @@ extern "C" int fs_read_vdb(fs_particles *p, const char *path)
 {
     try {
         openvdb::initialize();
+        fs::AllocCap cap(path); // OpenVDB sizes buffers from the stream
         int rc = read_grids(p, path);
         if (rc) fs_particles_free(p);
         return rc;
+    } catch (const std::bad_alloc &) {
+        fs_particles_free(p);
+        return fs_fail(FS_ERR_INPUT, "%s: OpenVDB asked for a buffer larger than the file can fill (a damaged or forged size)",
+                       path);
     } catch (const std::exception &e) {
         fs_particles_free(p);
         return fs_fail(FS_ERR_INPUT, "%s: cannot read VDB points: %s", path, e.what());

@@ -9,6 +9,7 @@
 // (output window, logger) for the duration of a read: read VTK files from
 // one thread at a time.
 #include "particle_io.h"
+#include "alloc_cap.h"
 #include "fs_error.h"
 
 #include <vtkCallbackCommand.h>
@@ -274,13 +275,14 @@ extern "C" int fs_read_vtu(fs_particles *p, const char *path)
     vtkDataSet *ds = nullptr;
     try { // VTK's XML parser throws std::length_error / std::bad_alloc on forged compression headers
         ErrorCapture capture(reader, &log);
+        fs::AllocCap cap(path); // VTK sizes arrays from the file's headers
         if (!reader->CanReadFile(path))
             return fs_fail(FS_ERR_INPUT, "%s: not a VTK XML UnstructuredGrid (.vtu) file", path);
         reader->SetFileName(path);
         reader->Update();
         ds = reader->GetOutput();
     } catch (const std::bad_alloc &) {
-        return fs_fail(FS_ERR_INPUT, "%s: VTK ran out of memory reading the file (a forged size?)", path);
+        return fs_fail(FS_ERR_INPUT, "%s: VTK asked for a buffer larger than the file can fill (a damaged or forged size)", path);
     } catch (const std::exception &e) {
         return fs_fail(FS_ERR_INPUT, "%s: VTK: %s", path, e.what());
     }

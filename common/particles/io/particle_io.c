@@ -52,6 +52,17 @@ static int check_input_file(const char *path)
     return FS_OK;
 }
 
+/* Every read error names the file: a layer below (fs_particles_alloc) may not know it. */
+static int name_file(int rc, const char *path)
+{
+    const char *msg = fs_error_message();
+    size_t n = strlen(path);
+    if (strncmp(msg, path, n) == 0 && msg[n] == ':') return rc;
+    char copy[1024];
+    snprintf(copy, sizeof copy, "%s", msg);
+    return fs_fail(rc, "%s: %s", path, copy);
+}
+
 int fs_particles_read(fs_particles *p, const char *path, const char *format)
 {
     memset(p, 0, sizeof *p);
@@ -73,7 +84,7 @@ int fs_particles_read(fs_particles *p, const char *path, const char *format)
     if (!rc) rc = fs_particles_validate(p, path);
     if (rc) {
         fs_particles_free(p);
-        return rc;
+        return name_file(rc, path);
     }
     fs_particles_bounds(p);
     return FS_OK;
