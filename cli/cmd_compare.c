@@ -3,11 +3,13 @@
 #include "scene_provenance.h"
 #include "cli.h"
 #include "compare.h"
+#include "compare_resume.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
 #include "options.h"
+#include "progress.h"
 #include "render_output.h"
 #include "run.h"
 #include "shading.h"
@@ -122,6 +124,15 @@ static int render_analytic(cmp_run *r, int f, const fs_grid *g, cmp_view *v, fs_
     return rc;
 }
 
+/* A finished work item (one view of one frame), for the progress bar or line. */
+static void item_done(const cmp_run *r, const char *label, int f)
+{
+    char what[160];
+    if (r->nframes > 1) snprintf(what, sizeof what, "%s, frame %d", label, r->first_frame + f);
+    else snprintf(what, sizeof what, "%s", label);
+    fs_progress_item(what);
+}
+
 /* One reference on every frame, from the cache where it holds the frame;
  * stages time the first, and its time is their sum (fs_stages_total), so the
  * counting render of --counters, which cli_cache_render runs outside every
@@ -140,6 +151,7 @@ static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, co
         ref->hits += made->hit;
         if (!rc && made->hit && !r->quiet) fprintf(stderr, "compare: %s, frame %d: from the cache, %s\n", ref->spec, r->first_frame + f, made->entry);
         if (f == 0) ref->stages = st;
+        if (!rc) item_done(r, ref->spec, f);
     }
     fs_run_close(run);
     return rc;
@@ -174,31 +186,39 @@ static double mean_normal_change(const fs_gbuffer *a, const fs_gbuffer *b)
     return n ? sum / n : NAN;
 }
 
-static int write_view(const cmp_run *r, const char *label, int frame, const cmp_view *v, const fs_provenance *prov)
+/* DIR/LABEL[_fNNNN][_own].EXT of a work item. */
+static void view_path(const cmp_run *r, const char *label, int frame, const char *suffix, const char *ext, char *path,
+                      int size)
 {
-    char name[300], path[1400];
-    for (int ext = 0; ext < 2; ext++) {
-        if (r->sequence) snprintf(name, sizeof name, "%s_f%04d.%s", label, frame, ext ? "exr" : "png");
-        else snprintf(name, sizeof name, "%s.%s", label, ext ? "exr" : "png");
-        cmp_path(r, name, path, sizeof path);
-        int rc = fs_write_render(path, &v->g, v->rgba, prov);
-        if (rc) return rc;
-    }
-    const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
-    if (!own) return FS_OK;
-    /* the method's own appearance beside the shared shading */
-    if (r->sequence) snprintf(name, sizeof name, "%s_own_f%04d.png", label, frame);
-    else snprintf(name, sizeof name, "%s_own.png", label);
-    cmp_path(r, name, path, sizeof path);
-    return fs_write_render(path, &v->g, own, prov);
+    char name[300];
+    if (r->sequence) snprintf(name, sizeof name, "%s%s_f%04d.%s", label, suffix, frame, ext);
+    else snprintf(name, sizeof name, "%s%s.%s", label, suffix, ext);
+    cmp_path(r, name, path, size);
 }
 
-static void progress(const cmp_run *r, const cmp_entry *e, int index, int total, int f, double t_start)
+/* The PNGs first and the EXR last: a complete EXR means a finished item (--resume). */
+static int write_view(const cmp_run *r, const char *label, int frame, const cmp_view *v, const fs_provenance *prov)
 {
-    if (r->quiet) return;
-    double el = since_s(t_start), done = (double)(index * r->nframes + f) / (total * r->nframes);
-    fprintf(stderr, "compare: variant %d/%d %s, frame %d/%d, elapsed %.1f s, remaining ~%.0f s\n", index + 1, total,
-            e->label, f + 1, r->nframes, el, done > 0 ? el / done - el : 0.0);
+    char path[1400];
+    view_path(r, label, frame, "", "png", path, sizeof path);
+    int rc = fs_write_render(path, &v->g, v->rgba, prov);
+    const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
+    if (!rc && own) { /* the method's own appearance beside the shared shading */
+        view_path(r, label, frame, "_own", "png", path, sizeof path);
+        rc = fs_write_render(path, &v->g, own, prov);
+    }
+    view_path(r, label, frame, "", "exr", path, sizeof path);
+    return rc ? rc : fs_write_render(path, &v->g, v->rgba, prov);
+}
+
+/* The metrics of a variant's view of frame f against every reference. */
+static int item_metrics(cmp_run *r, cmp_entry *e, int f, const cmp_view *cur)
+{
+    int rc = FS_OK;
+    for (int k = 0; k < r->nrefs && !rc; k++)
+        rc = fs_metrics_compute(&cur->g, cur->rgba, &r->refs[k].frames[f].g, r->refs[k].frames[f].rgba, r->scene.radius,
+                                &e->metrics[k * r->nframes + f]);
+    return rc;
 }
 
 /* Frame f of one variant: upload, a warm-up render, `repeat` timed renders
@@ -206,6 +226,14 @@ static void progress(const cmp_run *r, const cmp_entry *e, int index, int total,
 static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_particles *p, const fs_grid *g,
                      cmp_view *cur)
 {
+    fs_provenance prov;
+    fs_run_provenance(run, &r->prov, r->first_frame + f, &prov);
+    char exr[1400];
+    view_path(r, e->label, r->first_frame + f, "", "exr", exr, sizeof exr);
+    if (r->resume && cmp_resume_load(e, f, &prov, exr, cur)) {
+        r->resumed++;
+        return item_metrics(r, e, f, cur);
+    }
     double times[CMP_MAX_RUNS];
     int rc = fs_run_upload(run, p, g, NULL);
     for (int k = 0; k <= r->repeat && !rc; k++) { /* run 0 is the warm-up */
@@ -218,11 +246,8 @@ static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_part
     if (!rc) rc = fs_run_shade(run, &r->scene.camera, cur, FS_APPEARANCE_SHARED, NULL);
     if (rc) return rc;
     e->frame_ms[f] = fs_median(times, r->repeat);
-    for (int k = 0; k < r->nrefs && !rc; k++)
-        rc = fs_metrics_compute(&cur->g, cur->rgba, &r->refs[k].frames[f].g, r->refs[k].frames[f].rgba, r->scene.radius,
-                                &e->metrics[k * r->nframes + f]);
-    fs_provenance prov;
-    fs_run_provenance(run, &r->prov, r->first_frame + f, &prov);
+    rc = item_metrics(r, e, f, cur);
+    cmp_resume_stamp(&prov, e, f);
     if (!rc) rc = write_view(r, e->label, r->first_frame + f, cur, &prov);
     return rc;
 }
@@ -250,7 +275,7 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
 /* Runs one method variant on every frame; keeps the first frame's view for
  * the panel and heatmaps and the mean normal change between frames. */
 static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
-                     const fs_gl_context *ctx, int index, int total, double t_start)
+                     const fs_gl_context *ctx)
 {
     fs_run *run = NULL;
     int rc = fs_run_open(&run, e->v.m, &r->scene, e->v.params, e->v.m->needs_gl ? ctx : NULL);
@@ -260,9 +285,9 @@ static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, con
     double tsum = 0;
     int tn = 0;
     for (int f = 0; f < r->nframes && !rc; f++) {
-        progress(r, e, index, total, f, t_start);
         rc = run_frame(r, e, run, f, &frames_p[f], &grids[f], &cur);
         if (rc) break;
+        item_done(r, e->label, f);
         if (f > 0) {
             double d = mean_normal_change(&prev.g, &cur.g);
             if (isfinite(d)) { tsum += d; tn++; }
@@ -467,18 +492,18 @@ static int measure_import(cmp_run *r, cmp_entry *e)
 }
 
 /* The references, then every variant (and import) against them. */
-static int render_all(cmp_run *r, const fs_particles *frames_p, const fs_grid *grids, const fs_gl_context *ctx,
-                      double t_start)
+static int render_all(cmp_run *r, const fs_particles *frames_p, const fs_grid *grids, const fs_gl_context *ctx)
 {
-    if (!r->quiet) fprintf(stderr, "compare: rendering %d reference(s) on %d frame(s)\n", r->nrefs, r->nframes);
-    int rc = render_refs(r, frames_p, grids);
-    if (!rc) rc = write_refs(r);
     int nmethod = 0;
     for (int i = 0; i < r->nentries; i++) nmethod += !r->entries[i].imported;
-    for (int i = 0, idx = 0; i < r->nentries && !rc; i++) {
+    fs_progress_begin("compare", "work items", (long)(r->nrefs + nmethod) * r->nframes);
+    int rc = render_refs(r, frames_p, grids);
+    if (!rc) rc = write_refs(r);
+    for (int i = 0; i < r->nentries && !rc; i++) {
         cmp_entry *e = &r->entries[i];
-        rc = e->imported ? measure_import(r, e) : run_entry(r, e, frames_p, grids, ctx, idx++, nmethod, t_start);
+        rc = e->imported ? measure_import(r, e) : run_entry(r, e, frames_p, grids, ctx);
     }
+    fs_progress_end();
     return rc;
 }
 
@@ -552,9 +577,10 @@ static int compare(cmp_run *r, const cmp_options *o)
     if (!rc && need_gl(r)) { rc = fs_gl_context_create(&ctx, o->ctx_kind, 16, 16); have_ctx = !rc; }
     if (!rc) fs_provenance_init(&r->prov, &r->scene, have_ctx ? ctx.renderer : NULL, have_ctx ? ctx.version : NULL);
     if (!rc) rc = alloc_results(r);
-    if (!rc) rc = render_all(r, frames_p, grids, &ctx, t_start);
+    if (!rc) rc = render_all(r, frames_p, grids, &ctx);
     if (!rc) rc = write_outputs(r, o);
     if (!rc && r->radius_note[0]) fs_note("%s", r->radius_note);
+    if (!rc && r->resume) fs_note("--resume: %d work item(s) loaded from %s/, the rest rendered", r->resumed, r->outdir);
     if (!rc && !r->quiet) fprintf(stderr, "compare: done in %.1f s, outputs in %s/\n", since_s(t_start), r->outdir);
     if (rc) cli_error(rc);
     free_results(r, frames_p, grids);
@@ -589,6 +615,8 @@ int cmd_compare(int argc, char **argv)
         CLI_OPT_CACHE(cache_dir, "the folder of cached reference G-buffers (default\n"
                       "$XDG_CACHE_HOME/fluidsurf, else ~/.cache/fluidsurf)"),
         CLI_FLAG_OPT("--no-cache", no_cache, "render every reference; read and write no cache"),
+        CLI_FLAG_OPT("--resume", r->resume, "load the work items an earlier run of the same command\n"
+                     "finished in DIR (their EXRs) instead of rendering them"),
         CLI_FLAG_OPT("--counters", counters, "also count each variant's and reference's work in a\n"
                      "separate render after the timed ones: counters.csv"),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),

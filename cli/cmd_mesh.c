@@ -10,6 +10,7 @@
 #include "mesh/mesh_export.h"
 #include "options.h"
 #include "particle_io.h"
+#include "progress.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,20 +49,6 @@ typedef struct mesh_job {
     int first, last, timings, quiet;
     float radius;
 } mesh_job;
-
-static void progress(const mesh_job *j, int done, double t0)
-{
-    if (j->quiet) return;
-    int total = j->last - j->first + 1, width = 30, fill = done * width / total;
-    double el = (fs_now_ms() - t0) / 1000, left = done ? el / done * (total - done) : 0;
-    char bar[64];
-    for (int i = 0; i < width; i++) bar[i] = i < fill ? '#' : '.';
-    bar[width] = 0;
-    int tty = isatty(2);
-    fprintf(stderr, "%smesh: [%s] %d/%d frames, %.1f s, ~%.0f s left%s", tty ? "\r" : "", bar, done, total, el, left,
-            tty && done < total ? "" : "\n");
-    fflush(stderr);
-}
 
 static void print_stages(int frame, const fs_stages *st, const fs_trimesh *m)
 {
@@ -170,11 +157,13 @@ int cmd_mesh(int argc, char **argv)
     j.timings = timings;
     j.quiet = quiet;
     if (timings) printf("frame,stage,ms,vertices,triangles\n");
-    double t0 = fs_now_ms();
     j.params = params;
-    for (int f = j.first; f <= j.last; f++) {
-        if ((rc = mesh_frame(&j, f))) return cli_error(rc);
-        progress(&j, f - j.first + 1, t0);
+    fs_progress_begin("mesh", "frames", j.last - j.first + 1L);
+    for (int f = j.first; f <= j.last && !rc; f++) {
+        char what[32];
+        snprintf(what, sizeof what, "frame %d", f);
+        if (!(rc = mesh_frame(&j, f))) fs_progress_item(what);
     }
-    return 0;
+    fs_progress_end();
+    return rc ? cli_error(rc) : 0;
 }

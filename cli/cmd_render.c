@@ -5,6 +5,7 @@
 #include "gl_context.h"
 #include "method_params.h"
 #include "options.h"
+#include "progress.h"
 #include "ref_cache.h"
 #include "render_output.h"
 #include "run.h"
@@ -151,7 +152,10 @@ static int load_and_render(fs_scene *scene, const render_job *job, float radius,
     fs_stages_add(&st, "load", fs_now_ms() - tl);
     char note[1024];
     fs_scene_adopt_frame(scene, &p, radius, note, sizeof note);
+    fs_progress_begin("render", "frames", 1);
     rc = render_one(scene, &p, job, kind, &st);
+    if (!rc) fs_progress_item(job->m->name);
+    fs_progress_end();
     /* after success only, so a failing run prints exactly one line */
     if (!rc && note[0]) fs_note("%s", note);
     if (rc) cli_error(rc);

@@ -4,6 +4,7 @@
 #include "options.h"
 #include "output_file.h"
 #include "particle_io.h"
+#include "progress.h"
 #include "provenance.h"
 #include "sph.h"
 #include "timing.h"
@@ -123,14 +124,15 @@ int cmd_simulate(int argc, char **argv)
         fprintf(csv, "frame,t,particles,steps,dt_min,dt_max,bound_min,violations,v_max,clamps,outside,density_err,"
                 "density_abs_err,depth,depth_expected,kinetic,step_ms,frame_ms\n");
     }
+    fs_note_quiet(o.quiet);
     if (!o.quiet)
         fprintf(stderr, "simulate %s: %zu fluid + %zu boundary particles on %s, %s, c = %.3g m/s, dt bound %.3g s\n",
                 o.scene, fs_sph_count(s), fs_sph_boundary_count(s), o.gpu ? renderer : "the CPU",
                 P->eos == FS_SPH_TAIT ? "Tait" : "ideal gas", P->c, fs_sph_dt_bound(s));
-    double t_start = fs_now_ms();
     long steps0 = 0;
     double step_ms0 = 0;
     int warned = 0;
+    fs_progress_begin("simulate", "frames", o.frames + 1L);
     for (int f = 0; f <= o.frames && !rc; f++) {
         double t0 = fs_now_ms();
         if (f > 0) rc = fs_sph_advance(s, 1.0 / o.fps);
@@ -154,17 +156,21 @@ int cmd_simulate(int argc, char **argv)
                     m.depth_expected, m.kinetic, st->step_ms - step_ms0, frame_ms);
             fflush(csv); /* long runs can be watched (in the hidden temporary file) */
         }
-        if (!o.quiet && st->violations && !warned) { /* the fixed step broke the bound: say so once */
-            fprintf(stderr, "note: fixed step %g s exceeds the CFL/viscosity bound (down to %.3g s) from frame %d on\n",
-                    P->fixed_dt, st->bound_min, f);
+        if (st->violations && !warned) { /* the fixed step broke the bound: say so once */
+            fs_note("fixed step %g s exceeds the CFL/viscosity bound (down to %.3g s) from frame %d on", P->fixed_dt,
+                    st->bound_min, f);
             warned = 1;
         }
         steps0 = st->steps;
         step_ms0 = st->step_ms;
-        if (!o.quiet && (f == o.frames || f % 10 == 0 || rc))
-            fprintf(stderr, "frame %d/%d  t = %.3f s  %ld steps (%ld beyond the bound)  v_max %.2f m/s  clamps %ld  %.1f s\n",
-                    f, o.frames, st->t, st->steps, st->violations, st->v_max, st->clamps, (fs_now_ms() - t_start) / 1000);
+        if (!rc) {
+            char what[160];
+            snprintf(what, sizeof what, "frame %d, t = %.3f s, %ld steps (%ld beyond the bound), v_max %.2f m/s, clamps %ld", f,
+                     st->t, st->steps, st->violations, st->v_max, st->clamps);
+            fs_progress_item(what);
+        }
     }
+    fs_progress_end();
     if (csv) {
         int bad = fclose(csv) != 0;
         int rc2 = fs_output_end(o.stats, stats_tmp, !bad); /* kept on a divergence too: it records it */

@@ -56,6 +56,7 @@ typedef struct cmp_run {
     char command[4096];
     int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;
     int counters;        /* --counters: a counting render per variant and frame */
+    int resume, resumed; /* --resume; the work items it loaded */
     cmp_entry entries[CMP_MAX_ENTRIES];
     cmp_ref refs[CMP_MAX_REFS];
     double normal_scale_deg, depth_scale_r; /* heatmap scales, the same for every entry */

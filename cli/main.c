@@ -1,6 +1,7 @@
 /* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
 #include "method.h"
 #include "cli.h"
+#include "interrupt.h"
 #include "provenance.h"
 #include <stdio.h>
 #include <string.h>
@@ -29,6 +30,7 @@ static int usage(FILE *f)
 int main(int argc, char **argv)
 {
     fs_methods_register_builtin();
+    fs_interrupt_install();
     if (argc < 2) return usage(stderr);
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) return usage(stdout);
     if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", fs_version, fs_commit); return 0; }

@@ -38,3 +38,11 @@ if(FS_WITH_OIIO)
            ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_plugin)
   set_tests_properties(cli_plugin PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()
+# Interrupted, resumed and starved runs: SIGINT/SIGTERM, compare --resume, progress on a
+# terminal (script) and off it, a full tmpfs (mounted when run as root), device nodes.
+# Its progress case meshes (OpenVDB).
+if(FS_WITH_OPENVDB)
+  add_test(NAME cli_interrupt COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_interrupt.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_interrupt)
+  set_tests_properties(cli_interrupt PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+endif()

@@ -36,6 +36,7 @@ void fs_error_clear(void)
 
 static int fs_quiet;
 void fs_note_quiet(int quiet) { fs_quiet = quiet; }
+int fs_note_is_quiet(void) { return fs_quiet; }
 void fs_note(const char *fmt, ...)
 {
     if (fs_quiet) return;

@@ -22,6 +22,7 @@ void fs_error_clear(void);
  * on purpose (far stray particles); silenced by fs_note_quiet(1) (the CLI's -q). */
 void fs_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fs_note_quiet(int quiet);
+int fs_note_is_quiet(void); /* -q: progress (progress.h) is silenced too */
 
 #ifdef __cplusplus
 }

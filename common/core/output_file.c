@@ -1,12 +1,50 @@
 #include "output_file.h"
 #include "fs_error.h"
 #include <errno.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* The temporaries in progress, for fs_output_abandon_all (from a signal handler:
+ * it reads the slots without the lock, and a slot is marked used only once its
+ * path is complete). */
+#define MAX_LIVE 64
+static struct { char path[4096]; volatile sig_atomic_t used; } live[MAX_LIVE];
+static pthread_mutex_t live_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static void remember(const char *tmp)
+{
+    pthread_mutex_lock(&live_lock);
+    for (int i = 0; i < MAX_LIVE; i++)
+        if (!live[i].used && strlen(tmp) < sizeof live[i].path) {
+            strcpy(live[i].path, tmp);
+            live[i].used = 1;
+            break;
+        }
+    pthread_mutex_unlock(&live_lock);
+}
+
+static void forget(const char *tmp)
+{
+    pthread_mutex_lock(&live_lock);
+    for (int i = 0; i < MAX_LIVE; i++)
+        if (live[i].used && strcmp(live[i].path, tmp) == 0) {
+            live[i].used = 0;
+            break;
+        }
+    pthread_mutex_unlock(&live_lock);
+}
+
+void fs_output_abandon_all(void)
+{
+    for (int i = 0; i < MAX_LIVE; i++)
+        if (live[i].used) unlink(live[i].path);
+}
 
 int fs_output_begin(const char *final, char *tmp, int size)
 {
@@ -29,19 +67,23 @@ int fs_output_begin(const char *final, char *tmp, int size)
     }
     fchmod(fd, 0644);
     close(fd);
+    remember(tmp);
     return FS_OK;
 }
 
 int fs_output_end(const char *final, const char *tmp, int ok)
 {
     if (!tmp[0]) return ok ? fs_fail(FS_ERR_RUNTIME, "%s: no temporary file", final) : FS_OK;
-    if (!ok) { unlink(tmp); return FS_OK; }
-    if (rename(tmp, final) != 0) {
-        int e = errno;
+    /* forgotten only once gone or renamed: a signal in between finds nothing to remove */
+    if (!ok) {
         unlink(tmp);
-        return fs_fail(FS_ERR_RUNTIME, "%s: cannot rename output: %s", final, strerror(e));
+        forget(tmp);
+        return FS_OK;
     }
-    return FS_OK;
+    int moved = rename(tmp, final) == 0, e = errno;
+    if (!moved) unlink(tmp);
+    forget(tmp);
+    return moved ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: cannot rename output: %s", final, strerror(e));
 }
 
 int fs_path_ends_with(const char *path, const char *suffix)

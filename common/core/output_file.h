@@ -12,6 +12,8 @@ extern "C" {
 int fs_output_begin(const char *final, char *tmp, int size);
 /* ok != 0: rename tmp to final; else unlink tmp. Returns FS_OK or an error. */
 int fs_output_end(const char *final, const char *tmp, int ok);
+/* Removes every temporary of an output still in progress (async-signal-safe). */
+void fs_output_abandon_all(void);
 /* 1 when path ends in suffix, ignoring case (".vdb", ".bgeo.gz"). */
 int fs_path_ends_with(const char *path, const char *suffix);
 

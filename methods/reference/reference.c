@@ -9,6 +9,7 @@
 #include "aniso_params.h"
 #include "fs_error.h"
 #include "method.h"
+#include "progress.h"
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -262,6 +263,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_camera_basis(cam, right, up, fwd);
     fs_gbuffer_clear(out);
     int tw = (cam->width + FS_REF_TILE - 1) / FS_REF_TILE, th = (cam->height + FS_REF_TILE - 1) / FS_REF_TILE;
+    fs_progress_sub_total((long)tw * th);
 #pragma omp parallel num_threads(nth)
     {
         void *buf = bufs + (size_t)omp_get_thread_num() * per;
@@ -272,6 +274,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
             for (int py = y0; py < y0 + FS_REF_TILE && py < cam->height; py++)
                 for (int px = x0; px < x0 + FS_REF_TILE && px < cam->width; px++)
                     shade_pixel(R, cam, fwd, px, py, buf, out, &w);
+            fs_progress_sub(1);
         }
         fs_count_add(FS_CNT_FIELD_EVALS, w.evals);
         fs_count_add(FS_CNT_NEIGHBOURS, w.nbrs);

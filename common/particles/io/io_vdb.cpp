@@ -9,6 +9,7 @@
 #include "output_file.h"
 
 #include <openvdb/openvdb.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/points/PointConversion.h>
 #include <openvdb/points/PointCount.h>
 #include <openvdb/points/PointDataGrid.h>
@@ -16,6 +17,7 @@
 
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -38,14 +40,16 @@ size_t velocity_index(const openvdb::points::PointDataTree::LeafNodeType &leaf)
 
 int read_grids(fs_particles *p, const char *path)
 {
-    openvdb::io::File file(path);
-    file.open(false); // no delayed loading: the file is closed before we return
+    // Read as a stream whose every short read throws: OpenVDB's readers do not check
+    // the stream (a forged tile count loops 2^32 times on a failed stream), and
+    // without delayed loading the whole file is read here and closed on return.
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return fs_fail(FS_ERR_INPUT, "%s: cannot open", path);
+    in.exceptions(std::ios::failbit | std::ios::badbit);
+    openvdb::io::Stream stream(in, false);
     std::vector<PointDataGrid::Ptr> grids;
-    openvdb::GridPtrVecPtr meta = file.readAllGridMetadata();
-    for (const auto &g : *meta)
-        if (g->isType<PointDataGrid>())
-            grids.push_back(openvdb::gridPtrCast<PointDataGrid>(file.readGrid(g->getName())));
-    file.close();
+    for (const auto &g : *stream.getGrids())
+        if (g->isType<PointDataGrid>()) grids.push_back(openvdb::gridPtrCast<PointDataGrid>(g));
     if (grids.empty()) return fs_fail(FS_ERR_INPUT, "%s: no point data grid in the VDB file", path);
 
     openvdb::Index64 total = 0;
@@ -120,6 +124,9 @@ extern "C" int fs_read_vdb(fs_particles *p, const char *path)
         int rc = read_grids(p, path);
         if (rc) fs_particles_free(p);
         return rc;
+    } catch (const std::ios_base::failure &) {
+        fs_particles_free(p);
+        return fs_fail(FS_ERR_INPUT, "%s: truncated or damaged VDB file (a read past its end)", path);
     } catch (const std::bad_alloc &) {
         fs_particles_free(p);
         return fs_fail(FS_ERR_INPUT, "%s: OpenVDB asked for a buffer larger than the file can fill (a damaged or forged size)",

@@ -1,0 +1,96 @@
+/* Stamping and reloading the work items of compare --resume (compare_resume.h). */
+#include "compare_resume.h"
+#include "hash.h"
+#include "image_io.h"
+#include "render_output.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void item_key(const fs_provenance *prov, char hex[FS_DIGEST_HEX])
+{
+    fs_hash h;
+    fs_hash_init(&h);
+    for (int i = 0; i < prov->n; i++) {
+        fs_hash_str(&h, prov->attr[i].name);
+        fs_hash_str(&h, prov->attr[i].value);
+    }
+    fs_digest_hex(fs_hash_digest(&h), hex);
+}
+
+/* "name=ms/gpu_ms,...;..." for the runs: stage names are method-defined literals. */
+static int runs_string(const cmp_entry *e, char *buf, int size)
+{
+    int at = 0;
+    for (int k = 0; k < e->nruns; k++)
+        for (int s = 0; s < e->runs[k].n; s++) {
+            at += snprintf(buf + at, at < size ? size - at : 0, "%s%s=%.17g/%.17g", s ? "," : k ? ";" : "",
+                           e->runs[k].name[s], e->runs[k].ms[s], e->runs[k].gpu_ms[s]);
+            if (at >= size) return 0;
+        }
+    return 1;
+}
+
+void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f)
+{
+    char key[FS_DIGEST_HEX], ms[40], runs[640];
+    item_key(prov, key);
+    snprintf(ms, sizeof ms, "%.17g", e->frame_ms[f]);
+    fs_provenance_set(prov, "item", key);
+    fs_provenance_set(prov, "frame_ms", ms);
+    if (f == 0 && runs_string(e, runs, sizeof runs)) fs_provenance_set(prov, "runs", runs);
+}
+
+/* A stage name as the one static string the tables compare by pointer or text. */
+static const char *intern(const char *name)
+{
+    static char pool[64][32];
+    static int n;
+    for (int i = 0; i < n; i++)
+        if (!strcmp(pool[i], name)) return pool[i];
+    if (n == 64 || strlen(name) >= sizeof pool[0]) return NULL;
+    return strcpy(pool[n++], name);
+}
+
+/* Parses runs_string's format back into e->runs; 0 when it does not parse. */
+static int parse_runs(cmp_entry *e, const char *s)
+{
+    int nruns = 0;
+    fs_stages st = {0};
+    while (*s && nruns < CMP_MAX_RUNS) {
+        char name[32];
+        double ms, gpu;
+        int used;
+        if (sscanf(s, "%31[^=]=%lf/%lf%n", name, &ms, &gpu, &used) != 3 || st.n == FS_MAX_STAGES) return 0;
+        if (!(st.name[st.n] = intern(name))) return 0;
+        st.ms[st.n] = ms, st.gpu_ms[st.n] = gpu, st.n++;
+        s += used;
+        if (*s == ',') s++;
+        else if (*s == ';' || !*s) {
+            e->runs[nruns++] = st;
+            memset(&st, 0, sizeof st);
+            if (*s) s++;
+        } else return 0;
+    }
+    e->nruns = nruns;
+    return nruns > 0;
+}
+
+int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v)
+{
+    char want[FS_DIGEST_HEX], have[FS_DIGEST_HEX], ms[64], runs[640];
+    item_key(prov, want);
+    if (fs_read_image_attr(exr, "fluidsurf:item", have, sizeof have) != 1 || strcmp(want, have)) return 0;
+    if (fs_read_image_attr(exr, "fluidsurf:frame_ms", ms, sizeof ms) != 1) return 0;
+    if (f == 0 && (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 || !parse_runs(e, runs))) return 0;
+    float r;
+    memset(v, 0, sizeof *v);
+    if (fs_read_render(exr, &v->g, &v->rgba, &r)) {
+        fs_run_image_free(v);
+        return 0;
+    }
+    e->frame_ms[f] = strtod(ms, NULL);
+    return 1;
+}

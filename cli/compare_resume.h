@@ -1,0 +1,19 @@
+/* compare --resume: a work item (one variant on one frame) whose EXR is in the
+ * output folder, stamped with this run's provenance, is loaded instead of rendered.
+ * The EXR is written last of an item's files and renamed into place whole, so its
+ * presence means the item finished. It carries the item's timings, so the tables
+ * of a resumed run hold the times measured when each item was rendered. */
+#ifndef FS_COMPARE_RESUME_H
+#define FS_COMPARE_RESUME_H
+#include "compare.h"
+
+/* Adds to prov the item's key (a digest of prov as it is: commit, scene, camera,
+ * method, parameters, frame), its frame time and, on the first frame, its timed
+ * runs' stages. */
+void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f);
+/* 1 when exr holds this item (prov: as before cmp_resume_stamp): v is loaded and
+ * e's frame time (and on f == 0 its runs) restored; 0 when it must be rendered
+ * (missing, another run's, unreadable); never an error. */
+int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v);
+
+#endif
