@@ -5,7 +5,8 @@
 # (tests/lean_vs_full.sh); then once more under AddressSanitizer +
 # UndefinedBehaviorSanitizer (suppressions only for Mesa/LLVM and two libraries'
 # error paths, tests/lsan.supp), which also replays the fuzz seeds and regression
-# files (tests/fuzz). Set FS_NO_SANITIZE=1 to skip the last.
+# files (tests/fuzz); and last every libFuzzer target of tests/fuzz for 30 s
+# (clang, ASan + UBSan: tests/fuzz/run.sh). Set FS_NO_SANITIZE=1 to skip the last two.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -20,4 +21,5 @@ if [ "${FS_NO_SANITIZE:-0}" != 1 ]; then
   # registration (libgcc's unwinder lock re-entered through malloc).
   (cd build-asan && ASAN_OPTIONS=detect_leaks=1 \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j2)
+  bash tests/fuzz/run.sh 30
 fi

@@ -11,7 +11,7 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 declare -A want=(
   [render]="--method -o --set -W --width -H --height --radius --format --frame --gl --timings --counters --export --appearance --cache -q"
-  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --counters -W --width -H --height --radius --gl -q"
+  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --counters -W --width -H --height --radius --gl -q"
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius"
   [info]="--radius --volume-scale --format"
   [convert]="-o --from --to"

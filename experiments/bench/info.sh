@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# `fluidsurf info` on files without a radius (issue 16): the whole-process time on a
+# 1M-particle frame (target: at most 2 s) and the radius it estimates from the spacing
+# against the radius the particles were made with (targets: within 10% on a
+# near-lattice frame, within 20% on a developed splash frame).
+#
+#   experiments/bench/info.sh           medians of 5 runs; writes results/bench/info.csv
+#   experiments/bench/info.sh --quick   1 run, the 100k sets only, into out/bench/quick/
+#
+# Sets: the jittered lattice boxes of experiments/scenes (100k, 1M; r = 0.025 on a 2r
+# lattice) and the committed splash frame of fluidsurf's own dam-break simulation
+# (experiments/data/splash, 100k, r in its header). Each is written as a PLY with the
+# radius comment removed, so info must estimate it. Environment: RUNS, BIN.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+quick=0; [ "${1:-}" = --quick ] && quick=1
+BIN=${BIN:-./build/fluidsurf}
+RUNS=${RUNS:-$([ $quick = 1 ] && echo 1 || echo 5)}
+OUT=$([ $quick = 1 ] && echo out/bench/quick || echo results/bench)
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+mkdir -p "$OUT"
+
+# writes $2 from $1 (a scene or particle file) as a binary PLY without a radius
+strip_radius() {
+  "$BIN" convert "$1" -o "$T/with_r.ply" 2> /dev/null
+  python3 - "$T/with_r.ply" "$2" <<'EOF'
+import sys
+b = open(sys.argv[1], 'rb').read()
+end = b.index(b'end_header\n') + len(b'end_header\n')
+head = b''.join(l + b'\n' for l in b[:end].split(b'\n') if l and not l.startswith(b'comment radius'))
+open(sys.argv[2], 'wb').write(head + b[end:])
+EOF
+}
+# the radius the last strip_radius's input was made with
+true_radius() { "$BIN" info "$T/with_r.ply" | sed -n 's/^radius r: \([0-9.e-]*\).*/\1/p'; }
+
+sets=("box_100k:experiments/scenes/box_100k.json:lattice" "splash_100k:experiments/data/splash/dam_break_splash_100k.ply:developed")
+[ $quick = 1 ] || sets+=("box_1m:experiments/scenes/box_1m.json:lattice")
+csv=$T/info.csv
+echo "set,kind,particles,true_r,estimated_r,ratio,target,info_s_median,info_s_min,info_s_max,runs" > "$csv"
+for s in "${sets[@]}"; do
+  IFS=: read -r name src kind <<< "$s"
+  echo "info: $name" >&2
+  strip_radius "$src" "$T/$name.ply"
+  r_true=$(true_radius)
+  times=()
+  for _ in $(seq "$RUNS"); do
+    t0=$(date +%s.%N)
+    "$BIN" info "$T/$name.ply" > "$T/info.txt" 2> /dev/null
+    times+=("$(echo "$(date +%s.%N) - $t0" | bc -l)")
+  done
+  r_est=$(sed -n 's/^radius r: \([0-9.e-]*\) (estimated.*/\1/p' "$T/info.txt")
+  n=$(sed -n 's/^particles: //p' "$T/info.txt")
+  [ -n "$r_est" ] || { echo "info: $name: no estimated radius in the output" >&2; exit 1; }
+  target=$([ "$kind" = lattice ] && echo 0.10 || echo 0.20)
+  printf '%s\n' "${times[@]}" | sort -g > "$T/t"
+  python3 - "$name" "$kind" "$n" "$r_true" "$r_est" "$target" "$T/t" >> "$csv" <<'EOF'
+import statistics, sys
+name, kind, n, rt, re, target, tf = sys.argv[1:]
+t = [float(x) for x in open(tf)]
+print(f"{name},{kind},{n},{rt},{re},{float(re) / float(rt):.4f},{target},{statistics.median(t):.3f},{min(t):.3f},{max(t):.3f},{len(t)}")
+EOF
+done
+{ echo "# $("$BIN" --version), $(nproc) cores, info on PLY files without a radius; whole-process wall time"; cat "$csv"; } > "$OUT/info.csv"
+cat "$OUT/info.csv"
