@@ -34,9 +34,21 @@ size_t fs_memory_available(void)
     return limit < avail ? limit : avail;
 }
 
+/* "240.0 GB", "292.7 kB" */
+static void human(char *buf, size_t size, double bytes)
+{
+    const char *unit[] = {"B", "kB", "MB", "GB", "TB"};
+    int u = 0;
+    while (bytes >= 1000 && u < 4) bytes /= 1000, u++;
+    snprintf(buf, size, u ? "%.1f %s" : "%.0f %s", bytes, unit[u]);
+}
+
 int fs_memory_check(double bytes, const char *what)
 {
     size_t avail = fs_memory_available();
     if (avail == SIZE_MAX || bytes <= (double)avail) return FS_OK;
-    return fs_fail(FS_ERR_RUNTIME, "%s needs %.1f GB but %.1f GB are available", what, bytes / 1e9, avail / 1e9);
+    char need[32], have[32];
+    human(need, sizeof need, bytes);
+    human(have, sizeof have, (double)avail);
+    return fs_fail(FS_ERR_RUNTIME, "%s need %s, but only %s are available", what, need, have);
 }
