@@ -149,7 +149,7 @@ static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, co
         else rc = cli_cache_render(&r->cache, run, &r->scene, &frames_p[f], &grids[f], &r->prov, r->first_frame + f, v,
                                    &st, made);
         ref->hits += made->hit;
-        if (!rc && made->hit && !r->quiet) fprintf(stderr, "compare: %s, frame %d: from the cache, %s\n", ref->spec, r->first_frame + f, made->entry);
+        if (!rc && made->hit) fs_note("%s, frame %d: from the cache, %s", ref->spec, r->first_frame + f, made->entry);
         if (f == 0) ref->stages = st;
         if (!rc) item_done(r, ref->spec, f);
     }
@@ -260,13 +260,12 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
     int rc = FS_OK;
     for (int f = 0; f < r->nframes && !rc; f++) {
         cmp_view v = {0};
-        if (!r->quiet) fprintf(stderr, "compare: counting %s, frame %d/%d\n", e->label, f + 1, r->nframes);
+        fs_note("counting %s, frame %d/%d", e->label, f + 1, r->nframes);
         rc = fs_run_count(e->v.m, &r->scene, e->v.params, ctx, &frames_p[f], &grids[f], &r->scene.camera, &v,
                           &e->counts[f]);
         /* the counts describe the timed render only when it drew the same G-buffer */
         if (!rc && f == 0 && !fs_digest_equal(fs_gcache_data_hash(&v.g), fs_gcache_data_hash(&e->first.g)))
-            fprintf(stderr, "compare: warning: %s: the counting render's G-buffer differs from the timed render's\n",
-                    e->label);
+            fs_note("%s: the counting render's G-buffer differs from the timed render's", e->label);
         free_view(&v);
     }
     return rc;
@@ -581,7 +580,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     if (!rc) rc = write_outputs(r, o);
     if (!rc && r->radius_note[0]) fs_note("%s", r->radius_note);
     if (!rc && r->resume) fs_note("--resume: %d work item(s) loaded from %s/, the rest rendered", r->resumed, r->outdir);
-    if (!rc && !r->quiet) fprintf(stderr, "compare: done in %.1f s, outputs in %s/\n", since_s(t_start), r->outdir);
+    if (!rc) fs_note("compare done in %.1f s, outputs in %s/", since_s(t_start), r->outdir);
     if (rc) cli_error(rc);
     free_results(r, frames_p, grids);
     if (have_ctx) fs_gl_context_destroy(&ctx);
