@@ -53,7 +53,7 @@ done
 check '[ "$(awk -F, "!/^#/ && \$1==\"reference\" {print \$5}" "$T/cmp/metrics.csv")" = 1 ]' "compare: reference against itself IoU 1"
 # Without its font file the lean compare still writes everything, and says so once.
 FLUIDSURF_FONT=$T/no-such-font.ttf "$BIN" compare "$T/dam.json" --methods spheres -W 32 -H 32 --repeat 1 --no-cache -o "$T/nofont" 2> "$T/err"; rc=$?
-check '[ $rc -eq 0 ] && [ -s "$T/nofont/panel.png" ] && [ -s "$T/nofont/diff_spheres.png" ] && [ "$(grep -c "^fluidsurf: note: .*font" "$T/err")" -eq 1 ]' \
+check '[ $rc -eq 0 ] && [ -s "$T/nofont/panel.png" ] && [ -s "$T/nofont/diff_spheres.png" ] && [ "$(grep -c "^fluidsurf: note: .*font not found" "$T/err")" -eq 1 ]' \
   "compare without the font: all files, one note ($(grep font "$T/err" | head -c 200))"
 
 # 3. the particle formats the lean build reads
