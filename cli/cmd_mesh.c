@@ -14,7 +14,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 static const char epilogue[] =
     "IN is a scene .json (all its frames), a particle file, or a frame pattern with {} or %d\n"
