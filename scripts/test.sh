@@ -19,7 +19,7 @@ if [ "${FS_NO_SANITIZE:-0}" != 1 ]; then
   bash scripts/build.sh build-asan -DFS_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
   # Default (fast) unwinding: the slow unwinder deadlocks inside LLVM's JIT
   # registration (libgcc's unwinder lock re-entered through malloc).
-  (cd build-asan && ASAN_OPTIONS=detect_leaks=1 \
+  (cd build-asan && \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j2)
   bash tests/fuzz/run.sh 30
 fi

@@ -32,7 +32,7 @@ for exe in "$BUILD"/tests/fuzz/fuzz_*; do
         -max_len=65536 -artifact_prefix="$out/" -print_final_stats=1)
   [ -f "$dict" ] && args+=(-dict="$dict")
   # the first corpus folder receives new inputs: keep the committed seeds untouched
-  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
     "$exe" "${args[@]}" "$out/corpus" "tests/fuzz/corpus_$name" > "$out/log.txt" 2>&1
   rc=$?
