@@ -12,6 +12,7 @@ int cmd_diff(int argc, char **argv);
 int cmd_simulate(int argc, char **argv);
 int cmd_view(int argc, char **argv);
 int cmd_mesh(int argc, char **argv);
+int cmd_merge(int argc, char **argv);
 
 /* Prints "fluidsurf: MESSAGE" and returns code. */
 int cli_error(int code);

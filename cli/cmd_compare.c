@@ -3,7 +3,9 @@
 #include "scene_provenance.h"
 #include "cli.h"
 #include "compare.h"
+#include "compare_merge.h"
 #include "compare_resume.h"
+#include "compare_shard.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
@@ -133,18 +135,32 @@ static void item_done(const cmp_run *r, const char *label, int f)
     fs_progress_item(what);
 }
 
+/* 1 when this process renders some frame of reference (is_ref) or entry index. */
+static int renders_any(const cmp_run *r, int is_ref, int index)
+{
+    for (int f = 0; f < r->nframes; f++)
+        if (cmp_renders(r, cmp_item_id(r, is_ref, index, f))) return 1;
+    return 0;
+}
+
 /* One reference on every frame, from the cache where it holds the frame;
  * stages time the first, and its time is their sum (fs_stages_total), so the
  * counting render of --counters, which cli_cache_render runs outside every
  * stage, is never part of it. */
-static int render_ref(cmp_run *r, cmp_ref *ref, const fs_particles *frames_p, const fs_grid *grids)
+static int render_ref(cmp_run *r, int k, const fs_particles *frames_p, const fs_grid *grids)
 {
+    cmp_ref *ref = &r->refs[k];
     fs_run *run = NULL;
-    int rc = ref->analytic ? FS_OK : fs_run_open(&run, ref->v.m, &r->scene, ref->v.params, NULL);
+    int rc = ref->analytic || !renders_any(r, 1, k) ? FS_OK : fs_run_open(&run, ref->v.m, &r->scene, ref->v.params, NULL);
     for (int f = 0; f < r->nframes && !rc; f++) {
         cmp_view *v = &ref->frames[f];
         cli_cache_view *made = &ref->made[f];
         fs_stages st = {0};
+        if (r->merge) {
+            if (!(rc = cmp_merge_ref(r, k, f, v))) item_done(r, ref->spec, f);
+            continue;
+        }
+        if (!cmp_renders(r, cmp_item_id(r, 1, k, f))) continue;
         if (ref->analytic) rc = render_analytic(r, f, &grids[f], v, &st);
         else rc = cli_cache_render(&r->cache, run, &r->scene, &frames_p[f], &grids[f], &r->prov, r->first_frame + f, v,
                                    &st, made);
@@ -166,7 +182,7 @@ static int render_refs(cmp_run *r, const fs_particles *frames_p, const fs_grid *
         ref->frames = calloc(r->nframes, sizeof *ref->frames);
         ref->made = calloc(r->nframes, sizeof *ref->made);
         if (!ref->frames || !ref->made) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-        int rc = render_ref(r, ref, frames_p, grids);
+        int rc = render_ref(r, k, frames_p, grids);
         if (rc) return rc;
     }
     return FS_OK;
@@ -186,28 +202,18 @@ static double mean_normal_change(const fs_gbuffer *a, const fs_gbuffer *b)
     return n ? sum / n : NAN;
 }
 
-/* DIR/LABEL[_fNNNN][_own].EXT of a work item. */
-static void view_path(const cmp_run *r, const char *label, int frame, const char *suffix, const char *ext, char *path,
-                      int size)
-{
-    char name[300];
-    if (r->sequence) snprintf(name, sizeof name, "%s%s_f%04d.%s", label, suffix, frame, ext);
-    else snprintf(name, sizeof name, "%s%s.%s", label, suffix, ext);
-    cmp_path(r, name, path, size);
-}
-
 /* The PNGs first and the EXR last: a complete EXR means a finished item (--resume). */
 static int write_view(const cmp_run *r, const char *label, int frame, const cmp_view *v, const fs_provenance *prov)
 {
     char path[1400];
-    view_path(r, label, frame, "", "png", path, sizeof path);
+    cmp_view_path(r, NULL, label, frame, "", "png", path, sizeof path);
     int rc = fs_write_render(path, &v->g, v->rgba, prov);
     const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
     if (!rc && own) { /* the method's own appearance beside the shared shading */
-        view_path(r, label, frame, "_own", "png", path, sizeof path);
+        cmp_view_path(r, NULL, label, frame, "_own", "png", path, sizeof path);
         rc = fs_write_render(path, &v->g, own, prov);
     }
-    view_path(r, label, frame, "", "exr", path, sizeof path);
+    cmp_view_path(r, NULL, label, frame, "", "exr", path, sizeof path);
     return rc ? rc : fs_write_render(path, &v->g, v->rgba, prov);
 }
 
@@ -226,13 +232,17 @@ static int item_metrics(cmp_run *r, cmp_entry *e, int f, const cmp_view *cur)
 static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_particles *p, const fs_grid *g,
                      cmp_view *cur)
 {
+    if (r->merge) {
+        int rc = cmp_merge_entry(r, (int)(e - r->entries), f, cur);
+        return rc ? rc : item_metrics(r, e, f, cur);
+    }
     fs_provenance prov;
     fs_run_provenance(run, &r->prov, r->first_frame + f, &prov);
     char exr[1400];
-    view_path(r, e->label, r->first_frame + f, "", "exr", exr, sizeof exr);
+    cmp_view_path(r, NULL, e->label, r->first_frame + f, "", "exr", exr, sizeof exr);
     if (r->resume && cmp_resume_load(e, f, &prov, exr, cur)) {
         r->resumed++;
-        return item_metrics(r, e, f, cur);
+        return r->shard_n ? FS_OK : item_metrics(r, e, f, cur);
     }
     double times[CMP_MAX_RUNS];
     int rc = fs_run_upload(run, p, g, NULL);
@@ -246,7 +256,7 @@ static int run_frame(cmp_run *r, cmp_entry *e, fs_run *run, int f, const fs_part
     if (!rc) rc = fs_run_shade(run, &r->scene.camera, cur, FS_APPEARANCE_SHARED, NULL);
     if (rc) return rc;
     e->frame_ms[f] = fs_median(times, r->repeat);
-    rc = item_metrics(r, e, f, cur);
+    rc = r->shard_n ? FS_OK : item_metrics(r, e, f, cur); /* a shard has not every reference: merge measures */
     cmp_resume_stamp(&prov, e, f);
     if (!rc) rc = write_view(r, e->label, r->first_frame + f, cur, &prov);
     return rc;
@@ -259,6 +269,7 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
 {
     int rc = FS_OK;
     for (int f = 0; f < r->nframes && !rc; f++) {
+        if (!cmp_renders(r, cmp_item_id(r, 0, (int)(e - r->entries), f))) continue;
         cmp_view v = {0};
         fs_note("counting %s, frame %d/%d", e->label, f + 1, r->nframes);
         rc = fs_run_count(e->v.m, &r->scene, e->v.params, ctx, &frames_p[f], &grids[f], &r->scene.camera, &v,
@@ -276,14 +287,16 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
 static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
                      const fs_gl_context *ctx)
 {
+    int index = (int)(e - r->entries), opened = !r->merge && renders_any(r, 0, index);
     fs_run *run = NULL;
-    int rc = fs_run_open(&run, e->v.m, &r->scene, e->v.params, e->v.m->needs_gl ? ctx : NULL);
+    int rc = opened ? fs_run_open(&run, e->v.m, &r->scene, e->v.params, e->v.m->needs_gl ? ctx : NULL) : FS_OK;
     if (rc) return rc;
-    snprintf(e->renderer, sizeof e->renderer, "%s", fs_run_renderer(run));
+    if (opened) snprintf(e->renderer, sizeof e->renderer, "%s", fs_run_renderer(run));
     cmp_view cur = {0}, prev = {0};
     double tsum = 0;
     int tn = 0;
     for (int f = 0; f < r->nframes && !rc; f++) {
+        if (!r->merge && !cmp_renders(r, cmp_item_id(r, 0, index, f))) continue;
         rc = run_frame(r, e, run, f, &frames_p[f], &grids[f], &cur);
         if (rc) break;
         item_done(r, e->label, f);
@@ -300,7 +313,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, con
     free_view(&cur);
     e->temporal_deg = tn ? tsum / tn : NAN;
     fs_run_close(run);
-    if (!rc && r->counters) rc = count_entry(r, e, frames_p, grids, ctx);
+    if (!rc && r->counters && opened) rc = count_entry(r, e, frames_p, grids, ctx);
     return rc;
 }
 
@@ -434,15 +447,27 @@ static int plan_references(cmp_run *r, const cmp_options *o)
     return FS_OK;
 }
 
-/* Every frame's particles and neighbour grid, shared by all variants; the first
- * frame settles r and the camera for the whole sequence. */
+/* 1 when this process renders some view of frame f. */
+static int frame_needed(const cmp_run *r, int f)
+{
+    for (int i = -r->nrefs; i < r->nentries; i++) {
+        int is_ref = i < 0, index = is_ref ? i + r->nrefs : i;
+        if ((is_ref || !r->entries[index].imported) && cmp_renders(r, cmp_item_id(r, is_ref, index, f))) return 1;
+    }
+    return 0;
+}
+
+/* The particles and neighbour grid of every frame this process renders, shared
+ * by all variants; the first frame, always loaded, settles r and the camera for
+ * the whole sequence (a merge needs nothing else). */
 static int load_frames(cmp_run *r, float radius, fs_particles *frames_p, fs_grid *grids)
 {
     int rc = FS_OK;
     for (int f = 0; f < r->nframes && !rc; f++) {
+        if (f > 0 && !frame_needed(r, f)) continue;
         rc = fs_scene_load_frame(&r->scene, r->first_frame + f, &frames_p[f]);
         if (!rc && f == 0) fs_scene_adopt_frame(&r->scene, &frames_p[0], radius, r->radius_note, sizeof r->radius_note);
-        if (!rc) rc = fs_grid_build(&grids[f], &frames_p[f], fs_scene_field(&r->scene).H);
+        if (!rc && frame_needed(r, f)) rc = fs_grid_build(&grids[f], &frames_p[f], fs_scene_field(&r->scene).H);
     }
     return rc;
 }
@@ -473,7 +498,9 @@ static int write_refs(const cmp_run *r)
         }
         fs_provenance_set(&prov, "method", r->refs[k].label);
         fs_provenance_set(&prov, "gl_renderer", "CPU");
-        for (int f = 0; f < r->nframes && !rc; f++) rc = write_view(r, r->refs[k].label, r->first_frame + f, &r->refs[k].frames[f], &prov);
+        for (int f = 0; f < r->nframes && !rc; f++)
+            if (cmp_renders(r, cmp_item_id(r, 1, k, f)))
+                rc = write_view(r, r->refs[k].label, r->first_frame + f, &r->refs[k].frames[f], &prov);
     }
     return rc;
 }
@@ -490,16 +517,28 @@ static int measure_import(cmp_run *r, cmp_entry *e)
     return rc;
 }
 
-/* The references, then every variant (and import) against them. */
+/* The work items this process renders (a merge: loads). */
+static long items_here(const cmp_run *r)
+{
+    long n = 0;
+    for (int f = 0; f < r->nframes; f++)
+        for (int i = -r->nrefs; i < r->nentries; i++) {
+            int is_ref = i < 0, index = is_ref ? i + r->nrefs : i;
+            n += (is_ref || !r->entries[index].imported) && (r->merge || cmp_renders(r, cmp_item_id(r, is_ref, index, f)));
+        }
+    return n;
+}
+
+/* The references, then every variant (and import) against them; a shard
+ * renders its own items only and measures nothing (merge does). */
 static int render_all(cmp_run *r, const fs_particles *frames_p, const fs_grid *grids, const fs_gl_context *ctx)
 {
-    int nmethod = 0;
-    for (int i = 0; i < r->nentries; i++) nmethod += !r->entries[i].imported;
-    fs_progress_begin("compare", "work items", (long)(r->nrefs + nmethod) * r->nframes);
+    fs_progress_begin(r->merge ? "merge" : "compare", r->merge ? "work items loaded" : "work items", items_here(r));
     int rc = render_refs(r, frames_p, grids);
-    if (!rc) rc = write_refs(r);
+    if (!rc && !r->merge) rc = write_refs(r);
     for (int i = 0; i < r->nentries && !rc; i++) {
         cmp_entry *e = &r->entries[i];
+        if (e->imported && r->shard_n) continue;
         rc = e->imported ? measure_import(r, e) : run_entry(r, e, frames_p, grids, ctx);
     }
     fs_progress_end();
@@ -554,8 +593,40 @@ static void free_results(cmp_run *r, fs_particles *frames_p, fs_grid *grids)
 static int need_gl(const cmp_run *r)
 {
     for (int i = 0; i < r->nentries; i++)
-        if (r->entries[i].v.m && r->entries[i].v.m->needs_gl) return 1;
+        if (r->entries[i].v.m && r->entries[i].v.m->needs_gl && !r->merge && renders_any(r, 0, i)) return 1;
     return 0;
+}
+
+/* --shard: the split and a fresh start; merge: every item's record. */
+static int plan_shards(cmp_run *r)
+{
+    if (r->merge) return cmp_merge_map(r->merge, r);
+    if (!r->shard_n) return FS_OK;
+    int rc = cmp_shard_plan(r);
+    return rc ? rc : cmp_shard_start(r);
+}
+
+/* The provenance: a shard names itself; a merge names the shards' machines. */
+static int provenance(cmp_run *r, const fs_gl_context *ctx, int have_ctx)
+{
+    fs_provenance_init(&r->prov, &r->scene, have_ctx ? ctx->renderer : NULL, have_ctx ? ctx->version : NULL);
+    if (r->merge) cmp_merge_provenance(r->merge, &r->prov);
+    if (!r->shard_n || r->merge) return FS_OK;
+    char v[32];
+    snprintf(v, sizeof v, "%d/%d", r->shard_k, r->shard_n);
+    fs_provenance_set(&r->prov, "shard", v);
+    return cmp_shard_write(r, 0);
+}
+
+/* What one process prints when it is done. */
+static void done_notes(const cmp_run *r, double t_start)
+{
+    if (r->radius_note[0]) fs_note("%s", r->radius_note);
+    if (r->resume) fs_note("--resume: %d work item(s) loaded from %s/, the rest rendered", r->resumed, r->outdir);
+    if (r->merge) fs_note("merge of %d shards done in %.1f s, outputs in %s/", r->merge->n, since_s(t_start), r->merge->out_arg);
+    else if (r->shard_n) fs_note("shard %d/%d done in %.1f s: %ld work item(s), outputs in %s/", r->shard_k, r->shard_n,
+                                 since_s(t_start), items_here(r), r->outdir);
+    else fs_note("compare done in %.1f s, outputs in %s/", since_s(t_start), r->outdir);
 }
 
 /* The plan: variants, references, frames, a GL context if any variant needs
@@ -565,6 +636,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     int rc = plan_variants(r, o);
     if (!rc) rc = plan_references(r, o);
     if (rc) return rc;
+    if ((rc = plan_shards(r))) return cli_error(rc);
     cli_cache_open(&r->cache, o->cache_dir, !o->no_cache, r->quiet);
     r->cache.counters = r->counters; /* the references' counts come with their views */
     fs_particles *frames_p = calloc(r->nframes, sizeof *frames_p);
@@ -574,25 +646,25 @@ static int compare(cmp_run *r, const cmp_options *o)
     double t_start = fs_now_ms();
     rc = !frames_p || !grids ? fs_fail(FS_ERR_RUNTIME, "out of memory") : load_frames(r, o->radius, frames_p, grids);
     if (!rc && need_gl(r)) { rc = fs_gl_context_create(&ctx, o->ctx_kind, 16, 16); have_ctx = !rc; }
-    if (!rc) fs_provenance_init(&r->prov, &r->scene, have_ctx ? ctx.renderer : NULL, have_ctx ? ctx.version : NULL);
+    if (!rc) rc = provenance(r, &ctx, have_ctx);
     if (!rc) rc = alloc_results(r);
     if (!rc) rc = render_all(r, frames_p, grids, &ctx);
-    if (!rc) rc = write_outputs(r, o);
-    if (!rc && r->radius_note[0]) fs_note("%s", r->radius_note);
-    if (!rc && r->resume) fs_note("--resume: %d work item(s) loaded from %s/, the rest rendered", r->resumed, r->outdir);
-    if (!rc) fs_note("compare done in %.1f s, outputs in %s/", since_s(t_start), r->outdir);
+    if (!rc) rc = r->shard_n && !r->merge ? cmp_shard_write(r, 1) : write_outputs(r, o);
+    if (r->merge) { int prc = cmp_merge_publish(r->merge, !rc); rc = rc ? rc : prc; }
+    if (!rc) done_notes(r, t_start);
     if (rc) cli_error(rc);
     free_results(r, frames_p, grids);
     if (have_ctx) fs_gl_context_destroy(&ctx);
     return rc;
 }
 
-int cmd_compare(int argc, char **argv)
+/* compare's command line; with m, the merge of m's shards into m's staging folder. */
+static int compare_main(int argc, char **argv, cmp_merge *m)
 {
     static cmp_run run;
     cmp_run *r = &run;
     memset(r, 0, sizeof *r);
-    const char *input = NULL, *out = NULL, *methods = NULL, *cache_dir = NULL;
+    const char *input = NULL, *out = NULL, *methods = NULL, *cache_dir = NULL, *shard = NULL;
     const char *refspecs[CMP_MAX_REFS + 1], *imports[CMP_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
     int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, counters = 0, rc;
     float radius = 0, nscale = 0, dscale = 0;
@@ -616,6 +688,9 @@ int cmd_compare(int argc, char **argv)
         CLI_FLAG_OPT("--no-cache", no_cache, "render every reference; read and write no cache"),
         CLI_FLAG_OPT("--resume", r->resume, "load the work items an earlier run of the same command\n"
                      "finished in DIR (their EXRs) instead of rendering them"),
+        CLI_STRING_OPT("--shard", shard, "K/N", "render only shard K's share of the work items (K = 1..N),\n"
+                       "into DIR with a manifest and a DONE marker; 'fluidsurf merge'\n"
+                       "joins the N shards' folders into this command's outputs"),
         CLI_FLAG_OPT("--counters", counters, "also count each variant's and reference's work in a\n"
                      "separate render after the timed ones: counters.csv"),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
@@ -632,10 +707,23 @@ int cmd_compare(int argc, char **argv)
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (no_cache && cache_dir) return cli_usage("compare", "--cache and --no-cache: choose one");
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
-    snprintf(r->outdir, sizeof r->outdir, "%s", out);
+    snprintf(r->outdir, sizeof r->outdir, "%s", m ? m->staging : out);
     quote_command(r->command, sizeof r->command, argc, argv);
     r->counters = counters;
+    r->argc = argc, r->argv = argv, r->merge = m;
+    if (shard && (rc = cmp_shard_parse(shard, &r->shard_k, &r->shard_n))) return cli_error(rc);
     const cmp_options o = {input, methods, refspecs, nrefspecs, imports, nimports, sets, nsets, w, h, radius, nscale,
                            dscale, ctx_kind, cache_dir, no_cache, counters};
-    return compare(r, &o);
+    rc = compare(r, &o);
+    free(r->owner);
+    return rc;
+}
+
+int cmd_compare(int argc, char **argv) { return compare_main(argc, argv, NULL); }
+
+int cmp_compare_merged(int argc, char **argv, cmp_merge *m)
+{
+    int rc = compare_main(argc, argv, m);
+    if (rc) cmp_merge_publish(m, 0); /* whatever stage failed, nothing stays behind */
+    return rc;
 }

@@ -10,6 +10,7 @@
 #include "scene.h"
 #include "sweep.h"
 #include "timing.h"
+#include <stdio.h>
 
 #define CMP_MAX_ENTRIES 64
 #define CMP_MAX_REFS 4
@@ -49,6 +50,8 @@ typedef struct cmp_entry {
     fs_stages *counts;   /* with --counters: nframes, the counting render's stages */
 } cmp_entry;
 
+struct cmp_merge; /* compare_merge.h */
+
 typedef struct cmp_run {
     fs_scene scene;
     char radius_note[1024]; /* fs_scene_adopt_frame's note, printed after success */
@@ -57,6 +60,11 @@ typedef struct cmp_run {
     int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;
     int counters;        /* --counters: a counting render per variant and frame */
     int resume, resumed; /* --resume; the work items it loaded */
+    int shard_k, shard_n; /* --shard K/N; 0/0 renders every work item */
+    int *owner;          /* with --shard: each work item's shard, 1..N (cmp_item_id) */
+    struct cmp_merge *merge; /* fluidsurf merge: every item comes from a shard's folder */
+    int argc;            /* the command line, for a shard's manifest */
+    char **argv;
     cmp_entry entries[CMP_MAX_ENTRIES];
     cmp_ref refs[CMP_MAX_REFS];
     double normal_scale_deg, depth_scale_r; /* heatmap scales, the same for every entry */
@@ -64,6 +72,25 @@ typedef struct cmp_run {
     fs_provenance prov;
     cli_cache cache;     /* for the references */
 } cmp_run;
+
+/* The work items, one view of one frame: reference k's, then entry i's
+ * (imports are no work items), nframes ids each. */
+static inline int cmp_item_id(const cmp_run *r, int is_ref, int index, int f)
+{
+    return ((is_ref ? 0 : r->nrefs) + index) * r->nframes + f;
+}
+static inline int cmp_item_count(const cmp_run *r) { return (r->nrefs + r->nentries) * r->nframes; }
+/* 1 when this process renders item id: not a merge, and no shard or this shard's item. */
+static inline int cmp_renders(const cmp_run *r, int id)
+{
+    return !r->merge && (!r->owner || r->owner[id] == r->shard_k);
+}
+
+/* DIR/name opened through a temporary file; cmp_close checks every write and
+ * the close, then renames it into place (or removes it). */
+typedef struct cmp_file { char final[1400], tmp[1500]; FILE *f; } cmp_file;
+int cmp_open(const cmp_run *r, const char *name, cmp_file *cf);
+int cmp_close(cmp_file *cf);
 
 /* Writers (compare_outputs.c); each writes DIR/NAME atomically. */
 int cmp_write_metrics(const cmp_run *r);
@@ -75,5 +102,8 @@ int cmp_write_report(const cmp_run *r);
 int cmp_write_counters(const cmp_run *r);
 /* DIR/name into buf. */
 void cmp_path(const cmp_run *r, const char *name, char *buf, int size);
+/* dir/LABEL[_fNNNN][SUFFIX].EXT, an item's file (_fNNNN in a sequence); dir NULL: the output folder. */
+void cmp_view_path(const cmp_run *r, const char *dir, const char *label, int frame, const char *suffix,
+                   const char *ext, char *path, int size);
 
 #endif

@@ -14,10 +14,14 @@
 
 void cmp_path(const cmp_run *r, const char *name, char *buf, int size) { snprintf(buf, size, "%s/%s", r->outdir, name); }
 
-/* Opens DIR/name through a temporary file; cmp_close renames it into place. */
-typedef struct cmp_file { char final[1400], tmp[1500]; FILE *f; } cmp_file;
+void cmp_view_path(const cmp_run *r, const char *dir, const char *label, int frame, const char *suffix,
+                   const char *ext, char *path, int size)
+{
+    if (r->sequence) snprintf(path, size, "%s/%s%s_f%04d.%s", dir ? dir : r->outdir, label, suffix, frame, ext);
+    else snprintf(path, size, "%s/%s%s.%s", dir ? dir : r->outdir, label, suffix, ext);
+}
 
-static int cmp_open(const cmp_run *r, const char *name, cmp_file *cf)
+int cmp_open(const cmp_run *r, const char *name, cmp_file *cf)
 {
     cmp_path(r, name, cf->final, sizeof cf->final);
     int rc = fs_output_begin(cf->final, cf->tmp, sizeof cf->tmp);
@@ -29,7 +33,7 @@ static int cmp_open(const cmp_run *r, const char *name, cmp_file *cf)
     return FS_OK;
 }
 
-static int cmp_close(cmp_file *cf)
+int cmp_close(cmp_file *cf)
 {
     int ok = !ferror(cf->f);
     ok &= fclose(cf->f) == 0;

@@ -20,14 +20,14 @@ static void item_key(const fs_provenance *prov, char hex[FS_DIGEST_HEX])
     fs_digest_hex(fs_hash_digest(&h), hex);
 }
 
-/* "name=ms/gpu_ms,...;..." for the runs: stage names are method-defined literals. */
-static int runs_string(const cmp_entry *e, char *buf, int size)
+int cmp_runs_format(const fs_stages *runs, int nruns, char *buf, int size)
 {
     int at = 0;
-    for (int k = 0; k < e->nruns; k++)
-        for (int s = 0; s < e->runs[k].n; s++) {
+    buf[0] = 0;
+    for (int k = 0; k < nruns; k++)
+        for (int s = 0; s < runs[k].n; s++) {
             at += snprintf(buf + at, at < size ? size - at : 0, "%s%s=%.17g/%.17g", s ? "," : k ? ";" : "",
-                           e->runs[k].name[s], e->runs[k].ms[s], e->runs[k].gpu_ms[s]);
+                           runs[k].name[s], runs[k].ms[s], runs[k].gpu_ms[s]);
             if (at >= size) return 0;
         }
     return 1;
@@ -40,7 +40,7 @@ void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f)
     snprintf(ms, sizeof ms, "%.17g", e->frame_ms[f]);
     fs_provenance_set(prov, "item", key);
     fs_provenance_set(prov, "frame_ms", ms);
-    if (f == 0 && runs_string(e, runs, sizeof runs)) fs_provenance_set(prov, "runs", runs);
+    if (f == 0 && cmp_runs_format(e->runs, e->nruns, runs, sizeof runs)) fs_provenance_set(prov, "runs", runs);
 }
 
 /* A stage name as the one static string the tables compare by pointer or text. */
@@ -54,12 +54,11 @@ static const char *intern(const char *name)
     return strcpy(pool[n++], name);
 }
 
-/* Parses runs_string's format back into e->runs; 0 when it does not parse. */
-static int parse_runs(cmp_entry *e, const char *s)
+int cmp_runs_parse(const char *s, fs_stages *runs, int max)
 {
     int nruns = 0;
     fs_stages st = {0};
-    while (*s && nruns < CMP_MAX_RUNS) {
+    while (*s && nruns < max) {
         char name[32];
         double ms, gpu;
         int used;
@@ -69,13 +68,12 @@ static int parse_runs(cmp_entry *e, const char *s)
         s += used;
         if (*s == ',') s++;
         else if (*s == ';' || !*s) {
-            e->runs[nruns++] = st;
+            runs[nruns++] = st;
             memset(&st, 0, sizeof st);
             if (*s) s++;
         } else return 0;
     }
-    e->nruns = nruns;
-    return nruns > 0;
+    return *s ? 0 : nruns;
 }
 
 int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v)
@@ -84,7 +82,9 @@ int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *
     item_key(prov, want);
     if (fs_read_image_attr(exr, "fluidsurf:item", have, sizeof have) != 1 || strcmp(want, have)) return 0;
     if (fs_read_image_attr(exr, "fluidsurf:frame_ms", ms, sizeof ms) != 1) return 0;
-    if (f == 0 && (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 || !parse_runs(e, runs))) return 0;
+    if (f == 0 && (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 ||
+                   (e->nruns = cmp_runs_parse(runs, e->runs, CMP_MAX_RUNS)) <= 0))
+        return 0;
     float r;
     memset(v, 0, sizeof *v);
     if (fs_read_render(exr, &v->g, &v->rgba, &r)) {

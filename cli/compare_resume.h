@@ -16,4 +16,10 @@ void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f);
  * (missing, another run's, unreadable); never an error. */
 int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v);
 
+/* Timed runs as one line, "stage=ms/gpu_ms,...;..." (a ';' between runs): 0 when
+ * it does not fit in size. Parsed back into at most max runs: their count, 0 when
+ * the text does not parse (stage names are interned: at most 64 distinct ones). */
+int cmp_runs_format(const fs_stages *runs, int nruns, char *buf, int size);
+int cmp_runs_parse(const char *text, fs_stages *runs, int max);
+
 #endif

@@ -9,6 +9,7 @@
 static const struct { const char *name; int (*run)(int, char **); const char *what; } commands[] = {
     {"render", cmd_render, "render one view of a scene or particle file with one method"},
     {"compare", cmd_compare, "render several methods on the same scene; metrics, timings, figures"},
+    {"merge", cmd_merge, "join the shard folders of compare --shard K/N into one compare output"},
     {"diff", cmd_diff, "metrics between two EXR outputs, with thresholds for regression checks"},
     {"info", cmd_info, "print a particle file's count, bounds, spacing and density"},
     {"convert", cmd_convert, "convert a particle file to another format"},

@@ -8,7 +8,8 @@ PKGS=(build-essential cmake pkg-config git
       libopenimageio-dev openimageio-tools libvtk9-dev libcjson-dev zlib1g-dev
       libopenexr-dev libstb-dev
       clang libclang-rt-14-dev
-      xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9)
+      xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9
+      slurm-wlm munge)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

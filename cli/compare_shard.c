@@ -1,0 +1,182 @@
+/* compare --shard K/N: the split of the work items and the shard's manifest (compare_shard.h). */
+#include "compare_shard.h"
+#include "compare_resume.h"
+#include "fs_error.h"
+#include "particle_io.h"
+#include "stage_counts.h"
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+int cmp_shard_parse(const char *text, int *k, int *n)
+{
+    const char *slash = strchr(text, '/');
+    int ok = slash && isdigit((unsigned char)text[0]) && isdigit((unsigned char)slash[1]);
+    char *end;
+    long a = ok ? strtol(text, &end, 10) : 0;
+    ok = ok && end == slash;
+    long b = ok ? strtol(slash + 1, &end, 10) : 0;
+    ok = ok && !*end;
+    if (!ok) return fs_fail(FS_ERR_INPUT, "--shard %s: expected K/N, two whole numbers", text);
+    if (b < 1 || b > CMP_MAX_SHARDS) return fs_fail(FS_ERR_INPUT, "--shard %s: N must be 1 to %d", text, CMP_MAX_SHARDS);
+    if (a < 1 || a > b) return fs_fail(FS_ERR_INPUT, "--shard %s: K must be 1 to N = %ld", text, b);
+    *k = (int)a, *n = (int)b;
+    return FS_OK;
+}
+
+double cmp_method_weight(const char *name)
+{
+    /* One view's cost relative to spheres: the frame totals of results/demo/timings.csv
+     * (the dam break at 512x512, llvmpipe on 2 cores), rounded. Only the balance
+     * of the shards depends on them; a method not listed counts as the reference. */
+    static const struct { const char *name; double w; } weights[] = {
+        {"spheres", 1}, {"mesh", 1.5}, {"aniso_ssf", 7}, {"reference", 10}, {"levelset", 11},
+        {"surfels", 19}, {"raycast_pca", 40}, {"volume_raycast", 67},
+    };
+    if (!name) return 0.5;
+    for (size_t i = 0; i < sizeof weights / sizeof *weights; i++)
+        if (!strcmp(weights[i].name, name)) return weights[i].w;
+    return 10;
+}
+
+/* A frame's particle count, estimated by its file's size (the same format and
+ * attributes every frame); 1 for a synthetic scene, a single file or a frame
+ * that is not there (loading it will say so). */
+static double frame_particles(const cmp_run *r, int f)
+{
+    char path[FS_PATH_MAX];
+    struct stat st;
+    if (!r->sequence || r->scene.synth.shape) return 1;
+    if (fs_frame_path(path, sizeof path, r->scene.source, r->first_frame + f) || stat(path, &st)) return 1;
+    return st.st_size > 0 ? (double)st.st_size : 1;
+}
+
+typedef struct { int id; double cost; } item_cost;
+
+static int by_cost(const void *a, const void *b)
+{
+    const item_cost *x = a, *y = b;
+    if (x->cost != y->cost) return x->cost > y->cost ? -1 : 1;
+    return x->id - y->id;
+}
+
+/* The cost of every work item; imports get none (they are no work items). */
+static int item_costs(const cmp_run *r, item_cost *c)
+{
+    double pixels = (double)r->scene.camera.width * r->scene.camera.height;
+    int n = 0;
+    for (int f = 0; f < r->nframes; f++) {
+        double base = pixels * frame_particles(r, f);
+        for (int k = 0; k < r->nrefs; k++)
+            c[n++] = (item_cost){cmp_item_id(r, 1, k, f), base * cmp_method_weight(r->refs[k].analytic ? NULL : "reference")};
+        for (int i = 0; i < r->nentries; i++)
+            if (!r->entries[i].imported)
+                c[n++] = (item_cost){cmp_item_id(r, 0, i, f), base * cmp_method_weight(r->entries[i].name)};
+    }
+    return n;
+}
+
+int cmp_shard_plan(cmp_run *r)
+{
+    int total = cmp_item_count(r);
+    item_cost *c = malloc((size_t)total * sizeof *c);
+    double *load = calloc(r->shard_n, sizeof *load);
+    r->owner = calloc(total, sizeof *r->owner);
+    if (!c || !load || !r->owner) {
+        free(c), free(load);
+        return fs_fail(FS_ERR_RUNTIME, "out of memory");
+    }
+    int n = item_costs(r, c);
+    qsort(c, n, sizeof *c, by_cost);
+    for (int j = 0; j < n; j++) {
+        int best = 0;
+        for (int s = 1; s < r->shard_n; s++)
+            if (load[s] < load[best]) best = s;
+        load[best] += c[j].cost;
+        r->owner[c[j].id] = best + 1;
+    }
+    free(c), free(load);
+    return FS_OK;
+}
+
+/* The header records: format, shard, commit, scene, working folder, command, provenance. */
+static void write_header(const cmp_run *r, FILE *f)
+{
+    char cwd[4096];
+    if (!getcwd(cwd, sizeof cwd)) snprintf(cwd, sizeof cwd, ".");
+    fprintf(f, "fluidsurf-shard\t1\nshard\t%d\t%d\ncommit\t%s\nscene_hash\t%016llx\ncwd\t%s\n", r->shard_k, r->shard_n,
+            fs_commit, r->scene.hash, cwd);
+    for (int i = 0; i < r->argc; i++) fprintf(f, "arg\t%s\n", r->argv[i]);
+    for (int i = 0; i < r->prov.n; i++) fprintf(f, "prov\t%s\t%s\n", r->prov.name[i], r->prov.value[i]);
+}
+
+static const char *or_dash(const char *s) { return s && s[0] ? s : "-"; }
+
+/* The work counts of st as text, "-" without --counters. */
+static const char *counts_text(const cmp_run *r, const fs_stages *st, char *buf, int size)
+{
+    if (!r->counters || fs_stage_counts_format(st, buf, size)) return "-";
+    return buf;
+}
+
+static void write_ref_record(const cmp_run *r, FILE *f, int k, int fr)
+{
+    const cmp_ref *ref = &r->refs[k];
+    static char counts[FS_STAGE_COUNTS_MAX];
+    char stages[640] = "";
+    if (fr == 0) cmp_runs_format(&ref->stages, 1, stages, sizeof stages);
+    fprintf(f, "ref\t%d\t%s\t%d\t%d\t%s\t%s\t%s\n", cmp_item_id(r, 1, k, fr), ref->spec, r->first_frame + fr,
+            ref->made[fr].hit, or_dash(ref->made[fr].entry), or_dash(stages),
+            ref->analytic ? "-" : counts_text(r, &ref->made[fr].counts, counts, sizeof counts));
+}
+
+static void write_entry_record(const cmp_run *r, FILE *f, int i, int fr)
+{
+    const cmp_entry *e = &r->entries[i];
+    static char counts[FS_STAGE_COUNTS_MAX];
+    char runs[640] = "";
+    if (fr == 0) cmp_runs_format(e->runs, e->nruns, runs, sizeof runs);
+    fprintf(f, "entry\t%d\t%s\t%d\t%.17g\t%s\t%s\t%s\n", cmp_item_id(r, 0, i, fr), e->label, r->first_frame + fr,
+            e->frame_ms[fr], or_dash(runs), or_dash(e->renderer),
+            r->counters ? counts_text(r, &e->counts[fr], counts, sizeof counts) : "-");
+}
+
+static int write_manifest(const cmp_run *r, int with_items)
+{
+    cmp_file cf;
+    int rc = cmp_open(r, CMP_SHARD_MANIFEST, &cf);
+    if (rc) return rc;
+    write_header(r, cf.f);
+    for (int fr = 0; with_items && fr < r->nframes; fr++) {
+        for (int k = 0; k < r->nrefs; k++)
+            if (cmp_renders(r, cmp_item_id(r, 1, k, fr))) write_ref_record(r, cf.f, k, fr);
+        for (int i = 0; i < r->nentries; i++)
+            if (!r->entries[i].imported && cmp_renders(r, cmp_item_id(r, 0, i, fr))) write_entry_record(r, cf.f, i, fr);
+    }
+    if (with_items) fputs("end\n", cf.f);
+    return cmp_close(&cf);
+}
+
+int cmp_shard_start(const cmp_run *r)
+{
+    char done[1400];
+    cmp_path(r, CMP_SHARD_DONE, done, sizeof done);
+    if (unlink(done) != 0 && errno != ENOENT) return fs_fail(FS_ERR_INPUT, "%s: cannot remove: %s", done, strerror(errno));
+    for (int i = 0; i < r->argc; i++)
+        if (strpbrk(r->argv[i], "\t\n"))
+            return fs_fail(FS_ERR_INPUT, "--shard: argument %d holds a tab or newline, which the manifest cannot record", i);
+    return FS_OK;
+}
+
+int cmp_shard_write(const cmp_run *r, int finished)
+{
+    int rc = write_manifest(r, finished);
+    if (rc || !finished) return rc;
+    cmp_file cf;
+    if ((rc = cmp_open(r, CMP_SHARD_DONE, &cf))) return rc;
+    fprintf(cf.f, "shard %d/%d finished\n", r->shard_k, r->shard_n);
+    return cmp_close(&cf);
+}
