@@ -45,7 +45,7 @@ static int check_out(const cmp_merge *m)
     return FS_OK; /* made once the staging folder beside it could be */
 }
 
-/* The first shard's command with --shard K/N left out and -o naming DIR. */
+/* The first shard's command with --shard K/N and --resume left out and -o naming DIR. */
 static char **merged_argv(const cmp_merge *m, int *argc)
 {
     const cmp_shard_dir *d = &m->shards[0];
@@ -53,6 +53,7 @@ static char **merged_argv(const cmp_merge *m, int *argc)
     int n = 0;
     for (int i = 0; v && i < d->argc; i++) {
         if (!strcmp(d->argv[i], "--shard") && i + 1 < d->argc) { i++; continue; }
+        if (!strcmp(d->argv[i], "--resume")) continue; /* the merge renders nothing */
         v[n++] = d->argv[i];
         if (!strcmp(d->argv[i], "-o") && i + 1 < d->argc) v[n++] = (char *)m->out_arg, i++;
     }

@@ -98,16 +98,36 @@ static int same(const cmp_shard_dir *a, const cmp_shard_dir *b, const char *what
     return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: %s %s, not %s", b->dir, a->dir, what, vb, va);
 }
 
+/* How many of argv[i..] only steer the run (output, shard, resume, cache, quiet), not
+ * what is computed: shards of one study may differ in them. */
+static int run_control(char **argv, int argc, int i)
+{
+    static const char *with_value[] = {"--shard", "-o", "--cache"}, *flags[] = {"--resume", "--no-cache", "-q"};
+    for (int k = 0; k < 3; k++) {
+        if (!strcmp(argv[i], with_value[k])) return i + 1 < argc ? 2 : 1;
+        if (!strcmp(argv[i], flags[k])) return 1;
+    }
+    return 0;
+}
+
+/* The next argument from *i on that defines the study, or NULL at the end. */
+static const char *next_study_arg(char **argv, int argc, int *i)
+{
+    for (int skip; *i < argc && (skip = run_control(argv, argc, *i)); *i += skip) {}
+    return *i < argc ? argv[(*i)++] : NULL;
+}
+
 static int same_command(const cmp_shard_dir *a, const cmp_shard_dir *b)
 {
-    int eq = a->argc == b->argc;
-    for (int i = 0; eq && i < a->argc; i++) {
-        int shard_or_out = i > 0 && (!strcmp(a->argv[i - 1], "--shard") || !strcmp(a->argv[i - 1], "-o"));
-        eq = shard_or_out || !strcmp(a->argv[i], b->argv[i]);
-    }
-    if (eq) return FS_OK;
-    return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: another compare command (its parameters differ)",
-                   b->dir, a->dir);
+    int i = 0, j = 0;
+    const char *x, *y;
+    do {
+        x = next_study_arg(a->argv, a->argc, &i);
+        y = next_study_arg(b->argv, b->argc, &j);
+    } while (x && y && !strcmp(x, y));
+    if (!x && !y) return FS_OK;
+    return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: another compare command (%s where it has %s)",
+                   b->dir, a->dir, y ? y : "(end)", x ? x : "(end)");
 }
 
 /* Belonging together: one shard count, commit, scene and command. */

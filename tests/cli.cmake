@@ -12,6 +12,10 @@ add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.s
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
   ENVIRONMENT "${FS_TEST_ENV}")
+# compare --shard K/N and merge: shards merged equal one process, bad shard sets refused.
+add_test(NAME cli_shard COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_shard.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_shard)
+set_tests_properties(cli_shard PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 # The reference cache of compare and render: hits, misses, corrupt entries, unusable folders.
 add_test(NAME cli_cache COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_cache.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_cache)
