@@ -50,3 +50,10 @@ if(FS_WITH_OPENVDB)
            ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_interrupt)
   set_tests_properties(cli_interrupt PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()
+# A real one-node Slurm cluster (slurm-wlm, munge): submit.sh's array and merge job,
+# a cancelled and a failed task, --resume. Once per CI, in the normal build.
+if(NOT FS_SANITIZE AND FS_WITH_OSMESA)
+  add_test(NAME slurm_cluster COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/slurm_cluster.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/slurm_cluster)
+  set_tests_properties(slurm_cluster PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 180)
+endif()
