@@ -11,7 +11,8 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 declare -A want=(
   [render]="--method -o --set -W --width -H --height --radius --format --frame --gl --timings --counters --export --appearance --cache -q"
-  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --counters -W --width -H --height --radius --gl -q"
+  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --shard --counters -W --width -H --height --radius --gl -q"
+  [merge]="-o -q"
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius"
   [info]="--radius --volume-scale --format"
   [convert]="-o --from --to"
@@ -30,7 +31,7 @@ one_line_exit2() {
 }
 
 # FS_NO_VIEW=1: a build without GLFW, whose view only refuses (tests/cli_lean.sh checks that).
-cmds="render compare diff info convert methods simulate"
+cmds="render compare merge diff info convert methods simulate"
 [ "${FS_NO_VIEW:-0}" = 1 ] || cmds="$cmds view"
 for cmd in $cmds; do
   bad=$fails
