@@ -9,7 +9,8 @@ PKGS=(build-essential cmake pkg-config git
       libopenexr-dev libstb-dev
       clang libclang-rt-14-dev
       xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9
-      slurm-wlm munge)
+      slurm-wlm munge
+      python3-numpy python3-cffi python3-pytest python3-matplotlib)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

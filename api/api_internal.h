@@ -1,0 +1,35 @@
+/* The library's objects behind include/fluidsurf/fluidsurf.h (docs/DESIGN.md,
+ * "The library"): thin wrappers of the run layer's types. */
+#ifndef FS_API_INTERNAL_H
+#define FS_API_INTERNAL_H
+#include "fluidsurf/fluidsurf.h"
+#include "particles.h"
+#include "provenance.h"
+#include "run.h"
+#include "scene.h"
+#include "timing.h"
+
+struct fluidsurf_particles {
+    fs_particles p;
+    int owned; /* 1: read from a file, the arrays are ours */
+};
+
+struct fluidsurf_scene {
+    fs_scene s;
+    int radius_set; /* set by the caller: wins over the file's and the estimate */
+};
+
+struct fluidsurf_image {
+    fs_run_image im;
+    float radius;
+    fs_stages st;
+    char renderer[FS_MAX_STAGES][256];
+    fs_provenance prov;
+};
+
+/* Once per process: the built-in methods registered, notes and progress silenced. */
+void fs_api_init(void);
+/* code with the message of fs_fail kept (the library never prints). */
+int fs_api_check(const void *ptr, const char *what);
+
+#endif

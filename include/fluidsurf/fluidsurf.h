@@ -1,0 +1,189 @@
+/* fluidsurf: the public C API (docs/DESIGN.md, "The library").
+ *
+ * Render the surface of a particle fluid with any of fluidsurf's methods into a
+ * G-buffer you can read, run the exact reference and compute the metrics
+ * between two G-buffers, from your own arrays or from particle files.
+ *
+ *   fluidsurf_particles *p;  fluidsurf_scene *s;  fluidsurf_image *im;
+ *   fluidsurf_particles_wrap(n, x, y, z, &p);     // your arrays, not copied
+ *   fluidsurf_scene_new(&s);
+ *   fluidsurf_scene_set_radius(s, 0.025);
+ *   if (fluidsurf_render(s, p, "raycast_pca", NULL, 0, &im))
+ *       fprintf(stderr, "%s\n", fluidsurf_last_error());
+ *   const float *depth = fluidsurf_image_layer(im, "depth", NULL);
+ *
+ * Conventions: scene units; images are row-major, rows top to bottom, with
+ * interleaved components; depth is the positive eye-space distance along the
+ * view axis (INFINITY where empty), normals unit view-space vectors facing the
+ * camera. Every function that can fail returns FLUIDSURF_OK (0) or an error
+ * code, with one line for fluidsurf_last_error() (per thread). Nothing here
+ * prints or calls exit(). Renders may be called from any thread; they run one
+ * at a time (each uses every core), and GL methods share one OpenGL context.
+ *
+ * Versioning: FLUIDSURF_API_VERSION grows with every change; a program built
+ * against version V runs with any library whose fluidsurf_api_version() >= V
+ * and whose soname (libfluidsurf.so.0) is the same. */
+#ifndef FLUIDSURF_H
+#define FLUIDSURF_H
+#include <stddef.h>
+#ifdef __cplusplus
+extern "C" {
+#endif
+#pragma GCC visibility push(default)
+
+/* The text between the cffi markers is also the Python module's declaration
+ * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
+/* cffi:begin */
+enum { FLUIDSURF_API_VERSION = 1 };
+enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
+
+int fluidsurf_api_version(void);
+/* "0.1.0 (commit abc1234)" */
+const char *fluidsurf_version(void);
+/* The message of this thread's last failure, one line. */
+const char *fluidsurf_last_error(void);
+
+/* ---- particles ---------------------------------------------------------- */
+typedef struct fluidsurf_particles fluidsurf_particles;
+
+/* n particles at (x[i], y[i], z[i]): the arrays are the caller's, used in
+ * place (not copied), and must stay valid and unchanged while p is used. */
+int fluidsurf_particles_wrap(size_t n, const float *x, const float *y, const float *z, fluidsurf_particles **out);
+/* Linear RGB colours, 3 floats per particle, used in place as above (NULL: none). */
+int fluidsurf_particles_set_color(fluidsurf_particles *p, const float *rgb);
+/* Reads a particle file (PLY, BGEO, VTK, VTU, VDB, raw, CSV; format from the
+ * extension, or format = "ply", ...). The library owns its arrays. */
+int fluidsurf_particles_read(const char *path, const char *format, fluidsurf_particles **out);
+size_t fluidsurf_particles_count(const fluidsurf_particles *p);
+/* The radius stored in the file, 0 when it has none (or for wrapped arrays). */
+double fluidsurf_particles_radius(const fluidsurf_particles *p);
+/* A column: "x", "y", "z", "vx", "vy", "vz" (1 float each), "color" (3 floats
+ * each), "phase" (1 int32 each); NULL when absent. ncomp may be NULL. */
+const void *fluidsurf_particles_column(const fluidsurf_particles *p, const char *name, int *ncomp);
+void fluidsurf_particles_free(fluidsurf_particles *p);
+
+/* ---- scene: field, camera, appearance, method settings ----------------- */
+typedef struct fluidsurf_scene fluidsurf_scene;
+
+typedef struct fluidsurf_field {
+    double radius;       /* particle radius r */
+    double volume_scale; /* particle volume V = volume_scale (2r)^3 */
+    double support;      /* kernel support H, in multiples of r */
+    double iso;          /* iso value of the density field */
+    char kernel[16];     /* "cubic", "poly6", "spiky", "wyvill" */
+} fluidsurf_field;
+
+typedef struct fluidsurf_camera {
+    double eye[3], target[3], up[3];
+    double fov_deg;      /* vertical field of view */
+    int width, height;   /* pixels */
+} fluidsurf_camera;
+
+/* The defaults of a scene built from a bare particle file (README.md, "Scenes");
+ * its camera frames the particles at each render, as the command line does. */
+int fluidsurf_scene_new(fluidsurf_scene **out);
+/* A scene file (JSON), with its particle source, field, camera and settings. */
+int fluidsurf_scene_load(const char *path, fluidsurf_scene **out);
+int fluidsurf_scene_copy(const fluidsurf_scene *s, fluidsurf_scene **out);
+void fluidsurf_scene_free(fluidsurf_scene *s);
+int fluidsurf_scene_get_field(const fluidsurf_scene *s, fluidsurf_field *f);
+int fluidsurf_scene_set_field(fluidsurf_scene *s, const fluidsurf_field *f);
+int fluidsurf_scene_set_radius(fluidsurf_scene *s, double radius);
+/* The scene's camera; *placed is 0 while it is framed on the particles at render time. */
+int fluidsurf_scene_get_camera(const fluidsurf_scene *s, fluidsurf_camera *c, int *placed);
+/* Places the camera (no framing any more). */
+int fluidsurf_scene_set_camera(fluidsurf_scene *s, const fluidsurf_camera *c);
+/* The image size; the camera stays framed or placed. */
+int fluidsurf_scene_set_size(fluidsurf_scene *s, int width, int height);
+/* A method parameter, "method.param=value", as --set on the command line. */
+int fluidsurf_scene_set(fluidsurf_scene *s, const char *setting);
+/* A scene with a particle source: its frames are first..last (0..0 for one file). */
+int fluidsurf_scene_frames(const fluidsurf_scene *s, int *first, int *last);
+int fluidsurf_scene_read_frame(const fluidsurf_scene *s, int frame, fluidsurf_particles **out);
+
+/* ---- methods ------------------------------------------------------------ */
+typedef struct fluidsurf_param {
+    const char *name;
+    const char *type;    /* "float", "int", "bool", "enum" */
+    double default_value, min, max;
+    const char *choices; /* enum: "a|b|c" (the value is the index), else "" */
+    const char *help;    /* one line, with units */
+} fluidsurf_param;
+
+int fluidsurf_method_count(void);
+/* The i-th method's name, NULL past the end. "reference" is the exact CPU ray caster. */
+const char *fluidsurf_method_name(int i);
+const char *fluidsurf_method_description(const char *method);
+const char *fluidsurf_method_paper(const char *method);
+/* 1 when the method renders through OpenGL, 0 when on the CPU, -1 when unknown. */
+int fluidsurf_method_needs_gl(const char *method);
+/* Its parameters' count (-1: unknown method) and the j-th one. */
+int fluidsurf_param_count(const char *method);
+int fluidsurf_param_info(const char *method, int j, fluidsurf_param *out);
+
+/* ---- rendering ---------------------------------------------------------- */
+typedef struct fluidsurf_image fluidsurf_image;
+
+/* Renders method on particles p into a new image: the G-buffer and the shared
+ * shading. params: nparams "param=value" settings of this method, applied
+ * after the scene's. A scene without a placed camera frames p (and, without
+ * a radius, takes the file's or estimates r from the spacing, as the command
+ * line does). */
+int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *p, const char *method,
+                     const char *const *params, int nparams, fluidsurf_image **out);
+/* The exact reference: fluidsurf_render with method "reference". */
+int fluidsurf_reference(const fluidsurf_scene *s, const fluidsurf_particles *p, fluidsurf_image **out);
+/* A G-buffer EXR written by fluidsurf (render -o OUT.exr, compare). */
+int fluidsurf_image_read(const char *path, fluidsurf_image **out);
+/* An image of your own arrays (copied), w x h pixels: depth (1 per pixel,
+ * INFINITY where empty), normal (3), coverage (1, 0 or 1); thickness (1) and
+ * rgba (4, linear) may be NULL. radius: its r (0: none). For metrics against
+ * your own renderer. */
+int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *normal, const float *thickness,
+                                const float *coverage, const float *rgba, double radius, fluidsurf_image **out);
+void fluidsurf_image_free(fluidsurf_image *im);
+int fluidsurf_image_width(const fluidsurf_image *im);
+int fluidsurf_image_height(const fluidsurf_image *im);
+/* The radius r the image was rendered with. */
+double fluidsurf_image_radius(const fluidsurf_image *im);
+/* A layer: "depth" (1), "normal" (3), "thickness" (1), "coverage" (1), "rgba"
+ * (4, the linear shaded image) or an AOV by name; NULL when absent. */
+const float *fluidsurf_image_layer(const fluidsurf_image *im, const char *name, int *ncomp);
+int fluidsurf_image_aov_count(const fluidsurf_image *im);
+const char *fluidsurf_image_aov_name(const fluidsurf_image *im, int i);
+/* The render's stages ("grid", "upload", "march", "shade", ...), their wall
+ * times in ms, and the renderer each ran on ("CPU" or GL_RENDERER). */
+int fluidsurf_image_stage_count(const fluidsurf_image *im);
+const char *fluidsurf_image_stage_name(const fluidsurf_image *im, int i);
+double fluidsurf_image_stage_ms(const fluidsurf_image *im, int i);
+const char *fluidsurf_image_stage_renderer(const fluidsurf_image *im, int i);
+/* Provenance, "fluidsurf:NAME" entries as in the EXRs (version, commit, method, params, ...). */
+int fluidsurf_image_provenance_count(const fluidsurf_image *im);
+const char *fluidsurf_image_provenance_name(const fluidsurf_image *im, int i);
+const char *fluidsurf_image_provenance_value(const fluidsurf_image *im, int i);
+
+/* ---- metrics ------------------------------------------------------------ */
+typedef struct fluidsurf_metrics {
+    double mask_iou;                 /* coverage IoU (1 when both are empty) */
+    double depth_bias_r;             /* mean depth difference where both cover, in r */
+    double depth_rmse_r;             /* RMS of the difference around the bias, in r */
+    double depth_p95_r;
+    double normal_mean_deg;          /* mean normal angle where both cover */
+    double normal_p95_deg;
+    double interior_normal_mean_deg; /* >= 3 px from either silhouette */
+    double psnr_db;                  /* shaded luminance; INFINITY when equal */
+    double ssim;
+    size_t n_both, n_union, n_interior;
+} fluidsurf_metrics;
+
+/* A method's image against a reference's (the same size); radius: r for the
+ * depth errors (<= 0: the reference image's). NAN where no pixel counts. */
+int fluidsurf_metrics_compute(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
+                              fluidsurf_metrics *out);
+/* cffi:end */
+
+#pragma GCC visibility pop
+#ifdef __cplusplus
+}
+#endif
+#endif

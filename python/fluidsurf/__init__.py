@@ -1,0 +1,291 @@
+"""fluidsurf: surfaces of particle fluids rendered by published methods, with an
+exact reference and metrics, from NumPy arrays (docs/DESIGN.md, "The library").
+
+    import fluidsurf
+    out = fluidsurf.render(positions, 0.025, method="raycast_pca", width=256, height=256)
+    out["depth"], out["normal"], out["rgb"], out["timings"]
+
+A thin layer over libfluidsurf.so (include/fluidsurf/fluidsurf.h) through cffi's
+ABI mode: the C declarations are read from the header installed beside this
+file, and every call into the library releases the GIL. Set FLUIDSURF_LIBRARY to
+load another build of the library."""
+import os
+
+import numpy as np
+from cffi import FFI
+
+from . import _arrays, _paths
+
+__all__ = ["Error", "read_particles", "read_gbuffer", "render", "compare", "metrics", "methods", "version"]
+
+_here = os.path.dirname(os.path.abspath(__file__))
+
+
+def _declarations():
+    with open(os.path.join(_here, "fluidsurf.h"), encoding="utf-8") as f:
+        text = f.read()
+    begin, end = "/* cffi:begin */", "/* cffi:end */"
+    return text[text.index(begin) + len(begin):text.index(end)]
+
+
+ffi = FFI()
+ffi.cdef(_declarations())
+lib = ffi.dlopen(os.environ.get("FLUIDSURF_LIBRARY") or
+                 os.path.normpath(os.path.join(_here, _paths.LIB_FROM_PACKAGE, _paths.SONAME)))
+if lib.fluidsurf_api_version() < lib.FLUIDSURF_API_VERSION:
+    raise ImportError(f"libfluidsurf's API version {lib.fluidsurf_api_version()} is older than this module's")
+
+
+class Error(RuntimeError):
+    """A failure inside fluidsurf that is not the caller's input (OpenGL, memory)."""
+
+
+def _check(rc):
+    if rc != lib.FLUIDSURF_OK:
+        msg = ffi.string(lib.fluidsurf_last_error()).decode("utf-8", "replace")
+        raise (ValueError if rc == lib.FLUIDSURF_ERR_INPUT else Error)(msg)
+
+
+def _text(ptr):
+    return ffi.string(ptr).decode("utf-8", "replace") if ptr != ffi.NULL else None
+
+
+def version():
+    """'0.1.0 (commit ...)' of the loaded library."""
+    return _text(lib.fluidsurf_version())
+
+
+# ---- particles --------------------------------------------------------------
+
+class _Particles:
+    """A libfluidsurf particle set over NumPy columns; keeps them alive."""
+
+    def __init__(self, positions, colors=None):
+        x, y, z, self.copied = _arrays.positions_columns(positions)
+        self._keep = [x, y, z]
+        out = ffi.new("fluidsurf_particles **")
+        _check(lib.fluidsurf_particles_wrap(len(x), *(ffi.from_buffer("float[]", c) for c in (x, y, z)), out))
+        self.handle = ffi.gc(out[0], lib.fluidsurf_particles_free)
+        if colors is not None:
+            c = _arrays.colors_array(colors, len(x))
+            self._keep.append(c)
+            _check(lib.fluidsurf_particles_set_color(self.handle, ffi.from_buffer("float[]", c)))
+
+    def column(self, name):
+        """The address libfluidsurf reads column name from (zero-copy checks)."""
+        return int(ffi.cast("uintptr_t", lib.fluidsurf_particles_column(self.handle, name.encode(), ffi.NULL)))
+
+
+def read_particles(path, format=None):
+    """A particle file as a dict: 'positions' (N x 3 float32) and the attributes
+    it holds: 'velocity' (N x 3), 'color' (N x 3 linear RGB), 'phase' (N int32),
+    'radius' (when the file stores one)."""
+    out = ffi.new("fluidsurf_particles **")
+    _check(lib.fluidsurf_particles_read(os.fsencode(path), format.encode() if format else ffi.NULL, out))
+    p = ffi.gc(out[0], lib.fluidsurf_particles_free)
+    n = lib.fluidsurf_particles_count(p)
+
+    def column(name, dtype, ncomp):
+        ptr = lib.fluidsurf_particles_column(p, name.encode(), ffi.NULL)
+        if ptr == ffi.NULL:
+            return None
+        a = np.frombuffer(ffi.buffer(ptr, n * ncomp * 4), dtype=dtype).copy()
+        return a.reshape((n, ncomp)) if ncomp > 1 else a
+
+    result = {"positions": np.stack([column(c, np.float32, 1) for c in "xyz"], axis=1)}
+    if column("vx", np.float32, 1) is not None:
+        result["velocity"] = np.stack([column(c, np.float32, 1) for c in ("vx", "vy", "vz")], axis=1)
+    for name, dtype, ncomp in (("color", np.float32, 3), ("phase", np.int32, 1)):
+        a = column(name, dtype, ncomp)
+        if a is not None:
+            result[name] = a
+    if lib.fluidsurf_particles_radius(p) > 0:
+        result["radius"] = float(lib.fluidsurf_particles_radius(p))
+    return result
+
+
+# ---- scenes -----------------------------------------------------------------
+
+def _scene(scene, radius, width, height, camera):
+    out = ffi.new("fluidsurf_scene **")
+    if scene is None:
+        _check(lib.fluidsurf_scene_new(out))
+    else:
+        _check(lib.fluidsurf_scene_load(os.fsencode(scene), out))
+    s = ffi.gc(out[0], lib.fluidsurf_scene_free)
+    if radius is not None:
+        _check(lib.fluidsurf_scene_set_radius(s, _arrays.positive(radius, "radius")))
+    _check(lib.fluidsurf_scene_set_size(s, _arrays.size(width, "width"), _arrays.size(height, "height")))
+    if camera is not None:
+        _check(lib.fluidsurf_scene_set_camera(s, _camera(camera, width, height)))
+    return s
+
+
+def _camera(camera, width, height):
+    if not isinstance(camera, dict) or "eye" not in camera or "target" not in camera:
+        raise ValueError("camera: expected a dict with 'eye' and 'target' (and optionally 'up', 'fov')")
+    unknown = set(camera) - {"eye", "target", "up", "fov"}
+    if unknown:
+        raise ValueError(f"camera: unknown keys {sorted(unknown)}")
+    c = ffi.new("fluidsurf_camera *")
+    c.eye = _arrays.vector3(camera["eye"], "camera['eye']")
+    c.target = _arrays.vector3(camera["target"], "camera['target']")
+    c.up = _arrays.vector3(camera.get("up", (0, 1, 0)), "camera['up']")
+    c.fov_deg = _arrays.positive(camera.get("fov", 40), "camera['fov']")
+    c.width, c.height = width, height
+    return c
+
+
+def _settings(params, name="params"):
+    if params is None:
+        return []
+    if not isinstance(params, dict):
+        raise ValueError(f"{name}: expected a dict of parameter values, got {type(params).__name__}")
+    text = []
+    for k, v in params.items():
+        if isinstance(v, bool):
+            v = "on" if v else "off"
+        text.append(ffi.new("char[]", f"{k}={v}".encode()))
+    return text
+
+
+# ---- images -----------------------------------------------------------------
+
+def _image_dict(im):
+    """A libfluidsurf image as arrays: the G-buffer, rgb, AOVs, timings, provenance."""
+    w, h = lib.fluidsurf_image_width(im), lib.fluidsurf_image_height(im)
+    ncomp = ffi.new("int *")
+
+    def layer(name):
+        ptr = lib.fluidsurf_image_layer(im, name.encode(), ncomp)
+        return None if ptr == ffi.NULL else _arrays.layer(ffi, ptr, w, h, ncomp[0])
+
+    d = {name: layer(name) for name in ("depth", "normal", "thickness", "coverage")}
+    rgba = layer("rgba")
+    if rgba is not None:
+        d["rgb"], d["alpha"] = rgba[..., :3].copy(), rgba[..., 3].copy()
+    for i in range(lib.fluidsurf_image_aov_count(im)):
+        name = _text(lib.fluidsurf_image_aov_name(im, i))
+        d[name] = layer(name)
+    d["timings"] = [{"stage": _text(lib.fluidsurf_image_stage_name(im, i)),
+                     "ms": lib.fluidsurf_image_stage_ms(im, i),
+                     "renderer": _text(lib.fluidsurf_image_stage_renderer(im, i))}
+                    for i in range(lib.fluidsurf_image_stage_count(im))]
+    d["provenance"] = {_text(lib.fluidsurf_image_provenance_name(im, i)): _text(lib.fluidsurf_image_provenance_value(im, i))
+                       for i in range(lib.fluidsurf_image_provenance_count(im))}
+    d["radius"] = lib.fluidsurf_image_radius(im)
+    return d
+
+
+def _render_handle(scene, particles, method, params):
+    if not isinstance(method, str):
+        raise ValueError(f"method: expected a method name, got {method!r}")
+    settings = _settings(params)
+    out = ffi.new("fluidsurf_image **")
+    arr = ffi.new("char *[]", settings) if settings else ffi.NULL
+    _check(lib.fluidsurf_render(scene, particles.handle, method.encode(), arr, len(settings), out))
+    return ffi.gc(out[0], lib.fluidsurf_image_free)
+
+
+def render(positions, radius=None, method="raycast_pca", width=512, height=512, camera=None, params=None,
+           scene=None, colors=None):
+    """Renders positions (N x 3, float32 or float64, any order) with one method.
+
+    radius: r (None: the r the spacing implies, as the command line estimates);
+    camera: {'eye', 'target', 'up', 'fov'} (None: frames the particles as the
+    command line does); params: {parameter: value} of the method; scene: a
+    scene file whose field, light and settings to use; colors: N x 3 linear RGB.
+    Returns a dict of H x W float32 arrays 'depth' (inf where empty), 'normal'
+    (view space), 'thickness', 'coverage', 'rgb' (linear, the shared shading),
+    'alpha', the method's AOVs by name, and 'timings', 'provenance', 'radius'."""
+    p = _Particles(positions, colors)
+    s = _scene(scene, radius, width, height, camera)
+    return _image_dict(_render_handle(s, p, method, params))
+
+
+def read_gbuffer(path):
+    """A G-buffer EXR that fluidsurf wrote (render -o OUT.exr, compare), as render's dict."""
+    out = ffi.new("fluidsurf_image **")
+    _check(lib.fluidsurf_image_read(os.fsencode(path), out))
+    return _image_dict(ffi.gc(out[0], lib.fluidsurf_image_free))
+
+
+def _metrics_dict(m):
+    names = ("mask_iou", "depth_bias_r", "depth_rmse_r", "depth_p95_r", "normal_mean_deg", "normal_p95_deg",
+             "interior_normal_mean_deg", "psnr_db", "ssim", "n_both", "n_union", "n_interior")
+    return {k: getattr(m, k) for k in names}
+
+
+def _image_from_dict(d, name):
+    if not isinstance(d, dict) or "depth" not in d:
+        raise ValueError(f"{name}: expected a dict as render() returns")
+    depth = np.ascontiguousarray(d["depth"], dtype=np.float32)
+    if depth.ndim != 2:
+        raise ValueError(f"{name}['depth']: expected an H x W array, got shape {depth.shape}")
+    h, w = depth.shape
+    normal = _arrays.image_array(d.get("normal"), (h, w, 3), f"{name}['normal']")
+    coverage = _arrays.image_array(d.get("coverage"), (h, w), f"{name}['coverage']")
+    thickness = _arrays.image_array(d.get("thickness"), (h, w), f"{name}['thickness']", required=False)
+    rgba = None
+    if d.get("rgb") is not None:
+        rgb = _arrays.image_array(d["rgb"], (h, w, 3), f"{name}['rgb']")
+        alpha = _arrays.image_array(d.get("alpha", np.ones((h, w))), (h, w), f"{name}['alpha']")
+        rgba = np.ascontiguousarray(np.dstack([rgb, alpha]), dtype=np.float32)
+    keep = [depth, normal, coverage, thickness, rgba]
+    ptr = [ffi.from_buffer("float[]", a) if a is not None else ffi.NULL for a in keep]
+    out = ffi.new("fluidsurf_image **")
+    _check(lib.fluidsurf_image_from_arrays(w, h, ptr[0], ptr[1], ptr[3], ptr[2], ptr[4], float(d.get("radius") or 0), out))
+    return ffi.gc(out[0], lib.fluidsurf_image_free)
+
+
+def metrics(image, reference, radius=None):
+    """The metrics of image against reference (dicts as render() returns, the
+    same size): IoU, depth bias/RMSE/p95 in r, normal error in degrees, PSNR, SSIM."""
+    a, b = _image_from_dict(image, "image"), _image_from_dict(reference, "reference")
+    m = ffi.new("fluidsurf_metrics *")
+    _check(lib.fluidsurf_metrics_compute(a, b, 0 if radius is None else _arrays.positive(radius, "radius"), m))
+    return _metrics_dict(m)
+
+
+def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=512, camera=None, params=None,
+            reference="reference", scene=None, colors=None):
+    """Each method against the reference on one particle set: a list of dicts
+    (method, the metrics, total_ms), or a pandas DataFrame when pandas is there.
+    params: {method: {parameter: value}}."""
+    if isinstance(methods, str) or not all(isinstance(m, str) for m in methods):
+        raise ValueError(f"methods: expected a list of method names, got {methods!r}")
+    if params is not None and not isinstance(params, dict):
+        raise ValueError("params: expected {method: {parameter: value}}")
+    p = _Particles(positions, colors)
+    s = _scene(scene, radius, width, height, camera)
+    ref = _render_handle(s, p, reference, None)
+    rows = []
+    for name in methods:
+        im = _render_handle(s, p, name, (params or {}).get(name))
+        m = ffi.new("fluidsurf_metrics *")
+        _check(lib.fluidsurf_metrics_compute(im, ref, 0, m))
+        total = sum(lib.fluidsurf_image_stage_ms(im, i) for i in range(lib.fluidsurf_image_stage_count(im)))
+        rows.append({"method": name, **_metrics_dict(m), "total_ms": total})
+    try:
+        import pandas
+    except ImportError:
+        return rows
+    return pandas.DataFrame(rows)
+
+
+def methods():
+    """Every method: name, description, paper, needs_gl and its parameters."""
+    info = ffi.new("fluidsurf_param *")
+    result = []
+    for i in range(lib.fluidsurf_method_count()):
+        name = lib.fluidsurf_method_name(i)
+        params = []
+        for j in range(lib.fluidsurf_param_count(name)):
+            _check(lib.fluidsurf_param_info(name, j, info))
+            params.append({"name": _text(info.name), "type": _text(info.type), "default": info.default_value,
+                           "min": info.min, "max": info.max, "choices": _text(info.choices),
+                           "help": _text(info.help)})
+        result.append({"name": _text(name), "description": _text(lib.fluidsurf_method_description(name)),
+                       "paper": _text(lib.fluidsurf_method_paper(name)),
+                       "needs_gl": bool(lib.fluidsurf_method_needs_gl(name)), "params": params})
+    return result

@@ -1,0 +1,18 @@
+# The library as users get it: installed into a prefix of its own (fixture
+# fs_installed), then the C example built against it (tests/c_example.sh) and
+# the Python module's pytest suite run on it (tests/python/). Not in the
+# sanitizer builds: the module is loaded into an uninstrumented interpreter.
+if(TARGET fluidsurf_lib AND FS_PYTHON3 AND NOT FS_SANITIZE AND FS_WITH_OSMESA)
+  set(_prefix ${CMAKE_BINARY_DIR}/test-out/prefix)
+  add_test(NAME install_prefix COMMAND ${CMAKE_COMMAND} -E env bash -c
+           "rm -rf '${_prefix}' && '${CMAKE_COMMAND}' --install '${CMAKE_BINARY_DIR}' --prefix '${_prefix}' > /dev/null")
+  set_tests_properties(install_prefix PROPERTIES FIXTURES_SETUP fs_installed)
+  add_test(NAME c_example COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/c_example.sh ${CMAKE_SOURCE_DIR} ${_prefix}
+           ${CMAKE_BINARY_DIR}/test-out/c_example
+           ${CMAKE_SOURCE_DIR}/experiments/data/splashsurf/dam_break_frame_23_24389_particles.ply)
+  add_test(NAME python_api COMMAND ${FS_PYTHON3} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_SOURCE_DIR}/python)
+  set_tests_properties(c_example python_api PROPERTIES FIXTURES_REQUIRED fs_installed TIMEOUT 300)
+  set_tests_properties(c_example PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+  set_tests_properties(python_api PROPERTIES ENVIRONMENT
+    "${FS_TEST_ENV};PYTHONPATH=${_prefix}/${FS_PYTHON_SITE};PYTHONDONTWRITEBYTECODE=1;FS_SRC=${CMAKE_SOURCE_DIR};FS_BIN=${_prefix}/bin/fluidsurf")
+endif()
