@@ -65,6 +65,17 @@ int fluidsurf_image_width(const fluidsurf_image *im) { return im ? im->im.g.w : 
 int fluidsurf_image_height(const fluidsurf_image *im) { return im ? im->im.g.h : 0; }
 double fluidsurf_image_radius(const fluidsurf_image *im) { return im ? im->radius : 0; }
 
+int fluidsurf_image_camera(const fluidsurf_image *im, fluidsurf_camera *c)
+{
+    int rc;
+    if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(c, "camera"))) return rc;
+    if (!im->has_camera) return fs_fail(FS_ERR_INPUT, "image: not rendered by this library, so it has no camera");
+    const fs_camera *k = &im->camera;
+    for (int i = 0; i < 3; i++) c->eye[i] = k->eye[i], c->target[i] = k->target[i], c->up[i] = k->up[i];
+    c->fov_deg = k->fovy_deg, c->width = k->width, c->height = k->height;
+    return FLUIDSURF_OK;
+}
+
 const float *fluidsurf_image_layer(const fluidsurf_image *im, const char *name, int *ncomp)
 {
     if (ncomp) *ncomp = 0;

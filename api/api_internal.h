@@ -22,6 +22,8 @@ struct fluidsurf_scene {
 struct fluidsurf_image {
     fs_run_image im;
     float radius;
+    int has_camera; /* rendered here: camera is the one it was rendered with */
+    fs_camera camera;
     fs_stages st;
     char renderer[FS_MAX_STAGES][256];
     fs_provenance prov;

@@ -108,7 +108,7 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, co
         if (!rc) rc = run_method(m, sc, values, &p, im);
         pthread_mutex_unlock(&render_lock);
     }
-    if (!rc) im->radius = sc->radius;
+    if (!rc) im->radius = sc->radius, im->camera = sc->camera, im->has_camera = 1;
     free(sc);
     if (rc) {
         fluidsurf_image_free(im);

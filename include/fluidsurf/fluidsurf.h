@@ -146,6 +146,10 @@ int fluidsurf_image_width(const fluidsurf_image *im);
 int fluidsurf_image_height(const fluidsurf_image *im);
 /* The radius r the image was rendered with. */
 double fluidsurf_image_radius(const fluidsurf_image *im);
+/* The camera it was rendered with (the framing chosen, when the scene had
+ * none): pass it to fluidsurf_scene_set_camera to keep a sequence's view.
+ * FLUIDSURF_ERR_INPUT for an image that was read or made from arrays. */
+int fluidsurf_image_camera(const fluidsurf_image *im, fluidsurf_camera *c);
 /* A layer: "depth" (1), "normal" (3), "thickness" (1), "coverage" (1), "rgba"
  * (4, the linear shaded image) or an AOV by name; NULL when absent. */
 const float *fluidsurf_image_layer(const fluidsurf_image *im, const char *name, int *ncomp);

@@ -174,6 +174,9 @@ def _image_dict(im):
     d["provenance"] = {_text(lib.fluidsurf_image_provenance_name(im, i)): _text(lib.fluidsurf_image_provenance_value(im, i))
                        for i in range(lib.fluidsurf_image_provenance_count(im))}
     d["radius"] = lib.fluidsurf_image_radius(im)
+    cam = ffi.new("fluidsurf_camera *")
+    if lib.fluidsurf_image_camera(im, cam) == lib.FLUIDSURF_OK:
+        d["camera"] = {"eye": list(cam.eye), "target": list(cam.target), "up": list(cam.up), "fov": cam.fov_deg}
     return d
 
 
@@ -197,7 +200,8 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
     scene file whose field, light and settings to use; colors: N x 3 linear RGB.
     Returns a dict of H x W float32 arrays 'depth' (inf where empty), 'normal'
     (view space), 'thickness', 'coverage', 'rgb' (linear, the shared shading),
-    'alpha', the method's AOVs by name, and 'timings', 'provenance', 'radius'."""
+    'alpha', the method's AOVs by name, and 'timings', 'provenance', 'radius'
+    and 'camera' (the framing chosen: pass it on to keep a sequence's view)."""
     p = _Particles(positions, colors)
     s = _scene(scene, radius, width, height, camera)
     return _image_dict(_render_handle(s, p, method, params))

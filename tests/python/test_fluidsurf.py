@@ -47,6 +47,10 @@ def test_render_equals_cli_exr(tmp_path, dam, method):
     np.testing.assert_allclose(py["rgb"], cli["rgb"], atol=1e-6)
     assert py["provenance"]["fluidsurf:method"] == method
     assert {t["stage"] for t in py["timings"]} >= {"grid", "shade"}
+    # the framing chosen, handed back, renders the same view
+    again = fluidsurf.render(dam, R, method=method, width=SIZE, height=SIZE, camera=py["camera"])
+    np.testing.assert_array_equal(again["depth"], py["depth"])
+    assert "camera" not in cli
 
 
 def test_zero_copy_layouts_render_alike(dam):
