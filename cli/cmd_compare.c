@@ -6,6 +6,7 @@
 #include "compare_merge.h"
 #include "compare_resume.h"
 #include "compare_shard.h"
+#include "compare_temporal.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
@@ -188,20 +189,6 @@ static int render_refs(cmp_run *r, const fs_particles *frames_p, const fs_grid *
     return FS_OK;
 }
 
-static double mean_normal_change(const fs_gbuffer *a, const fs_gbuffer *b)
-{
-    double sum = 0;
-    size_t n = 0;
-    for (size_t i = 0; i < (size_t)a->w * a->h; i++) {
-        if (a->coverage[i] < 0.5f || b->coverage[i] < 0.5f) continue;
-        double d = a->normal[3 * i] * b->normal[3 * i] + a->normal[3 * i + 1] * b->normal[3 * i + 1] +
-                   a->normal[3 * i + 2] * b->normal[3 * i + 2];
-        sum += acos(d > 1 ? 1 : d < -1 ? -1 : d) * 180 / M_PI;
-        n++;
-    }
-    return n ? sum / n : NAN;
-}
-
 /* The PNGs first and the EXR last: a complete EXR means a finished item (--resume). */
 static int write_view(const cmp_run *r, const char *label, int frame, const cmp_view *v, const fs_provenance *prov)
 {
@@ -282,8 +269,30 @@ static int count_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, c
     return rc;
 }
 
+/* A variant's temporal measures, summed over frame pairs (compare_temporal.h). */
+typedef struct temporal_sums { double change, err_normal, err_depth; int n_change, n_err; } temporal_sums;
+
+/* Frames f-1 (a) and f (b) of a variant: its change, and its error against the
+ * first reference's motion where that reference is at hand (not in a shard). */
+static void add_temporal(const cmp_run *r, int f, const fs_gbuffer *a, const fs_gbuffer *b, temporal_sums *t)
+{
+    double d = cmp_normal_change(a, b);
+    if (isfinite(d)) t->change += d, t->n_change++;
+    const cmp_ref *ref = &r->refs[0];
+    if (r->shard_n || !ref->frames || !ref->frames[f - 1].g.w || !ref->frames[f].g.w) return;
+    cmp_temporal_error e = cmp_temporal_error_of(a, b, &ref->frames[f - 1].g, &ref->frames[f].g, r->scene.radius);
+    if (isfinite(e.normal_deg)) t->err_normal += e.normal_deg, t->err_depth += e.depth_r, t->n_err++;
+}
+
+static void finish_temporal(const temporal_sums *t, cmp_entry *e)
+{
+    e->temporal_deg = t->n_change ? t->change / t->n_change : NAN;
+    e->temporal_err_deg = t->n_err ? t->err_normal / t->n_err : NAN;
+    e->temporal_err_depth_r = t->n_err ? t->err_depth / t->n_err : NAN;
+}
+
 /* Runs one method variant on every frame; keeps the first frame's view for
- * the panel and heatmaps and the mean normal change between frames. */
+ * the panel and heatmaps, and its temporal measures. */
 static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, const fs_grid *grids,
                      const fs_gl_context *ctx)
 {
@@ -293,17 +302,13 @@ static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, con
     if (rc) return rc;
     if (opened) snprintf(e->renderer, sizeof e->renderer, "%s", fs_run_renderer(run));
     cmp_view cur = {0}, prev = {0};
-    double tsum = 0;
-    int tn = 0;
+    temporal_sums ts = {0};
     for (int f = 0; f < r->nframes && !rc; f++) {
         if (!r->merge && !cmp_renders(r, cmp_item_id(r, 0, index, f))) continue;
         rc = run_frame(r, e, run, f, &frames_p[f], &grids[f], &cur);
         if (rc) break;
         item_done(r, e->label, f);
-        if (f > 0) {
-            double d = mean_normal_change(&prev.g, &cur.g);
-            if (isfinite(d)) { tsum += d; tn++; }
-        }
+        if (f > 0) add_temporal(r, f, &prev.g, &cur.g, &ts);
         if (f == 0) e->first = cur;
         else if (prev.rgba != e->first.rgba) free_view(&prev); /* the first frame's view stays for the panel */
         prev = cur;
@@ -311,7 +316,7 @@ static int run_entry(cmp_run *r, cmp_entry *e, const fs_particles *frames_p, con
     }
     if (prev.rgba && prev.rgba != e->first.rgba) free_view(&prev);
     free_view(&cur);
-    e->temporal_deg = tn ? tsum / tn : NAN;
+    finish_temporal(&ts, e);
     fs_run_close(run);
     if (!rc && r->counters && opened) rc = count_entry(r, e, frames_p, grids, ctx);
     return rc;
@@ -513,7 +518,7 @@ static int measure_import(cmp_run *r, cmp_entry *e)
         rc = fs_metrics_compute(&e->first.g, e->first.rgba, &r->refs[k].frames[0].g, r->refs[k].frames[0].rgba,
                                 r->scene.radius, &e->metrics[k]);
     e->frame_ms[0] = NAN;
-    e->temporal_deg = NAN;
+    e->temporal_deg = e->temporal_err_deg = e->temporal_err_depth_r = NAN;
     return rc;
 }
 
@@ -551,7 +556,7 @@ static void reference_temporal(cmp_run *r)
     double sum = 0;
     int n = 0;
     for (int f = 1; f < r->nframes; f++) {
-        double d = mean_normal_change(&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g);
+        double d = cmp_normal_change(&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g);
         if (isfinite(d)) { sum += d; n++; }
     }
     r->ref_temporal_deg = n ? sum / n : NAN;

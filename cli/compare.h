@@ -47,6 +47,7 @@ typedef struct cmp_entry {
     int nruns;
     char renderer[256];
     double temporal_deg; /* mean normal change between consecutive frames */
+    double temporal_err_deg, temporal_err_depth_r; /* that change against the first reference's (compare_temporal.h) */
     fs_stages *counts;   /* with --counters: nframes, the counting render's stages */
 } cmp_entry;
 

@@ -160,7 +160,8 @@ int cmp_write_temporal(const cmp_run *r)
     if (rc) return rc;
     FILE *f = cf.f;
     provenance_header(r, f);
-    fputs("method,variant,frames,normal_change_deg,reference_normal_change_deg\n", f);
+    fputs("method,variant,frames,normal_change_deg,reference_normal_change_deg,normal_temporal_error_deg,"
+          "depth_temporal_error_r\n", f);
     for (int i = 0; i < r->nentries; i++) {
         const cmp_entry *e = &r->entries[i];
         if (e->imported) continue;
@@ -170,6 +171,10 @@ int cmp_write_temporal(const cmp_run *r)
         num(f, e->temporal_deg, "%.4f");
         fputc(',', f);
         num(f, r->ref_temporal_deg, "%.4f");
+        fputc(',', f);
+        num(f, e->temporal_err_deg, "%.4f");
+        fputc(',', f);
+        num(f, e->temporal_err_depth_r, "%.5f");
         fputc('\n', f);
     }
     return cmp_close(&cf);

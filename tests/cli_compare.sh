@@ -48,7 +48,22 @@ printf '{"particles": {"synthetic": "slab", "size": [12, 4, 12], "first": 0, "la
 "$BIN" compare "$T/seq.json" --methods spheres -W 40 -H 40 --repeat 1 -q --no-cache -o "$T/seq" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ]' "sequence runs"
 check '[ "$(grep -vc "^#" "$T/seq/metrics.csv")" -eq 4 ] && grep -q "^spheres,,reference,2," "$T/seq/metrics.csv"' "per-frame rows"
-check 'grep -v "^#" "$T/seq/temporal.csv" | head -1 | grep -qx "method,variant,frames,normal_change_deg,reference_normal_change_deg" && grep -q "^spheres,,3,[0-9.]*,[0-9.]*$" "$T/seq/temporal.csv"' "temporal.csv with the reference's own change"
+check 'grep -v "^#" "$T/seq/temporal.csv" | head -1 | grep -qx "method,variant,frames,normal_change_deg,reference_normal_change_deg,normal_temporal_error_deg,depth_temporal_error_r" && grep -q "^spheres,,3,[0-9.]*,[0-9.]*,[0-9.]*,[0-9.]*$" "$T/seq/temporal.csv"' "temporal.csv with the reference's own change and the error against it"
+
+# 4b. temporal error where the answer is known: a static slab re-jittered every frame.
+# Against analytic (its change is exactly 0) a method's error is its own change (the
+# pixel sets differ by the few the analytic slab does not cover: 0.5% slack); against
+# reference, which moves with the jitter, it is not.
+printf '{"particles": {"synthetic": "slab", "size": [16, 4, 16], "jitter": 0.1, "first": 0, "last": 3}, "radius": 0.025}' > "$T/jit.json"
+"$BIN" compare "$T/jit.json" --methods spheres,raycast_pca --reference analytic --reference reference -W 64 -H 64 --repeat 1 -q --no-cache -o "$T/jit" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ]' "jittered slab sequence runs"
+tcol() { grep "^$1," "$T/$2/temporal.csv" | cut -d, -f"$3"; }
+close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 0.005 * a + 1e-4) }'; }
+check '[ "$(tcol spheres jit 5)" = 0.0000 ] && close "$(tcol spheres jit 6)" "$(tcol spheres jit 4)" && close "$(tcol raycast_pca jit 6)" "$(tcol raycast_pca jit 4)"' \
+  "against a static reference the temporal error equals the change ($(tcol raycast_pca jit 4-7))"
+"$BIN" compare "$T/jit.json" --methods raycast_pca --reference reference -W 64 -H 64 --repeat 1 -q --no-cache -o "$T/jit2" 2>/dev/null
+check 'awk -v c="$(tcol raycast_pca jit2 4)" -v r="$(tcol raycast_pca jit2 5)" -v e="$(tcol raycast_pca jit2 6)" "BEGIN { exit !(r > 1 && (e - c > 0.2 || c - e > 0.2)) }"' \
+  "against the moving reference it differs from the change ($(tcol raycast_pca jit2 4-7))"
 check '[ -s "$T/seq/spheres_f0002.png" ]' "per-frame images"
 
 # 5. diff exit codes
