@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
-# xiao2017 Fig. 5 analogue: raycast_pca beside spheres (and aniso_ssf when it is
-# registered) on the dam break, against the exact reference, shipped defaults.
+# xiao2017 Fig. 5 analogue: raycast_pca beside every other registered method (the
+# paper's screen-space and anisotropic screen-space rendering: spheres, aniso_ssf)
+# on the dam break, against the exact reference, shipped defaults.
 # Writes results/xiao2017/fig5_panel.png (downscaled), fig5_metrics.csv, and
 # small single images fig5_<method>.png. Full outputs in out/xiao2017/fig5/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xiao/fluidsurf}
+BIN=${BIN:-./build/fluidsurf}
 SIZE=${SIZE:-768}
 OUT=results/xiao2017
 TMP=out/xiao2017/fig5
 mkdir -p "$OUT"
 [ -x "$BIN" ] || { echo "fig5.sh: $BIN missing" >&2; exit 2; }
-methods=spheres
-"$BIN" methods aniso_ssf > /dev/null 2>&1 && methods=$methods,aniso_ssf
-methods=$methods,raycast_pca
+# every registered method, as `fluidsurf methods` lists them (first word of each line)
+methods=$("$BIN" methods | awk '/^[^ ]/ && $1 != "reference" { print $1 }' | paste -sd,)
 "$BIN" compare --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
     -o "$TMP" 2> out/xiao2017/fig5.log
 cp "$TMP/metrics.csv" "$OUT/fig5_metrics.csv"
