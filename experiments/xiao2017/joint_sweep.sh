@@ -8,7 +8,8 @@
 #
 #   joint_sweep.sh [--quick]     (--quick: 128^2, R = 3 and 4 r, min_neighbors 4 and 10)
 #
-# Writes results/xiao2017/joint_sweep.csv (--quick: out/xiao2017/joint_quick/joint_sweep.csv).
+# Writes results/xiao2017/joint_sweep.csv and its plot joint_sweep.png (joint_sweep_plot.sh;
+# --quick: into out/xiao2017/joint_quick/).
 # It measures; it changes no default.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -65,3 +66,4 @@ renderer=$(sed -n '1s/.*gl_renderer=\([^;]*\);.*/\1/p' "$TMP/dam_break_blend_$si
 rm "$csv.body"
 mv "$csv.new" "$csv"
 column -t -s, "$csv"
+bash experiments/xiao2017/joint_sweep_plot.sh "$csv"
