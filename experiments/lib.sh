@@ -24,3 +24,20 @@ auto_camera() {
 # vdb_aperture FOV_DEG: vdb_tool -render's aperture for a vertical field of view
 # (its focal length is 100: aperture = 100 tan(fov / 2))
 vdb_aperture() { awk -v f="$1" 'BEGIN {printf "%.4g", 100 * sin(f * 3.14159265358979 / 360) / cos(f * 3.14159265358979 / 360)}'; }
+
+# ---- study mode (experiments/run_all.sh) ------------------------------------------
+# FS_QUICK=1 runs a study at small sizes (a smoke run: every script runs, none rots) and
+# writes under $FS_RESULTS (default out/quick/results) instead of results/, so a quick
+# run never touches committed results. A script sources this file, then writes into
+# "$RESULTS/<study>" and picks its sizes with `quick FULL SMALL`.
+FS_QUICK=${FS_QUICK:-0}
+if [ "$FS_QUICK" = 1 ]; then RESULTS=${FS_RESULTS:-out/quick/results}; else RESULTS=${FS_RESULTS:-results}; fi
+# quick FULL SMALL: FULL normally, SMALL with FS_QUICK=1
+quick() { if [ "$FS_QUICK" = 1 ]; then echo "$2"; else echo "$1"; fi; }
+# study_commit: "commit=<HEAD, 10 digits>; dirty=0|1" for a CSV's provenance line; dirty=1
+# when the tree has uncommitted changes outside results/ (what the binaries were built from)
+study_commit() {
+  local d=0
+  git diff --quiet HEAD -- . ':!results' 2> /dev/null || d=1
+  echo "commit=$(git rev-parse --short=10 HEAD 2> /dev/null || echo unknown); dirty=$d"
+}

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Regenerates every committed result of every study from a clean build: the four
+# papers, the benchmarks, the baselines, the work counters and the main job.
+#
+#   experiments/run_all.sh            full runs, into results/ (hours on 2 cores; commit first,
+#                                     so every CSV names a clean commit)
+#   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
+#                                     minutes; CI runs it so that no study script can rot), then
+#                                     the checks of the committed results below
+#   experiments/run_all.sh --check    only the checks: every committed CSV under results/ names a
+#                                     clean commit, and every generated README table is its CSV's
+#
+# Studies run in the order below; one that fails stops the run with its name.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode=full
+case "${1:-}" in
+  --quick) mode=quick ;;
+  --check) mode=check ;;
+  "") ;;
+  *) echo "usage: $0 [--quick|--check]" >&2; exit 2 ;;
+esac
+
+# study NAME COMMAND...: runs one study, timed, with its log in out/run_all/NAME.log
+study() {
+  local name=$1 t0=$SECONDS; shift
+  mkdir -p out/run_all
+  if "$@" > "out/run_all/$name.log" 2>&1; then
+    echo "run_all: $name: ok ($((SECONDS - t0)) s)"
+  else
+    echo "run_all: $name FAILED ($((SECONDS - t0)) s); last lines of out/run_all/$name.log:" >&2
+    tail -15 "out/run_all/$name.log" >&2
+    exit 1
+  fi
+}
+
+checks() {
+  study results_clean bash experiments/tools/check_results.sh
+  study readme_tables bash tests/readme_tables.sh "$PWD"
+}
+
+if [ $mode = check ]; then checks; exit 0; fi
+if [ $mode = quick ]; then
+  export FS_QUICK=1 FS_RESULTS=${FS_RESULTS:-out/quick/results}
+  rm -rf "$FS_RESULTS"
+fi
+[ -x build/fluidsurf ] || bash scripts/build.sh build
+export BIN=${BIN:-$PWD/build/fluidsurf}
+
+# the papers
+study xiao2017_fig3 bash experiments/xiao2017/fig3.sh
+study xiao2017_fig5 bash experiments/xiao2017/fig5.sh
+study xiao2017_fig10 bash experiments/xiao2017/fig10.sh
+study xiao2017_radius bash experiments/xiao2017/radius.sh
+study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
+study xiao2017_table1 bash experiments/xiao2017/table1.sh
+study xiao2017_bars bash experiments/xiao2017/bars.sh
+study xu2022_fig6 bash experiments/xu2022/fig6.sh
+study xu2022_fig9 bash experiments/xu2022/fig9.sh
+study xu2022_sigma bash experiments/xu2022/sigma.sh
+study xu2022_doubts bash experiments/xu2022/doubts.sh
+study xu2022_bars bash experiments/xu2022/bars.sh
+study iwasaki2006_density_grid bash experiments/iwasaki2006/density_grid.sh
+study iwasaki2006_surfels bash experiments/iwasaki2006/surfels.sh
+study iwasaki2006_caustics bash experiments/iwasaki2006/caustics.sh
+study inacio2010_tables bash experiments/inacio2010/tables.sh
+study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
+study inacio2010_fig9 bash experiments/inacio2010/fig9.sh
+study inacio2010_volume_raycast bash experiments/inacio2010/volume_raycast.sh
+study inacio2010_sim_bar bash experiments/inacio2010/sim_bar.sh
+study inacio2010_sim_speed bash experiments/inacio2010/sim_speed.sh
+# benchmarks, baselines, counters, the main job
+study bench_foundation bash experiments/bench_foundation.sh
+study bench_memory bash experiments/bench/memory.sh
+study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --quick)
+study baselines bash experiments/baselines/run.sh
+study counters bash experiments/counters/work.sh
+study slurm_scaling bash experiments/slurm/scaling.sh
+study demo bash scripts/demo.sh
+
+[ $mode = quick ] && checks
+echo "run_all: every study ran ($mode)"
