@@ -7,7 +7,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh build
-./build/fluidsurf compare --no-cache experiments/scenes/dam_break.json -o results/demo "$@"
+source experiments/lib.sh # FS_QUICK=1 (experiments/run_all.sh --quick): 128x128 into out/quick/results
+out=$RESULTS/demo
+./build/fluidsurf compare --no-cache experiments/scenes/dam_break.json -o "$out" $(quick "" "-W 128 -H 128 --repeat 1") "$@"
 # the half-size copy that the repository keeps (results/demo/ is otherwise not committed)
-oiiotool results/demo/panel.png --resize 50% -o results/demo/panel_small.png
-echo "see results/demo/panel.png and results/demo/report.md"
+oiiotool "$out/panel.png" --resize 50% -o "$out/panel_small.png"
+[ "$FS_QUICK" = 1 ] || python3 experiments/tools/csv_table.py "$out/metrics.csv" "$out/README.md"
+echo "see $out/panel.png and $out/report.md"

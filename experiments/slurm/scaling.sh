@@ -5,13 +5,15 @@
 # (local_cluster.sh), from submit.sh to the merge job's end. Medians of REPEATS runs.
 # Writes results/slurm/scaling.csv and the README table between its markers.
 #   bash experiments/slurm/scaling.sh [BIN] [REPEATS]    (as root, from the repository root)
+# FS_QUICK=1 (run_all.sh --quick): the test study only, one run, into out/quick/results/slurm,
+# and no README change.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 src=$(pwd)
-BIN=$(realpath "${1:-build/fluidsurf}") REPEATS=${2:-3}
 source experiments/lib.sh
+BIN=$(realpath "${1:-${BIN:-build/fluidsurf}}") REPEATS=${2:-$(quick 3 1)}
 source experiments/slurm/local_cluster.sh
-out=results/slurm
+out=$RESULTS/slurm
 work=$(mktemp -d /tmp/fluidsurf-scaling.XXXXXX)
 trap 'cluster_stop; rm -rf "$work"' EXIT
 mkdir -p "$out"
@@ -37,12 +39,14 @@ one_run() {
   awk -v a="$t0" -v b="$(now)" 'BEGIN {printf "%.2f\n", b - a}'
 }
 
-commit=$(git -C "$src" rev-parse --short=10 HEAD)$(git -C "$src" diff --quiet HEAD -- . 2>/dev/null || echo -dirty)
+commit=$(cd "$src" && study_commit)
 csv=$src/$out/scaling.csv
 {
   echo "study,frames,size,mode,shards,wall_s_median,wall_s_min,wall_s_max"
 } > "$work/rows"
-for spec in "test 6 48" "large 12 256"; do
+specs=("test 6 48")
+[ "$FS_QUICK" = 1 ] || specs+=("large 12 256")
+for spec in "${specs[@]}"; do
   read -r study frames size <<< "$spec"
   for shards in 0 1 4; do
     times=()
@@ -53,8 +57,9 @@ for spec in "test 6 48" "large 12 256"; do
   done
 done
 renderer=$(grep -ho 'gl_renderer=[^;]*' "$work"/test-0-*/metrics.csv | head -1)
-{ echo "# commit=$commit; host_cpus=$(nproc); repeats=$REPEATS; one node; $renderer"; cat "$work/rows"; } > "$csv.tmp"
+{ echo "# $commit; host_cpus=$(nproc); repeats=$REPEATS; one node; $renderer"; cat "$work/rows"; } > "$csv.tmp"
 mv "$csv.tmp" "$csv"
 cd "$src"
+if [ "$FS_QUICK" = 1 ]; then echo "scaling: wrote $csv"; exit 0; fi
 python3 experiments/tools/csv_table.py "$csv" README.md
 echo "scaling: wrote $csv and the README table"
