@@ -16,16 +16,19 @@
 # Writes results/inacio2010/fig9_panel.png (shared shading), fig9_panel_own.png
 # (the paper's opaque-surface look) and fig9.csv (count, r, steps, wall time).
 # Usage: experiments/inacio2010/fig9.sh [BIN]   (COUNTS, SIM_TIME, SIZE, GRID,
-#        TIMEOUT_S (per simulation, default 1200) override)
+#        TIMEOUT_S (per simulation, default 1200), BIN= override)
+# FS_QUICK=1 (run_all.sh --quick): 512 and 1024 particles, 0.05 s, 128^2, grid 64, into
+# out/quick/results.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${1:-build/fluidsurf}
-COUNTS=${COUNTS:-"1024 2048 8192 32768 131072"}
-SIM_TIME=${SIM_TIME:-1.0}
-SIZE=${SIZE:-512}
-GRID=${GRID:-256}
-TIMEOUT_S=${TIMEOUT_S:-1200}
-OUT=results/inacio2010
+source experiments/lib.sh
+BIN=${1:-${BIN:-build/fluidsurf}}
+COUNTS=${COUNTS:-$(quick "1024 2048 8192 32768 131072" "512 1024")}
+SIM_TIME=${SIM_TIME:-$(quick 1.0 0.05)}
+SIZE=${SIZE:-$(quick 512 128)}
+GRID=${GRID:-$(quick 256 64)}
+TIMEOUT_S=${TIMEOUT_S:-$(quick 1200 60)}
+OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
@@ -54,7 +57,9 @@ for n in $COUNTS; do
   "$BIN" render "$T/dam_${n}_0010.bgeo" --method volume_raycast --radius "$r" --set volume_raycast.grid_res="$GRID" \
     --set volume_raycast.thickness=off --appearance own -W "$SIZE" -H "$SIZE" -q -o "$T/fig9_${n}_own.png"
   rms=$(awk -F, '$1 != "stage" && $1 != "load" && $1 != "grid" && $1 != "upload" { s += $2 } END { printf "%.0f", s }' "$T/timings_$n.csv")
-  rend=$(awk -F, '$1 == "march" { sub(/^[^,]*,[^,]*,/, ""); print; exit }' "$T/timings_$n.csv")
+  # the renderer: the march row from the header's renderer column on (it holds commas)
+  rend=$(awk -F, '$1 == "stage" { for (i = 1; i <= NF; i++) if ($i == "renderer") rc = i; next }
+    $1 == "march" { s = $rc; for (i = rc + 1; i <= NF; i++) s = s "," $i; print s; exit }' "$T/timings_$n.csv")
   echo "$n,$np,$r,$nb,${steps#*,},${steps%,*},$wall,$rms,\"$rend\",fig9_panel.png," >> "$csv"
   label="$(echo "$np" | sed ':a;s/\B[0-9]\{3\}\>/,&/;ta') particles, r = $(awk -v r="$r" 'BEGIN { printf "%.4f", r }') m"
   for v in "" _own; do
@@ -70,4 +75,5 @@ if [ "$k" -gt 0 ]; then
   oiiotool "${own[@]}" --mosaic "${k}x1" -o "$OUT/fig9_panel_own.png"
 fi
 mv "$csv" "$OUT/fig9.csv"
+if [ "$FS_QUICK" = 1 ] && [ "$k" -ne "$(wc -w <<< "$COUNTS")" ]; then echo "fig9: only $k of the counts $COUNTS rendered" >&2; exit 1; fi
 column -s, -t < "$OUT/fig9.csv"

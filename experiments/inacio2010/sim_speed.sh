@@ -6,13 +6,15 @@
 # with the renderer. On OSMesa the GPU path runs on llvmpipe, i.e. on the same
 # CPU cores: this compares two implementations, not a CPU with a GPU.
 # Writes results/inacio2010/sim_speed.csv.
-# Usage: experiments/inacio2010/sim_speed.sh [BIN]   (COUNTS, FRAMES override)
+# Usage: experiments/inacio2010/sim_speed.sh [BIN]   (BIN=, COUNTS, FRAMES override)
+# FS_QUICK=1 (run_all.sh --quick): 1024 and 2048 particles, 2 frames, into out/quick/results.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${1:-build/fluidsurf}
-COUNTS=${COUNTS:-"1024 2048 4096 8192 32768"}
-FRAMES=${FRAMES:-10}
-OUT=results/inacio2010
+source experiments/lib.sh
+BIN=${1:-${BIN:-build/fluidsurf}}
+COUNTS=${COUNTS:-$(quick "1024 2048 4096 8192 32768" "1024 2048")}
+FRAMES=${FRAMES:-$(quick 10 2)}
+OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 T=$(mktemp -d)
 tmp=$T/speed.csv
@@ -33,4 +35,8 @@ for n in $COUNTS; do
 done
 mv "$tmp" "$OUT/sim_speed.csv"
 rm -rf "$T"
+if [ "$FS_QUICK" = 1 ]; then # a quick run fails unless every run gave its row
+  rows=$(grep -vc '^#\|^particles_requested' "$OUT/sim_speed.csv") want=$((2 * $(wc -w <<< "$COUNTS")))
+  [ "$rows" -eq "$want" ] || { echo "sim_speed: $rows of the $want runs ran" >&2; exit 1; }
+fi
 column -s, -t < "$OUT/sim_speed.csv"

@@ -24,31 +24,37 @@
 # Writes results/inacio2010/tables.csv and tables_frames.csv (every frame, every
 # stage); prints the tables as markdown.
 # Usage: experiments/inacio2010/tables.sh   (BIN=, TOOL=, COUNTS=, SETTLE=, FRAMES=,
-#        SIZE=, GRID=, LIMIT_S=, TIMEOUT_S=, KEEP_FRAMES= override)
+#        SIZE=, GRID=, LIMIT_S=, TIMEOUT_S=, KEEP_FRAMES= override; without TOOL, the
+#        inacio_tables of BIN's build when BIN (fluidsurf, as run_all.sh exports it) is set)
+# FS_QUICK=1 (run_all.sh --quick): 1024 and 2048 particles, 1 + 1 frames, 128^2, grid 64,
+# into out/quick/results.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
-TOOL=${TOOL:-build/experiments/inacio_tables}
-COUNTS=${COUNTS:-"1024 2048 4096 8192 16384 32768 65536 131072"}
-SETTLE=${SETTLE:-6}
-FRAMES=${FRAMES:-3}
-SIZE=${SIZE:-512}
-GRID=${GRID:-128}
-LIMIT_S=${LIMIT_S:-60}
-TIMEOUT_S=${TIMEOUT_S:-1200}
-OUT=results/inacio2010
+source experiments/lib.sh
+[ -n "${TOOL:-}" ] || TOOL=$(dirname "${BIN:-build/fluidsurf}")/experiments/inacio_tables
+COUNTS=${COUNTS:-$(quick "1024 2048 4096 8192 16384 32768 65536 131072" "1024 2048")}
+SETTLE=${SETTLE:-$(quick 6 1)}
+FRAMES=${FRAMES:-$(quick 3 1)}
+SIZE=${SIZE:-$(quick 512 128)}
+GRID=${GRID:-$(quick 128 64)}
+LIMIT_S=${LIMIT_S:-$(quick 60 20)}
+TIMEOUT_S=${TIMEOUT_S:-$(quick 1200 60)}
+OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-prov="dam break (Tait, r 0.025, fluidsurf simulate's defaults); $SETTLE untimed frames of 1/60 s, warm-up render, medians of $FRAMES frames; ${SIZE}x${SIZE}; volume_raycast grid_res $GRID build=layered thickness=off; spheres thickness=off; first-frame limit ${LIMIT_S} s; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ); commit $(git rev-parse --short HEAD)"
+prov="dam break (Tait, r 0.025, fluidsurf simulate's defaults); $SETTLE untimed frames of 1/60 s, warm-up render, medians of $FRAMES frames; ${SIZE}x${SIZE}; volume_raycast grid_res $GRID build=layered thickness=off; spheres thickness=off; first-frame limit ${LIMIT_S} s; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ); $(study_commit)"
 frames=$T/frames.csv
 echo "# inacio_tables: $prov" > "$frames"
 echo "particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms" >> "$frames"
+failed=0 # cells whose run failed (a quick run fails on them)
 for n in $COUNTS; do
   for path in cpu gpu; do
     t0=$(date +%s)
     timeout "$TIMEOUT_S" "$TOOL" "$n" "$path" "$SETTLE" "$FRAMES" "$SIZE" "$GRID" "$LIMIT_S" > "$T/cell.csv" 2> "$T/err"
     rc=$?
     cat "$T/cell.csv" >> "$frames"
+    [ $rc = 0 ] || failed=$((failed + 1))
     if [ $rc != 0 ]; then
       echo "$n,,,$path,,,,,,note,failed_rc_${rc}_after_$(( $(date +%s) - t0 ))s,0" >> "$frames"
       tail -2 "$T/err" >&2
@@ -117,6 +123,8 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
   }' "$frames" > "$T/tables.csv"
 # rows by table, then particle count, then path
 { grep -E '^(#|table,)' "$T/tables.csv"; grep -vE '^(#|table,)' "$T/tables.csv" | sort -t, -k1,1 -k2,2n -k5,5; } > "$OUT/tables.csv"
+
+if [ "$FS_QUICK" = 1 ] && [ $failed -gt 0 ]; then echo "tables: $failed cells failed" >&2; exit 1; fi
 
 # markdown, for the README
 awk -F, '/^#/ || $1 == "table" { next }

@@ -16,15 +16,19 @@
 #     give the 1k box 50 layers per particle and the 97k box 16.)
 # Writes results/inacio2010/volume_raycast_{bar.csv,times.csv,*.png}. Every time
 # names its renderer (llvmpipe here: CPU cores, not a GPU).
+# FS_QUICK=1 (run_all.sh --quick): 128^2, 1 run, bar grid 64, the 1024 and 2048 boxes at
+# spacing 1 r, into out/quick/results.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source experiments/lib.sh
 BIN=${BIN:-./build/fluidsurf}
-SIZE=${SIZE:-512}
-RUNS=${RUNS:-3}
-VRUNS=${VRUNS:-5}
-GRID=${GRID:-256}
-SPACING_R=${SPACING_R:-0.5}
-R=results/inacio2010
+SIZE=${SIZE:-$(quick 512 128)}
+RUNS=${RUNS:-$(quick 3 1)}
+VRUNS=${VRUNS:-$(quick 5 1)}
+GRID=${GRID:-$(quick 256 64)}
+SPACING_R=${SPACING_R:-$(quick 0.5 1)}
+BOXES=$(quick "16,8,8 16,16,8 16,16,16 32,16,16 46,46,46" "16,8,8 16,16,8")
+R=$RESULTS/inacio2010
 mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -73,7 +77,7 @@ fi
 csv=$R/volume_raycast_times.csv
 echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); volume stage: medians of $VRUNS runs at 64x64 (variants build=...), the rest medians of $RUNS runs at ${SIZE}x${SIZE} (variants thickness=...), each after a warm-up; stages from fluidsurf compare timings.csv; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)" > "$csv.new"
 echo "particles,grid_res,method,variant,stage,ms_median,renderer" >> "$csv.new"
-for size in 16,8,8 16,16,8 16,16,16 32,16,16 46,46,46; do
+for size in $BOXES; do
   IFS=, read -r a b c <<< "$size"
   n=$((a * b * c))
   # points along the longest axis: centres span (a - 1) 2r, the grid adds H = 4r each side

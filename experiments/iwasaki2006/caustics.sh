@@ -14,16 +14,22 @@
 #   zero:  floor pixels outside the water's shadow (an image corner).
 # The sunken box is left out (object=none): it would hide the floor the bars read.
 # Writes results/iwasaki2006/caustics.csv and the AOV images.
+# FS_QUICK=1 (run_all.sh --quick): 128^2 (the crops scaled with it), grid 128, into
+# out/quick/results.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source experiments/lib.sh
 BIN=${BIN:-./build/fluidsurf}
-R=results/iwasaki2006
+R=$RESULTS/iwasaki2006
+# S: image side (the scenes' 256); px N: N pixels of a 256^2 image at S^2
+S=$(quick 256 128)
+px() { echo $(($1 * S / 256)); }
 E=experiments/iwasaki2006
 mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for s in slab_sun_flat slab_sun sphere_sun; do
-  "$BIN" render "$E/$s.json" --method surfels --set surfels.object=none -q -o "$tmp/$s.exr"
+  "$BIN" render "$E/$s.json" --method surfels --set surfels.object=none $(quick "" "-W $S -H $S --set surfels.grid_res=128") -q -o "$tmp/$s.exr"
   oiiotool "$tmp/$s.exr" --ch own.R,own.G,own.B -o "$R/caustics_${s}_own.png"
   oiiotool "$tmp/$s.exr" --ch caustics --mulc 0.7 --ch 0,0,0 -o "$R/caustics_${s}_aov.png"
 done
@@ -37,17 +43,17 @@ eq2() { awk -v l="$1" -v c0="${2:-1.2}" -v c1="${3:-0.45}" -v c2="${4:-0.2}" 'BE
   n = 1.333; f = ((n - 1) / (n + 1))^2; T = 1 - f
   printf "%.6f", T * (0.2126 * exp(-c0 * l) + 0.7152 * exp(-c1 * l) + 0.0722 * exp(-c2 * l)) }'; }
 verdict() { awk "BEGIN {print ($1) ? \"pass\" : \"FAIL\"}"; }
-crop=48x48+104+104
+crop=$(px 48)x$(px 48)+$(px 104)+$(px 104)
 flat=$(eq2 0.3)
 med=$(median_crop "$tmp/slab_sun_flat.exr" $crop)
 lo=$(stat "$tmp/slab_sun_flat.exr" $crop Min); hi=$(stat "$tmp/slab_sun_flat.exr" $crop Max)
 avg=$(stat "$tmp/slab_sun.exr" $crop Avg)
-sph_max=$(stat "$tmp/sphere_sun.exr" 256x256+0+0 Max)
-zero=$(stat "$tmp/slab_sun.exr" 24x24+0+0 Max)
-zero_sph=$(stat "$tmp/sphere_sun.exr" 48x48+0+0 Max)
+sph_max=$(stat "$tmp/sphere_sun.exr" ${S}x$S+0+0 Max)
+zero=$(stat "$tmp/slab_sun.exr" $(px 24)x$(px 24)+0+0 Max)
+zero_sph=$(stat "$tmp/sphere_sun.exr" $(px 48)x$(px 48)+0+0 Max)
 csv=$R/caustics.csv
 {
-  echo "# surfels caustics on particles (defaults, grid 256); expected = eq. 2 with F = 1: L_i T(0) exp(-c l), luminance; renderer llvmpipe"
+  echo "# surfels caustics on particles (defaults, grid $(quick 256 "128, ${S}x$S (quick)")); expected = eq. 2 with F = 1: L_i T(0) exp(-c l), luminance; renderer llvmpipe"
   echo "bar,measured,expected,ratio,verdict,note"
   r=$(awk -v a="$med" -v b="$flat" 'BEGIN {printf "%.4f", a / b}')
   echo "flat_slab_no_jitter_median,$med,$flat,$r,$(verdict "$r > 0.95 && $r < 1.05"),central ${crop} crop; l = 0.3 (ideal depth)"

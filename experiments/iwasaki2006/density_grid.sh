@@ -12,16 +12,23 @@
 # Timed: exact_cpu = neighbour grid build + exact sum (OpenMP over planes);
 # slice_splat = clustering + upload + all passes + read back, after one untimed
 # warm-up run (shader compilation happens at the first draw on llvmpipe).
+# FS_QUICK=1 (run_all.sh --quick): 1 run at 32 and 48 points, into out/quick/results.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build/experiments/density_bench}
-RUNS=${RUNS:-3}
-RES=${RES:-"128 256"}
-OUT=results/iwasaki2006
-TMP=out/iwasaki2006/density_grid
+source experiments/lib.sh # median, quick, RESULTS, study_commit
+# BIN: density_bench itself, or (as run_all.sh exports it) fluidsurf, whose build's
+# density_bench is then used
+case ${BIN:-} in
+  "") BIN=./build/experiments/density_bench ;;
+  *density_bench) ;;
+  *) BIN=$(dirname "$BIN")/experiments/density_bench ;;
+esac
+RUNS=${RUNS:-$(quick 3 1)}
+RES=${RES:-$(quick "128 256" "32 48")}
+OUT=$RESULTS/iwasaki2006
+TMP=out/$(quick "" quick/)iwasaki2006/density_grid
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "density_grid.sh: $BIN missing: bash scripts/build.sh build" >&2; exit 2; }
-source experiments/lib.sh # median
 
 # label:scene
 SETS="dam_break_24k:experiments/scenes/dam_break.json
@@ -30,7 +37,7 @@ box_205k:experiments/scenes/box_200k.json"
 csv=$OUT/density_grid.csv
 load0=$(cut -d' ' -f1-3 /proc/loadavg)
 {
-  echo "# iwasaki2006 density grid: slice splatting (N_c = 16) vs exact CPU; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo -dirty); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# iwasaki2006 density grid: slice splatting (N_c = 16) vs exact CPU; $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); renderer llvmpipe = OSMesa on the same CPU cores: no GPU timing"
   echo "# medians of $RUNS runs; res = grid points along the longest axis (dims in the raw rows under $TMP); exact_cpu includes the neighbour grid build; slice_splat includes clustering, upload and read back"
   echo "set,particles,res,method,ms_median,rel_l2_vs_exact,disks,renderer"

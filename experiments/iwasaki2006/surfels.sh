@@ -5,12 +5,14 @@
 # caustics) and a panel beside `reference` (same kernel and iso), with the
 # coverage IoU. Medians of RUNS (default 3) timed runs after a warm-up.
 # Writes results/iwasaki2006/{surfels.csv, <scene>_*.png, <scene>_metrics.csv}.
+# FS_QUICK=1 (run_all.sh --quick): 128^2, 1 run, into out/quick/results.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source experiments/lib.sh
 BIN=${BIN:-./build/fluidsurf}
-SIZE=${SIZE:-512}
-RUNS=${RUNS:-3}
-R=results/iwasaki2006
+SIZE=${SIZE:-$(quick 512 128)}
+RUNS=${RUNS:-$(quick 3 1)}
+R=$RESULTS/iwasaki2006
 mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -20,7 +22,7 @@ echo "scene,particles,surfels,caustics,stage,ms_median,renderer" >> "$csv.new"
 for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/xu2022/double_dam_break.json; do
   name=${scene%%:*} json=${scene#*:}
   "$BIN" compare --no-cache "$json" --methods surfels --set surfels.caustics=on,off -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/$name"
-  "$BIN" render "$json" --method surfels -q --export "$tmp/$name.ply"
+  "$BIN" render "$json" --method surfels -q $(quick "" "-W $SIZE -H $SIZE") --export "$tmp/$name.ply"
   surfels=$(grep -a -m1 '^element vertex' "$tmp/$name.ply" | awk '{print $3}')
   particles=$("$BIN" info "$(awk -F'"' '/"particles"/ {print $4}' "$json" | sed "s|^|$(dirname "$json")/|")" | awk '/^particles:/ {print $2}')
   # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,gpu_ms_median,renderer

@@ -2,9 +2,13 @@
 # Issue 4's bars for raycast_pca, read from the CSVs that fig3.sh and table1.sh
 # wrote (shipped defaults = normals=blend, normal_filter=on; default jitter).
 # Writes results/xiao2017/bars.csv: bar,measured,threshold,verdict,note.
+# FS_QUICK=1 (experiments/lib.sh): reads and writes out/quick/results/xiao2017 (the quick
+# runs of fig3.sh and table1.sh: 128^2, the speed rows at 128^2 on the dam break and box_8k).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-R=results/xiao2017
+source experiments/lib.sh # RESULTS, quick
+R=$RESULTS/xiao2017
+SPEED=$(quick 1024 128) BOX=$(quick box_1m box_8k) # table1.sh's speed cells
 for f in fig3_slab_metrics.csv fig3_slab_bands.csv fig3_box_bands.csv fig3_dam_metrics.csv table1.csv; do
   [ -f "$R/$f" ] || { echo "bars.sh: $R/$f missing: run fig3.sh and table1.sh first" >&2; exit 2; }
 done
@@ -34,15 +38,15 @@ csv=$R/bars.csv
   echo "box_edge_band_interior_blend_deg,$b,<= basic $a,$(verdict "$b <= $a"),the same band inside the 3 px interior mask"
   # 3. dam break against reference
   iou=$(metric $R/fig3_dam_metrics.csv "$B" 5); p95=$(metric $R/fig3_dam_metrics.csv "$B" 8)
-  echo "dam_break_iou,$iou,>= 0.97,$(verdict "$iou >= 0.97"),512x512 against reference (same kernel and iso)"
+  echo "dam_break_iou,$iou,>= 0.97,$(verdict "$iou >= 0.97"),$(quick 512x512 128x128) against reference (same kernel and iso)"
   echo "dam_break_depth_p95_r,$p95,<= 0.1,$(verdict "$p95 <= 0.1"),error around the bias in r"
   # 4. speed at 1024^2
-  for l in dam_break_24k box_1m; do
-    f=$(frame $l raycast_pca 1024); ref=$(frame $l reference 1024)
+  for l in dam_break_24k $BOX; do
+    f=$(frame $l raycast_pca $SPEED); ref=$(frame $l reference $SPEED)
     split=""
-    for st in splat march normals filter thickness readback; do split="$split $st=$(frame $l raycast_pca 1024 $st)"; done
+    for st in splat march normals filter thickness readback; do split="$split $st=$(frame $l raycast_pca $SPEED $st)"; done
     ratio=$(awk -v a="$ref" -v b="$f" 'BEGIN {if (a != "" && b > 0) printf "%.2f", a / b; else print "n/a"}')
-    echo "speed_${l}_1024_ms,$f,report,measured,stages ms:$split; CPU reference $ref ms = ${ratio}x raycast_pca's frame"
+    echo "speed_${l}_${SPEED}_ms,$f,report,measured,stages ms:$split; CPU reference $ref ms = ${ratio}x raycast_pca's frame"
   done
 } > "$csv.new"
 mv "$csv.new" "$csv"

@@ -5,26 +5,34 @@
 # (methods/raycast_pca/README.md). Scenes: the 24k dam break and the 300k box,
 # SIZE^2 (default 512), medians of RUNS (default 3) of the frame time (sum of
 # splat..readback) and of the march stage. Writes results/xiao2017/fig10.csv.
+# FS_QUICK=1 (experiments/lib.sh): 128^2, 1 run, iso 0.4 and 0.8, a synthetic 20^3 box
+# (8,000 particles) for the 300k box; into out/quick/results/xiao2017 and out/quick/xiao2017/fig10.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xiao/fluidsurf}
-SIZE=${SIZE:-512}
-RUNS=${RUNS:-3}
-ISOS=${ISOS:-"0.3 0.4 0.5 0.6 0.7 0.8 0.9"}
-OUT=results/xiao2017
-TMP=out/xiao2017/fig10
+source experiments/lib.sh # median, RESULTS, quick, study_commit
+BIN=${BIN:-./build/fluidsurf}
+SIZE=${SIZE:-$(quick 512 128)}
+RUNS=${RUNS:-$(quick 3 1)}
+ISOS=${ISOS:-$(quick "0.3 0.4 0.5 0.6 0.7 0.8 0.9" "0.4 0.8")}
+OUT=$RESULTS/xiao2017
+TMP=out/$(quick "" quick/)xiao2017/fig10
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "fig10.sh: $BIN missing" >&2; exit 2; }
 STAGES=" splat march normals filter thickness readback "
-source experiments/lib.sh # median
+SPECS="dam_break_24k:24389:experiments/scenes/dam_break.json box_300k:300763:experiments/scenes/box_300k.json"
+if [ "$FS_QUICK" = 1 ]; then
+  echo '{"particles": {"synthetic": "box", "size": [20, 20, 20], "jitter": 0.1, "seed": 1}, "radius": 0.025,
+ "material": "water", "background": "checker", "camera": {"width": 128, "height": 128}}' > "$TMP/box_8k.json"
+  SPECS="dam_break_24k:24389:experiments/scenes/dam_break.json box_8k:8000:$TMP/box_8k.json"
+fi
 
 csv=$OUT/fig10.csv
 {
-  echo "# xiao2017 Fig. 10 analogue; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo -dirty); $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores"
+  echo "# xiao2017 Fig. 10 analogue; $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores"
   echo "# raycast_pca shipped defaults, ${SIZE}x${SIZE}, medians of $RUNS runs; frame = sum of splat..readback"
   echo "scene,particles,iso,frame_ms,march_ms,runs,renderer"
 } > "$csv.new"
-for spec in dam_break_24k:24389:experiments/scenes/dam_break.json box_300k:300763:experiments/scenes/box_300k.json; do
+for spec in $SPECS; do
   IFS=: read -r label n scene <<< "$spec"
   for iso in $ISOS; do
     # A copy of the scene with another iso value (particle paths made absolute).

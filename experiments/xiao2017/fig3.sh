@@ -9,16 +9,18 @@
 # Writes results/xiao2017/fig3_{slab,box,dam}_metrics.csv, fig3_{slab,box}_bands.csv,
 # small panels fig3_*_panel.png and error maps fig3_*_errmap_*.png.
 # Full outputs (EXR, full-size panels) stay in out/xiao2017/fig3/.
+# FS_QUICK=1 (experiments/lib.sh): 128^2, into out/quick/results/xiao2017 and out/quick/xiao2017/fig3.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xiao/fluidsurf}
-TOOL=${TOOL:-./build-xiao/experiments/edge_bands}
-SIZE=${SIZE:-512}
-OUT=results/xiao2017
-TMP=out/xiao2017/fig3
+source experiments/lib.sh # RESULTS, quick
+BIN=${BIN:-./build/fluidsurf}
+TOOL=${TOOL:-./build/experiments/edge_bands}
+SIZE=${SIZE:-$(quick 512 128)}
+OUT=$RESULTS/xiao2017
+TMP=out/$(quick "" quick/)xiao2017/fig3
 mkdir -p "$OUT" "$TMP"
 for x in "$BIN" "$TOOL"; do
-  [ -x "$x" ] || { echo "fig3.sh: $x missing: cmake -S . -B build-xiao && cmake --build build-xiao" >&2; exit 2; }
+  [ -x "$x" ] || { echo "fig3.sh: $x missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
 done
 SWEEP=(--methods raycast_pca --set raycast_pca.normals=basic,pca,blend --set raycast_pca.normal_filter=on,off)
 small() { oiiotool "$1" --resize "$2" -o "$3"; } # downscaled copy for the repository
@@ -36,14 +38,14 @@ for shape in slab box; do
   for n in basic blend; do
     "$TOOL" --map "$TMP/${shape}_errmap_$n.png" "experiments/scenes/$shape.json" "$d/analytic.exr" \
         "$d/raycast_pca_normals=${n}_normal_filter=on.exr" > /dev/null
-    small "$TMP/${shape}_errmap_$n.png" 256x256 "$OUT/fig3_${shape}_errmap_$n.png"
+    small "$TMP/${shape}_errmap_$n.png" "$(quick 256x256 128x128)" "$OUT/fig3_${shape}_errmap_$n.png"
   done
-  small "$d/panel.png" 640x0 "$OUT/fig3_${shape}_panel.png"
+  small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig3_${shape}_panel.png"
   echo "fig3: $shape done"
 done
 
 d=$TMP/dam
 "$BIN" compare --no-cache experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
 cp "$d/metrics.csv" "$OUT/fig3_dam_metrics.csv"
-small "$d/panel.png" 640x0 "$OUT/fig3_dam_panel.png"
+small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig3_dam_panel.png"
 echo "fig3: dam break done; wrote $OUT/fig3_*"

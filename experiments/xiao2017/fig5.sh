@@ -4,19 +4,22 @@
 # on the dam break, against the exact reference, shipped defaults.
 # Writes results/xiao2017/fig5_panel.png (downscaled), fig5_metrics.csv, and
 # small single images fig5_<method>.png. Full outputs in out/xiao2017/fig5/.
+# FS_QUICK=1 (experiments/lib.sh): 128^2, into out/quick/results/xiao2017 and out/quick/xiao2017/fig5.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source experiments/lib.sh # RESULTS, quick
 BIN=${BIN:-./build/fluidsurf}
-SIZE=${SIZE:-768}
-OUT=results/xiao2017
-TMP=out/xiao2017/fig5
-mkdir -p "$OUT"
+SIZE=${SIZE:-$(quick 768 128)}
+OUT=$RESULTS/xiao2017
+W=out/$(quick "" quick/)xiao2017
+TMP=$W/fig5
+mkdir -p "$OUT" "$W"
 [ -x "$BIN" ] || { echo "fig5.sh: $BIN missing" >&2; exit 2; }
 # every registered method, as `fluidsurf methods` lists them (first word of each line)
 methods=$("$BIN" methods | awk '/^[^ ]/ && $1 != "reference" { print $1 }' | paste -sd,)
 "$BIN" compare --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
-    -o "$TMP" 2> out/xiao2017/fig5.log
+    -o "$TMP" 2> "$W/fig5.log"
 cp "$TMP/metrics.csv" "$OUT/fig5_metrics.csv"
-oiiotool "$TMP/panel.png" --resize 640x0 -o "$OUT/fig5_panel.png"
-for m in reference ${methods//,/ }; do oiiotool "$TMP/$m.png" --resize 256x256 -o "$OUT/fig5_$m.png"; done
+oiiotool "$TMP/panel.png" --resize "$(quick 640x0 320x0)" -o "$OUT/fig5_panel.png"
+for m in reference ${methods//,/ }; do oiiotool "$TMP/$m.png" --resize "$(quick 256x256 128x128)" -o "$OUT/fig5_$m.png"; done
 echo "wrote $OUT/fig5_*"

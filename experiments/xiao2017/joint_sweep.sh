@@ -6,22 +6,23 @@
 # switched PCA off and "blend equals basic" there was the fallback; here blend runs at
 # every (R, min_neighbors) and basic (which has no min_neighbors) at every R.
 #
-#   joint_sweep.sh [--quick]     (--quick: 128^2, R = 3 and 4 r, min_neighbors 4 and 10)
+#   joint_sweep.sh [--quick]     (--quick, the same as FS_QUICK=1 (experiments/lib.sh): 128^2,
+#                                 R = 3 and 4 r, min_neighbors 4 and 10)
 #
 # Writes results/xiao2017/joint_sweep.csv and its plot joint_sweep.png (joint_sweep_plot.sh;
-# --quick: into out/xiao2017/joint_quick/).
+# quick: into out/quick/results/xiao2017/, work files in out/quick/xiao2017/joint/).
 # It measures; it changes no default.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+if [ "${1:-}" = --quick ]; then export FS_QUICK=1; fi
+source experiments/lib.sh # RESULTS, quick, study_commit
 BIN=${BIN:-./build/fluidsurf}
 TOOL=${TOOL:-./build/experiments/edge_bands}
-size=512 radii=3,4,5,6 mins=4,7,10 OUT=results/xiao2017
-if [ "${1:-}" = --quick ]; then size=128 radii=3,4 mins=4,10 OUT=out/xiao2017/joint_quick; fi
-TMP=out/xiao2017/joint
+size=$(quick 512 128) radii=$(quick 3,4,5,6 3,4) mins=$(quick 4,7,10 4,10) OUT=$RESULTS/xiao2017
+TMP=out/$(quick "" quick/)xiao2017/joint
 for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "joint_sweep.sh: $x missing" >&2; exit 2; }; done
 mkdir -p "$OUT" "$TMP"
 csv=$OUT/joint_sweep.csv
-commit=$(git rev-parse --short=10 HEAD)$(git diff --quiet HEAD -- . ':!results' || echo -dirty)
 
 # one compare per normals mode; variant files are raycast_pca_<P=V>_<P=V>.exr
 sweep() { # scene reference normals sets... -> folder
@@ -59,7 +60,7 @@ params_of() { echo "$1" | sed -n 's/.*pca_radius=\([0-9.]*\)\(_min_neighbors=\([
 } | sort -t, -k1,1 -k2,2 -k3,3n -k4,4n > "$csv.body"
 renderer=$(sed -n '1s/.*gl_renderer=\([^;]*\);.*/\1/p' "$TMP/dam_break_blend_$size/metrics.csv")
 {
-  echo "# commit=$commit; size=${size}x${size}; slab and box against analytic (edge_bands, band 2r), dam_break against reference; gl_renderer=$renderer"
+  echo "# $(study_commit); size=${size}x${size}; slab and box against analytic (edge_bands, band 2r), dam_break against reference; gl_renderer=$renderer"
   echo "scene,normals,pca_radius_r,min_neighbors,interior_deg,face_deg,edge_band_deg"
   cat "$csv.body"
 } > "$csv.new"

@@ -5,12 +5,16 @@
 # from an ideal edge and the 2r edge band (experiments/tools/edge_bands.c). It
 # answers "is there an R at which blend beats basic at the edges?"; it does not
 # change the default. Writes results/xiao2017/radius_sweep.csv.
+# FS_QUICK=1 (experiments/lib.sh): 128^2, R = 3 and 4 r; into out/quick/results/xiao2017
+# and out/quick/xiao2017/radius.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xiao/fluidsurf}
-TOOL=${TOOL:-./build-xiao/experiments/edge_bands}
-OUT=results/xiao2017
-TMP=out/xiao2017/radius
+source experiments/lib.sh # RESULTS, quick
+BIN=${BIN:-./build/fluidsurf}
+TOOL=${TOOL:-./build/experiments/edge_bands}
+SIZE=$(quick 512 128)
+OUT=$RESULTS/xiao2017
+TMP=out/$(quick "" quick/)xiao2017/radius
 mkdir -p "$OUT" "$TMP"
 for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "radius.sh: $x missing" >&2; exit 2; }; done
 csv=$OUT/radius_sweep.csv
@@ -18,7 +22,7 @@ echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.ne
 for shape in slab box; do
   d=$TMP/$shape
   "$BIN" compare --no-cache "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
-      --set raycast_pca.pca_radius=3,4,5,6 --reference analytic -W 512 -H 512 --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
+      --set raycast_pca.pca_radius=$(quick 3,4,5,6 3,4) --reference analytic -W $SIZE -H $SIZE --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/raycast_pca_*.exr |
     awk -F, -v s="$shape" '!/^#/ && $1 != "file" {
         f = $1; sub(/.*raycast_pca_normals=/, "", f); sub(/\.exr$/, "", f);

@@ -13,30 +13,42 @@
 # the dam break and the 1M box (one run each, limit LIMIT_REF, default 150 s: the
 # CPU reference of 1M particles takes about a minute) for the speed bar.
 # Every row names the renderer its stages ran on (llvmpipe here: OSMesa on the CPU).
+# FS_QUICK=1 (experiments/lib.sh): 64^2 and 128^2, 1 run, the dam break and a synthetic
+# 20^3 box (8,000 particles) in place of the big boxes, the reference at 128^2; into
+# out/quick/results/xiao2017 and out/quick/xiao2017/table1.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xiao/fluidsurf}
-RUNS=${RUNS:-3}
+source experiments/lib.sh # median, RESULTS, quick, study_commit
+BIN=${BIN:-./build/fluidsurf}
+RUNS=${RUNS:-$(quick 3 1)}
 LIMIT=${LIMIT:-60}
 LIMIT_REF=${LIMIT_REF:-150}
 BIG=${BIG:-10}
-SIZES=${SIZES:-"512 768 1024 1440 1920"}
-OUT=results/xiao2017
-TMP=out/xiao2017/table1
+SIZES=${SIZES:-$(quick "512 768 1024 1440 1920" "64 128")}
+REF_SIZE=$(quick 1024 128)
+OUT=$RESULTS/xiao2017
+TMP=out/$(quick "" quick/)xiao2017/table1
 mkdir -p "$OUT" "$TMP"
-[ -x "$BIN" ] || { echo "table1.sh: $BIN missing: cmake -S . -B build-xiao && cmake --build build-xiao" >&2; exit 2; }
+[ -x "$BIN" ] || { echo "table1.sh: $BIN missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
 
 # label:particles:scene
 SETS="dam_break_24k:24389:experiments/scenes/dam_break.json
 box_100k:97336:experiments/scenes/box_100k.json
 box_300k:300763:experiments/scenes/box_300k.json
 box_1m:1000000:experiments/scenes/box_1m.json"
+BIGBOX=box_1m:1000000:experiments/scenes/box_1m.json # the reference's second set
+if [ "$FS_QUICK" = 1 ]; then
+  echo '{"particles": {"synthetic": "box", "size": [20, 20, 20], "jitter": 0.1, "seed": 1}, "radius": 0.025,
+ "material": "water", "background": "checker", "camera": {"width": 128, "height": 128}}' > "$TMP/box_8k.json"
+  BIGBOX=box_8k:8000:$TMP/box_8k.json
+  SETS="dam_break_24k:24389:experiments/scenes/dam_break.json
+$BIGBOX"
+fi
 STAGES_RPCA="splat march normals filter thickness readback"
-source experiments/lib.sh # median
 
 csv=$OUT/table1.csv
 {
-  echo "# xiao2017 Table 1 analogue (raycast_pca, shipped defaults); commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo -dirty); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# xiao2017 Table 1 analogue (raycast_pca, shipped defaults); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores"
   echo "# medians of runs (RUNS=$RUNS; cells whose first run took > ${BIG} s keep 1 run); first-run limit ${LIMIT} s (reference: ${LIMIT_REF} s); frame = sum of splat..readback"
   echo "label,particles,method,size,stage,ms_median,runs,renderer,note"
@@ -85,8 +97,9 @@ cell() {
 while IFS=: read -r label n scene; do
   for size in $SIZES; do cell "$label" "$n" "$scene" raycast_pca "$size" "$STAGES_RPCA"; done
 done <<< "$SETS"
-cell dam_break_24k 24389 experiments/scenes/dam_break.json reference 1024 "march" "$LIMIT_REF"
-cell box_1m 1000000 experiments/scenes/box_1m.json reference 1024 "march" "$LIMIT_REF"
+cell dam_break_24k 24389 experiments/scenes/dam_break.json reference "$REF_SIZE" "march" "$LIMIT_REF"
+IFS=: read -r label n scene <<< "$BIGBOX"
+cell "$label" "$n" "$scene" reference "$REF_SIZE" "march" "$LIMIT_REF"
 mv "$csv.new" "$csv"
 echo "wrote $csv"
 
@@ -97,12 +110,13 @@ rat=$OUT/table1_ratios.csv
   echo "# ours: raycast_pca on llvmpipe, $csv; paper: Xiao et al. 2017 Table 1 (GTX 970), particle sets 779,752 .. 142,612,764"
   echo "series,particles,size,seconds,ratio_to_512,ratio_to_smallest_set"
   awk -F, '!/^#/ && $3 == "raycast_pca" && $5 == "frame" && $6 != "" {print $1 "," $2 "," $4 "," $6}' "$csv" |
-  awk -F, '{t[$1","$4]=1; v[$1","$3]=$4/1000; n[$1]=$2; if (!($1 in o)) {o[$1]=++k; lab[k]=$1}; sz[$3]=1}
+  awk -F, -v sizes="$(quick "512 768 1024 1440 1920" "$SIZES")" -v base="$(quick 512 "${SIZES%% *}")" \
+      '{t[$1","$4]=1; v[$1","$3]=$4/1000; n[$1]=$2; if (!($1 in o)) {o[$1]=++k; lab[k]=$1}; sz[$3]=1}
     END {
-      split("512 768 1024 1440 1920", S, " ");
-      for (i = 1; i <= k; i++) for (j = 1; j <= 5; j++) {
+      ns = split(sizes, S, " ");
+      for (i = 1; i <= k; i++) for (j = 1; j <= ns; j++) {
         key = lab[i] "," S[j]; if (!(key in v)) continue;
-        r512 = (lab[i] ",512" in v) ? sprintf("%.3f", v[key] / v[lab[i] ",512"]) : "";
+        r512 = (lab[i] "," base in v) ? sprintf("%.3f", v[key] / v[lab[i] "," base]) : "";
         rs = (lab[1] "," S[j] in v) ? sprintf("%.3f", v[key] / v[lab[1] "," S[j]]) : "";
         printf "ours_%s,%s,%s,%.4f,%s,%s\n", lab[i], n[lab[i]], S[j], v[key], r512, rs
       }

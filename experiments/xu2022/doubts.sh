@@ -10,11 +10,14 @@
 #     fixed diffusion per pixel, so at a higher resolution the same 80 iterations smooth
 #     less in world units.
 # Writes results/xu2022/doubts_narrow_bias.csv and doubts_curvature.csv.
+# FS_QUICK=1 (experiments/lib.sh): 1. at 128^2, 2. at 64^2 and 128^2; into
+# out/quick/results/xu2022 and out/quick/xu2022/doubts.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xu/fluidsurf}
-OUT=results/xu2022
-TMP=out/xu2022/doubts
+source experiments/lib.sh # RESULTS, quick
+BIN=${BIN:-./build/fluidsurf}
+OUT=$RESULTS/xu2022
+TMP=out/$(quick "" quick/)xu2022/doubts
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "doubts.sh: $BIN missing" >&2; exit 2; }
 pick() { awk -F, -v tag="$1" '!/^#/ && $1 == "aniso_ssf" {print tag "," $2 "," $5 "," $6 "," $7 "," $11}' "$2"; }
@@ -24,14 +27,14 @@ echo "view,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" 
 for spec in oblique:experiments/scenes/slab.json topdown:experiments/xu2022/slab_topdown.json; do
   IFS=: read -r view scene <<< "$spec"
   "$BIN" compare --no-cache "$scene" --methods aniso_ssf --set aniso_ssf.filter=none,gaussian,narrow --reference analytic \
-      -W 512 -H 512 --repeat 1 -q -o "$TMP/narrow_$view" 2> "$TMP/narrow_$view.log"
+      -W $(quick 512 128) -H $(quick 512 128) --repeat 1 -q -o "$TMP/narrow_$view" 2> "$TMP/narrow_$view.log"
   pick "$view" "$TMP/narrow_$view/metrics.csv" >> "$csv.new"
 done
 mv "$csv.new" "$csv"; column -t -s, "$csv"
 
 csv=$OUT/doubts_curvature.csv
 echo "size,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
-for size in 256 512 1024; do
+for size in $(quick "256 512 1024" "64 128"); do
   "$BIN" compare --no-cache experiments/scenes/box.json --methods aniso_ssf --set aniso_ssf.filter=curvature \
       --set aniso_ssf.iterations=80,320 --set aniso_ssf.anisotropy=off,on --reference analytic \
       -W $size -H $size --repeat 1 -q -o "$TMP/curv_$size" 2> "$TMP/curv_$size.log"

@@ -9,25 +9,34 @@
 # anisotropy..readback (without load, grid build, upload and CPU shading).
 # Every row names its renderer (here llvmpipe: OSMesa on the same CPU cores).
 # Writes results/xu2022/timings.csv (long form) and fig9.csv (frame per cell).
+# FS_QUICK=1 (experiments/lib.sh): 128^2, 1 run, filters none and narrow, the dam break and
+# a synthetic 20^3 box (8,000 particles) in place of the big boxes; into
+# out/quick/results/xu2022 and out/quick/xu2022/fig9.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-BIN=${BIN:-./build-xu/fluidsurf}
-SIZE=${SIZE:-1024}
-RUNS=${RUNS:-3}
+source experiments/lib.sh # median, RESULTS, quick, study_commit
+BIN=${BIN:-./build/fluidsurf}
+SIZE=${SIZE:-$(quick 1024 128)}
+RUNS=${RUNS:-$(quick 3 1)}
 BIG=${BIG:-8}
-FILTERS=${FILTERS:-"none gaussian bilateral curvature narrow"}
-OUT=results/xu2022
-TMP=out/xu2022/fig9
+FILTERS=${FILTERS:-$(quick "none gaussian bilateral curvature narrow" "none narrow")}
+OUT=$RESULTS/xu2022
+TMP=out/$(quick "" quick/)xu2022/fig9
 mkdir -p "$OUT" "$TMP"
-[ -x "$BIN" ] || { echo "fig9.sh: $BIN missing: cmake -S . -B build-xu && cmake --build build-xu" >&2; exit 2; }
+[ -x "$BIN" ] || { echo "fig9.sh: $BIN missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
 SETS="dam_break_24k:24389:experiments/scenes/dam_break.json
 box_100k:97336:experiments/scenes/box_100k.json
 box_300k:300763:experiments/scenes/box_300k.json
 box_1m:1000000:experiments/scenes/box_1m.json"
+if [ "$FS_QUICK" = 1 ]; then
+  echo '{"particles": {"synthetic": "box", "size": [20, 20, 20], "jitter": 0.1, "seed": 1}, "radius": 0.025,
+ "material": "water", "background": "checker", "camera": {"width": 128, "height": 128}}' > "$TMP/box_8k.json"
+  SETS="dam_break_24k:24389:experiments/scenes/dam_break.json
+box_8k:8000:$TMP/box_8k.json"
+fi
 STAGES="anisotropy splat filter normals thickness readback"
-source experiments/lib.sh # median
 head_lines() {
-  echo "# xu2022 Fig. 9 analogue (aniso_ssf, shipped defaults except filter/anisotropy); commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet 2>/dev/null || echo -dirty); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# xu2022 Fig. 9 analogue (aniso_ssf, shipped defaults except filter/anisotropy); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores; ${SIZE}x${SIZE}"
   echo "# medians of RUNS=$RUNS runs (cells whose first run took > ${BIG} s keep 1 run); frame = sum of $STAGES"
 }
