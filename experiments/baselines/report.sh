@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Writes DIR/README.md of the baselines study from its CSVs (run.sh); every
 # number below comes from them.
-#   experiments/baselines/report.sh DIR
+#   experiments/baselines/report.sh [DIR]   (default results/baselines; FS_QUICK=1: out/quick/results/baselines)
 set -euo pipefail
-D=$1
+D=${1:+$(cd "$1" && pwd)}
+cd "$(dirname "$0")/../.."
+source experiments/lib.sh # RESULTS
+D=${D:-$RESULTS/baselines}
 med() { sort -g | awk '{a[NR] = $1} END {if (NR) print (NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2)}'; }
 col() { awk -F, -v s="$2" -v t="$3" -v c="$4" '$1 == s && $2 == t {print $c}' "$D/$1"; }
 # speed.csv and render.csv: set,tool,run,particles,frames,wall_s,peak_rss_kb

@@ -15,11 +15,15 @@
 # peak RSS), stages.csv (fluidsurf mesh --timings), render.csv (levelset against
 # vdb_tool -render, the same view) with render_stages.csv (levelset's --timings),
 # convergence.png, and README.md from them.
+# FS_QUICK=1 (run_all.sh --quick): 128x128, 1 run, cube 1 and 0.5 r, sets dam, a 2-frame
+# splash_seq of about 3,000 particles (simulated into out/quick/baselines, a few seconds) and
+# boxes of 8k and 27k particles; render sets dam and the 27k box; into out/quick/results/baselines.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-OUT=results/baselines
-SETS="dam splash_seq box_100k box_1m box_10m"
-RENDER_SETS="dam splash box_1m"
+source experiments/lib.sh # median, auto_camera, vdb_aperture, quick, RESULTS, study_commit
+OUT=$RESULTS/baselines
+SETS=$(quick "dam splash_seq box_100k box_1m box_10m" "dam splash_seq box_8k box_27k")
+RENDER_SETS=$(quick "dam splash box_1m" "dam box_27k")
 while [ $# -gt 0 ]; do
   case $1 in
     -o) OUT=$2; shift 2 ;;
@@ -28,36 +32,38 @@ while [ $# -gt 0 ]; do
     *) echo "usage: $0 [-o DIR] [--sets \"dam splash_seq box_100k box_1m box_10m\"] [--render-sets \"dam splash box_1m\"]" >&2; exit 2 ;;
   esac
 done
-source experiments/lib.sh # median, auto_camera, vdb_aperture
 CACHE=${FS_BENCH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/fluidsurf-bench}
-SEQ=$CACHE/splash_seq # frames f_0006.ply .. f_0010.ply
-SIZE=${SIZE:-1024}    # levelset against vdb_tool -render
+SEQ=$(quick "$CACHE/splash_seq" out/quick/baselines/splash_seq) # frames f_0006.ply .. f_0010.ply (quick: f_0001, f_0002)
+SEQ_PARTICLES=$(quick 100000 3000)
+SEQ_FIRST=$(quick 6 1) SEQ_LAST=$(quick 10 2)
+SIZE=${SIZE:-$(quick 1024 128)} # levelset against vdb_tool -render
 BIN=${BIN:-./build/fluidsurf}
-RUNS=${RUNS:-3}
+RUNS=${RUNS:-$(quick 3 1)}
 [ -x "$BIN" ] || bash scripts/build.sh "$(dirname "$BIN")"
 command -v vdb_tool > /dev/null || { echo "run.sh: vdb_tool (libopenvdb-tools) is needed" >&2; exit 1; }
 mkdir -p "$OUT"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-prov="# commit=$(git describe --always --dirty); cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); cores=$(nproc); vdb_tool=$(dpkg-query -W -f '${Version}' libopenvdb-tools 2>/dev/null || echo unknown); date=$(date -u +%F)"
+prov="# $(study_commit); cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); cores=$(nproc); vdb_tool=$(dpkg-query -W -f '${Version}' libopenvdb-tools 2>/dev/null || echo unknown); date=$(date -u +%F)"
 
 # ---- quality: the dam break at 512x512, levelset and mesh (plain and Taubin) against the reference
+QSIZE=$(quick "" "-W $SIZE -H $SIZE") # quick: the compare images at SIZE (full: the scene's 512x512)
 "$BIN" compare experiments/scenes/dam_break.json --methods reference,levelset,mesh --no-cache -q --repeat 1 \
-  -o "$tmp/q" > /dev/null
+  $QSIZE -o "$tmp/q" > /dev/null
 "$BIN" compare experiments/scenes/dam_break.json --methods mesh --set mesh.smooth=taubin --no-cache -q --repeat 1 \
-  -o "$tmp/qs" > /dev/null
+  $QSIZE -o "$tmp/qs" > /dev/null
 { echo "$prov"; grep -v '^#' "$tmp/q/metrics.csv"; grep -v '^#' "$tmp/qs/metrics.csv" | awk -F, -v OFS=, 'NR > 1 && $1 == "mesh" {$2 = "smooth=taubin"; print}'; } > "$OUT/quality.csv"
 
 # ---- convergence: mesh against the reference as cube shrinks from 1 r to 0.25 r
-"$BIN" compare experiments/scenes/dam_break.json --methods mesh --set mesh.cube=1,0.75,0.5,0.35,0.25 --no-cache -q \
-  --repeat 1 -o "$tmp/c" > /dev/null
+"$BIN" compare experiments/scenes/dam_break.json --methods mesh --set mesh.cube=$(quick 1,0.75,0.5,0.35,0.25 1,0.5) --no-cache -q \
+  --repeat 1 $QSIZE -o "$tmp/c" > /dev/null
 { echo "$prov"; grep -v '^#' "$tmp/c/metrics.csv" | awk -F, 'NR == 1 || $1 == "mesh"'; } > "$OUT/convergence.csv"
 if command -v gnuplot > /dev/null; then
   awk -F, 'NR > 2 { split($2, a, "="); print a[2], $7, $8 }' "$OUT/convergence.csv" > "$tmp/conv.dat"
   gnuplot <<GP
 set terminal pngcairo size 640,420
 set output "$OUT/convergence.png"
-set title "mesh against reference, dam break 512x512"
+set title "mesh against reference, dam break $(quick 512x512 "${SIZE}x$SIZE")"
 set xlabel "cube (multiples of r)"; set ylabel "depth error (r)"; set logscale xy; set key top left
 plot "$tmp/conv.dat" using 1:2 with linespoints title "depth RMSE", "" using 1:3 with linespoints title "depth p95"
 GP
@@ -69,16 +75,29 @@ set_file() { # NAME -> the PLY path (splash_seq: the frame pattern)
     dam) echo experiments/data/splashsurf/dam_break_frame_23_24389_particles.ply ;;
     splash) echo experiments/data/splash/dam_break_splash_100k.ply ;;
     splash_seq)
-      if [ ! -s "$SEQ/f_0010.ply" ]; then
-        echo "run.sh: simulating the splash sequence into $SEQ (once; 15-30 minutes)" >&2
+      if [ ! -s "$(printf '%s/f_%04d.ply' "$SEQ" $SEQ_LAST)" ]; then
+        echo "run.sh: simulating the splash sequence into $SEQ (once; $(quick "15-30 minutes" "quick: seconds"))" >&2
         mkdir -p "$SEQ"
-        "$BIN" simulate dam_break --cpu --particles 100000 --fps 10 --frames 10 -q -o "$SEQ/f_%04d.ply" >&2
+        "$BIN" simulate dam_break --cpu --particles $SEQ_PARTICLES --fps 10 --frames $SEQ_LAST -q -o "$SEQ/f_%04d.ply" >&2
       fi
       echo "$SEQ/f_%04d.ply" ;;
-    *) [ -s "$tmp/$1.ply" ] || "$BIN" convert "experiments/scenes/$1.json" -o "$tmp/$1.ply" >&2; echo "$tmp/$1.ply" ;;
+    *) [ -s "$tmp/$1.ply" ] || "$BIN" convert "$(scene_of "$1")" -o "$tmp/$1.ply" >&2; echo "$tmp/$1.ply" ;;
   esac
 }
-SEQ_FIRST=6 SEQ_LAST=10
+# scene_of NAME: experiments/scenes/NAME.json; quick mode's boxes (box_8k, box_27k: 20^3 and 30^3,
+# the lattice of box_100k) are written into $tmp/scenes
+scene_of() {
+  local side
+  case $FS_QUICK:$1 in
+    1:box_8k) side=20 ;;
+    1:box_27k) side=30 ;;
+    *) echo "experiments/scenes/$1.json"; return ;;
+  esac
+  mkdir -p "$tmp/scenes"
+  printf '{"particles": {"synthetic": "box", "size": [%d, %d, %d], "jitter": 0.1, "seed": 1}, "radius": 0.025}\n' \
+    $side $side $side > "$tmp/scenes/$1.json"
+  echo "$tmp/scenes/$1.json"
+}
 frames_of() { # PLY (or pattern) -> the frame files, one per line
   if [ "$1" = "${1/\%04d/}" ]; then echo "$1"; else for f in $(seq $SEQ_FIRST $SEQ_LAST); do printf "$1\n" "$f"; done; fi
 }
@@ -122,7 +141,7 @@ done
 CSV=$OUT/render.csv
 { echo "$prov; image=${SIZE}x$SIZE"; echo "set,tool,run,particles,frames,wall_s,peak_rss_kb"; } > "$CSV"
 { echo "$prov; image=${SIZE}x$SIZE"; echo "set,run,stage,ms"; } > "$OUT/render_stages.csv"
-F=1 IMG=out/baselines
+F=1 IMG=$(quick out/baselines out/quick/baselines)
 mkdir -p "$IMG"
 for set in $RENDER_SETS; do
   ply=$(realpath "$(set_file "$set")")

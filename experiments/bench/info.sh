@@ -5,7 +5,8 @@
 # near-lattice frame, within 20% on a developed splash frame).
 #
 #   experiments/bench/info.sh           medians of 5 runs; writes results/bench/info.csv
-#   experiments/bench/info.sh --quick   1 run, the 100k sets only, into out/bench/quick/
+#   experiments/bench/info.sh --quick   (or FS_QUICK=1, run_all.sh --quick) 1 run, a 27k box
+#                                       and the splash frame, into out/quick/results/bench/
 #
 # Sets: the jittered lattice boxes of experiments/scenes (100k, 1M; r = 0.025 on a 2r
 # lattice) and the committed splash frame of fluidsurf's own dam-break simulation
@@ -13,10 +14,13 @@
 # radius comment removed, so info must estimate it. Environment: RUNS, BIN.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-quick=0; [ "${1:-}" = --quick ] && quick=1
+quick=0
+if [ "${1:-}" = --quick ]; then export FS_QUICK=1; fi
+source experiments/lib.sh # quick, RESULTS
+[ "$FS_QUICK" = 1 ] && quick=1
 BIN=${BIN:-./build/fluidsurf}
-RUNS=${RUNS:-$([ $quick = 1 ] && echo 1 || echo 5)}
-OUT=$([ $quick = 1 ] && echo out/bench/quick || echo results/bench)
+RUNS=${RUNS:-$(quick 5 1)}
+OUT=$RESULTS/bench
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mkdir -p "$OUT"
 
@@ -34,8 +38,14 @@ EOF
 # the radius the last strip_radius's input was made with
 true_radius() { "$BIN" info "$T/with_r.ply" | sed -n 's/^radius r: \([0-9.e-]*\).*/\1/p'; }
 
-sets=("box_100k:experiments/scenes/box_100k.json:lattice" "splash_100k:experiments/data/splash/dam_break_splash_100k.ply:developed")
-[ $quick = 1 ] || sets+=("box_1m:experiments/scenes/box_1m.json:lattice")
+if [ $quick = 1 ]; then # a 30^3 box like box_100k's, and the splash frame (info reads 100k in well under a second)
+  sed 's/"size": \[46, 46, 46\]/"size": [30, 30, 30]/' experiments/scenes/box_100k.json > "$T/box_27k.json"
+  grep -q '"size": \[30, 30, 30\]' "$T/box_27k.json" || { echo "info: no box size in box_100k.json" >&2; exit 1; }
+  sets=("box_27k:$T/box_27k.json:lattice" "splash_100k:experiments/data/splash/dam_break_splash_100k.ply:developed")
+else
+  sets=("box_100k:experiments/scenes/box_100k.json:lattice" "splash_100k:experiments/data/splash/dam_break_splash_100k.ply:developed")
+  sets+=("box_1m:experiments/scenes/box_1m.json:lattice")
+fi
 csv=$T/info.csv
 echo "set,kind,particles,true_r,estimated_r,ratio,target,info_s_median,info_s_min,info_s_max,runs" > "$csv"
 for s in "${sets[@]}"; do

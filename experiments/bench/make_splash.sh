@@ -13,13 +13,16 @@
 # result does not depend on the thread count. Takes 15-30 minutes on 2 shared
 # cores (about 0.14 s per step for 168k particles with the boundary, ~3,500 steps
 # per simulated second). Writes the frame's stats CSV beside it.
+# FS_QUICK=1 (run_all.sh --quick): about 3,000 particles, 2 frames (t = 0.2 s), into
+# out/quick/results/bench/make_splash/dam_break_splash.ply (the committed frame is not touched).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-OUT=${1:-experiments/data/splash/dam_break_splash_100k.ply}
+source experiments/lib.sh # quick, RESULTS
+OUT=${1:-$(quick experiments/data/splash/dam_break_splash_100k.ply "$RESULTS/bench/make_splash/dam_break_splash.ply")}
 BIN=${BIN:-./build/fluidsurf}
-PARTICLES=${PARTICLES:-100000}
+PARTICLES=${PARTICLES:-$(quick 100000 3000)}
 FPS=${FPS:-10}
-FRAMES=${FRAMES:-10}
+FRAMES=${FRAMES:-$(quick 10 2)}
 [ -x "$BIN" ] || bash scripts/build.sh "$(dirname "$BIN")"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

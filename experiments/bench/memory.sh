@@ -12,23 +12,26 @@
 # "current") naming the rows: results/bench/memory.csv keeps the rows of every
 # other state, so a before/after pair stays side by side. Then
 # experiments/bench/memory_table.sh regenerates the table in README-memory.md.
+# FS_QUICK=1 (run_all.sh --quick): boxes of 16^3 and 30^3 at 128x128, 1 run, into
+# out/quick/results/bench (work files in out/quick/bench/memory), then memory_table.sh
+# on that CSV (into a copy of README-memory.md there).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source experiments/lib.sh # median, quick, RESULTS, study_commit
 BIN=${BIN:-./build/fluidsurf}
-RUNS=${RUNS:-3}
+RUNS=${RUNS:-$(quick 3 1)}
 REF_RUNS=${REF_RUNS:-$RUNS}
-SIZE=${SIZE:-1024}
+SIZE=${SIZE:-$(quick 1024 128)}
 STATE=${STATE:-current}
 METHODS=${METHODS:-"reference spheres raycast_pca"}
 FILE_METHODS=${FILE_METHODS:-"spheres raycast_pca"}
 LARGE_METHODS=${LARGE_METHODS:-$METHODS} # for the counts given as arguments (the reference takes minutes a run)
-OUT=results/bench
-TMP=out/bench/memory
+OUT=$RESULTS/bench
+TMP=$(quick out/bench/memory out/quick/bench/memory)
 csv=$OUT/memory.csv
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "memory.sh: $BIN missing: build first (scripts/build.sh build)" >&2; exit 2; }
 command -v python3 > /dev/null || { echo "memory.sh: needs python3 to write the PLY inputs" >&2; exit 2; }
-source experiments/lib.sh # median
 
 # box SIDE: a synthetic scene of SIDE^3 particles (lattice 2r, jitter 0.1 r, seed 1).
 box() {
@@ -74,8 +77,12 @@ measure() {
   printf '%-7s %-9s %-12s %9d  peak %8s KiB (min %s, max %s, %d runs)\n' "$STATE" "$kind" "$method" "$n" "$med" "$lo" "$hi" "$runs"
 }
 
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD 2>/dev/null || echo -dirty)
-sides="46 100"
+# the provenance: study_commit in the state's header line; each row's commit column names the
+# same commit, with -dirty when study_commit says dirty=1
+provenance=$(study_commit)
+commit=$(sed 's/^commit=\([^;]*\);.*/\1/' <<< "$provenance")
+case $provenance in *dirty=1) commit=$commit-dirty ;; esac
+sides=$(quick "46 100" "16 30")
 for n in "$@"; do sides="$sides $(python3 -c "import sys; print(int(round(int(sys.argv[1]) ** (1/3))))" "$n")"; done
 : > "$csv.rows"
 for side in $sides; do
@@ -86,7 +93,7 @@ for side in $sides; do
 done
 
 # Keep the other states' rows and header lines; replace this state's.
-header="# state $STATE: commit $commit; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $("$BIN" --version 2>/dev/null | head -1)"
+header="# state $STATE: $provenance; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $("$BIN" --version 2>/dev/null | head -1)"
 {
   echo "# fluidsurf peak memory benchmark (experiments/bench/memory.sh): peak RSS (/usr/bin/time %M, KiB) of whole 'fluidsurf render' processes"
   echo "# inputs: synthetic = box of n particles from a scene JSON; ply = the same lattice read from a binary PLY file; median/min/max over runs"
@@ -99,3 +106,5 @@ header="# state $STATE: commit $commit; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) co
 mv "$csv.new" "$csv"
 rm -f "$csv.rows"
 echo "wrote $csv"
+# quick mode: the table too (memory_table.sh writes it beside this CSV, never into results/)
+if [ "$FS_QUICK" = 1 ]; then bash experiments/bench/memory_table.sh; fi

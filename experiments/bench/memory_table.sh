@@ -5,10 +5,17 @@
 # measured number in the README is typed by hand.
 # Bytes per particle = growth of the median peak RSS / growth of n, between
 # consecutive particle counts of the same state, input and method.
+# FS_QUICK=1 (memory.sh's quick mode): reads out/quick/results/bench/memory.csv and writes the
+# tables into out/quick/results/bench/README-memory.md (a copy of the committed one the first
+# time); results/ is never touched.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-csv=results/bench/memory.csv
-md=results/bench/README-memory.md
+source experiments/lib.sh # RESULTS
+csv=$RESULTS/bench/memory.csv
+md=$RESULTS/bench/README-memory.md
+if [ "$FS_QUICK" = 1 ] && [ ! -f "$md" ] && [ -f results/bench/README-memory.md ]; then
+  mkdir -p "$(dirname "$md")"; cp results/bench/README-memory.md "$md"
+fi
 [ -f "$csv" ] && [ -f "$md" ] || { echo "memory_table.sh: needs $csv and $md" >&2; exit 2; }
 
 # summary: bytes per particle per (input, method, n range), one column per state.

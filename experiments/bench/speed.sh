@@ -8,8 +8,10 @@
 #   experiments/bench/speed.sh           full: 1024x1024, medians of 3 runs;
 #                                        writes results/bench/speed.csv,
 #                                        speed_ratios.csv, speed.png, README-speed.md
-#   experiments/bench/speed.sh --quick   smoke check: small sets, 256x256, 1 run;
-#                                        writes the same files under out/bench/quick/
+#   experiments/bench/speed.sh --quick   smoke check (also FS_QUICK=1, run_all.sh --quick): small
+#                                        sets, 128x128, 1 run, today's binary standing in for the
+#                                        baseline (which is not built); writes the same files under
+#                                        out/quick/results/bench/ (work and cache in out/quick/bench/)
 #
 # Environment: RUNS, SIZE (override the mode's), BIN (default ./build/fluidsurf,
 # built when missing), FS_BENCH_CACHE (where the baseline build and the particle
@@ -28,22 +30,22 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$PWD
-source experiments/lib.sh # median, auto_camera, vdb_aperture
 
 QUICK=0
 case "${1:-}" in
-  --quick) QUICK=1 ;;
+  --quick) export FS_QUICK=1 ;;
   "") ;;
-  -h|--help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   *) echo "usage: $0 [--quick]" >&2; exit 2 ;;
 esac
-if [ $QUICK = 1 ]; then RUNS=${RUNS:-1}; SIZE=${SIZE:-256}; OUT=out/bench/quick
-else RUNS=${RUNS:-3}; SIZE=${SIZE:-1024}; OUT=results/bench; fi
+source experiments/lib.sh # median, auto_camera, vdb_aperture, quick, RESULTS, study_commit
+[ "$FS_QUICK" = 1 ] && QUICK=1
+RUNS=${RUNS:-$(quick 3 1)}; SIZE=${SIZE:-$(quick 1024 128)}; OUT=$RESULTS/bench
 BIN=${BIN:-./build/fluidsurf}
 BASE_COMMIT=${BASE_COMMIT:-a548d02}
 BASE_SETS=${BASE_SETS:-splash dam_break_24k}
-CACHE=${FS_BENCH_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/fluidsurf-bench}
-WORK=out/bench/speed$([ $QUICK = 1 ] && echo _quick || true) # images and scene files (not committed)
+CACHE=${FS_BENCH_CACHE:-$(quick "${XDG_CACHE_HOME:-$HOME/.cache}/fluidsurf-bench" out/quick/bench/cache)}
+WORK=$(quick out/bench/speed out/quick/bench/speed) # images and scene files (not committed)
 VDB_TOOL=${VDB_TOOL:-vdb_tool}
 SPLASH=experiments/data/splash/dam_break_splash_100k.ply
 mkdir -p "$OUT" "$WORK" "$CACHE/sets"
@@ -61,7 +63,11 @@ command -v iinfo >/dev/null && command -v oiiotool >/dev/null ||
 BASE_FULL=$(git rev-parse "$BASE_COMMIT^{commit}")
 BASE_DIR=$CACHE/base-${BASE_FULL:0:12}
 BASE_BIN=$BASE_DIR/build/fluidsurf
-if [ ! -x "$BASE_BIN" ]; then
+BASE_DESC="$BASE_FULL built RelWithDebInfo (as scripts/build.sh) in $BASE_DIR"
+if [ $QUICK = 1 ]; then # the smoke check: today's binary stands in for the baseline (its rows and ratios run)
+  BASE_BIN=$BIN
+  BASE_DESC="today's $BIN standing in (quick: $BASE_FULL is not built)"
+elif [ ! -x "$BASE_BIN" ]; then
   log "building the baseline $BASE_COMMIT into $BASE_DIR (once)"
   rm -rf "$BASE_DIR"; mkdir -p "$BASE_DIR/src"
   git archive "$BASE_FULL" | tar -x -C "$BASE_DIR/src"
@@ -80,9 +86,9 @@ if [ $QUICK = 1 ]; then
   add_set splash file "$SPLASH"
   add_set box_1k synthetic "10 10 10"
   add_set box_10k synthetic "22 22 22"
-  add_set box_100k synthetic "46 46 46"
+  add_set box_27k synthetic "30 30 30"
   add_set cube_2k file "$D/cube_2366_particles.vtk"
-  GROWTH="box_1k box_10k box_100k"
+  GROWTH="box_1k box_10k box_27k"
 else
   # the targets' sets first, so a run cut short still has them. (fluid_250_particles.vtu is left
   # out: it gives no r, and at the default r = 0.025 its 250 sparse particles make no surface.)
@@ -177,11 +183,9 @@ bench() {
 # write_csv: the provenance header and the rows so far (after every set, so a
 # run cut short leaves a valid CSV of the sets it finished)
 write_csv() {
-  local commit
-  commit=$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- . 2>/dev/null || echo -dirty)
   {
-    echo "# fluidsurf speed benchmark (experiments/bench/speed.sh$([ $QUICK = 1 ] && echo ' --quick')); commit $commit; $(date -u +%Y-%m-%dT%H:%MZ)"
-    echo "# baseline: reference@$BASE_COMMIT = $BASE_FULL built RelWithDebInfo (as scripts/build.sh) in $BASE_DIR"
+    echo "# fluidsurf speed benchmark (experiments/bench/speed.sh$([ $QUICK = 1 ] && echo ' --quick')); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
+    echo "# baseline: reference@$BASE_COMMIT = $BASE_DESC"
     echo "# renderer of the GL methods: ${RENDERER:-unknown}; CPU methods: CPU; threads: $(nproc) cores, OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset}, LP_NUM_THREADS=${LP_NUM_THREADS:-unset}"
     echo "# machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
     echo "# vdb_tool: $(dpkg-query -W -f '${Package} ${Version}' libopenvdb-tools 2>/dev/null || echo unknown) (-points2ls voxel=r/2 radius=4 width=3 -render aperture=100 tan(fov/2), the camera below)"
@@ -229,5 +233,5 @@ done
 write_csv
 rm -f "$CSV.new"
 log "wrote $CSV"
-bash experiments/bench/speed_report.sh "$CSV" "$GROWTH"
+bash experiments/bench/speed_report.sh "$CSV" "$GROWTH" "$WORK"
 log "done in $(($(date +%s) - T0)) s"
