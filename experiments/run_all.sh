@@ -69,8 +69,12 @@ study inacio2010_fig9 bash experiments/inacio2010/fig9.sh
 study inacio2010_volume_raycast bash experiments/inacio2010/volume_raycast.sh
 study inacio2010_sim_bar bash experiments/inacio2010/sim_bar.sh
 study inacio2010_sim_speed bash experiments/inacio2010/sim_speed.sh
-# benchmarks, baselines, counters, the main job
+# benchmarks, baselines, counters, the main job. The splash frame the speed study reads is
+# bundled data (experiments/data/splash/): make_splash.sh remakes it (15-30 min), so a full
+# run leaves it alone and a quick run only checks that the script works.
+[ $mode = quick ] && study bench_make_splash bash experiments/bench/make_splash.sh
 study bench_foundation bash experiments/bench_foundation.sh
+study bench_info bash experiments/bench/info.sh
 study bench_memory bash experiments/bench/memory.sh
 study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --quick)
 study baselines bash experiments/baselines/run.sh
