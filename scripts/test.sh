@@ -7,11 +7,15 @@
 # error paths, tests/lsan.supp), which also replays the fuzz seeds and regression
 # files (tests/fuzz); and last every libFuzzer target of tests/fuzz for 30 s
 # (clang, ASan + UBSan: tests/fuzz/run.sh). Set FS_NO_SANITIZE=1 to skip the last two.
+# After the normal build's tests, experiments/run_all.sh --quick runs every study script
+# at small sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh build
 (cd build && ctest --output-on-failure -j2)
+# every study script at small sizes (outputs under out/quick/, never results/)
+bash experiments/run_all.sh --quick
 bash scripts/build_lean.sh build-lean
 (cd build-lean && FLUIDSURF_GL=egl ctest --output-on-failure -j2)
 bash tests/lean_vs_full.sh build/fluidsurf build-lean/fluidsurf build-lean/test-out/lean_vs_full
@@ -21,5 +25,6 @@ if [ "${FS_NO_SANITIZE:-0}" != 1 ]; then
   # registration (libgcc's unwinder lock re-entered through malloc).
   (cd build-asan && \
      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j2)
-  bash tests/fuzz/run.sh 30
+  # seeded, at most tests/fuzz/smoke_runs.txt's runs: the search checked clean (tests/fuzz/run.sh)
+  FS_FUZZ_SEED=1 bash tests/fuzz/run.sh 30
 fi

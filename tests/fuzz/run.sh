@@ -6,6 +6,11 @@
 # over-large allocation (-rss_limit_mb, -malloc_limit_mb) stops the target, keeps
 # the input in out/fuzz/NAME/ and fails the run.
 #   tests/fuzz/run.sh SECONDS [BUILD]
+# FS_FUZZ_SEED=S (CI's smoke run, scripts/test.sh): each target searches with libFuzzer's
+# seed S from the committed seeds alone (a fresh corpus folder), for at most the runs that
+# tests/fuzz/smoke_runs.txt lists for it, so CI repeats the search that was checked clean
+# when that list was written (a slower machine stops earlier, on time). Unseeded runs
+# explore anew each time and are the ones that find new inputs.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 SECONDS_EACH=${1:?usage: tests/fuzz/run.sh SECONDS [BUILD]}
@@ -26,15 +31,23 @@ for exe in "$BUILD"/tests/fuzz/fuzz_*; do
   [ -x "$exe" ] || continue
   name=${exe##*/fuzz_}
   out=out/fuzz/$name
-  mkdir -p "$out/corpus"
+  corpus=$out/corpus
+  mkdir -p "$corpus"
   dict=tests/fuzz/$name.dict
   args=(-max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024
         -max_len=65536 -artifact_prefix="$out/" -print_final_stats=1)
   [ -f "$dict" ] && args+=(-dict="$dict")
+  if [ -n "${FS_FUZZ_SEED:-}" ]; then
+    corpus=$out/smoke_corpus
+    rm -rf "$corpus"; mkdir -p "$corpus"
+    args+=(-seed="$FS_FUZZ_SEED")
+    cap=$(awk -v n="$name" '$1 == n { print $2 }' tests/fuzz/smoke_runs.txt 2> /dev/null)
+    [ -n "$cap" ] && args+=(-runs="$cap")
+  fi
   # the first corpus folder receives new inputs: keep the committed seeds untouched
   ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
-    "$exe" "${args[@]}" "$out/corpus" "tests/fuzz/corpus_$name" > "$out/log.txt" 2>&1
+    "$exe" "${args[@]}" "$corpus" "tests/fuzz/corpus_$name" > "$out/log.txt" 2>&1
   rc=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/log.txt")
   if [ $rc -eq 0 ]; then
