@@ -20,6 +20,6 @@ methods=$("$BIN" methods | awk '/^[^ ]/ && $1 != "reference" { print $1 }' | pas
 "$BIN" compare --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
     -o "$TMP" 2> "$W/fig5.log"
 cp "$TMP/metrics.csv" "$OUT/fig5_metrics.csv"
-oiiotool "$TMP/panel.png" --resize "$(quick 640x0 320x0)" -o "$OUT/fig5_panel.png"
+oiiotool "$TMP/panel.png" --resize "$(quick 1600x0 640x0)" -o "$OUT/fig5_panel.png" # 8 columns: legible at 1600
 for m in reference ${methods//,/ }; do oiiotool "$TMP/$m.png" --resize "$(quick 256x256 128x128)" -o "$OUT/fig5_$m.png"; done
 echo "wrote $OUT/fig5_*"
