@@ -70,9 +70,7 @@ int fluidsurf_image_camera(const fluidsurf_image *im, fluidsurf_camera *c)
     int rc;
     if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(c, "camera"))) return rc;
     if (!im->has_camera) return fs_fail(FS_ERR_INPUT, "image: not rendered by this library, so it has no camera");
-    const fs_camera *k = &im->camera;
-    for (int i = 0; i < 3; i++) c->eye[i] = k->eye[i], c->target[i] = k->target[i], c->up[i] = k->up[i];
-    c->fov_deg = k->fovy_deg, c->width = k->width, c->height = k->height;
+    fs_api_camera_out(&im->camera, c);
     return FLUIDSURF_OK;
 }
 

@@ -29,6 +29,8 @@ struct fluidsurf_image {
     fs_provenance prov;
 };
 
+/* The run layer's camera as the API's. */
+void fs_api_camera_out(const fs_camera *k, fluidsurf_camera *c);
 /* Once per process: the built-in methods registered, notes and progress silenced. */
 void fs_api_init(void);
 /* code with the message of fs_fail kept (the library never prints). */

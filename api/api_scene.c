@@ -87,13 +87,17 @@ int fluidsurf_scene_set_radius(fluidsurf_scene *s, double radius)
     return FLUIDSURF_OK;
 }
 
+void fs_api_camera_out(const fs_camera *k, fluidsurf_camera *c)
+{
+    for (int i = 0; i < 3; i++) c->eye[i] = k->eye[i], c->target[i] = k->target[i], c->up[i] = k->up[i];
+    c->fov_deg = k->fovy_deg, c->width = k->width, c->height = k->height;
+}
+
 int fluidsurf_scene_get_camera(const fluidsurf_scene *s, fluidsurf_camera *c, int *placed)
 {
     int rc;
     if ((rc = fs_api_check(s, "scene")) || (rc = fs_api_check(c, "camera"))) return rc;
-    const fs_camera *k = &s->s.camera;
-    for (int i = 0; i < 3; i++) c->eye[i] = k->eye[i], c->target[i] = k->target[i], c->up[i] = k->up[i];
-    c->fov_deg = k->fovy_deg, c->width = k->width, c->height = k->height;
+    fs_api_camera_out(&s->s.camera, c);
     if (placed) *placed = s->s.has_camera;
     return FLUIDSURF_OK;
 }

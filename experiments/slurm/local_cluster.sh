@@ -71,15 +71,16 @@ cluster_start() {
 cluster_stop() {
   local p i
   [ ${#FS_CLUSTER_PIDS[@]} -gt 0 ] || return 0
-  kill "${FS_CLUSTER_PIDS[@]}" 2>/dev/null
+  kill "${FS_CLUSTER_PIDS[@]}" 2>/dev/null || true
   for i in $(seq 50); do
     local alive=0
     for p in "${FS_CLUSTER_PIDS[@]}"; do kill -0 "$p" 2>/dev/null && alive=1; done
     [ $alive -eq 0 ] && break
     sleep 0.1
   done
-  kill -9 "${FS_CLUSTER_PIDS[@]}" 2>/dev/null
-  wait "${FS_CLUSTER_PIDS[@]}" 2>/dev/null
+  # || true: callers run under set -e, and a daemon already gone (or killed) is no failure
+  kill -9 "${FS_CLUSTER_PIDS[@]}" 2>/dev/null || true
+  wait "${FS_CLUSTER_PIDS[@]}" 2>/dev/null || true
   FS_CLUSTER_PIDS=()
   return 0
 }

@@ -15,7 +15,7 @@ BIN=$(realpath "${1:-${BIN:-build/fluidsurf}}") REPEATS=${2:-$(quick 3 1)}
 source experiments/slurm/local_cluster.sh
 out=$RESULTS/slurm
 work=$(mktemp -d /tmp/fluidsurf-scaling.XXXXXX)
-trap 'cluster_stop || true; rm -rf "$work"' EXIT
+trap 'cluster_stop; rm -rf "$work"' EXIT
 mkdir -p "$out"
 cluster_start "$work/cluster"
 cd "$work"
