@@ -7,6 +7,7 @@
 #include "alloc_cap.h"
 #include "fs_error.h"
 #include "output_file.h"
+#include "read_in_child.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/io/Stream.h>
@@ -15,18 +16,11 @@
 #include <openvdb/points/PointDataGrid.h>
 #include <openvdb/tools/PointIndexGrid.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <memory>
 #include <vector>
-
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 using openvdb::points::PointDataGrid;
 
@@ -122,7 +116,6 @@ void write_grid(const fs_particles *p, const char *tmp)
     file.close();
 }
 
-
 // The read itself, in this process: fs_fail set on failure, p freed then.
 int read_here(fs_particles *p, const char *path)
 {
@@ -144,83 +137,6 @@ int read_here(fs_particles *p, const char *path)
     }
 }
 
-// What the child sends back before the arrays.
-struct ChildResult {
-    int32_t rc, has_v;
-    uint64_t n;
-    float radius;
-    char msg[1024];
-};
-
-bool write_all(int fd, const void *buf, size_t size)
-{
-    const char *c = static_cast<const char *>(buf);
-    while (size) {
-        ssize_t k = write(fd, c, size);
-        if (k < 0 && errno == EINTR) continue;
-        if (k <= 0) return false;
-        c += k, size -= static_cast<size_t>(k);
-    }
-    return true;
-}
-
-bool read_all(int fd, void *buf, size_t size)
-{
-    char *c = static_cast<char *>(buf);
-    while (size) {
-        ssize_t k = read(fd, c, size);
-        if (k < 0 && errno == EINTR) continue;
-        if (k <= 0) return false;
-        c += k, size -= static_cast<size_t>(k);
-    }
-    return true;
-}
-
-// The child: reads, sends the result and the arrays down fd, and ends without
-// running the parent's exit handlers. Its stderr is closed: a library that corrupts
-// its heap may print there, and the parent owns the one error line.
-[[noreturn]] void child_read(int fd, const char *path)
-{
-    int null = open("/dev/null", O_WRONLY);
-    if (null >= 0) dup2(null, STDERR_FILENO);
-    fs_particles p;
-    ChildResult res{};
-    res.rc = read_here(&p, path);
-    if (res.rc) snprintf(res.msg, sizeof res.msg, "%s", fs_error_message());
-    else res.n = p.n, res.has_v = p.vx != nullptr, res.radius = p.radius;
-    bool ok = write_all(fd, &res, sizeof res);
-    const float *cols[] = {p.x, p.y, p.z, p.vx, p.vy, p.vz};
-    for (int c = 0; ok && !res.rc && c < (res.has_v ? 6 : 3); c++) ok = write_all(fd, cols[c], p.n * sizeof(float));
-    _exit(ok ? 0 : 3);
-}
-
-// The parent: the child's result into p (FS_OK), or a refusal naming path.
-int receive(int fd, pid_t pid, fs_particles *p, const char *path)
-{
-    ChildResult res{};
-    bool ok = read_all(fd, &res, sizeof res);
-    int rc = FS_OK;
-    if (ok && res.rc) rc = fs_fail(res.rc, "%.1000s", res.msg);
-    else if (ok && !(rc = fs_particles_alloc(p, res.n, res.has_v ? FS_HAS_VELOCITY : 0))) {
-        float *cols[] = {p->x, p->y, p->z, p->vx, p->vy, p->vz};
-        for (int c = 0; ok && c < (res.has_v ? 6 : 3); c++) ok = read_all(fd, cols[c], res.n * sizeof(float));
-        p->radius = res.radius;
-        if (!ok) fs_particles_free(p);
-    }
-    close(fd);
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    if (rc) return rc;
-    if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        if (ok) fs_particles_free(p);
-        if (WIFSIGNALED(status))
-            return fs_fail(FS_ERR_INPUT, "%s: damaged VDB file: OpenVDB's reader crashed on it (signal %d)", path,
-                           WTERMSIG(status));
-        return fs_fail(FS_ERR_INPUT, "%s: damaged VDB file: OpenVDB's reader failed on it", path);
-    }
-    return FS_OK;
-}
-
 } // namespace
 
 // OpenVDB reads the file in a child process (docs/DESIGN.md, "Bad input"): OpenVDB 10
@@ -234,19 +150,7 @@ extern "C" int fs_read_vdb(fs_particles *p, const char *path)
     } catch (const std::exception &e) {
         return fs_fail(FS_ERR_RUNTIME, "OpenVDB: %s", e.what());
     }
-    int fd[2];
-    if (pipe(fd)) return read_here(p, path); // no pipe: read in place, unprotected
-    pid_t pid = fork();
-    if (pid < 0) {
-        close(fd[0]), close(fd[1]);
-        return read_here(p, path);
-    }
-    if (pid == 0) {
-        close(fd[0]);
-        child_read(fd[1], path);
-    }
-    close(fd[1]);
-    return receive(fd[0], pid, p, path);
+    return fs_read_in_child(p, path, read_here, "damaged VDB file: OpenVDB's reader");
 }
 
 extern "C" int fs_write_vdb(const fs_particles *p, const char *path)
