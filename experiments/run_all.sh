@@ -52,6 +52,7 @@ export BIN=${BIN:-$PWD/build/fluidsurf}
 
 # the papers
 study xiao2017_fig3 bash experiments/xiao2017/fig3.sh
+study xiao2017_fig4 bash experiments/xiao2017/fig4.sh
 study xiao2017_fig5 bash experiments/xiao2017/fig5.sh
 study xiao2017_fig10 bash experiments/xiao2017/fig10.sh
 study xiao2017_radius bash experiments/xiao2017/radius.sh
@@ -59,6 +60,7 @@ study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
 study xiao2017_table1 bash experiments/xiao2017/table1.sh
 study xiao2017_bars bash experiments/xiao2017/bars.sh
 study xu2022_fig6 bash experiments/xu2022/fig6.sh
+study xu2022_fig8 bash experiments/xu2022/fig8.sh
 study xu2022_fig9 bash experiments/xu2022/fig9.sh
 study xu2022_sigma bash experiments/xu2022/sigma.sh
 study xu2022_doubts bash experiments/xu2022/doubts.sh

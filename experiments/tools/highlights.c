@@ -5,9 +5,9 @@
  *   highlights [--threshold Y] [--min-area PX] IMAGE.exr...
  *
  * Over the pixels the image covers (coverage > 0.5), a highlight pixel has linear
- * luminance (Rec. 709) of at least Y (default 1.0: the water shading's transmitted
- * and reflected light stay below it, its specular term crosses it). Highlight pixels
- * are grouped into 4-connected areas. Prints CSV rows
+ * luminance (Rec. 709) of at least Y (default 0.7; no one value separates the
+ * specular term from bright refracted background everywhere, so studies sweep it).
+ * Highlight pixels are grouped into 4-connected areas. Prints CSV rows
  *   file,covered_px,highlight_px,highlight_pct,areas,largest_px,share_in_large_pct
  * where share_in_large is the part of the highlight pixels that lie in areas of at
  * least PX pixels (default 16): near 100 for a few broad highlights, low for speckle. */
@@ -48,7 +48,10 @@ static int measure(const char *path, float threshold, long min_area)
     long n = (long)img.w * img.h, covered = 0, lit = 0;
     unsigned char *mark = calloc((size_t)n, 1);
     long *stack = malloc((size_t)n * sizeof *stack);
-    if (!mark || !stack) return fs_fail(FS_ERR_RUNTIME, "out of memory"), 1;
+    if (!mark || !stack) {
+        free(mark), free(stack), fs_image_free(&img);
+        return fs_fail(FS_ERR_RUNTIME, "out of memory"), 1;
+    }
     for (long i = 0; i < n; i++) {
         const float *px = img.pix + i * img.nch;
         if (!(px[cov] > 0.5f)) continue;
@@ -74,7 +77,7 @@ static int measure(const char *path, float threshold, long min_area)
 
 int main(int argc, char **argv)
 {
-    float threshold = 1.0f;
+    float threshold = 0.7f;
     long min_area = 16;
     int i = 1;
     for (; i + 1 < argc && argv[i][0] == '-' && argv[i][1] == '-'; i += 2) {

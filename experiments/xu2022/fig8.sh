@@ -5,9 +5,10 @@
 # the thickness, absorption: common/eval/shading.c) at SIZE^2 (default 512) against
 # the exact `reference`. Besides the G-buffer metrics, experiments/tools/highlights
 # measures the paper's second claim, that narrow-range's highlight "forms an obvious
-# bright area": how much of each image's specular highlight lies in broad areas
-# rather than speckle, beside the reference's own.
-# Writes results/xu2022/fig8.csv and fig8_row.png (reference, then the four filters,
+# bright area": how much of each image's highlight lies in broad areas rather than
+# speckle, beside the reference's own.
+# Writes results/xu2022/fig8.csv (metrics), fig8_highlights.csv (highlight layout at
+# three luminance thresholds) and fig8_row.png (reference, then the four filters,
 # cropped and shrunk). Full outputs stay in out/xu2022/fig8/.
 # FS_QUICK=1 (experiments/lib.sh): 128^2, into out/quick/results/xu2022.
 set -euo pipefail
@@ -27,24 +28,28 @@ FILTERS="gaussian bilateral curvature narrow"
     --set "aniso_ssf.filter=${FILTERS// /,}" --reference reference -W "$SIZE" -H "$SIZE" --repeat 1 \
     -o "$TMP" -q 2> "$TMP/compare.log"
 exrs=("$TMP/reference.exr")
-for f in $FILTERS; do exrs+=("$TMP/aniso_ssf_anisotropy=on_filter=$f.exr"); done
-"$TOOL" "${exrs[@]}" > "$TMP/highlights.csv"
-# fig8.csv: one row per image, the metrics against the reference beside the highlight layout
+for f in $FILTERS; do exrs+=("$TMP/aniso_ssf_filter=$f.exr"); done
+# fig8.csv: the G-buffer metrics of each filter against the reference
 {
-  sed -n '1s/^# *\(.*\)$/# \1 highlights: experiments\/tools\/highlights (luminance >= 1, areas >= 16 px)/p' "$TMP/metrics.csv"
-  echo "image,interior_normal_mean_deg,normal_p95_deg,psnr_db,ssim,highlight_pct,areas,largest_px,share_in_large_pct"
-  awk -F, -v dir="$TMP/" '
-    FNR == 1 && NR == 1 { next }
-    NR == FNR { if ($0 !~ /^#/ && $1 != "method") { split($2, v, "filter="); m[v[2]] = $11 "," $10 "," $12 "," $13 } ; next }
-    FNR == 1 { next }
-    { f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); key = f; sub(/.*filter=/, "", key)
-      name = (f == "reference") ? "reference" : key
-      print name "," (f == "reference" ? ",,," : m[key]) "," $4 "," $5 "," $6 "," $7 }' \
-    "$TMP/metrics.csv" "$TMP/highlights.csv"
+  sed -n 1p "$TMP/metrics.csv"
+  echo "filter,interior_normal_mean_deg,normal_p95_deg,depth_rmse_r,psnr_db,ssim"
+  awk -F, '$1 == "aniso_ssf" { f = $2; sub(/.*filter=/, "", f); print f "," $11 "," $10 "," $7 "," $12 "," $13 }' \
+    "$TMP/metrics.csv"
 } > "$OUT/fig8.csv"
+# fig8_highlights.csv: the highlight layout of every image, the reference's too, over
+# luminance thresholds (below about 0.6 the refracted white squares of the floor count)
+{
+  echo "# $(study_commit); tool=experiments/tools/highlights --min-area 16; images as in fig8.csv"
+  echo "image,threshold,highlight_pct,areas,largest_px,share_in_large_pct"
+  for t in 0.6 0.7 0.8; do
+    "$TOOL" --threshold "$t" --min-area 16 "${exrs[@]}" | awk -F, -v t="$t" -v dir="$TMP/" 'NR > 1 {
+      f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); sub(/^aniso_ssf_filter=/, "", f)
+      print f "," t "," $4 "," $5 "," $6 "," $7 }'
+  done
+} > "$OUT/fig8_highlights.csv"
 # the row: reference, then the four filters, each cropped to the wave and shrunk
 crop=$(awk -v s="$SIZE" 'BEGIN {f = s / 512; printf "%dx%d+%d+%d", 400 * f, 400 * f, 50 * f, 30 * f}')
 args=()
 for e in "${exrs[@]}"; do args+=("${e%.exr}.png" --cut "$crop" --resize "$(quick 220x220 64x64)"); done
 oiiotool "${args[@]}" --mosaic 5x1 --ch R,G,B -o "$OUT/fig8_row.png"
-echo "wrote $OUT/fig8.csv, $OUT/fig8_row.png"
+echo "wrote $OUT/fig8.csv, $OUT/fig8_highlights.csv, $OUT/fig8_row.png"
