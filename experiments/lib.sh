@@ -41,3 +41,29 @@ study_commit() {
   git diff --quiet HEAD -- . ':!results' 2> /dev/null || d=1
   echo "commit=$(git rev-parse --short=10 HEAD 2> /dev/null || echo unknown); dirty=$d"
 }
+
+# ---- simulated sequences (xiao2017 fig4.sh, fig6.sh) ---------------------------------
+# simulated_frames BIN SCENE N LAST PATTERN: fluidsurf's SPH of SCENE with about N particles,
+# frames 0..LAST into PATTERN (printf, one %d; per-frame stats beside it), unless frame
+# LAST is there already (the simulation is deterministic).
+simulated_frames() {
+  [ -f "$(printf "$5" "$4")" ] ||
+    "$1" simulate "$2" --particles "$3" --frames "$4" -o "$5" --stats "$(dirname "$5")/stats.csv" -q
+}
+# frame_scene PATTERN F SIZE [CAMERA]: the scene JSON of frame F of PATTERN, for a scene file
+# written one folder above the frames: the file's radius, y up, water over the checker,
+# SIZE^2, and CAMERA (auto_camera's P_CAMERA) or the automatic framing.
+frame_scene() {
+  local cam=${4:+$4, }
+  printf '{"particles": "%s/%s", "up": "y", "material": "water", "background": "checker",\n "camera": {%s"width": %d, "height": %d}}\n' \
+    "$(basename "$(dirname "$1")")" "$(basename "$(printf "$1" "$2")")" "$cam" "$3" "$3"
+}
+# frames_mosaic OUT.png COLSxROWS TILE [--cut WxH+X+Y] FILE...: the images (each first
+# cropped to the box, when given) shrunk to TILE (WxH) and tiled
+frames_mosaic() {
+  local out=$1 grid=$2 tile=$3 cut=() args=()
+  shift 3
+  if [ "${1:-}" = --cut ]; then cut=(--cut "$2"); shift 2; fi
+  for f in "$@"; do args+=("$f" "${cut[@]}" --resize "$tile"); done
+  oiiotool "${args[@]}" --mosaic "$grid" --ch R,G,B -o "$out"
+}

@@ -54,6 +54,7 @@ export BIN=${BIN:-$PWD/build/fluidsurf}
 study xiao2017_fig3 bash experiments/xiao2017/fig3.sh
 study xiao2017_fig4 bash experiments/xiao2017/fig4.sh
 study xiao2017_fig5 bash experiments/xiao2017/fig5.sh
+study xiao2017_fig6 bash experiments/xiao2017/fig6.sh
 study xiao2017_fig10 bash experiments/xiao2017/fig10.sh
 study xiao2017_radius bash experiments/xiao2017/radius.sh
 study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
@@ -69,6 +70,7 @@ study iwasaki2006_density_grid bash experiments/iwasaki2006/density_grid.sh
 study iwasaki2006_surfels bash experiments/iwasaki2006/surfels.sh
 study iwasaki2006_caustics bash experiments/iwasaki2006/caustics.sh
 study iwasaki2006_fig7 bash experiments/iwasaki2006/fig7.sh
+study iwasaki2006_fig8 bash experiments/iwasaki2006/fig8.sh
 study inacio2010_tables bash experiments/inacio2010/tables.sh
 study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
 study inacio2010_fig9 bash experiments/inacio2010/fig9.sh

@@ -11,7 +11,7 @@
 # FS_QUICK=1 (experiments/lib.sh): 5k particles, 128^2, into out/quick/results/xiao2017.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-source experiments/lib.sh # RESULTS, quick, auto_camera
+source experiments/lib.sh # RESULTS, quick, auto_camera, simulated_frames, frame_scene, frames_mosaic
 BIN=${BIN:-./build/fluidsurf}
 SIZE=${SIZE:-$(quick 512 128)}
 N=${N:-$(quick 100000 5000)}
@@ -22,24 +22,19 @@ mkdir -p "$OUT" "$TMP/sim"
 [ -x "$BIN" ] || { echo "fig4.sh: $BIN missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
 last=$(tr ' ' '\n' <<< "$FRAMES" | sort -n | tail -1)
 pat=$TMP/sim/frame_%04d.bgeo
-if [ ! -f "$(printf "$pat" "$last")" ]; then
-  "$BIN" simulate double_dam_break --particles "$N" --frames "$last" -o "$pat" --stats "$TMP/sim/stats.csv" -q
-fi
-# scene F [CAMERA]: the scene of sequence frame F (the file's radius), water over the checker
-scene() {
-  local cam=${2:+$2, }
-  printf '{"particles": "%s", "up": "y", "material": "water", "background": "checker",\n "camera": {%s"width": %d, "height": %d}}\n' \
-    "sim/$(basename "$(printf "$pat" "$1")")" "$cam" "$SIZE" "$SIZE"
-}
+simulated_frames "$BIN" double_dam_break "$N" "$last" "$pat"
 first=${FRAMES%% *}
-scene "$first" > "$TMP/frame_first.json"
+frame_scene "$pat" "$first" "$SIZE" > "$TMP/frame_first.json"
 auto_camera "$BIN" "$TMP/frame_first.json" "$TMP"
+# the automatic framing fits a quantile box of the particles, which trims the outer
+# faces of two cubes far apart: widen the view so the whole tank is in it
+P_CAMERA=${P_CAMERA/\"fov\": $FOV/\"fov\": $(awk -v f="$FOV" 'BEGIN {print f * 1.3}')}
 {
   printf '# %s; particles=%s; sequence=simulate double_dam_break at 60 fps\n' "$(study_commit)" "$N"
   echo "frame,t_s,method,mask_iou,normal_mean_deg,interior_normal_mean_deg,depth_rmse_r,frame_ms"
 } > "$TMP/fig4.csv"
 for f in $FRAMES; do
-  scene "$f" "$P_CAMERA" > "$TMP/frame_$f.json"
+  frame_scene "$pat" "$f" "$SIZE" "$P_CAMERA" > "$TMP/frame_$f.json"
   d=$TMP/frame_$f
   "$BIN" compare --no-cache "$TMP/frame_$f.json" --methods raycast_pca,spheres --reference reference \
       --repeat "$(quick 3 1)" -o "$d" -q 2> "$d.log"
@@ -51,8 +46,6 @@ done
 { sed -n 1p "$TMP/fig4.csv"; cut -c1-600 "$TMP/fig4.csv.prov"; sed 1d "$TMP/fig4.csv"; } > "$OUT/fig4.csv"
 rm -f "$TMP/fig4.csv.prov"
 for m in raycast_pca reference; do
-  args=()
-  for f in $FRAMES; do args+=("$TMP/frame_$f/$m.png" --resize "$(quick 400x400 64x64)"); done
-  oiiotool "${args[@]}" --mosaic 2x2 --ch R,G,B -o "$OUT/fig4_$m.png"
+  frames_mosaic "$OUT/fig4_$m.png" 2x2 "$(quick 400x400 64x64)" $(for f in $FRAMES; do echo "$TMP/frame_$f/$m.png"; done)
 done
 echo "wrote $OUT/fig4.csv, $OUT/fig4_raycast_pca.png, $OUT/fig4_reference.png"

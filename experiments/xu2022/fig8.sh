@@ -13,7 +13,7 @@
 # FS_QUICK=1 (experiments/lib.sh): 128^2, into out/quick/results/xu2022.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-source experiments/lib.sh # RESULTS, quick
+source experiments/lib.sh # RESULTS, quick, frames_mosaic
 BIN=${BIN:-./build/fluidsurf}
 TOOL=${TOOL:-./build/experiments/highlights}
 SIZE=${SIZE:-$(quick 512 128)}
@@ -49,7 +49,5 @@ for f in $FILTERS; do exrs+=("$TMP/aniso_ssf_filter=$f.exr"); done
 } > "$OUT/fig8_highlights.csv"
 # the row: reference, then the four filters, each cropped to the wave and shrunk
 crop=$(awk -v s="$SIZE" 'BEGIN {f = s / 512; printf "%dx%d+%d+%d", 400 * f, 400 * f, 50 * f, 30 * f}')
-args=()
-for e in "${exrs[@]}"; do args+=("${e%.exr}.png" --cut "$crop" --resize "$(quick 220x220 64x64)"); done
-oiiotool "${args[@]}" --mosaic 5x1 --ch R,G,B -o "$OUT/fig8_row.png"
+frames_mosaic "$OUT/fig8_row.png" 5x1 "$(quick 220x220 64x64)" --cut "$crop" $(for e in "${exrs[@]}"; do echo "${e%.exr}.png"; done)
 echo "wrote $OUT/fig8.csv, $OUT/fig8_highlights.csv, $OUT/fig8_row.png"
