@@ -255,7 +255,9 @@ double header_word(const std::string &bytes, const Layout &l, size_t k)
 // Uncompressed: its byte count must fit in the file. Compressed: its block count
 // and compressed sizes must fit in the file, what they unpack to must lie within
 // zlib's largest ratio (1032:1), and the blocks must be ones VTK copies safely.
-bool header_fits(const std::string &f, size_t at, bool base64, const Layout &l)
+// budget: the file's bytes not yet claimed by headers; all headers share the file,
+// so a forged block count in each of many arrays is refused early, not read.
+bool header_fits(const std::string &f, size_t at, bool base64, const Layout &l, double *budget)
 {
     const double size = static_cast<double>(f.size());
     size_t hs = static_cast<size_t>(l.hs);
@@ -264,7 +266,7 @@ bool header_fits(const std::string &f, size_t at, bool base64, const Layout &l)
     double nb = header_word(h, l, 0);
     if (!l.zipped) return nb <= size;
     double bs = header_word(h, l, 1), lbs = header_word(h, l, 2), cs = 0;
-    if (nb * static_cast<double>(hs) > size) return false;
+    if ((*budget -= nb * static_cast<double>(hs)) < 0) return false;
     h = stream_bytes(f, at, (3 + static_cast<size_t>(nb)) * hs, base64);
     if (h.size() < (3 + static_cast<size_t>(nb)) * hs) return false;
     for (size_t k = 0; k < static_cast<size_t>(nb); k++)
@@ -281,6 +283,7 @@ bool header_fits(const std::string &f, size_t at, bool base64, const Layout &l)
 int check_vtu_headers(const char *path, const std::string &f)
 {
     Layout l = layout_of(f);
+    double budget = static_cast<double>(f.size());
     size_t app = f.find("<AppendedData");
     std::string encoding = app == std::string::npos ? "" : attr_in_tag(f, app + 1, "encoding");
     size_t base = app == std::string::npos ? std::string::npos : f.find('_', app);
@@ -292,7 +295,7 @@ int check_vtu_headers(const char *path, const std::string &f)
         char *end;
         double o = strtod(off.c_str(), &end);
         bool ok = !off.empty() && !*end && o >= 0 && base + 1 + o < static_cast<double>(f.size());
-        if (!ok || !header_fits(f, base + 1 + static_cast<size_t>(o), encoding != "raw", l))
+        if (!ok || !header_fits(f, base + 1 + static_cast<size_t>(o), encoding != "raw", l, &budget))
             return fs_fail(FS_ERR_INPUT, "%s: VTU array header at appended offset '%.32s' does not fit the file", path,
                            off.c_str());
     }
@@ -300,7 +303,7 @@ int check_vtu_headers(const char *path, const std::string &f)
     for (size_t at = f.find("format=\"binary\""); at < stop; at = f.find("format=\"binary\"", at + 1)) {
         size_t hi = f.find('>', at);
         if (hi == std::string::npos || f[hi - 1] == '/') continue; // no data: VTK refuses it
-        if (!header_fits(f, hi + 1, true, l))
+        if (!header_fits(f, hi + 1, true, l, &budget))
             return fs_fail(FS_ERR_INPUT, "%s: VTU array header of inline binary DataArray '%.32s' does not fit the file",
                            path, attr_in_tag(f, at, "Name").c_str());
     }
