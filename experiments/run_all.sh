@@ -74,6 +74,7 @@ study iwasaki2006_fig8 bash experiments/iwasaki2006/fig8.sh
 study inacio2010_tables bash experiments/inacio2010/tables.sh
 study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
 study inacio2010_fig9 bash experiments/inacio2010/fig9.sh
+study inacio2010_fig7 bash experiments/inacio2010/fig7.sh
 study inacio2010_fig8 bash experiments/inacio2010/fig8.sh
 study inacio2010_volume_raycast bash experiments/inacio2010/volume_raycast.sh
 study inacio2010_sim_bar bash experiments/inacio2010/sim_bar.sh
