@@ -30,10 +30,13 @@ int cmd_info(int argc, char **argv)
     fs_particles p;
     if ((rc = fs_particles_read(&p, file, format))) return cli_error(rc);
     float est = 0;
-    if ((rc = fs_particles_estimate_radius(&p, &est)) && p.n > 1) {
+    /* No spacing to measure (many coincident particles) is an error only when nothing
+     * else gives a radius: a simulator's clamp can pile particles on one point. */
+    if ((rc = fs_particles_estimate_radius(&p, &est)) && p.n > 1 && !(radius > 0 || p.radius > 0)) {
         fs_particles_free(&p);
         return cli_error(rc);
     }
+    if (rc) fs_error_clear();
     fs_scene s;
     fs_scene_defaults(&s);
     s.radius = radius > 0 ? radius : p.radius > 0 ? p.radius : est > 0 ? est : s.radius;

@@ -31,6 +31,12 @@ fi
 "$BIN" methods | grep -q 'step_min' || fail "methods does not list parameters"
 "$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
 "$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
+# most particles on one point (a simulator's clamp piles them up): no spacing to measure,
+# an error only when nothing else gives a radius
+{ echo x,y,z; for i in $(seq 50); do echo 0.5,0.5,0.5; done; for i in $(seq 10); do echo "0.$i,0,0"; done; } > "$T/piled.csv"
+"$BIN" info "$T/piled.csv" > /dev/null 2> "$T/piled.err" && fail "info without a radius on piled particles succeeded"
+grep -q 'no spacing to estimate a radius' "$T/piled.err" || fail "info on piled particles: $(cat "$T/piled.err")"
+"$BIN" info "$T/piled.csv" --radius 0.02 | grep -q 'radius r: 0.02 (--radius)' || fail "info --radius on piled particles"
 # a scene file converts too: its synthetic frame, with the scene's r
 printf '{"particles": {"synthetic": "box", "size": [4, 5, 6], "seed": 3}, "radius": 0.01}' > "$T/box120.json"
 "$BIN" convert "$T/box120.json" -o "$T/box120.ply" && "$BIN" info "$T/box120.ply" | grep -q 'particles: 120' || fail "convert a synthetic scene"
