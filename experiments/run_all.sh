@@ -75,8 +75,8 @@ study inacio2010_tables bash experiments/inacio2010/tables.sh
 study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
 study inacio2010_fig9 bash experiments/inacio2010/fig9.sh
 study inacio2010_fig7 bash experiments/inacio2010/fig7.sh
-study inacio2010_fig8 bash experiments/inacio2010/fig8.sh
 study inacio2010_volume_raycast bash experiments/inacio2010/volume_raycast.sh
+study inacio2010_fig8 bash experiments/inacio2010/fig8.sh # after volume_raycast.sh: its images
 study inacio2010_sim_bar bash experiments/inacio2010/sim_bar.sh
 study inacio2010_sim_speed bash experiments/inacio2010/sim_speed.sh
 # benchmarks, baselines, counters, the main job. The splash frame the speed study reads is

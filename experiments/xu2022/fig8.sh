@@ -2,39 +2,39 @@
 # xu2022 Fig. 8 analogue: the four filters (gaussian, bilateral, curvature flow,
 # narrow-range; anisotropy on, shipped defaults) on a transparent fluid. The dam
 # break under the scene's water material (Fresnel reflection, refraction through
-# the thickness, absorption: common/eval/shading.c) at SIZE^2 (default 512) against
+# the thickness, absorption: common/eval/shading.c) at 512^2 (fig6.sh's) against
 # the exact `reference`. Besides the G-buffer metrics, experiments/tools/highlights
 # measures the paper's second claim, that narrow-range's highlight "forms an obvious
 # bright area": how much of each image's highlight lies in broad areas rather than
 # speckle, beside the reference's own.
 # Writes results/xu2022/fig8.csv (metrics), fig8_highlights.csv (highlight layout at
 # three luminance thresholds) and fig8_row.png (reference, then the four filters,
-# cropped and shrunk). Full outputs stay in out/xu2022/fig8/.
-# FS_QUICK=1 (experiments/lib.sh): 128^2, into out/quick/results/xu2022.
+# cropped and shrunk), from fig6.sh's dam-break outputs in out/xu2022/fig6/dam/ (run it first).
+# FS_QUICK=1 (experiments/lib.sh): fig6.sh's quick outputs (128^2), into out/quick/results/xu2022.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source experiments/lib.sh # RESULTS, quick, frames_mosaic
-BIN=${BIN:-./build/fluidsurf}
 TOOL=${TOOL:-./build/experiments/highlights}
-SIZE=${SIZE:-$(quick 512 128)}
+SIZE=$(quick 512 128) # fig6.sh's
 OUT=$RESULTS/xu2022
-TMP=out/$(quick "" quick/)xu2022/fig8
-mkdir -p "$OUT" "$TMP"
-for x in "$BIN" "$TOOL"; do
-  [ -x "$x" ] || { echo "fig8.sh: $x missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
-done
+mkdir -p "$OUT"
+[ -x "$TOOL" ] || { echo "fig8.sh: $TOOL missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
+# fig6.sh renders these very images (the dam break, anisotropy on, every filter, against
+# `reference`): read its outputs rather than render them twice
+D=out/$(quick "" quick/)xu2022/fig6/dam
 FILTERS="gaussian bilateral curvature narrow"
-"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods aniso_ssf --set aniso_ssf.anisotropy=on \
-    --set "aniso_ssf.filter=${FILTERS// /,}" --reference reference -W "$SIZE" -H "$SIZE" --repeat 1 \
-    -o "$TMP" -q 2> "$TMP/compare.log"
-exrs=("$TMP/reference.exr")
-for f in $FILTERS; do exrs+=("$TMP/aniso_ssf_filter=$f.exr"); done
+exrs=("$D/reference.exr")
+for f in $FILTERS; do exrs+=("$D/aniso_ssf_anisotropy=on_filter=$f.exr"); done
+for e in "${exrs[@]}" "$D/metrics.csv"; do
+  [ -f "$e" ] || { echo "fig8.sh: $e missing: run experiments/xu2022/fig6.sh first" >&2; exit 2; }
+done
 # fig8.csv: the G-buffer metrics of each filter against the reference
 {
-  sed -n 1p "$TMP/metrics.csv"
+  sed -n 1p "$D/metrics.csv"
   echo "filter,interior_normal_mean_deg,normal_p95_deg,depth_rmse_r,psnr_db,ssim"
-  awk -F, '$1 == "aniso_ssf" { f = $2; sub(/.*filter=/, "", f); print f "," $11 "," $10 "," $7 "," $12 "," $13 }' \
-    "$TMP/metrics.csv"
+  awk -F, -v want="$FILTERS" '$1 == "aniso_ssf" && $2 ~ /^anisotropy=on;/ && $3 == "reference" {
+    f = $2; sub(/.*filter=/, "", f); if (index(" " want " ", " " f " ")) print f "," $11 "," $10 "," $7 "," $12 "," $13 }' \
+    "$D/metrics.csv"
 } > "$OUT/fig8.csv"
 # fig8_highlights.csv: the highlight layout of every image, the reference's too, over
 # luminance thresholds (below about 0.6 the refracted white squares of the floor count)
@@ -42,8 +42,8 @@ for f in $FILTERS; do exrs+=("$TMP/aniso_ssf_filter=$f.exr"); done
   echo "# $(study_commit); tool=experiments/tools/highlights --min-area 16; images as in fig8.csv"
   echo "image,threshold,highlight_pct,areas,largest_px,share_in_large_pct"
   for t in 0.6 0.7 0.8; do
-    "$TOOL" --threshold "$t" --min-area 16 "${exrs[@]}" | awk -F, -v t="$t" -v dir="$TMP/" 'NR > 1 {
-      f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); sub(/^aniso_ssf_filter=/, "", f)
+    "$TOOL" --threshold "$t" --min-area 16 "${exrs[@]}" | awk -F, -v t="$t" -v dir="$D/" 'NR > 1 {
+      f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); sub(/^aniso_ssf_anisotropy=on_filter=/, "", f)
       print f "," t "," $4 "," $5 "," $6 "," $7 }'
   done
 } > "$OUT/fig8_highlights.csv"
