@@ -42,7 +42,9 @@ for b in "${bins[@]}"; do
 done
 if [ $gl = 1 ]; then
   for so in libEGL.so.1 libGLdispatch.so.0 libOpenGL.so.0; do
-    path=$(ldconfig -p | awk -v n="$so" '$1 == n && /x86-64/ {print $NF; exit}')
+    # read ldconfig's whole listing (over 64 kB): an awk that exits early would end it with
+    # SIGPIPE, which pipefail turns into a silent failure of this script
+    path=$(ldconfig -p | awk -v n="$so" '$1 == n && /x86-64/ && !found {print $NF; found = 1}')
     [ -n "$path" ] || { echo "pack_lean: $so not found on this machine (install libegl1 libopengl0)" >&2; exit 1; }
     copy_lib "$so" "$path"
   done
