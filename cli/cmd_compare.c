@@ -11,6 +11,7 @@
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
+#include "obstacle_mask.h"
 #include "options.h"
 #include "progress.h"
 #include "render_output.h"
@@ -209,8 +210,8 @@ static int item_metrics(cmp_run *r, cmp_entry *e, int f, const cmp_view *cur)
 {
     int rc = FS_OK;
     for (int k = 0; k < r->nrefs && !rc; k++)
-        rc = fs_metrics_compute(&cur->g, cur->rgba, &r->refs[k].frames[f].g, r->refs[k].frames[f].rgba, r->scene.radius,
-                                &e->metrics[k * r->nframes + f]);
+        rc = fs_metrics_compute_in_scene(&r->scene, &r->scene.camera, &cur->g, cur->rgba, &r->refs[k].frames[f].g,
+                                         r->refs[k].frames[f].rgba, &e->metrics[k * r->nframes + f]);
     return rc;
 }
 
@@ -515,8 +516,8 @@ static int measure_import(cmp_run *r, cmp_entry *e)
 {
     int rc = FS_OK;
     for (int k = 0; k < r->nrefs && !rc; k++)
-        rc = fs_metrics_compute(&e->first.g, e->first.rgba, &r->refs[k].frames[0].g, r->refs[k].frames[0].rgba,
-                                r->scene.radius, &e->metrics[k]);
+        rc = fs_metrics_compute_in_scene(&r->scene, &r->scene.camera, &e->first.g, e->first.rgba, &r->refs[k].frames[0].g,
+                                         r->refs[k].frames[0].rgba, &e->metrics[k]);
     e->frame_ms[0] = NAN;
     e->temporal_deg = e->temporal_err_deg = e->temporal_err_depth_r = NAN;
     return rc;

@@ -60,6 +60,7 @@ study xiao2017_radius bash experiments/xiao2017/radius.sh
 study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
 study xiao2017_table1 bash experiments/xiao2017/table1.sh
 study xiao2017_bars bash experiments/xiao2017/bars.sh
+study xu2022_fig5 bash experiments/xu2022/fig5.sh
 study xu2022_fig6 bash experiments/xu2022/fig6.sh
 study xu2022_fig8 bash experiments/xu2022/fig8.sh
 study xu2022_fig9 bash experiments/xu2022/fig9.sh

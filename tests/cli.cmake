@@ -57,3 +57,6 @@ if(NOT FS_SANITIZE AND FS_WITH_OSMESA)
            ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/slurm_cluster)
   set_tests_properties(slurm_cluster PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 180)
 endif()
+add_test(NAME cli_obstacles COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_obstacles.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_BINARY_DIR}/test-out/cli_obstacles)
+set_tests_properties(cli_obstacles PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 300)

@@ -23,6 +23,7 @@ typedef struct shade_ctx {
     float L[3], up[3];
     float floor_y, check;
     float pixel_angle;    /* angular size of one pixel: ray cone spread per unit distance */
+    float eps;            /* rays leave a surface beyond this distance (a thousandth of r) */
     float floor_light[3]; /* ambient + direct light on the floor */
 } shade_ctx;
 
@@ -61,17 +62,56 @@ static float filtered_square(float x, float w)
     return (square_wave_integral(x + 0.5f * w) - square_wave_integral(x - 0.5f * w)) / w;
 }
 
-/* What a ray from origin o in direction d sees: the floor (checker mode, from
- * above) or the sky. travelled: distance from the eye to o, for the pixel's
- * footprint on the floor. */
-static void background(const shade_ctx *c, const float o[3], const float d[3], float travelled, float out[3])
+static float highlight(const shade_ctx *c, const float n[3], const float v[3], float shininess)
 {
-    sky(c, d, out);
-    if (c->s->background != FS_BACKGROUND_CHECKER) return;
+    float h[3] = {c->L[0] + v[0], c->L[1] + v[1], c->L[2] + v[2]};
+    normalize3(h);
+    float nh = dot3(n, h);
+    return nh > 0 && dot3(n, c->L) > 0 ? powf(nh, shininess) : 0.0f;
+}
+
+static void shade_opaque(const shade_ctx *c, const float n[3], const float v[3], const float albedo[3],
+                         float out[3])
+{
+    float nl = fmaxf(dot3(n, c->L), 0.0f);
+    float spec = OPAQUE_SPEC * highlight(c, n, v, OPAQUE_SHININESS);
+    for (int i = 0; i < 3; i++)
+        out[i] = albedo[i] * (c->s->ambient + nl * c->s->light_color[i]) + spec * c->s->light_color[i];
+}
+
+/* Distance along the ray o + t d to the checker floor (seen from above); INFINITY
+ * when it does not reach it or there is no floor. */
+static float floor_distance(const shade_ctx *c, const float o[3], const float d[3])
+{
     int u = c->s->up_axis;
     float height = o[u] - c->floor_y;
-    if (height <= 0 || d[u] >= 0) return;
-    float t = height / -d[u];
+    if (c->s->background != FS_BACKGROUND_CHECKER || height <= 0 || d[u] >= 0) return INFINITY;
+    return height / -d[u];
+}
+
+/* An obstacle (opaque, unshadowed) hit by the ray o + t d before tmax: its colour in
+ * out, and t in *hit_t; 0 when none is hit. */
+static int obstacle_seen(const shade_ctx *c, const float o[3], const float d[3], float tmax, float out[3], float *hit_t)
+{
+    float t, n[3];
+    int i = c->s->obstacles.n ? fs_obstacles_hit(&c->s->obstacles, o, d, c->eps, tmax, &t, n) : -1;
+    if (i < 0) return 0;
+    float v[3] = {-d[0], -d[1], -d[2]};
+    shade_opaque(c, n, v, c->s->obstacles.o[i].color, out);
+    *hit_t = t;
+    return 1;
+}
+
+/* What a ray from origin o in direction d sees: an obstacle, the floor (checker
+ * mode, from above) or the sky. travelled: distance from the eye to o, for the
+ * pixel's footprint on the floor. */
+static void background(const shade_ctx *c, const float o[3], const float d[3], float travelled, float out[3])
+{
+    float t = floor_distance(c, o, d), hit_t;
+    if (obstacle_seen(c, o, d, t, out, &hit_t)) return;
+    sky(c, d, out);
+    if (!isfinite(t)) return;
+    int u = c->s->up_axis;
     int a = (u + 1) % 3, b = (u + 2) % 3;
     float pa = (o[a] + t * d[a]) / c->check, pb = (o[b] + t * d[b]) / c->check;
     /* Pixel footprint on the floor: an ellipse stretched along the ray's
@@ -96,23 +136,6 @@ static float fresnel(float cos_i, float ior)
     return f0 + (1 - f0) * m * m * m * m * m;
 }
 
-static float highlight(const shade_ctx *c, const float n[3], const float v[3], float shininess)
-{
-    float h[3] = {c->L[0] + v[0], c->L[1] + v[1], c->L[2] + v[2]};
-    normalize3(h);
-    float nh = dot3(n, h);
-    return nh > 0 && dot3(n, c->L) > 0 ? powf(nh, shininess) : 0.0f;
-}
-
-static void shade_opaque(const shade_ctx *c, const float n[3], const float v[3], const float albedo[3],
-                         float out[3])
-{
-    float nl = fmaxf(dot3(n, c->L), 0.0f);
-    float spec = OPAQUE_SPEC * highlight(c, n, v, OPAQUE_SHININESS);
-    for (int i = 0; i < 3; i++)
-        out[i] = albedo[i] * (c->s->ambient + nl * c->s->light_color[i]) + spec * c->s->light_color[i];
-}
-
 static void shade_water(const shade_ctx *c, const float p[3], float dist, const float n[3], const float d[3],
                         float thickness, const float tint[3], float out[3])
 {
@@ -133,13 +156,27 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
     float tn = eta * cos_i - sqrtf(fmaxf(k, 0.0f));
     for (int i = 0; i < 3; i++) t[i] = eta * d[i] + tn * n[i];
     normalize3(t);
-    for (int i = 0; i < 3; i++) exit[i] = p[i] + t[i] * thickness;
-    background(c, exit, t, dist + thickness, trans);
+    /* A solid inside the water is seen through the water in front of it. */
+    float seen;
+    if (obstacle_seen(c, p, t, thickness, trans, &seen)) thickness = seen;
+    else {
+        for (int i = 0; i < 3; i++) exit[i] = p[i] + t[i] * thickness;
+        background(c, exit, t, dist + thickness, trans);
+    }
 
     for (int i = 0; i < 3; i++) {
         float transmitted = trans[i] * tint[i] * expf(-c->s->absorption[i] * thickness);
         out[i] = F * refl[i] + (1 - F) * transmitted + spec * c->s->light_color[i];
     }
+}
+
+/* Whether an obstacle lies in front of the fluid at eye depth `depth` along the
+ * primary ray d: then the pixel shows the obstacle alone. */
+static int hidden_by_obstacle(const shade_ctx *c, const float d[3], float depth)
+{
+    float t, n[3];
+    if (!c->s->obstacles.n || fs_obstacles_hit(&c->s->obstacles, c->eye, d, 0.0f, INFINITY, &t, n) < 0) return 0;
+    return !(t * dot3(d, c->fwd) >= depth); /* a NaN depth hides too */
 }
 
 void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, float floor_y, float *rgba)
@@ -156,6 +193,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
     normalize3(c.L);
     c.floor_y = floor_y;
     c.check = s->radius > 0 ? 8.0f * s->radius : 1.0f;
+    c.eps = 1e-3f * (s->radius > 0 ? s->radius : 1.0f);
     c.pixel_angle = 2.0f * tanf(cam->fovy_deg * (float)M_PI / 360.0f) / g->h;
     float floor_nl = fmaxf(c.L[s->up_axis], 0.0f);
     for (int i = 0; i < 3; i++) c.floor_light[i] = s->ambient + floor_nl * s->light_color[i];
@@ -174,6 +212,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
             background(&c, c.eye, d, 0.0f, bg);
             float cov = g->coverage[idx];
             cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
+            if (cov > 0 && hidden_by_obstacle(&c, d, g->depth[idx])) cov = 0;
             if (cov > 0) {
                 float n[3], vn[3] = {g->normal[3 * idx], g->normal[3 * idx + 1], g->normal[3 * idx + 2]};
                 if (!(dot3(vn, vn) > 1e-12f)) { vn[0] = 0; vn[1] = 0; vn[2] = 1; }

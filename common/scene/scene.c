@@ -351,7 +351,8 @@ int fs_scene_load(fs_scene *s, const char *path)
     jctx c = {path, 0};
     if (!cJSON_IsObject(root)) bad(&c, "(top level)", "must be an object");
     static const char *const keys[] = {"particles", "radius", "volume_scale", "kernel", "support", "iso", "up",
-                                       "camera", "light", "material", "background", "methods", "description", NULL};
+                                       "camera", "light", "material", "background", "obstacles", "methods", "description",
+                                       NULL};
     if (!c.rc) check_keys(&c, root, NULL, keys);
     const cJSON *v;
     if (!c.rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(&c, "particles", "is missing");
@@ -388,6 +389,7 @@ int fs_scene_load(fs_scene *s, const char *path)
         else if (!strcmp(bg, "checker")) s->background = FS_BACKGROUND_CHECKER;
         else bad(&c, "background", "must be sky or checker");
     }
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "obstacles"))) c.rc = fs_obstacles_parse(v, path, &s->obstacles);
     if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "methods"))) parse_methods(s, &c, v);
     cJSON_Delete(root);
     return c.rc;

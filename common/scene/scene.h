@@ -5,6 +5,7 @@
 #define FS_SCENE_H
 #include "camera.h"
 #include "kernels.h"
+#include "obstacles.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -51,6 +52,7 @@ typedef struct fs_scene {
     float absorption[3];     /* water, per scene unit of thickness */
 
     fs_background_kind background;
+    fs_obstacles obstacles;      /* static solids, drawn opaque (obstacles.h) */
 
     int nsets;
     char sets[FS_MAX_SETS][160]; /* "method.param=value", scene first, then --set */

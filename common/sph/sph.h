@@ -3,7 +3,9 @@
  * gravity; ideal-gas (the paper) or Tait equation of state. Solid walls are
  * two layers of static boundary particles: mass in the density (Akinci et al.
  * 2012), extrapolated wall pressure (Adami et al. 2012), Lennard-Jones repulsion
- * inside the rest spacing (Monaghan 1994); see sph_cpu.c. Neighbours come
+ * inside the rest spacing (Monaghan 1994); see sph_cpu.c. A JSON scene's static
+ * obstacles (boxes, spheres; obstacles.h) are the same: their lattice sites as
+ * deep as two layers below the surface become boundary particles. Neighbours come
  * from the common counting-sort grid (grid.h), rebuilt every step. Two paths
  * run the same algorithm: C + OpenMP (sph_cpu.c) and GL compute shaders on the
  * current context (sph_gpu.c, shaders/sph/). Units: metres, seconds, kg; up +y.
@@ -11,6 +13,7 @@
 #ifndef FS_SPH_H
 #define FS_SPH_H
 #include <stddef.h>
+#include "obstacles.h"
 #include "particles.h"
 #ifdef __cplusplus
 extern "C" {
@@ -71,6 +74,10 @@ int fs_sph_move_box(fs_sph *s, const float delta[3], double frame_dt); /* advanc
 size_t fs_sph_count(const fs_sph *s);           /* active fluid particles */
 size_t fs_sph_boundary_count(const fs_sph *s);
 float fs_sph_mass(const fs_sph *s);              /* fluid particle mass */
+/* The scene's static obstacles in the simulation's frame (the JSON's
+ * coordinates times the scene scale: exactly them at particles 0); none for
+ * the built-in scenes. fs_sph_move_box moves them with the walls. */
+const fs_obstacles *fs_sph_obstacles(const fs_sph *s);
 
 /* Density and depth measures of the current state (CPU, from fs_sph_get). */
 typedef struct fs_sph_measure {

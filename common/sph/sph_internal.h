@@ -31,6 +31,7 @@ struct fs_sph {
     float colors[8][3];
     int nspouts;
     fs_sph_spout spout[FS_SPH_MAX_SPOUTS];
+    fs_obstacles obstacles;     /* the static solids at the scene's scale (their boundary particles are in [0, nb)) */
     fs_sph_stats st;
     /* CPU path scratch */
     fs_grid g;
@@ -40,7 +41,7 @@ struct fs_sph {
     int dirty;                  /* GPU path: CPU arrays stale */
 };
 
-/* sph_scenes.c: fills box, particles, colours and spouts; sets prm.c when 0. */
+/* sph_scenes.c: fills box, particles, obstacles, colours and spouts; sets prm.c when 0. */
 int fs_sph_scene_build(fs_sph *s, const char *scene, size_t particles);
 /* Allocates the particle arrays for nb + cap particles. */
 int fs_sph_alloc(fs_sph *s, size_t nb, size_t cap);

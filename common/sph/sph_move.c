@@ -1,7 +1,7 @@
 /* Moving the container (sph.h fs_sph_move_box), for the viewer's "push the
  * fluid" drag as in inacio2010's video: the boundary particles and the box
  * translate, and the walls push the fluid like any wall (past a wall, the
- * safety clamp into the moved box). The walls move a little before every step,
+ * safety clamp into the moved box); a scene's obstacles move with them. The walls move a little before every step,
  * in proportion to its length: a jump of even r/10 is felt at once through the
  * stiff near-wall repulsion and throws the fluid at several m/s. */
 #include "fs_error.h"
@@ -17,6 +17,14 @@ static int translate(fs_sph *s, const float d[3])
     for (int a = 0; a < 3; a++) {
         s->box_lo[a] += d[a];
         s->box_hi[a] += d[a];
+    }
+    for (int k = 0; k < s->obstacles.n; k++) { /* the solids' boundary particles moved with the walls */
+        fs_obstacle *o = &s->obstacles.o[k];
+        for (int a = 0; a < 3; a++) {
+            o->lo[a] += d[a];
+            o->hi[a] += d[a];
+            o->c[a] += d[a];
+        }
     }
     return s->gpu && s->nb ? fs_sph_gpu_upload(s, 0, s->nb) : FS_OK;
 }

@@ -2,9 +2,11 @@
  * scaled as a whole so its fluid holds about the requested particle count at
  * the fixed radius r: more particles means a bigger tank, not finer ones.
  * Fluid starts on a lattice of spacing 2r; the box is wrapped in two layers of
- * boundary particles on the same lattice (Akinci et al. 2012). */
+ * boundary particles on the same lattice (Akinci et al. 2012), and a JSON
+ * scene's obstacles are lined with two layers inside their surface. */
 #include "fs_error.h"
 #include "kernels.h"
+#include "obstacles.h"
 #include "sph_internal.h"
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -92,9 +94,10 @@ static int json_vec(const cJSON *a, int n, float *out, int positive)
 }
 
 /* A scene file: {"box": [x, y, z], "fluid": [{"min": [..], "max": [..], "color": 0},
- * {"centre": [..], "radius": R, "color": 1}, ...]} in metres; particles 0 means
- * the lattice at that size, otherwise the whole scene is scaled like the built-ins. */
-static int json_scene(const char *path, scene_def *d, float r)
+ * {"centre": [..], "radius": R, "color": 1}, ...], "obstacles": [..] (obstacles.h)}
+ * in metres; particles 0 means the lattice at exactly that size, otherwise the
+ * whole scene is scaled like the built-ins. */
+static int json_scene(const char *path, scene_def *d, fs_obstacles *ob, float r)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
@@ -139,8 +142,10 @@ static int json_scene(const char *path, scene_def *d, float r)
                 }
             }
             if (rc) break;
+        } else if (!strcmp(it->string, "obstacles")) {
+            if ((rc = fs_obstacles_parse(it, path, ob))) break;
         } else {
-            rc = fs_fail(FS_ERR_INPUT, "%s: unknown or malformed key '%s' (box, fluid)", path, it->string);
+            rc = fs_fail(FS_ERR_INPUT, "%s: unknown or malformed key '%s' (box, fluid, obstacles)", path, it->string);
             break;
         }
     }
@@ -155,13 +160,14 @@ static int json_scene(const char *path, scene_def *d, float r)
     return FS_OK;
 }
 
-/* The scene by name: a .json file (parsed into js) or a built-in one. */
+/* The scene by name: a .json file (parsed into js, its obstacles into
+ * s->obstacles at scale 1) or a built-in one. */
 static int find_scene(fs_sph *s, const char *name, scene_def *js, const scene_def **d)
 {
     *d = NULL;
     size_t len = strlen(name);
     if (len > 5 && !strcmp(name + len - 5, ".json")) {
-        int rc = json_scene(name, js, s->prm.r);
+        int rc = json_scene(name, js, &s->obstacles, s->prm.r);
         if (rc) return rc;
         *d = js;
     }
@@ -180,8 +186,8 @@ typedef struct lattice {
 } lattice;
 
 /* Scales the scene so that its fluid volume at rest holds `particles` lattice
- * sites; sets the box. */
-static int scale_tank(fs_sph *s, const scene_def *d, const char *name, size_t particles, lattice *l)
+ * sites, or by sc when sc > 0; sets the box. */
+static int scale_tank(fs_sph *s, const scene_def *d, const char *name, size_t particles, float sc, lattice *l)
 {
     l->r = s->prm.r;
     l->dx = 2 * l->r;
@@ -189,7 +195,7 @@ static int scale_tank(fs_sph *s, const scene_def *d, const char *name, size_t pa
     double vol = 0;
     for (int i = 0; i < d->nreg; i++) vol += region_volume(&d->reg[i]);
     vol /= d->fill;
-    l->sc = (float)cbrt((double)particles * dx * dx * dx / vol);
+    l->sc = sc > 0 ? sc : (float)cbrt((double)particles * dx * dx * dx / vol);
     for (int a = 0; a < 3; a++) {
         l->nc[a] = (int)lroundf(d->box[a] * l->sc / dx);
         if (l->nc[a] < 4) l->nc[a] = 4;
@@ -217,16 +223,55 @@ static int region_of(const scene_def *d, float sc, const float p[3])
     return g;
 }
 
-/* Counts the fluid lattice sites and the boundary shell. */
-static void count_sites(const scene_def *d, const lattice *l, size_t *nfluid, size_t *nb)
+/* Scales the obstacles by sc, into the frame of the fluid regions. */
+static void scale_obstacles(fs_obstacles *ob, float sc)
+{
+    for (int i = 0; i < ob->n; i++) {
+        fs_obstacle *o = &ob->o[i];
+        for (int a = 0; a < 3; a++) {
+            o->lo[a] *= sc;
+            o->hi[a] *= sc;
+            o->c[a] *= sc;
+        }
+        o->radius *= sc;
+    }
+}
+
+enum { SITE_NONE = -2, SITE_BOUNDARY = -1 }; /* site_of's answers besides a fluid region */
+
+/* 0 outside the obstacles; inside, a site is boundary as deep as the walls'
+ * shell reaches (2 spacings, the support H = 4r), empty deeper. The distance
+ * is 1-Lipschitz, so every site within H of a fluid site is fluid or boundary:
+ * the completed lattice that makes Psi_b = m exact (fs_sph_scene_build). */
+static int obstacle_site(const fs_obstacles *ob, float dx, const float p[3])
+{
+    float dist = INFINITY; /* the deepest of them: never deeper than in their union */
+    for (int i = 0; i < ob->n; i++) dist = fminf(dist, fs_obstacle_distance(&ob->o[i], p));
+    return dist >= 0 ? 0 : dist >= -2 * dx ? SITE_BOUNDARY : SITE_NONE;
+}
+
+/* What lattice site (i, j, k), at p, holds: boundary (the walls' shell or an
+ * obstacle's), nothing, or the fluid of region g >= 0. */
+static int site_of(const fs_sph *s, const scene_def *d, const lattice *l, int i, int j, int k, float p[3])
+{
+    if (!lattice_site(l, i, j, k, p)) return SITE_BOUNDARY;
+    int o = obstacle_site(&s->obstacles, l->dx, p);
+    if (o) return o;
+    int g = region_of(d, l->sc, p);
+    return g < d->nreg ? g : SITE_NONE;
+}
+
+/* Counts the fluid lattice sites and the boundary particles. */
+static void count_sites(const fs_sph *s, const scene_def *d, const lattice *l, size_t *nfluid, size_t *nb)
 {
     *nfluid = *nb = 0;
     for (int k = -2; k < l->nc[2] + 2; k++)
         for (int j = -2; j < l->nc[1] + 2; j++)
             for (int i = -2; i < l->nc[0] + 2; i++) {
                 float p[3];
-                if (!lattice_site(l, i, j, k, p)) (*nb)++;
-                else if (region_of(d, l->sc, p) < d->nreg) (*nfluid)++;
+                int g = site_of(s, d, l, i, j, k, p);
+                if (g == SITE_BOUNDARY) (*nb)++;
+                else if (g >= 0) (*nfluid)++;
             }
 }
 
@@ -241,13 +286,13 @@ static float place_particles(fs_sph *s, const scene_def *d, const lattice *l)
             for (int i = -2; i < l->nc[0] + 2; i++) {
                 float p[3];
                 size_t o;
-                if (!lattice_site(l, i, j, k, p)) {
+                int g = site_of(s, d, l, i, j, k, p);
+                if (g == SITE_NONE) continue;
+                if (g == SITE_BOUNDARY) {
                     o = b++;
                     s->phase[o] = -1;
                     s->m[o] = s->mass; /* Psi_b: see fs_sph_scene_build */
                 } else {
-                    int g = region_of(d, l->sc, p);
-                    if (g == d->nreg) continue;
                     o = f++;
                     s->phase[o] = d->reg[g].phase;
                     s->m[o] = s->mass;
@@ -288,10 +333,15 @@ int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
     lattice l;
     int rc = find_scene(s, name, &js, &d);
     if (rc) return rc;
+    /* A JSON scene at its own size is at scale exactly 1 (not the cube root of
+     * the floored default_n), so that a rendering scene's obstacle coordinates
+     * coincide with the simulated solid. */
+    float sc = !particles && d == &js ? 1.0f : 0.0f;
     if (!particles) particles = d->default_n;
-    if ((rc = scale_tank(s, d, name, particles, &l))) return rc;
+    if ((rc = scale_tank(s, d, name, particles, sc, &l))) return rc;
+    scale_obstacles(&s->obstacles, l.sc);
     size_t nfluid, nb;
-    count_sites(d, &l, &nfluid, &nb);
+    count_sites(s, d, &l, &nfluid, &nb);
     if (!nfluid) return fs_fail(FS_ERR_INPUT, "%s: no fluid inside the box", name);
     size_t cap = nfluid;
     if (d->nspouts) cap = nfluid + (size_t)((double)particles * (1 - d->fill));
@@ -312,3 +362,5 @@ int fs_sph_scene_build(fs_sph *s, const char *name, size_t particles)
      * over-counts: +5% density at walls, +7% in corners, measured.) */
     return FS_OK;
 }
+
+const fs_obstacles *fs_sph_obstacles(const fs_sph *s) { return &s->obstacles; }

@@ -1,0 +1,159 @@
+/* Static obstacles (obstacles.h): parsing, distance and ray intersection. */
+#include "obstacles.h"
+#include "fs_error.h"
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <string.h>
+
+/* The default solid: a light warm grey, distinct from the water and the floor. */
+static const float DEFAULT_COLOR[3] = {0.62f, 0.58f, 0.52f};
+
+static int vec3(const cJSON *a, float out[3])
+{
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) != 3) return 0;
+    for (int i = 0; i < 3; i++) {
+        const cJSON *v = cJSON_GetArrayItem(a, i);
+        if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble) || fabs(v->valuedouble) > 1e30) return 0;
+        out[i] = (float)v->valuedouble;
+    }
+    return 1;
+}
+
+/* One obstacle object; NULL or the reason it is malformed. */
+static const char *parse_one(const cJSON *e, fs_obstacle *o)
+{
+    if (!cJSON_IsObject(e)) return "must be an object";
+    for (const cJSON *k = e->child; k; k = k->next) {
+        static const char *const keys[] = {"min", "max", "centre", "radius", "color", NULL};
+        int ok = 0;
+        for (const char *const *a = keys; *a; a++) ok |= !strcmp(*a, k->string);
+        for (const cJSON *l = k->next; ok && l; l = l->next) ok = strcmp(k->string, l->string) != 0;
+        if (!ok) return "has an unknown or repeated key (min, max, centre, radius, color)";
+    }
+    const cJSON *mn = cJSON_GetObjectItemCaseSensitive(e, "min"), *mx = cJSON_GetObjectItemCaseSensitive(e, "max");
+    const cJSON *c = cJSON_GetObjectItemCaseSensitive(e, "centre"), *r = cJSON_GetObjectItemCaseSensitive(e, "radius");
+    const cJSON *col = cJSON_GetObjectItemCaseSensitive(e, "color");
+    memset(o, 0, sizeof *o);
+    memcpy(o->color, DEFAULT_COLOR, sizeof o->color);
+    if ((mn || mx) == (c || r)) return "needs either \"min\" and \"max\" (a box) or \"centre\" and \"radius\" (a sphere)";
+    if (mn || mx) {
+        o->kind = FS_OBSTACLE_BOX;
+        if (!vec3(mn, o->lo) || !vec3(mx, o->hi)) return "\"min\" and \"max\" must be arrays of 3 numbers";
+        for (int a = 0; a < 3; a++)
+            if (!(o->lo[a] < o->hi[a])) return "\"min\" must be below \"max\" on every axis";
+    } else {
+        o->kind = FS_OBSTACLE_SPHERE;
+        if (!vec3(c, o->c)) return "\"centre\" must be an array of 3 numbers";
+        if (!cJSON_IsNumber(r) || !(r->valuedouble > 0) || r->valuedouble > 1e30) return "\"radius\" must be a positive number";
+        o->radius = (float)r->valuedouble;
+    }
+    if (col) {
+        if (!vec3(col, o->color)) return "\"color\" must be an array of 3 numbers";
+        for (int a = 0; a < 3; a++)
+            if (!(o->color[a] >= 0 && o->color[a] <= 1)) return "\"color\" entries must lie in [0, 1]";
+    }
+    return NULL;
+}
+
+int fs_obstacles_parse(const cJSON *array, const char *path, fs_obstacles *out)
+{
+    out->n = 0;
+    if (!cJSON_IsArray(array)) return fs_fail(FS_ERR_INPUT, "%s: \"obstacles\" must be an array of objects", path);
+    int n = cJSON_GetArraySize(array);
+    if (n > FS_MAX_OBSTACLES) return fs_fail(FS_ERR_INPUT, "%s: %d obstacles: at most %d", path, n, FS_MAX_OBSTACLES);
+    for (int i = 0; i < n; i++) {
+        const char *why = parse_one(cJSON_GetArrayItem(array, i), &out->o[i]);
+        if (why) { out->n = 0; return fs_fail(FS_ERR_INPUT, "%s: obstacles[%d]: %s", path, i, why); }
+    }
+    out->n = n;
+    return FS_OK;
+}
+
+float fs_obstacle_distance(const fs_obstacle *o, const float p[3])
+{
+    if (o->kind == FS_OBSTACLE_SPHERE) {
+        float d[3] = {p[0] - o->c[0], p[1] - o->c[1], p[2] - o->c[2]};
+        return sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - o->radius;
+    }
+    float out2 = 0, inside = -INFINITY;
+    for (int a = 0; a < 3; a++) {
+        float c = 0.5f * (o->lo[a] + o->hi[a]), h = 0.5f * (o->hi[a] - o->lo[a]);
+        float q = fabsf(p[a] - c) - h; /* > 0 outside the slab of axis a */
+        if (q > 0) out2 += q * q;
+        if (q > inside) inside = q;
+    }
+    return out2 > 0 ? sqrtf(out2) : inside;
+}
+
+/* Slab test; t of the entry (or the exit, for a ray starting inside) and its face normal. */
+static int hit_box(const fs_obstacle *o, const float org[3], const float dir[3], float tmin, float *t, float n[3])
+{
+    float t0 = -INFINITY, t1 = INFINITY;
+    int a0 = 0, a1 = 0;
+    for (int a = 0; a < 3; a++) {
+        if (fabsf(dir[a]) < 1e-12f) {
+            if (org[a] < o->lo[a] || org[a] > o->hi[a]) return 0;
+            continue;
+        }
+        float inv = 1.0f / dir[a], u = (o->lo[a] - org[a]) * inv, v = (o->hi[a] - org[a]) * inv;
+        if (u > v) { float s = u; u = v; v = s; }
+        if (u > t0) { t0 = u; a0 = a; }
+        if (v < t1) { t1 = v; a1 = a; }
+    }
+    if (t0 > t1) return 0;
+    int a = t0 > tmin ? a0 : a1;
+    *t = t0 > tmin ? t0 : t1;
+    if (!(*t > tmin)) return 0;
+    memset(n, 0, 3 * sizeof *n);
+    n[a] = dir[a] > 0 ? -1.0f : 1.0f;
+    if (t0 <= tmin) n[a] = -n[a]; /* leaving through the face: its outward side is ahead */
+    return 1;
+}
+
+static int hit_sphere(const fs_obstacle *o, const float org[3], const float dir[3], float tmin, float *t, float n[3])
+{
+    float m[3] = {org[0] - o->c[0], org[1] - o->c[1], org[2] - o->c[2]};
+    float b = m[0] * dir[0] + m[1] * dir[1] + m[2] * dir[2];
+    float c = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] - o->radius * o->radius;
+    float disc = b * b - c;
+    if (disc < 0) return 0;
+    float s = sqrtf(disc), tt = -b - s;
+    if (!(tt > tmin)) tt = -b + s;
+    if (!(tt > tmin)) return 0;
+    *t = tt;
+    for (int a = 0; a < 3; a++) n[a] = (m[a] + tt * dir[a]) / o->radius;
+    return 1;
+}
+
+int fs_obstacles_hit(const fs_obstacles *ob, const float org[3], const float dir[3], float tmin, float tmax, float *t,
+                     float n[3])
+{
+    int best = -1;
+    for (int i = 0; i < ob->n; i++) {
+        float ti, ni[3];
+        int hit = ob->o[i].kind == FS_OBSTACLE_SPHERE ? hit_sphere(&ob->o[i], org, dir, tmin, &ti, ni)
+                                                      : hit_box(&ob->o[i], org, dir, tmin, &ti, ni);
+        if (hit && ti < tmax) {
+            tmax = ti;
+            *t = ti;
+            memcpy(n, ni, sizeof ni);
+            best = i;
+        }
+    }
+    return best;
+}
+
+void fs_obstacles_depth(const fs_obstacles *ob, const fs_camera *cam, int w, int h, float *depth)
+{
+    float right[3], up[3], fwd[3];
+    fs_camera_basis(cam, right, up, fwd);
+    float sx = (float)cam->width / w, sy = (float)cam->height / h;
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            float d[3], t, n[3];
+            fs_camera_ray(cam, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
+            int i = fs_obstacles_hit(ob, cam->eye, d, 0.0f, INFINITY, &t, n);
+            depth[(size_t)y * w + x] = i < 0 ? INFINITY : t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+        }
+}

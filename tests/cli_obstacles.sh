@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Static obstacles end to end: simulate a scene file with a box and a ball (boundary
+# particles, no fluid inside them), render its frame with the same solids through
+# compare (the solids drawn, the hidden pixels out of the metrics), and bad obstacles
+# refused with one line naming the file and no output left.
+set -u
+BIN=$1 T=$2
+rm -rf "$T"; mkdir -p "$T"
+fails=0
+check() { if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
+SOLIDS='[{"min": [0.64, 0, 0.16], "max": [0.8, 0.32, 0.48]}, {"centre": [0.4, 0.16, 0.56], "radius": 0.12}]'
+echo "{\"box\": [1.2, 0.8, 0.64], \"fluid\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.48, 0.64]}], \"obstacles\": $SOLIDS}" > "$T/sim.json"
+echo "{\"box\": [1.2, 0.8, 0.64], \"fluid\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.48, 0.64]}]}" > "$T/sim_plain.json"
+
+"$BIN" simulate "$T/sim.json" --radius 0.04 --frames 3 --fps 30 -q -o "$T/f_%04d.bgeo" --stats "$T/s.csv" 2> "$T/sim.err"
+check '[ $? -eq 0 ] && [ -s "$T/f_0003.bgeo" ]' "simulate runs with obstacles"
+"$BIN" simulate "$T/sim_plain.json" --radius 0.04 --frames 1 -q --stats "$T/plain.csv" 2> /dev/null
+nb() { sed -n 's/.* fluid + \([0-9]*\) boundary particles.*/\1/p' "$1" | head -1; }
+nf() { sed -n 's/.*: \([0-9]*\) fluid + .*/\1/p' "$1" | head -1; }
+check '[ "$(nb "$T/s.csv")" -gt "$(nb "$T/plain.csv")" ] && [ "$(nf "$T/s.csv")" -lt "$(nf "$T/plain.csv")" ]' \
+  "the solids add boundary particles ($(nb "$T/plain.csv") -> $(nb "$T/s.csv")) and take lattice sites from the fluid ($(nf "$T/plain.csv") -> $(nf "$T/s.csv"))"
+
+scene() { # FILE OBSTACLES_JSON_OR_EMPTY
+  printf '{"particles": "f_0003.bgeo", "radius": 0.04, "up": "y", %s"camera": {"eye": [1.7, 0.9, 1.6], "target": [0.5, 0.15, 0.3], "width": 128, "height": 128}}\n' \
+    "${2:+\"obstacles\": $2, }" > "$1"
+}
+scene "$T/with.json" "$SOLIDS"
+scene "$T/without.json" ""
+for s in with without; do
+  "$BIN" compare "$T/$s.json" --methods spheres --reference reference -q --no-cache --repeat 1 -o "$T/$s" 2> "$T/$s.err"
+  check '[ $? -eq 0 ] && [ -s "$T/$s/metrics.csv" ]' "compare runs ($s obstacles)"
+done
+both() { awk -F, '!/^#/ && $1 == "spheres" {print $15}' "$1/metrics.csv"; }
+check '[ "$(both "$T/with")" -lt "$(both "$T/without")" ]' "hidden pixels leave the metrics ($(both "$T/without") -> $(both "$T/with") px both cover)"
+diffpx=$(oiiotool "$T/with/reference.png" "$T/without/reference.png" --absdiff --rangecompress --ch R --printstats 2>/dev/null |
+  sed -n 's/.*Max: *\([0-9.]*\).*/\1/p' | head -1)
+check 'awk -v d="${diffpx:-0}" "BEGIN {exit !(d > 0.2)}"' "the solids are drawn (largest pixel change ${diffpx:-none})"
+
+expect_bad() { # NAME CMD... : exit 2, one line naming the file and obstacles[...], no output
+  local name=$1; shift
+  "$@" > /dev/null 2> "$T/bad.err"
+  local rc=$?
+  check '[ $rc -eq 2 ] && [ "$(wc -l < "$T/bad.err")" -eq 1 ] && grep -q "bad_.*\.json: obstacles\[0\]" "$T/bad.err" && ! ls "$T"/bad_out* > /dev/null 2>&1' \
+    "$name: $(cat "$T/bad.err")"
+}
+echo '{"box": [1, 1, 1], "fluid": [{"min": [0, 0, 0], "max": [0.5, 0.5, 0.5]}], "obstacles": [{"centre": [0.7, 0.2, 0.5], "radius": 0}]}' > "$T/bad_sim.json"
+expect_bad "simulate refuses a ball of radius 0" "$BIN" simulate "$T/bad_sim.json" --frames 1 -q -o "$T/bad_out_%04d.bgeo"
+scene "$T/bad_render.json" '[{"min": [1, 0, 0], "max": [0, 1, 1]}]'
+expect_bad "compare refuses a box with min > max" "$BIN" compare "$T/bad_render.json" --methods spheres -q -o "$T/bad_out"
+[ $fails -eq 0 ] && echo "all checks passed" || echo "$fails check(s) failed"
+exit $((fails > 0))
