@@ -62,6 +62,7 @@ study xiao2017_table1 bash experiments/xiao2017/table1.sh
 study xiao2017_bars bash experiments/xiao2017/bars.sh
 study xu2022_fig5 bash experiments/xu2022/fig5.sh
 study xu2022_fig6 bash experiments/xu2022/fig6.sh
+study xu2022_fig2 bash experiments/xu2022/fig2.sh # after fig6.sh: its images
 study xu2022_fig8 bash experiments/xu2022/fig8.sh
 study xu2022_fig9 bash experiments/xu2022/fig9.sh
 study xu2022_sigma bash experiments/xu2022/sigma.sh
@@ -74,6 +75,7 @@ study iwasaki2006_fig7 bash experiments/iwasaki2006/fig7.sh
 study iwasaki2006_fig8 bash experiments/iwasaki2006/fig8.sh
 study inacio2010_tables bash experiments/inacio2010/tables.sh
 study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
+study inacio2010_fig2 bash experiments/inacio2010/fig2.sh
 study inacio2010_fig9 bash experiments/inacio2010/fig9.sh
 study inacio2010_fig7 bash experiments/inacio2010/fig7.sh
 study inacio2010_volume_raycast bash experiments/inacio2010/volume_raycast.sh
