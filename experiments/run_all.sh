@@ -94,6 +94,7 @@ study baselines bash experiments/baselines/run.sh
 study counters bash experiments/counters/work.sh
 study slurm_scaling bash experiments/slurm/scaling.sh
 study demo bash scripts/demo.sh
+study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
 [ $mode = quick ] && readme_check
 echo "run_all: every study ran ($mode)"
