@@ -39,6 +39,9 @@ case "${1:-}" in
   *) echo "usage: $0 [--quick]" >&2; exit 2 ;;
 esac
 source experiments/lib.sh # median, auto_camera, vdb_aperture, quick, RESULTS, study_commit
+# The tree the binaries were built from, taken once at the start: an edit made while the
+# benchmark runs does not change what it measures.
+PROV=$(study_commit)
 [ "$FS_QUICK" = 1 ] && QUICK=1
 RUNS=${RUNS:-$(quick 3 1)}; SIZE=${SIZE:-$(quick 1024 128)}; OUT=$RESULTS/bench
 BIN=${BIN:-./build/fluidsurf}
@@ -184,7 +187,7 @@ bench() {
 # run cut short leaves a valid CSV of the sets it finished)
 write_csv() {
   {
-    echo "# fluidsurf speed benchmark (experiments/bench/speed.sh$([ $QUICK = 1 ] && echo ' --quick')); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
+    echo "# fluidsurf speed benchmark (experiments/bench/speed.sh$([ $QUICK = 1 ] && echo ' --quick')); $PROV; $(date -u +%Y-%m-%dT%H:%MZ)"
     echo "# baseline: reference@$BASE_COMMIT = $BASE_DESC"
     echo "# renderer of the GL methods: ${RENDERER:-unknown}; CPU methods: CPU; threads: $(nproc) cores, OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset}, LP_NUM_THREADS=${LP_NUM_THREADS:-unset}"
     echo "# machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
