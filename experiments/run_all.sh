@@ -55,6 +55,7 @@ study xiao2017_fig3 bash experiments/xiao2017/fig3.sh
 study xiao2017_fig4 bash experiments/xiao2017/fig4.sh
 study xiao2017_fig5 bash experiments/xiao2017/fig5.sh
 study xiao2017_fig6 bash experiments/xiao2017/fig6.sh
+study xiao2017_fig7 bash experiments/xiao2017/fig7.sh
 study xiao2017_fig10 bash experiments/xiao2017/fig10.sh
 study xiao2017_radius bash experiments/xiao2017/radius.sh
 study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
