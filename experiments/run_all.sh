@@ -71,6 +71,7 @@ study xu2022_doubts bash experiments/xu2022/doubts.sh
 study xu2022_bars bash experiments/xu2022/bars.sh
 study iwasaki2006_density_grid bash experiments/iwasaki2006/density_grid.sh
 study iwasaki2006_surfels bash experiments/iwasaki2006/surfels.sh
+study iwasaki2006_tables bash experiments/iwasaki2006/tables.sh # after density_grid.sh and surfels.sh
 study iwasaki2006_caustics bash experiments/iwasaki2006/caustics.sh
 study iwasaki2006_fig7 bash experiments/iwasaki2006/fig7.sh
 study iwasaki2006_fig8 bash experiments/iwasaki2006/fig8.sh
