@@ -277,12 +277,23 @@ typedef struct temporal_sums { double change, err_normal, err_depth; int n_chang
  * first reference's motion where that reference is at hand (not in a shard). */
 static void add_temporal(const cmp_run *r, int f, const fs_gbuffer *a, const fs_gbuffer *b, temporal_sums *t)
 {
-    double d = cmp_normal_change(a, b);
-    if (isfinite(d)) t->change += d, t->n_change++;
     const cmp_ref *ref = &r->refs[0];
-    if (r->shard_n || !ref->frames || !ref->frames[f - 1].g.w || !ref->frames[f].g.w) return;
-    cmp_temporal_error e = cmp_temporal_error_of(a, b, &ref->frames[f - 1].g, &ref->frames[f].g, r->scene.radius);
-    if (isfinite(e.normal_deg)) t->err_normal += e.normal_deg, t->err_depth += e.depth_r, t->n_err++;
+    int with_ref = !r->shard_n && ref->frames && ref->frames[f - 1].g.w && ref->frames[f].g.w;
+    /* Pixels a solid hides in front of the reference's surface (or, without the
+     * reference at hand, the variant's own) leave both measures. */
+    const fs_gbuffer *g[4] = {a, b, with_ref ? &ref->frames[f - 1].g : NULL, with_ref ? &ref->frames[f].g : NULL};
+    fs_gbuffer v[4];
+    size_t n = (size_t)a->w * a->h;
+    float *cov = r->scene.obstacles.n ? malloc(4 * n * sizeof *cov) : NULL;
+    if (cov && !fs_obstacle_hide(&r->scene, &r->scene.camera, with_ref ? g + 2 : g, 2, g, with_ref ? 4 : 2, v, cov))
+        for (int k = 0; k < (with_ref ? 4 : 2); k++) g[k] = &v[k];
+    double d = cmp_normal_change(g[0], g[1]);
+    if (isfinite(d)) t->change += d, t->n_change++;
+    if (with_ref) {
+        cmp_temporal_error e = cmp_temporal_error_of(g[0], g[1], g[2], g[3], r->scene.radius);
+        if (isfinite(e.normal_deg)) t->err_normal += e.normal_deg, t->err_depth += e.depth_r, t->n_err++;
+    }
+    free(cov);
 }
 
 static void finish_temporal(const temporal_sums *t, cmp_entry *e)
@@ -557,8 +568,13 @@ static void reference_temporal(cmp_run *r)
     double sum = 0;
     int n = 0;
     for (int f = 1; f < r->nframes; f++) {
-        double d = cmp_normal_change(&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g);
+        const fs_gbuffer *g[2] = {&r->refs[0].frames[f - 1].g, &r->refs[0].frames[f].g};
+        fs_gbuffer v[2];
+        float *cov = r->scene.obstacles.n ? malloc(2 * (size_t)g[0]->w * g[0]->h * sizeof *cov) : NULL;
+        if (cov && !fs_obstacle_hide(&r->scene, &r->scene.camera, g, 2, g, 2, v, cov)) g[0] = &v[0], g[1] = &v[1];
+        double d = cmp_normal_change(g[0], g[1]);
         if (isfinite(d)) { sum += d; n++; }
+        free(cov);
     }
     r->ref_temporal_deg = n ? sum / n : NAN;
 }

@@ -36,6 +36,13 @@ diffpx=$(oiiotool "$T/with/reference.png" "$T/without/reference.png" --absdiff -
   sed -n 's/.*Max: *\([0-9.]*\).*/\1/p' | head -1)
 check 'awk -v d="${diffpx:-0}" "BEGIN {exit !(d > 0.2)}"' "the solids are drawn (largest pixel change ${diffpx:-none})"
 
+# a sequence: the temporal measures run with solids in the view
+printf '{"particles": {"file": "f_%%04d.bgeo", "first": 1, "last": 3}, "radius": 0.04, "up": "y", "obstacles": %s, "camera": {"eye": [1.7, 0.9, 1.6], "target": [0.5, 0.15, 0.3], "width": 64, "height": 64}}\n' \
+  "$SOLIDS" > "$T/seq.json"
+"$BIN" compare "$T/seq.json" --methods spheres --reference reference -q --no-cache --repeat 1 -o "$T/seq" 2> "$T/seq.err"
+check '[ $? -eq 0 ] && awk -F, "!/^#/ && \$1 == \"spheres\" { n++; for (i = 3; i <= NF; i++) if (\$i == \"nan\" || \$i == \"\") bad++ } END { exit !(n == 1 && !bad) }" "$T/seq/temporal.csv"' \
+  "a sequence with solids gives finite temporal measures ($(grep -v '^#' "$T/seq/temporal.csv" 2>/dev/null | tail -1))"
+
 expect_bad() { # NAME CMD... : exit 2, one line naming the file and obstacles[...], no output
   local name=$1; shift
   "$@" > /dev/null 2> "$T/bad.err"

@@ -167,6 +167,32 @@ static void test_metrics(fs_gbuffer *a, fs_gbuffer *b)
     CHECK(all.n_union == W * H && all.normal_mean_deg > 0, "fluid in front of the box masked: %zu px", all.n_union);
 }
 
+/* fs_obstacle_hide: a pixel leaves every view when a solid hides it in any reference. */
+static void test_hide(fs_gbuffer *a, fs_gbuffer *b)
+{
+    fs_scene s;
+    fs_camera cam;
+    setup(&s, &cam);
+    fill(a, 0.2f); /* in front of the box: hides nothing */
+    fill(b, 4.0f); /* behind it: hidden on the left half */
+    const fs_gbuffer *by[2] = {a, b}, *g[2] = {a, b};
+    fs_gbuffer v[2];
+    float *cov = malloc(sizeof(float) * 2 * W * H);
+    int rc = fs_obstacle_hide(&s, &cam, by, 1, g, 2, v, cov);
+    int kept = 0;
+    for (int i = 0; i < W * H; i++) kept += v[0].coverage[i] > 0.5f && v[1].coverage[i] > 0.5f;
+    CHECK(rc == FS_OK && kept == W * H, "a reference in front of the solid hides %d pixels", W * H - kept);
+    rc = fs_obstacle_hide(&s, &cam, by, 2, g, 2, v, cov);
+    int wrong = 0;
+    for (int i = 0; i < W * H; i++) {
+        int left = (i % W) < W / 2;
+        wrong += (v[0].coverage[i] > 0.5f) == left || (v[1].coverage[i] > 0.5f) == left;
+    }
+    CHECK(rc == FS_OK && wrong <= 2 * H, "%d pixels wrong when either reference is behind the solid", wrong);
+    CHECK(a->coverage[0] == 1 && b->coverage[0] == 1, "the inputs' coverage changed");
+    free(cov);
+}
+
 static void test_scene_file(void)
 {
     const char *path = FS_TEST_OUT "/obstacles_scene.json";
@@ -194,6 +220,7 @@ int main(void)
     test_geometry();
     test_shading(&a);
     test_metrics(&a, &b);
+    test_hide(&a, &b);
     test_scene_file();
     fs_gbuffer_free(&a);
     fs_gbuffer_free(&b);

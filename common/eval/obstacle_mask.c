@@ -21,14 +21,28 @@ int fs_obstacle_hidden_mask(const fs_scene *s, const fs_camera *cam, const fs_gb
     return FS_OK;
 }
 
-/* A view of g whose coverage is `cov`: g's with the hidden pixels emptied. */
-static fs_gbuffer masked_view(const fs_gbuffer *g, const unsigned char *hidden, float *cov)
+int fs_obstacle_hide(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *const *by, int nby,
+                     const fs_gbuffer *const *g, int ng, fs_gbuffer *views, float *cov)
 {
-    fs_gbuffer v = *g;
-    size_t n = (size_t)g->w * g->h;
-    for (size_t i = 0; i < n; i++) cov[i] = hidden[i] ? 0.0f : g->coverage[i];
-    v.coverage = cov;
-    return v;
+    int w = g[0]->w, h = g[0]->h;
+    size_t n = (size_t)w * h;
+    for (int k = 0; k < nby; k++)
+        if (by[k]->w != w || by[k]->h != h) return fs_fail(FS_ERR_INPUT, "metrics: image sizes differ");
+    unsigned char *hidden = malloc(n), *one = malloc(n);
+    int rc = hidden && one ? FS_OK : fs_fail(FS_ERR_RUNTIME, "metrics: out of memory for %dx%d images", w, h);
+    if (!rc) memset(hidden, 0, n);
+    for (int k = 0; k < nby && !rc; k++) /* hidden in any of them */
+        if (!(rc = fs_obstacle_hidden_mask(s, cam, by[k], one)))
+            for (size_t i = 0; i < n; i++) hidden[i] |= one[i];
+    for (int k = 0; k < ng && !rc; k++) {
+        if (g[k]->w != w || g[k]->h != h) { rc = fs_fail(FS_ERR_INPUT, "metrics: image sizes differ"); break; }
+        views[k] = *g[k];
+        views[k].coverage = cov + (size_t)k * n;
+        for (size_t i = 0; i < n; i++) views[k].coverage[i] = hidden[i] ? 0.0f : g[k]->coverage[i];
+    }
+    free(hidden);
+    free(one);
+    return rc;
 }
 
 int fs_metrics_compute_in_scene(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *a, const float *rgba_a,
@@ -37,15 +51,12 @@ int fs_metrics_compute_in_scene(const fs_scene *s, const fs_camera *cam, const f
     if (!s->obstacles.n || !a || !b || !a->coverage || !b->coverage || a->w != b->w || a->h != b->h)
         return fs_metrics_compute(a, rgba_a, b, rgba_b, s->radius, out); /* which reports what is wrong */
     size_t n = (size_t)b->w * b->h;
-    unsigned char *hidden = malloc(n);
     float *cov = malloc(2 * n * sizeof *cov);
-    int rc = hidden && cov ? fs_obstacle_hidden_mask(s, cam, b, hidden)
-                           : fs_fail(FS_ERR_RUNTIME, "metrics: out of memory for %dx%d images", b->w, b->h);
-    if (!rc) {
-        fs_gbuffer va = masked_view(a, hidden, cov), vb = masked_view(b, hidden, cov + n);
-        rc = fs_metrics_compute(&va, rgba_a, &vb, rgba_b, s->radius, out);
-    }
-    free(hidden);
+    if (!cov) return fs_fail(FS_ERR_RUNTIME, "metrics: out of memory for %dx%d images", b->w, b->h);
+    const fs_gbuffer *g[2] = {a, b};
+    fs_gbuffer v[2];
+    int rc = fs_obstacle_hide(s, cam, &b, 1, g, 2, v, cov);
+    if (!rc) rc = fs_metrics_compute(&v[0], rgba_a, &v[1], rgba_b, s->radius, out);
     free(cov);
     return rc;
 }

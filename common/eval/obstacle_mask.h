@@ -13,6 +13,12 @@ extern "C" {
  * or ref has no surface and an obstacle is hit; 0 elsewhere. hidden: w*h of ref.
  * FS_ERR_RUNTIME when out of memory. */
 int fs_obstacle_hidden_mask(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *ref, unsigned char *hidden);
+/* Views of the ng G-buffers g (views[k]: g[k] with its coverage in cov + k w h) with
+ * every pixel emptied that an obstacle hides in front of any of the nby G-buffers by
+ * (their surfaces: the references a measure is taken against). All the same size
+ * (FS_ERR_INPUT); cov: ng w h floats. FS_ERR_RUNTIME when out of memory. */
+int fs_obstacle_hide(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *const *by, int nby,
+                     const fs_gbuffer *const *g, int ng, fs_gbuffer *views, float *cov);
 /* fs_metrics_compute of a against the reference b over the pixels no obstacle
  * hides (all pixels when s has none). */
 int fs_metrics_compute_in_scene(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *a, const float *rgba_a,
