@@ -19,8 +19,9 @@ static const char epilogue[] =
     "drop, spouts (four coloured spouts filling a pool), pool (water at rest), or a JSON file\n"
     "{\"box\": [x, y, z], \"fluid\": [{\"min\": [..], \"max\": [..], \"color\": 0},\n"
     "{\"centre\": [..], \"radius\": R, \"color\": 1}], \"obstacles\": [{\"min\", \"max\"} |\n"
-    "{\"centre\", \"radius\"}]} in metres (colour ids 0..4); obstacles are static solids, two\n"
-    "layers of boundary particles (without --particles: at the file's coordinates exactly).\n"
+    "{\"centre\", \"radius\"} | {\"mesh\": \"closed.obj\", \"scale\", \"offset\"}]} in metres (colour\n"
+    "ids 0..4); obstacles are static solids lined with two layers of boundary particles\n"
+    "(without --particles: at the file's coordinates exactly).\n"
     "Writes frames 0..N, frame f being the state at t = f / fps (frame 0: the start).\n"
     "-o may be left out when --stats is given. A run that diverges (NaN) stops with exit 1.\n";
 

@@ -6,11 +6,10 @@
 #                                     so every CSV names a clean commit)
 #   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
 #                                     minutes; CI runs it so that no study script can rot), then
-#                                     the README check below
+#                                     the checks below
 #   experiments/run_all.sh --check    the checks of the committed results: every generated README
 #                                     table is its CSV's, and every committed CSV under results/
-#                                     names a clean commit (not yet in CI: tools/check_results.sh
-#                                     lists the CSVs still made at a dirty tree)
+#                                     names a clean commit (tools/check_results.sh)
 #
 # Studies run in the order below; one that fails stops the run with its name.
 set -euo pipefail
@@ -98,5 +97,8 @@ study slurm_scaling bash experiments/slurm/scaling.sh
 study demo bash scripts/demo.sh
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
-[ $mode = quick ] && readme_check
+if [ $mode = quick ]; then
+  readme_check
+  study results_clean bash experiments/tools/check_results.sh
+fi
 echo "run_all: every study ran ($mode)"

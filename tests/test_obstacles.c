@@ -16,13 +16,15 @@
 
 enum { W = 64, H = 64 };
 
-static int parse(const char *json, fs_obstacles *ob)
+static int parse_at(const char *json, const char *scene_path, fs_obstacles *ob)
 {
     cJSON *a = cJSON_Parse(json);
-    int rc = fs_obstacles_parse(a, "t.json", ob);
+    int rc = fs_obstacles_parse(a, scene_path, ob);
     cJSON_Delete(a);
     return rc;
 }
+
+static int parse(const char *json, fs_obstacles *ob) { return parse_at(json, "t.json", ob); }
 
 static void test_parse(void)
 {
@@ -193,6 +195,90 @@ static void test_hide(fs_gbuffer *a, fs_gbuffer *b)
     free(cov);
 }
 
+/* An OBJ unit cube [0, 1]^3 as quads. */
+static void write_unit_cube(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    for (int v = 0; v < 8; v++) fprintf(f, "v %d %d %d\n", v & 1, (v >> 1) & 1, (v >> 2) & 1);
+    fputs("# six quads\nf 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n", f);
+    fclose(f);
+}
+
+/* A mesh cube, scaled and moved, is the box it covers: distances, hits and the shading. */
+static void test_mesh(fs_gbuffer *g)
+{
+    write_unit_cube(FS_TEST_OUT "/unit_cube.obj");
+    fs_obstacles ob;
+    int rc = parse_at("[{\"mesh\": \"unit_cube.obj\", \"scale\": 2, \"offset\": [1, 0, -1]},"
+                      " {\"min\": [1, 0, -1], \"max\": [3, 2, 1]}]", FS_TEST_OUT "/scene.json", &ob);
+    CHECK(rc == FS_OK && ob.n == 2 && ob.o[0].kind == FS_OBSTACLE_MESH, "mesh obstacle: %s", fs_error_message());
+    if (rc) return;
+    CHECK(ob.o[0].lo[0] == 1 && ob.o[0].hi[0] == 3 && ob.o[0].hi[1] == 2, "mesh bounds %g..%g", ob.o[0].lo[0], ob.o[0].hi[0]);
+    float worst = 0;
+    for (int k = 0; k < 200; k++) { /* points inside, outside and near the faces */
+        float p[3] = {(float)(k % 7) * 0.7f - 0.5f, (float)(k % 5) * 0.6f - 0.4f, (float)(k % 11) * 0.35f - 1.9f};
+        worst = fmaxf(worst, fabsf(fs_obstacle_distance(&ob.o[0], p) - fs_obstacle_distance(&ob.o[1], p)));
+    }
+    CHECK(worst < 1e-4f, "mesh and box distances differ by up to %g", worst);
+    fs_obstacles one = {1, {ob.o[0]}}, other = {1, {ob.o[1]}};
+    int misses = 0;
+    for (int k = 0; k < 100; k++) {
+        float org[3] = {-2, 0.03f * k, 0.5f - 0.02f * k}, d[3] = {1, 0.05f, 0.01f}, t1 = 0, t2 = 0, n1[3], n2[3];
+        float l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int i = 0; i < 3; i++) d[i] /= l;
+        int h1 = fs_obstacles_hit(&one, org, d, 0, INFINITY, &t1, n1), h2 = fs_obstacles_hit(&other, org, d, 0, INFINITY, &t2, n2);
+        misses += (h1 < 0) != (h2 < 0) || (h1 >= 0 && (fabsf(t1 - t2) > 1e-4f || fabsf(n1[0] - n2[0]) > 1e-4f));
+    }
+    CHECK(misses == 0, "%d of 100 rays hit the mesh and the box differently", misses);
+    fs_scene s, t;
+    fs_camera cam;
+    setup(&s, &cam);
+    t = s;
+    s.obstacles = one;
+    t.obstacles = other;
+    float *ia = malloc(sizeof(float) * 4 * W * H), *ib = malloc(sizeof(float) * 4 * W * H);
+    fill(g, 4.0f);
+    fs_shade(&s, &cam, g, 0, ia);
+    fs_shade(&t, &cam, g, 0, ib);
+    int differ = 0;
+    for (int i = 0; i < W * H; i++) differ += !same(ia + 4 * i, ib + 4 * i);
+    CHECK(differ <= W / 4, "%d pixels differ between the mesh cube and the box", differ);
+    free(ia);
+    free(ib);
+}
+
+/* Bad mesh obstacles: one line naming the scene, the obstacle and the mesh file's problem. */
+static void test_bad_mesh(void)
+{
+    static const char *const files[][2] = {
+        {"nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"}, {"badv.obj", "v 0 0\nf 1 1 1\n"},
+        {"badf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}, {"short.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"}};
+    for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
+        char path[512], json[256];
+        snprintf(path, sizeof path, FS_TEST_OUT "/%s", files[i][0]);
+        FILE *f = fopen(path, "w");
+        fputs(files[i][1], f);
+        fclose(f);
+        snprintf(json, sizeof json, "[{\"mesh\": \"%s\"}]", files[i][0]);
+        fs_obstacles ob;
+        int rc = parse_at(json, FS_TEST_OUT "/t.json", &ob);
+        const char *m = fs_error_message();
+        CHECK(rc == FS_ERR_INPUT && strstr(m, FS_TEST_OUT "/t.json: obstacles[0]: ") == m && strstr(m, files[i][0]) &&
+                  !strchr(m, '\n'),
+              "%s: rc %d, %s", files[i][0], rc, m);
+    }
+    static const char *const bad[] = {"[{\"mesh\": \"missing.obj\"}]", "[{\"mesh\": 3}]",
+                                      "[{\"mesh\": \"x.obj\", \"radius\": 1}]",
+                                      "[{\"centre\": [0, 0, 0], \"radius\": 1, \"scale\": 2}]",
+                                      "[{\"mesh\": \"x.obj\", \"scale\": -1}]"};
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        fs_obstacles ob;
+        int rc = parse(bad[i], &ob);
+        CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "t.json: obstacles[0]: "), "%s: rc %d, %s", bad[i], rc,
+              fs_error_message());
+    }
+}
+
 static void test_scene_file(void)
 {
     const char *path = FS_TEST_OUT "/obstacles_scene.json";
@@ -221,6 +307,8 @@ int main(void)
     test_shading(&a);
     test_metrics(&a, &b);
     test_hide(&a, &b);
+    test_mesh(&a);
+    test_bad_mesh();
     test_scene_file();
     fs_gbuffer_free(&a);
     fs_gbuffer_free(&b);

@@ -214,15 +214,46 @@ static void bad_obstacles(void)
     refused("misspelt", "\"obstacle\": []", "(box, fluid, obstacles)");
 }
 
+/* An OBJ cube of the box's corners, as quads (the reader fans them into triangles). */
+static void write_cube(const char *path, const float lo[3], const float hi[3])
+{
+    char text[1024], *e = text;
+    for (int v = 0; v < 8; v++)
+        e += sprintf(e, "v %.9g %.9g %.9g\n", v & 1 ? hi[0] : lo[0], v & 2 ? hi[1] : lo[1], v & 4 ? hi[2] : lo[2]);
+    sprintf(e, "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n");
+    write_file(path, text);
+}
+
+/* A mesh obstacle that is the box exactly gives the box's boundary and fluid. */
+static void check_mesh(const char *pbox, const fs_obstacles *box)
+{
+    const char *obj = DIR "/cube.obj", *pmesh = DIR "/mesh.json";
+    write_cube(obj, box->o[0].lo, box->o[0].hi);
+    char text[512];
+    snprintf(text, sizeof text, "{\"box\": [%g, %g, %g], \"fluid\": [{\"min\": [%g, %g, %g], \"max\": [%g, %g, %g]}], "
+             "\"obstacles\": [{\"mesh\": \"cube.obj\"}]}\n", BOX[0], BOX[1], BOX[2], FLUID_LO[0], FLUID_LO[1], FLUID_LO[2],
+             FLUID_HI[0], FLUID_HI[1], FLUID_HI[2]);
+    write_file(pmesh, text);
+    fs_sph *a = make(pbox, 0), *b = make(pmesh, 0);
+    if (a && b)
+        CHECK(fs_sph_boundary_count(a) == fs_sph_boundary_count(b) && fs_sph_count(a) == fs_sph_count(b),
+              "mesh cube: boundary %zu, fluid %zu; the box: %zu, %zu", fs_sph_boundary_count(b), fs_sph_count(b),
+              fs_sph_boundary_count(a), fs_sph_count(a));
+    fs_sph_destroy(a);
+    fs_sph_destroy(b);
+}
+
 int main(void)
 {
     mkdir(FS_TEST_OUT, 0755);
     mkdir(DIR, 0755);
     /* A block downstream of the dam, on the floor, 6^3 sites: a 2-layer shell
      * of 6^3 - 2^3 = 208 and 8 empty sites within. */
-    fs_obstacles box = {1, {{FS_OBSTACLE_BOX, {0.7f, 0, 0.1f}, {1.0f, 0.3f, 0.4f}, {0}, 0, {0}}}};
-    /* A ball on the floor cutting into the dam's front. */
-    fs_obstacles ball = {1, {{FS_OBSTACLE_SPHERE, {0}, {0}, {0.55f, 0.15f, 0.25f}, 0.15f, {0}}}};
+    fs_obstacles box = {1, {{.kind = FS_OBSTACLE_BOX, .lo = {0.7f, 0, 0.1f}, .hi = {1.0f, 0.3f, 0.4f}, .scale = 1}}};
+    /* A ball on the floor cutting into the dam's front (its bounds as the parser sets them). */
+    fs_obstacles ball = {1, {{.kind = FS_OBSTACLE_SPHERE, .lo = {0.55f - 0.15f, 0.15f - 0.15f, 0.25f - 0.15f},
+                              .hi = {0.55f + 0.15f, 0.15f + 0.15f, 0.25f + 0.15f},
+                              .c = {0.55f, 0.15f, 0.25f}, .radius = 0.15f, .scale = 1}}};
     const char *plain = DIR "/plain.json", *pbox = DIR "/box.json", *pball = DIR "/ball.json";
     write_scene(plain, &(fs_obstacles){0});
     write_scene(pbox, &box);
@@ -235,6 +266,7 @@ int main(void)
     check_build(pbox, plain, &box, "box obstacle");
     check_build(pball, plain, &ball, "sphere obstacle");
     check_scaled(pbox, &box);
+    check_mesh(pbox, &box);
     check_flow(pbox, &box, 1, "dam break past a box");
     check_flow(pball, &ball, 0, "dam break into a sphere");
     TEST_DONE();

@@ -18,14 +18,8 @@ static int translate(fs_sph *s, const float d[3])
         s->box_lo[a] += d[a];
         s->box_hi[a] += d[a];
     }
-    for (int k = 0; k < s->obstacles.n; k++) { /* the solids' boundary particles moved with the walls */
-        fs_obstacle *o = &s->obstacles.o[k];
-        for (int a = 0; a < 3; a++) {
-            o->lo[a] += d[a];
-            o->hi[a] += d[a];
-            o->c[a] += d[a];
-        }
-    }
+    for (int k = 0; k < s->obstacles.n; k++) /* the solids' boundary particles moved with the walls */
+        fs_obstacle_transform(&s->obstacles.o[k], 1.0f, d);
     return s->gpu && s->nb ? fs_sph_gpu_upload(s, 0, s->nb) : FS_OK;
 }
 

@@ -226,15 +226,8 @@ static int region_of(const scene_def *d, float sc, const float p[3])
 /* Scales the obstacles by sc, into the frame of the fluid regions. */
 static void scale_obstacles(fs_obstacles *ob, float sc)
 {
-    for (int i = 0; i < ob->n; i++) {
-        fs_obstacle *o = &ob->o[i];
-        for (int a = 0; a < 3; a++) {
-            o->lo[a] *= sc;
-            o->hi[a] *= sc;
-            o->c[a] *= sc;
-        }
-        o->radius *= sc;
-    }
+    static const float none[3] = {0, 0, 0};
+    for (int i = 0; i < ob->n; i++) fs_obstacle_transform(&ob->o[i], sc, none);
 }
 
 enum { SITE_NONE = -2, SITE_BOUNDARY = -1 }; /* site_of's answers besides a fluid region */
@@ -246,7 +239,12 @@ enum { SITE_NONE = -2, SITE_BOUNDARY = -1 }; /* site_of's answers besides a flui
 static int obstacle_site(const fs_obstacles *ob, float dx, const float p[3])
 {
     float dist = INFINITY; /* the deepest of them: never deeper than in their union */
-    for (int i = 0; i < ob->n; i++) dist = fminf(dist, fs_obstacle_distance(&ob->o[i], p));
+    for (int i = 0; i < ob->n; i++) {
+        const fs_obstacle *o = &ob->o[i];
+        int outside = 0; /* beyond its bounds: not inside it, and a mesh's distance is costly */
+        for (int a = 0; a < 3; a++) outside |= p[a] < o->lo[a] || p[a] > o->hi[a];
+        if (!outside) dist = fminf(dist, fs_obstacle_distance(o, p));
+    }
     return dist >= 0 ? 0 : dist >= -2 * dx ? SITE_BOUNDARY : SITE_NONE;
 }
 
