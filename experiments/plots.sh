@@ -30,6 +30,6 @@ plot inacio2010/tables.csv inacio2010/tables_total.png --x particles --y total_m
   --title "inacio2010 Tables I (ray casting) and II (spheres): frame time against particle count" --ylabel "frame (ms)"
 plot inacio2010/tables.csv inacio2010/tables_simulation_pct.png --x particles --y simulation_pct --series table,path --logx \
   --title "inacio2010 Fig. 5: the simulation's share of the frame against particle count" --ylabel "simulation (% of the frame)"
-plot bench/memory.csv bench/memory.png --x n --y peak_rss_kib_median --series method,input --where state=after "${LL[@]}" \
+plot bench/memory.csv bench/memory.png --x n --y peak_rss_kib_median --series method,input --where "state=after|current" "${LL[@]}" \
   --title "Peak memory against particle count (1024^2)" --xlabel particles --ylabel "peak RSS (KiB, median)"
 echo "plots.sh: done"
