@@ -95,6 +95,7 @@ study baselines bash experiments/baselines/run.sh
 study counters bash experiments/counters/work.sh
 study slurm_scaling bash experiments/slurm/scaling.sh
 study demo bash scripts/demo.sh
+study tables bash experiments/tables.sh # after every study: pivots of their CSVs for the READMEs
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
 if [ $mode = quick ]; then
