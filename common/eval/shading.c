@@ -104,13 +104,14 @@ static int obstacle_seen(const shade_ctx *c, const float o[3], const float d[3],
 
 /* What a ray from origin o in direction d sees: an obstacle, the floor (checker
  * mode, from above) or the sky. travelled: distance from the eye to o, for the
- * pixel's footprint on the floor. */
-static void background(const shade_ctx *c, const float o[3], const float d[3], float travelled, float out[3])
+ * pixel's footprint on the floor. Returns the distance to the obstacle seen,
+ * INFINITY when none is. */
+static float background(const shade_ctx *c, const float o[3], const float d[3], float travelled, float out[3])
 {
     float t = floor_distance(c, o, d), hit_t;
-    if (obstacle_seen(c, o, d, t, out, &hit_t)) return;
+    if (obstacle_seen(c, o, d, t, out, &hit_t)) return hit_t;
     sky(c, d, out);
-    if (!isfinite(t)) return;
+    if (!isfinite(t)) return INFINITY;
     int u = c->s->up_axis;
     int a = (u + 1) % 3, b = (u + 2) % 3;
     float pa = (o[a] + t * d[a]) / c->check, pb = (o[b] + t * d[b]) / c->check;
@@ -125,6 +126,7 @@ static void background(const shade_ctx *c, const float o[3], const float d[3], f
     float albedo = 0.5f * (CHECK_LIGHT + CHECK_DARK) + 0.5f * (CHECK_LIGHT - CHECK_DARK) * parity;
     float haze = expf(-t / c->check / CHECK_HAZE_FADE);
     for (int i = 0; i < 3; i++) out[i] = mixf(out[i], albedo * c->floor_light[i], haze);
+    return INFINITY;
 }
 
 /* Schlick's approximation, cos_i the cosine between view and normal. */
@@ -170,15 +172,6 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
     }
 }
 
-/* Whether an obstacle lies in front of the fluid at eye depth `depth` along the
- * primary ray d: then the pixel shows the obstacle alone. */
-static int hidden_by_obstacle(const shade_ctx *c, const float d[3], float depth)
-{
-    float t, n[3];
-    if (!c->s->obstacles.n || fs_obstacles_hit(&c->s->obstacles, c->eye, d, 0.0f, INFINITY, &t, n) < 0) return 0;
-    return !(t * dot3(d, c->fwd) >= depth); /* a NaN depth hides too */
-}
-
 void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, float floor_y, float *rgba)
 {
     shade_ctx c;
@@ -209,10 +202,11 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
             size_t idx = (size_t)y * w + x;
             float d[3], bg[3], col[3];
             fs_camera_ray(cam, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
-            background(&c, c.eye, d, 0.0f, bg);
+            float t_obstacle = background(&c, c.eye, d, 0.0f, bg);
             float cov = g->coverage[idx];
             cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
-            if (cov > 0 && hidden_by_obstacle(&c, d, g->depth[idx])) cov = 0;
+            /* A solid in front of the fluid: the pixel shows the solid alone (a NaN depth hides too). */
+            if (cov > 0 && isfinite(t_obstacle) && !(t_obstacle * dot3(d, c.fwd) >= g->depth[idx])) cov = 0;
             if (cov > 0) {
                 float n[3], vn[3] = {g->normal[3 * idx], g->normal[3 * idx + 1], g->normal[3 * idx + 2]};
                 if (!(dot3(vn, vn) > 1e-12f)) { vn[0] = 0; vn[1] = 0; vn[2] = 1; }

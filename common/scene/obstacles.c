@@ -2,6 +2,7 @@
 #include "obstacles.h"
 #include "fs_error.h"
 #include "obstacle_mesh.h"
+#include "path_beside.h"
 #include <stdio.h>
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -85,10 +86,7 @@ static const char *parse_one(const cJSON *e, fs_obstacle *o, const char **mesh_f
 static int load_mesh(fs_obstacle *o, const char *path, int i, const char *file)
 {
     char full[2048];
-    const char *slash = strrchr(path, '/');
-    int len = file[0] != '/' && slash ? snprintf(full, sizeof full, "%.*s/%s", (int)(slash - path), path, file)
-                                      : snprintf(full, sizeof full, "%s", file);
-    if (len >= (int)sizeof full) return fs_fail(FS_ERR_INPUT, "%s: obstacles[%d]: mesh path too long", path, i);
+    if (fs_path_beside(path, file, full, sizeof full)) return fs_fail(FS_ERR_INPUT, "%s: obstacles[%d]: mesh path too long", path, i);
     int rc = fs_mesh_solid_load(full, &o->mesh);
     if (rc) {
         char why[1024]; /* fs_fail writes the buffer fs_error_message reads */

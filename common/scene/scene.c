@@ -1,6 +1,7 @@
 #include "scene.h"
 #include "fs_error.h"
 #include "params.h"
+#include "path_beside.h"
 #include "grid.h"
 #include "particles.h"
 #include <math.h>
@@ -194,10 +195,7 @@ static const char *get_str(jctx *c, const cJSON *o, const char *key)
 
 static void set_path(fs_scene *s, jctx *c, const char *file)
 {
-    const char *slash = strrchr(s->path, '/');
-    int n = file[0] != '/' && slash ? snprintf(s->source, sizeof s->source, "%.*s/%s", (int)(slash - s->path), s->path, file)
-                                   : snprintf(s->source, sizeof s->source, "%s", file);
-    if (n >= (int)sizeof s->source) bad(c, "particles", "path is too long");
+    if (fs_path_beside(s->path, file, s->source, sizeof s->source)) bad(c, "particles", "path is too long");
 }
 
 static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
