@@ -49,5 +49,9 @@ if [ $gl = 1 ]; then
     copy_lib "$so" "$path"
   done
 fi
+# the commit the binaries were built from, for the CSVs of experiments/gpu/run.sh (the
+# copy of the repository that travels with the pack has no .git)
+source experiments/lib.sh # study_commit
+study_commit > "$out/provenance"
 echo "pack_lean: $out: $(ls "$out" | wc -l) files, $(du -sb "$out" | cut -f1) bytes"
 ls -l "$out" | awk 'NR > 1 {printf "pack_lean:   %-28s %9d\n", $NF, $5}'

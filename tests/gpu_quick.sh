@@ -10,19 +10,21 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 FLUIDSURF_GL=egl bash "$SRC/experiments/gpu/run.sh" --quick --bin "$BINDIR" -o "$T/run" > "$T/log" 2>&1 ||
   fail "run.sh exit $?: $(tail -3 "$T/log")"
 R=$T/run
-awk -F, 'NR > 1 && $4 != "0" {bad = 1; print "  " $0} END {exit bad}' "$R/status.csv" || fail "cells that did not finish"
+grep -v '^#' "$R/status.csv" | awk -F, 'NR > 1 && $4 != "0" {bad = 1; print "  " $0} END {exit bad}' || fail "cells that did not finish"
 for f in env xiao2017_table1 xu2022_fig9 inacio2010_tables iwasaki2006_density_grid demo_timings demo_metrics; do
   [ "$(grep -vc '^#' "$R/$f.csv" 2>/dev/null)" -ge 2 ] || fail "$f.csv has no rows"
 done
 grep -q '^gl_renderer,".\+"' "$R/env.csv" && grep -q '^gl_version,".\+"' "$R/env.csv" || fail "env.csv lacks the GL renderer or version"
 # render_bench rows: a GL stage (not load, grid, readback) has gpu_ms; every row a GL version
 for f in xiao2017_table1 xu2022_fig9; do
-  awk -F, 'NR > 1 && $6 != "0" && $7 != "readback" && $9 == "" {bad = 1} NR > 1 && $NF !~ /^".+"$/ {bad = 1} END {exit bad}' \
-    "$R/$f.csv" || fail "$f.csv: a GL stage without gpu_ms or a row without GL version"
+  grep -v '^#' "$R/$f.csv" |
+    awk -F, 'NR > 1 && $6 != "0" && $7 != "readback" && $9 == "" {bad = 1} NR > 1 && $NF !~ /^".+"$/ {bad = 1} END {exit bad}' || fail "$f.csv: a GL stage without gpu_ms or a row without GL version"
 done
 grep -q ',I,march,[0-9.]*,[0-9.]\+,"' "$R/inacio2010_tables.csv" || fail "inacio2010 ray casting rows lack gpu_ms"
 grep -q ',slice_splat,.*,[0-9.]\+,"[^"]\+"$' "$R/iwasaki2006_density_grid.csv" || fail "slice splat rows lack gpu_ms or GL version"
 # the sizes asked for are the sizes timed
+# every CSV names the commit it was made at
+for f in "$R"/*.csv; do head -1 "$f" | grep -q '^# .*commit=[0-9a-f]\+; dirty=[01]' || fail "$(basename "$f") lacks its provenance line"; done
 [ "$(awk -F, 'NR > 1 && $6 == "1" {print $5}' "$R/xiao2017_table1.csv" | sort -un | tr '\n' ' ')" = "128 192 " ] ||
   fail "xiao2017 sizes are not 128 and 192"
 [ "$(awk -F, 'NR > 1 && $6 == "1" && $7 == "splat" {print $4}' "$R/xu2022_fig9.csv" | sort -u | wc -l)" = 10 ] ||

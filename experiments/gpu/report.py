@@ -26,8 +26,8 @@ def rows(d, name):
     path = os.path.join(d, name)
     if not os.path.exists(path):
         return []
-    with open(path, newline="") as f:
-        return [r for r in csv.DictReader(f)]
+    with open(path, newline="") as f:  # the provenance line starts with '#'
+        return [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
 
 
 def num(s):

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The papers' speed tables on one GPU, in one prepared run (docs/DESIGN.md, "Timing"),
-# budgeted to BUDGET_S seconds (default 220: under 4 minutes):
+# budgeted to BUDGET_S seconds (default 290: with the start, one device call of at most
+# 6 minutes, so a lease of 15 minutes has room for a second try):
 #   xiao2017 Table 1   raycast_pca on synthetic boxes of about the paper's particle
 #                      counts (0.78M .. 142.6M) at 512^2 .. 1920^2
 #   xu2022 Fig. 9      aniso_ssf, 5 filters x anisotropy off/on, against particle count
@@ -13,13 +14,17 @@
 # stage (gpu_ms), GL_RENDERER and GL_VERSION. The large particle sets are generated
 # where the script runs (synthetic boxes, the simulator): nothing big is carried.
 #
+# Every CSV starts with a provenance line, "# commit=...; dirty=0|1": read from
+# BINDIR/provenance (scripts/pack_lean.sh records it where the pack is made, since a
+# copy of the repository on a GPU node has no .git), else from this repository.
+#
 # Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR]
 #   --quick  the same steps at small sizes, for llvmpipe (the ctest gpu_quick; budget 170 s)
 #   -o DIR   output folder (default out/gpu, out/gpu-quick with --quick); it holds
 #            env.csv, status.csv and one CSV per step
 #   --bin    folder with fluidsurf, render_bench, inacio_tables, density_bench: a
 #            scripts/pack_lean.sh folder, or a build folder (default build-lean)
-# FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 220, quick 170)
+# FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 290, quick 170)
 # caps the whole run: a cell that would start after the budget is spent is written
 # to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
 # Each step but the last has a share of it (SHARE_* seconds), so one slow step cannot
@@ -62,7 +67,7 @@ if [ $QUICK = 1 ]; then
   DEMO_SIZE=128 DEMO_RUNS=1
   SHARE_F9=${SHARE_F9:-30} SHARE_IN=${SHARE_IN:-30} SHARE_DG=${SHARE_DG:-15} SHARE_DEMO=${SHARE_DEMO:-40}
 else
-  BUDGET_S=${BUDGET_S:-220}
+  BUDGET_S=${BUDGET_S:-290}
   # cube sides whose cubes come nearest xiao2017's sets: 779,752 2,027,776 12,394,215 37,975,520 142,612,764
   T1_SIDES="92 127 231 336 522" T1_SIZES="512,768,1024,1440,1920" T1_RUNS=3
   F9_SIDES="46 67 100 144" F9_SIZE=1024 F9_RUNS=3
@@ -72,6 +77,8 @@ else
   SHARE_F9=${SHARE_F9:-40} SHARE_IN=${SHARE_IN:-40} SHARE_DG=${SHARE_DG:-20} SHARE_DEMO=${SHARE_DEMO:-30}
 fi
 mkdir -p "$OUTDIR"
+if [ -f "$BINDIR/provenance" ]; then PROV=$(cat "$BINDIR/provenance")
+else source experiments/lib.sh; PROV=$(study_commit); fi
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 START=$(date +%s) FAILED=0 STEP_END=""
@@ -84,7 +91,7 @@ step_share() { STEP_END=$(($(date +%s) + $1)); } # the next cells' share, in sec
 
 
 # status.csv: one row per cell: what ran, how long, how it ended
-echo "step,cell,seconds,exit,note" > "$OUTDIR/status.csv"
+printf '# experiments/gpu/run.sh; %s\nstep,cell,seconds,exit,note\n' "$PROV" > "$OUTDIR/status.csv"
 # cell STEP NAME LIMIT CMD...: runs CMD (stdout appended to STEP's raw file) under
 # min(LIMIT, budget left); skipped when the budget is spent
 cell() {
@@ -112,6 +119,7 @@ box_scene() { # box_scene SIDE: a synthetic lattice box of SIDE^3 particles (r =
 
 # ---- the machine and the context ----
 {
+  echo "# experiments/gpu/run.sh; $PROV"
   echo "key,value"
   echo "date,$(date -u +%FT%TZ)"
   echo "mode,$([ $QUICK = 1 ] && echo quick || echo full)"
@@ -119,8 +127,10 @@ box_scene() { # box_scene SIDE: a synthetic lattice box of SIDE^3 particles (r =
   echo "cpu,\"$(nproc) cores; $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')\""
   echo "context,$FLUIDSURF_GL"
   "$RB" --probe 2> "$TMP/probe.err" | awk 'NR == 1 {print "gl_renderer,\"" $0 "\""} NR == 2 {print "gl_version,\"" $0 "\""}'
-  command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader |
-    head -1 | awk '{print "gpu,\"" $0 "\""}'
+  if command -v nvidia-smi > /dev/null; then # the GPU, its driver and its clocks (now and at most)
+    nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.mem,clocks.max.sm,clocks.max.mem,power.limit \
+      --format=csv,noheader | head -1 | awk -F', ' '{printf "gpu,\"%s\"\ndriver,%s\ngpu_memory,%s\nclock_sm,%s\nclock_mem,%s\nclock_max_sm,%s\nclock_max_mem,%s\npower_limit,%s\n", $1, $2, $3, $4, $5, $6, $7, $8}'
+  fi
 } > "$OUTDIR/env.csv"
 grep -q '^gl_renderer' "$OUTDIR/env.csv" || { echo "run.sh: no OpenGL context: $(cat "$TMP/probe.err")" >&2; exit 1; }
 sed -n 's/^gl_renderer,//p; s/^gl_version,//p' "$OUTDIR/env.csv"
@@ -160,17 +170,21 @@ done
 glv=$(sed -n 's/^gl_version,//p' "$OUTDIR/env.csv")
 write() { # write STEP HEADER: the raw rows of STEP under HEADER
   [ -f "$TMP/$1.raw" ] || return 0
-  { echo "$2"; cat "$TMP/$1.raw"; } > "$OUTDIR/$1.csv"
+  { echo "# experiments/gpu/run.sh; $PROV"; echo "$2"; cat "$TMP/$1.raw"; } > "$OUTDIR/$1.csv"
 }
 write xiao2017_table1 "$RB_HEAD"
 write xu2022_fig9 "$RB_HEAD"
 write inacio2010_tables "particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms,gpu_ms,gl_version"
 write iwasaki2006_density_grid "label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads,gpu_ms,gl_version"
 if [ -f "$TMP/demo/timings.csv" ]; then
-  grep -v '^#' "$TMP/demo/timings.csv" | awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}' > "$OUTDIR/demo_timings.csv"
+  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$TMP/demo/timings.csv" |
+    awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}'; } > "$OUTDIR/demo_timings.csv"
   glr=$(sed -n 's/^gl_renderer,//p' "$OUTDIR/env.csv") # the context the GL methods ran on
-  grep -v '^#' "$TMP/demo/metrics.csv" |
-    awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}' > "$OUTDIR/demo_metrics.csv"
+  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$TMP/demo/metrics.csv" |
+    awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}'; } > "$OUTDIR/demo_metrics.csv"
+  mkdir -p "$OUTDIR/demo" && cp "$TMP"/demo/*.png "$OUTDIR/demo/" 2> /dev/null # to look at what the GPU drew
 fi
+# every step's stderr (a driver's shader log lands there)
+mkdir -p "$OUTDIR/logs" && for e in "$TMP"/*.err; do [ -s "$e" ] && cp "$e" "$OUTDIR/logs/"; done
 echo "run.sh: $(($(date +%s) - START)) s; wrote $OUTDIR: $(cd "$OUTDIR" && ls | tr '\n' ' ')"
 [ $FAILED = 0 ] || { echo "run.sh: some cells did not finish: see $OUTDIR/status.csv" >&2; exit 1; }

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The whole command of one GPU-machine call (experiments/gpu/README.md): on a bare node
+# with only the NVIDIA driver, unpack the GL loaders carried as Debian packages (.gl/,
+# when there), run experiments/gpu/run.sh from the lean pack (.gpu/pack) on EGL, and
+# write into OUT: gpu.tar.gz (the run's folder: env.csv, status.csv, the CSVs, logs,
+# the demo's images, tables.md), and beside it tables.md, status.csv and run.log to read
+# at once. A call returns at most 8 files, so the folder travels as one archive.
+#
+# usage: experiments/gpu/device.sh [--quick] [-o OUT]   (default OUT: $OUT, else out/device)
+# Rehearse it here with --quick (EGL on llvmpipe). BUDGET_S (default 290) caps run.sh, so
+# the call, start included, fits in 6 minutes. Exit status: run.sh's.
+set -uo pipefail
+quick=() out=${OUT:-}
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) quick=(--quick) ;;
+    -o) [ $# -ge 2 ] || { echo "device.sh: -o needs a folder" >&2; exit 2; }; out=$2; shift ;;
+    *) echo "device.sh: unknown argument $1 (usage: device.sh [--quick] [-o OUT])" >&2; exit 2 ;;
+  esac
+  shift
+done
+out=$(realpath -m "${out:-out/device}")
+cd "$(dirname "$0")/../.."
+[ -x .gpu/pack/fluidsurf ] || { echo "device.sh: .gpu/pack/fluidsurf missing (bash scripts/pack_lean.sh --gl .gpu/pack)" >&2; exit 2; }
+mkdir -p "$out"
+# the loaders: only on a GPU node (never over this machine's own libraries)
+if command -v nvidia-smi > /dev/null && compgen -G '.gl/*.deb' > /dev/null; then
+  for f in .gl/*.deb; do dpkg -x "$f" /; done
+  ldconfig
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export FLUIDSURF_GL=egl BUDGET_S=${BUDGET_S:-290}
+bash experiments/gpu/run.sh "${quick[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
+rc=${PIPESTATUS[0]}
+python3 experiments/gpu/report.py "$work/gpu" > "$work/gpu/tables.md" 2>> "$out/run.log"
+cp "$work/gpu/tables.md" "$work/gpu/status.csv" "$out/" 2> /dev/null
+tar -czf "$out/gpu.tar.gz" -C "$work" gpu
+cat "$work/gpu/env.csv" "$work/gpu/tables.md" 2> /dev/null
+echo "device.sh: run.sh exit $rc; $(du -b "$out/gpu.tar.gz" | cut -f1) bytes in $out/gpu.tar.gz"
+exit "$rc"
