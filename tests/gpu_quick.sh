@@ -29,6 +29,9 @@ for f in "$R"/*.csv; do head -1 "$f" | grep -q '^# .*commit=[0-9a-f]\+; dirty=[0
   fail "xiao2017 sizes are not 128 and 192"
 [ "$(awk -F, 'NR > 1 && $6 == "1" && $7 == "splat" {print $4}' "$R/xu2022_fig9.csv" | sort -u | wc -l)" = 10 ] ||
   fail "xu2022 does not have 10 variants"
-python3 "$SRC/experiments/gpu/report.py" "$R" > "$T/tables.md" && grep -q '^| 13824 | 192 | [0-9.]\+ | [0-9.]\+ |' "$T/tables.md" ||
+python3 "$SRC/experiments/gpu/report.py" "$R" > "$R/README.md" && grep -q '^| 13824 | 192 | [0-9.]\+ | [0-9.]\+ |' "$R/README.md" ||
   fail "report.py: no xiao2017 row for 13824 particles at 192"
+python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null || fail "report.py --check rejects the README it just wrote"
+echo "| edited |" >> "$R/README.md"
+python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null 2>&1 && fail "report.py --check accepts an edited README"
 [ $fails = 0 ] && echo "gpu_quick: all checks passed" || { echo "gpu_quick: $fails failed"; exit 1; }

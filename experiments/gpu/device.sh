@@ -3,7 +3,7 @@
 # with only the NVIDIA driver, unpack the GL loaders carried as Debian packages (.gl/,
 # when there), run experiments/gpu/run.sh from the lean pack (.gpu/pack) on EGL, and
 # write into OUT: gpu.tar.gz (the run's folder: env.csv, status.csv, the CSVs, logs,
-# the demo's images, tables.md), and beside it tables.md, status.csv and run.log to read
+# the demo's images, README.md from report.py), and beside it README.md, status.csv and run.log to read
 # at once. A call returns at most 8 files, so the folder travels as one archive.
 #
 # usage: experiments/gpu/device.sh [--quick] [-o OUT]   (default OUT: $OUT, else out/device)
@@ -33,9 +33,9 @@ trap 'rm -rf "$work"' EXIT
 export FLUIDSURF_GL=egl BUDGET_S=${BUDGET_S:-290}
 bash experiments/gpu/run.sh "${quick[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
 rc=${PIPESTATUS[0]}
-python3 experiments/gpu/report.py "$work/gpu" > "$work/gpu/tables.md" 2>> "$out/run.log"
-cp "$work/gpu/tables.md" "$work/gpu/status.csv" "$out/" 2> /dev/null
+python3 experiments/gpu/report.py "$work/gpu" > "$work/gpu/README.md" 2>> "$out/run.log"
+cp "$work/gpu/README.md" "$work/gpu/status.csv" "$out/" 2> /dev/null
 tar -czf "$out/gpu.tar.gz" -C "$work" gpu
-cat "$work/gpu/env.csv" "$work/gpu/tables.md" 2> /dev/null
+cat "$work/gpu/README.md" 2> /dev/null
 echo "device.sh: run.sh exit $rc; $(du -b "$out/gpu.tar.gz" | cut -f1) bytes in $out/gpu.tar.gz"
 exit "$rc"

@@ -1,25 +1,43 @@
 #!/usr/bin/env python3
-"""Tables of one experiments/gpu/run.sh folder beside the papers' numbers.
+"""The README of one experiments/gpu/run.sh folder: each paper's speed table beside ours,
+as ratios and trends. Every number of ours comes from the folder's CSVs (medians over the
+timed runs); the papers' numbers are the ones their tables and text print.
 
-    python3 experiments/gpu/report.py DIR > DIR/tables.md
+    python3 experiments/gpu/report.py DIR > DIR/README.md
+    python3 experiments/gpu/report.py --check DIR      exit 1 when DIR/README.md is stale
 
-Every number comes from DIR's CSVs (medians over the timed runs); the papers'
-numbers are the ones their tables print. Frame times are the sums of a method's
-own stages (no load, grid build, upload or shading), as in experiments/xiao2017/
-table1.sh and experiments/xu2022/fig9.sh."""
+Frame times are the sums of a method's own stages (no load, grid build or upload), as in
+experiments/xiao2017/table1.sh and experiments/xu2022/fig9.sh. The comparisons with the
+papers use the GL clock of the GL stages, without the read back of the G-buffer to the
+host: the papers draw to the screen and read nothing back. The wall time, read back
+included, is given beside it."""
 import csv
 import os
 import statistics
 import sys
 from collections import defaultdict
 
-T1_STAGES = ("splat", "march", "normals", "filter", "thickness", "readback")
+RASTER = ("splat", "thickness")  # raycast_pca's sprite stages: vertex + fragment work
+COMPUTE = ("march", "normals", "filter")  # its compute-shader stages
+T1_STAGES = RASTER + COMPUTE + ("readback",)
 F9_STAGES = ("anisotropy", "splat", "filter", "normals", "thickness", "readback")
+FILTERS = ("none", "gaussian", "bilateral", "curvature", "narrow")
 # xiao2017 Table 1 (seconds, GTX 970): particle count -> {size: s}
 XIAO_N = (779752, 2027776, 12394215, 37975520, 142612764)
 XIAO_T = {512: (0.00936, 0.0274, 0.0891, 0.1565, 0.5926), 768: (0.0127, 0.0362, 0.1128, 0.2119, 0.6600),
           1024: (0.0178, 0.05138, 0.1568, 0.2966, 0.7840), 1440: (0.0270, 0.0779, 0.2474, 0.4494, 1.3879),
           1920: (0.0424, 0.1226, 0.3733, 0.7062, 2.3663)}
+# inacio2010 Tables I and II (seconds; Core 2 Duo P8400, GeForce 9800M GS): (particles, path) ->
+# (simulation, volume generation, ray casting, rendering) and (simulation, sphere rendering).
+# Table I's GPU row at 8192 is missing from our copy of the paper's text.
+INACIO_I = {(1024, "cpu"): (0.022, 0.0075, 0.0076, 0.00051), (1024, "gpu"): (0.0029, 0.020, 0.034, 0.0013),
+            (2048, "cpu"): (0.042, 0.0098, 0.0078, 0.00097), (2048, "gpu"): (0.0025, 0.021, 0.034, 0.0053),
+            (4096, "cpu"): (0.078, 0.013, 0.0078, 0.00062), (4096, "gpu"): (0.0034, 0.024, 0.034, 0.0056),
+            (8192, "cpu"): (0.19, 0.037, 0.010, 0.00087)}
+INACIO_II = {(1024, "cpu"): (0.021, 0.013), (1024, "gpu"): (0.0015, 0.0077), (2048, "cpu"): (0.083, 0.046),
+             (2048, "gpu"): (0.0024, 0.017), (4096, "cpu"): (0.080, 0.044), (4096, "gpu"): (0.0033, 0.033),
+             (8192, "cpu"): (0.199, 0.091), (8192, "gpu"): (0.0058, 0.060)}
+INACIO_COUNTS = (1024, 2048, 4096, 8192)
 
 
 def rows(d, name):
@@ -30,6 +48,13 @@ def rows(d, name):
         return [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
 
 
+def provenance(d, name):
+    path = os.path.join(d, name)
+    with open(path) as f:
+        first = f.readline()
+    return first[1:].strip() if first.startswith("#") else "no provenance line"
+
+
 def num(s):
     try:
         return float(s)
@@ -37,9 +62,38 @@ def num(s):
         return None
 
 
+def med(v):
+    v = [x for x in v if x is not None]
+    return statistics.median(v) if v else None
+
+
+def fmt(x, p="%.1f"):
+    return "" if x is None or x != x else p % x
+
+
+def ratio(a, b, p="%.2f"):
+    return fmt(a / b if a is not None and b else None, p)
+
+
+def table(head, body):
+    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in body]
+    return "\n".join(out) + "\n"
+
+
+def stage_medians(rs, key):
+    """key(row) -> stage -> (median wall ms, median GL-clock ms) over the timed runs (run > 0)."""
+    wall, gl = defaultdict(lambda: defaultdict(list)), defaultdict(lambda: defaultdict(list))
+    for r in rs:
+        if r["run"] != "0":
+            wall[key(r)][r["stage"]].append(float(r["ms"]))
+            gl[key(r)][r["stage"]].append(num(r["gpu_ms"]))
+    return {k: {s: (med(wall[k][s]), med(gl[k][s])) for s in wall[k]} for k in wall}
+
+
 def frames(rs, stages, key):
     """Per cell (key(row)) the median over runs of the sum of the stages on the wall clock, and
-    of the stages that have one (all but the read back) on the GL clock."""
+    of the GL stages (those with a GL-clock time: all but the read back) on the GL clock."""
     wall, gpu = defaultdict(lambda: defaultdict(float)), defaultdict(lambda: defaultdict(float))
     for r in rs:
         if r["stage"] in stages and r["run"] != "0":
@@ -48,18 +102,19 @@ def frames(rs, stages, key):
             g = num(r["gpu_ms"])
             if g is not None:
                 gpu[k][r["run"]] += g
-    med = lambda runs: statistics.median(runs.values()) if runs else None
-    return {k: (med(wall[k]), med(gpu[k])) for k in wall}
+    return {k: (med(wall[k].values()), med(gpu[k].values())) for k in wall}
 
 
-def fmt(x, p="%.1f"):
-    return "" if x is None or x != x else p % x
+def paper_xiao(n, size):
+    """The paper's seconds for the set nearest n (within 5%) at size, else None."""
+    i = min(range(len(XIAO_N)), key=lambda j: abs(XIAO_N[j] - n) / XIAO_N[j])
+    return XIAO_T.get(size, (None,) * 5)[i] if abs(XIAO_N[i] - n) / XIAO_N[i] < 0.05 else None
 
 
-def table(head, body):
-    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in body]
-    return "\n".join(out) + "\n"
+def pick(values, want):
+    """want if it is among values, else the middle value."""
+    values = sorted(values)
+    return want if want in values else values[len(values) // 2]
 
 
 def xiao(d):
@@ -69,47 +124,188 @@ def xiao(d):
     fr = frames(rs, T1_STAGES, lambda r: (int(r["particles"]), int(r["size"])))
     body = []
     for (n, size), (w, g) in sorted(fr.items()):
-        i = min(range(len(XIAO_N)), key=lambda j: abs(XIAO_N[j] - n) / XIAO_N[j])
-        paper = XIAO_T.get(size, (None,) * 5)[i] if abs(XIAO_N[i] - n) / XIAO_N[i] < 0.05 else None
-        body.append((n, size, fmt(w), fmt(g), fmt(paper * 1e3 if paper else None),
-                     fmt(paper * 1e3 / w if paper else None, "%.2f")))
-    return table(("particles", "size", "frame ms (wall)", "GL stages ms (GL clock)", "paper ms (GTX 970)",
-                  "paper / ours"), body)
+        p = paper_xiao(n, size)
+        body.append((n, size, fmt(g), fmt(w), fmt(p * 1e3 if p else None), ratio(p * 1e3 if p else None, g)))
+    out = table(("particles", "size", "ours ms (GL clock)", "ours ms (wall, read back included)",
+                 "paper ms (GTX 970)", "paper / ours"), body)
+    return out + "\n" + xiao_trends(fr) + "\n" + xiao_stages(rs)
+
+
+def xiao_trends(fr):
+    ns, sizes = sorted({n for n, _ in fr}), sorted({s for _, s in fr})
+    g = {k: v[1] for k, v in fr.items()}
+    p = {k: paper_xiao(*k) for k in fr}
+    s = pick(sizes, 1024)
+    lines = ["Trends (GL clock; the paper's numbers from its Table 1):", ""]
+    lo, hi = (ns[0], s), (ns[-1], s)
+    lines.append("- **Particle count** at %d^2: %.0fx the particles cost %s the time here; the paper: %s." % (
+        s, ns[-1] / ns[0], times(g.get(hi), g.get(lo)), times(p.get(hi), p.get(lo))))
+    for n in (ns[0], ns[-1]):
+        a, b = (n, sizes[0]), (n, sizes[-1])
+        lines.append("- **Image size** at %d particles: %.1fx the pixels (%d^2 to %d^2) cost %s the time here; the "
+                     "paper: %s." % (n, (sizes[-1] / sizes[0]) ** 2, sizes[0], sizes[-1], times(g.get(b), g.get(a)),
+                                     times(p.get(b), p.get(a))))
+    rt = [k for k in fr if g[k] is not None and g[k] <= 1000 / 30]
+    prt = [k for k in fr if p[k] is not None and p[k] <= 1 / 30]
+    lines.append("- **Real time** (at most 33.3 ms, 30 fps): %d of %d cells here, %d of the %d the paper has." % (
+        len(rt), len(fr), len(prt), sum(1 for k in fr if p[k] is not None)))
+    big = [n for n in ns if n >= 30e6]
+    if big:
+        n = big[0]
+        lines.append("- **Over 30M particles** (%d): %s fps at %d^2 here (the paper: %s fps), %s fps at %d^2 (the paper: "
+                     "%s fps)." % (n, fps(g.get((n, sizes[0]))), sizes[0], fps(p.get((n, sizes[0])), 1),
+                                   fps(g.get((n, sizes[-1]))), sizes[-1], fps(p.get((n, sizes[-1])), 1)))
+    return "\n".join(lines) + "\n"
+
+
+def times(a, b):
+    """'Nx' of a over b, or 'no paper cell' when one is missing."""
+    r = ratio(a, b, "%.1f")
+    return r + "x" if r else "no paper cell"
+
+
+def fps(t, unit_ms=1000):
+    return fmt(unit_ms / t if t else None)
+
+
+def xiao_stages(rs):
+    """Where the time goes: the sprite (raster) stages against the compute stages."""
+    st = stage_medians(rs, lambda r: (int(r["particles"]), int(r["size"])))
+    sizes = sorted({s for _, s in st})
+    body = []
+    for (n, size) in sorted(st):
+        if size not in (sizes[0], sizes[-1]):
+            continue
+        ras = sum(st[(n, size)].get(x, (0, 0))[1] or 0 for x in RASTER)
+        com = sum(st[(n, size)].get(x, (0, 0))[1] or 0 for x in COMPUTE)
+        rb = st[(n, size)].get("readback", (None, None))[0]
+        body.append((n, size, fmt(ras), fmt(com), fmt(100 * ras / (ras + com) if ras + com else None, "%.0f%%"), fmt(rb)))
+    return ("Stages (GL clock, ms): the sprite splat and thickness passes (vertex and fragment work) against the "
+            "march, normals and filter passes (compute shaders), and the read back (wall):\n\n"
+            + table(("particles", "size", "splat + thickness", "march + normals + filter", "sprite share", "read back"),
+                    body))
+
+
+def variant(v):
+    """(anisotropy, filter) of a render_bench variant string."""
+    kv = dict(x.split("=", 1) for x in v.replace("aniso_ssf.", "").split(";") if "=" in x)
+    return kv.get("anisotropy", "?"), kv.get("filter", "?")
 
 
 def xu(d):
     rs = rows(d, "xu2022_fig9.csv")
     if not rs:
         return "No xu2022 rows.\n"
-    fr = frames(rs, F9_STAGES, lambda r: (int(r["particles"]), r["variant"]))
-    body = [(n, v.replace("aniso_ssf.", "").replace(";", ", "), fmt(w), fmt(g)) for (n, v), (w, g) in sorted(fr.items())]
-    return table(("particles", "variant", "frame ms (wall)", "GL stages ms (GL clock)"), body)
+    fr = frames(rs, F9_STAGES, lambda r: (int(r["particles"]),) + variant(r["variant"]))
+    g = {k: v[1] for k, v in fr.items()}
+    ns = sorted({k[0] for k in fr})
+    body = [(n, f, fmt(g.get((n, "off", f))), fmt(g.get((n, "on", f))), ratio(g.get((n, "on", f)), g.get((n, "off", f))),
+             fmt(fr.get((n, "on", f), (None,))[0])) for n in ns for f in FILTERS if (n, "on", f) in fr]
+    out = table(("particles", "filter", "anisotropy off ms (GL clock)", "on ms (GL clock)", "on / off",
+                 "on ms (wall, read back included)"), body)
+    ratios = [g[(n, "on", f)] / g[(n, "off", f)] for n in ns for f in FILTERS
+              if g.get((n, "on", f)) and g.get((n, "off", f))]
+    st = stage_medians(rs, lambda r: (int(r["particles"]),) + variant(r["variant"]))
+    an = [st.get((n, "on", "narrow"), {}).get("anisotropy", (None, None))[1] for n in ns]
+    nr = [g.get((n, "on", "narrow")) for n in ns]
+    lines = ["The paper (RTX 3060) gives Fig. 9 as a plot of frame rates without numbers in its text, so the comparison "
+             "is with its three statements:", ""]
+    if ratios:
+        lines.append("- *Anisotropy barely affects the pipeline's cost*: on / off is %.2f to %.2f over the %d cells "
+                     "(median %.2f); at %d particles %.2f to %.2f. The anisotropy pass itself (narrow-range, GL clock) "
+                     "takes %s ms from %d to %d particles." % (
+                         min(ratios), max(ratios), len(ratios), statistics.median(ratios), ns[-1],
+                         min(g[(ns[-1], "on", f)] / g[(ns[-1], "off", f)] for f in FILTERS if (ns[-1], "on", f) in g),
+                         max(g[(ns[-1], "on", f)] / g[(ns[-1], "off", f)] for f in FILTERS if (ns[-1], "on", f) in g),
+                         " -> ".join(fmt(a) for a in an), ns[0], ns[-1]))
+    if nr[0] and nr[-1]:
+        lines.append("- *Narrow-range keeps the time almost linear in the particle count*: %.0fx the particles cost %sx "
+                     "the time (anisotropy on: %s ms), so the frame grows more slowly than linearly here." % (
+                         ns[-1] / ns[0], ratio(nr[-1], nr[0], "%.1f"), " -> ".join(fmt(x) for x in nr)))
+    cf = [ratio(g.get((n, "on", "curvature")), g.get((n, "on", "gaussian"))) for n in ns]
+    lines.append("- *Curvature flow's time grows with its iterations*: not swept here. At the shipped 80 iterations, "
+                 "with anisotropy on, it takes %s times the Gaussian's frame from %d to %d particles." % (
+                     ", ".join(cf), ns[0], ns[-1]))
+    return out + "\n" + "\n".join(lines) + "\n"
+
+
+def inacio_cells(rs):
+    """(requested count, path) -> dict of stage medians over the timed frames (ms): the paper's
+    columns as results/inacio2010/README.md maps them, GL-clock variants with the suffix _gl."""
+    per = defaultdict(lambda: defaultdict(list))
+    for r in rs:
+        per[(int(r["particles_requested"]), r["path"])][(r["table"], r["stage"])].append(r)
+    cells = {}
+    for k, st in per.items():
+        m = lambda t, s, col="ms": med([num(r[col]) for r in st[(t, s)]])
+        first = st[("sim", "simulation")][0]
+        cells[k] = {"particles": int(first["particles"]), "all": int(first["particles"]) + int(first["boundary"]),
+                    "steps": med([num(r["steps"]) for r in st[("sim", "simulation")]]),
+                    "sim": m("sim", "simulation"), "sim_gl": m("sim", "simulation", "gpu_ms"),
+                    "volume": m("I", "volume"), "volume_gl": m("I", "volume", "gpu_ms"),
+                    "ray": (m("I", "faces") or 0) + (m("I", "march") or 0),
+                    "ray_gl": (m("I", "faces", "gpu_ms") or 0) + (m("I", "march", "gpu_ms") or 0),
+                    "render_I": (m("I", "readback") or 0) + (m("I", "shade") or 0),
+                    "spheres": sum(m("II", s) or 0 for s in ("upload", "splat", "readback", "shade")),
+                    "splat_gl": m("II", "splat", "gpu_ms")}
+    return cells
 
 
 def inacio(d):
     rs = rows(d, "inacio2010_tables.csv")
     if not rs:
         return "No inacio2010 rows.\n"
-    per = defaultdict(lambda: defaultdict(list))  # (n, path) -> stage -> [ms per frame]
-    for r in rs:
-        per[(int(r["particles"]), r["path"])][(r["table"], r["stage"])].append(float(r["ms"]))
-    med = lambda v: statistics.median(v) if v else None
+    c = inacio_cells(rs)
     body = []
-    for (n, path), st in sorted(per.items()):
-        sim = med(st[("sim", "simulation")])
-        vol = med(st[("I", "volume")])
-        ray = med([a + b for a, b in zip(st[("I", "faces")], st[("I", "march")])])
-        sph = med(st[("II", "splat")])
-        body.append((n, path, fmt(sim), fmt(vol), fmt(ray), fmt(sph)))
-    ratios = []
-    for (n, path), st in sorted(per.items()):
-        if path == "cpu" and (n, "gpu") in per:
-            c, g = med(st[("sim", "simulation")]), med(per[(n, "gpu")][("sim", "simulation")])
-            ratios.append((n, fmt(c / g if c and g else None, "%.2f")))
-    return (table(("fluid particles", "path", "simulation ms", "volume ms", "ray casting ms", "spheres splat ms"), body)
-            + "\nSimulation, CPU path / GPU path. The paper (Core 2 Duo against GeForce 9800M GS): the CPU path "
-              "was faster at 1024 and 2048 particles, the GPU path took under a third of its time at 8192.\n\n"
-            + table(("fluid particles", "cpu / gpu"), ratios))
+    for (n, path), x in sorted(c.items()):
+        tot = x["sim"] + x["volume"] + x["ray"] + x["render_I"]
+        p = INACIO_I.get((n, path))
+        body.append((x["particles"], path, fmt(x["sim"]), fmt(x["steps"], "%.0f"), fmt(x["volume"]), fmt(x["ray"]),
+                     fmt(x["render_I"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"),
+                     fmt(p[0] * 1e3 if p else None), fmt(100 * p[0] / sum(p) if p else None, "%.0f%%")))
+    out = ("Table I analogue (ray casting), ms per frame of 1/60 s (medians of the timed frames, wall clock). "
+           "*rendering* is the read back and the shared shading on the CPU; the paper's is its display of the "
+           "image. The paper simulates one step of 0.01 s per frame; ours takes *steps* adaptive steps.\n\n"
+           + table(("particles", "path", "simulation", "steps", "volume", "ray casting", "rendering", "total",
+                    "simulation share", "paper simulation (one step)", "paper simulation share"), body))
+    body = []
+    for (n, path), x in sorted(c.items()):
+        p = INACIO_II.get((n, path))
+        tot = x["sim"] + x["spheres"]
+        body.append((x["particles"], path, fmt(x["sim"]), fmt(x["spheres"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"),
+                     fmt(p[0] * 1e3 if p else None), fmt(p[1] * 1e3 if p else None),
+                     fmt(100 * p[0] / sum(p) if p else None, "%.0f%%")))
+    out += ("\nTable II analogue (spheres): *rendering* is the particle upload, the sprite splat, the read back and "
+            "the shading.\n\n" + table(("particles", "path", "simulation", "rendering", "total", "simulation share",
+                                        "paper simulation", "paper rendering", "paper simulation share"), body))
+    return out + "\n" + inacio_trends(c)
+
+
+def inacio_trends(c):
+    body = []
+    for n in sorted({n for n, _ in c}):
+        cpu, gpu = c.get((n, "cpu")), c.get((n, "gpu"))
+        if not (cpu and gpu):
+            continue
+        pi, pc, pg = INACIO_I.get((n, "gpu")), INACIO_II.get((n, "cpu")), INACIO_II.get((n, "gpu"))
+        vis = gpu["volume_gl"] + gpu["ray_gl"] if gpu["volume_gl"] is not None else None
+        sim, step = gpu["sim_gl"], gpu["sim_gl"] / gpu["steps"] if gpu["sim_gl"] and gpu["steps"] else None
+        share = lambda t: fmt(100 * t / (t + vis) if t is not None and vis else None, "%.0f%%")
+        body.append((gpu["particles"], gpu["all"], ratio(cpu["sim"], gpu["sim"], "%.1f"),
+                     ratio(pc[0], pg[0], "%.1f") if pc and pg else "", share(sim), share(step),
+                     fmt(100 * pi[0] / sum(pi) if pi else None, "%.0f%%"), ratio(vis, gpu["splat_gl"], "%.1f"),
+                     ratio(sum(pi[1:]), pg[1], "%.1f") if pi and pg else ""))
+    return ("Ratios and trends. *CPU / GPU simulation*: the CPU path (C + OpenMP on the node's cores) against the GPU "
+            "path (compute shaders), per frame (both paths take the same steps); the paper's from Table II (Table I "
+            "lacks its 8192 GPU row). The CPU path runs its loops on one thread below 16,384 particles, boundary "
+            "included (FS_SPH_PARALLEL_MIN, common/sph/sph_cpu.c, set on a 2-core machine), so the smaller rows compare "
+            "one CPU core with the GPU. *GPU-path simulation share* (Fig. 5): the simulation's GL-clock time over it "
+            "plus volume and ray casting (GL clock), leaving out our read back and CPU shading; once for our frame of "
+            "1/60 s (all its steps) and once for one step per frame, as the paper's frame has; the paper's from "
+            "Table I. *Ray casting / spheres*, GPU path: volume + ray casting against the sphere splat, both on the GL "
+            "clock; the paper's: volume + ray casting + rendering (Table I) against sphere rendering (Table II).\n\n"
+            + table(("particles", "with boundary", "CPU / GPU simulation", "paper", "GPU-path simulation share",
+                     "one step", "paper", "ray casting / spheres", "paper"), body))
 
 
 def iwasaki(d):
@@ -121,39 +317,128 @@ def iwasaki(d):
         cell[(int(r["particles"]), int(r["res"]), r["method"])].append(r)
     body = []
     for (n, res, m) in sorted(k for k in cell if k[2] == "exact_cpu"):
-        ex = statistics.median(float(r["ms"]) for r in cell[(n, res, m)])
+        ex = med([float(r["ms"]) for r in cell[(n, res, m)]])
         sp = cell.get((n, res, "slice_splat"), [])
-        w = statistics.median(float(r["ms"]) for r in sp) if sp else None
-        gs = [num(r["gpu_ms"]) for r in sp if num(r["gpu_ms"]) is not None]
-        g = statistics.median(gs) if gs else None
+        w = med([float(r["ms"]) for r in sp])
+        g = med([num(r["gpu_ms"]) for r in sp])
         l2 = max(float(r["rel_l2_vs_exact"]) for r in sp) if sp else None
-        body.append((n, res, fmt(ex), fmt(w), fmt(g), fmt(ex / w if w else None, "%.1f"), fmt(l2, "%.3g")))
-    return (table(("particles", "res", "exact CPU ms", "slice splat ms (wall)", "slice splat ms (GL clock)",
-                   "CPU / GL", "rel. L2"), body)
-            + "\nThe paper (GeForce 6800 GT): about 210,000 particles into 256^3, 0.91 s on the GPU against "
-              "about 80 s in software, 88x; relative difference 1.9%.\n")
+        body.append((n, res, cell[(n, res, m)][0]["threads"], fmt(ex), fmt(w), fmt(g), ratio(ex, w, "%.1f"),
+                     fmt(l2, "%.3g")))
+    body.append(("about 210,000", 256, "1 (Pentium 4)", "about 80000", "910", "", "88", "1.9%"))
+    return ("The density grid: iwasaki2006's slice splatting on the GL against the exact CPU sum (C + OpenMP), "
+            "medians; the last row is the paper's (GeForce 6800 GT, section 4).\n\n"
+            + table(("particles", "res", "CPU threads", "exact CPU ms", "slice splat ms (wall)",
+                     "slice splat ms (GL clock)", "CPU / GL", "rel. L2 against exact"), body))
+
+
+SURFEL_RENDER = ("caustics", "visibility", "blend", "normalize", "thickness")
 
 
 def demo(d):
     rs = rows(d, "demo_timings.csv")
-    body = [(r["method"], r["variant"], r["ms_median"], r["renderer"]) for r in rs if r["stage"] == "total"]
-    return table(("method", "variant", "total ms (wall)", "renderer"), body) if body else "No demo rows.\n"
+    if not rs:
+        return "No demo rows.\n"
+    metrics = {(r["method"], r["variant"]): r for r in rows(d, "demo_metrics.csv")}
+    body = []
+    for r in (r for r in rs if r["stage"] == "total"):
+        st = [x for x in rs if (x["method"], x["variant"]) == (r["method"], r["variant"])]
+        gl = [num(x["gpu_ms_median"]) for x in st if num(x["gpu_ms_median"]) is not None]
+        rb = [num(x["ms_median"]) for x in st if x["stage"] == "readback"]
+        m = metrics.get((r["method"], r["variant"] if r["variant"] != "ground truth" else ""), {})
+        body.append((r["method"], r["variant"], fmt(sum(gl) if gl else None), fmt(num(r["ms_median"])),
+                     fmt(rb[0] if rb else None), r["renderer"], m.get("mask_iou", ""), m.get("normal_mean_deg", "")))
+    sr = [num(x["gpu_ms_median"]) for x in rs if x["method"] == "surfels" and x["stage"] in SURFEL_RENDER]
+    out = table(("method", "variant", "GL stages ms (GL clock)", "total ms (wall)", "read back ms", "renderer",
+                 "mask IoU", "normal error deg"), body)
+    if sr and None not in sr:
+        out += ("\nsurfels' rendering stages (%s; the density grid and the surfel extraction excluded, as the paper "
+                "times them apart) take %.1f ms on the GL clock here; iwasaki2006 renders its 61,500-77,000 surfels "
+                "at 512^2 in about 39 ms (25.5 fps, GeForce 6800 GT, Figs. 6 and 7).\n" % (", ".join(SURFEL_RENDER),
+                                                                                            sum(sr)))
+    return out
+
+
+ABOUT_GPU = """## What this GPU is
+
+The H200 is a data-centre GPU built on the GH100 die of the H100. NVIDIA's H100 white paper,
+as reported at the chip's launch (https://m.chinaz.com/2022/0323/1377255.shtml), gives graphics
+work (vertex, geometry and pixel shading) to two of the die's TPCs only, while compute shaders
+run on all its SMs; this workplace's notes on the machine saw one test's arithmetic run 30
+times slower in a fragment shader than in a compute shader. Our stages agree: in the xiao2017
+stage table below the sprite passes (vertex and fragment work) take most of every frame, and
+the compute passes a few milliseconds. So these are timings on a real GPU through NVIDIA's GL
+driver, but not on a graphics GPU like the papers' GTX 970, RTX 3060, GeForce 9800M GS or
+GeForce 6800 GT: a stage that rasterises (sprite splatting, the density slices, the layered
+volume) would be expected to run faster on one of those, by an amount this run cannot measure.
+The read back of the G-buffer to the host (fluidsurf shades on the CPU) is large on this node;
+the ratios and trends set beside a paper's leave it out.
+"""
+
+
+def header(d):
+    env = {r["key"]: r["value"] for r in rows(d, "env.csv")}
+    demo_cell = [r["cell"] for r in rows(d, "status.csv") if r["step"] == "demo_compare"]
+    return ("# The papers' speed tables on a GPU\n\n"
+            "<!-- generated by experiments/gpu/report.py from the CSVs beside it; do not edit: "
+            "python3 experiments/gpu/report.py results/gpu > results/gpu/README.md -->\n\n"
+            "One run of `experiments/gpu/device.sh` (`experiments/gpu/run.sh` from the lean pack, EGL) on a lent "
+            "machine, %s mode, %s.\n\n"
+            "| | |\n|---|---|\n| GL_RENDERER | %s |\n| GL_VERSION | %s |\n| GPU | %s, driver %s, %s |\n"
+            "| clocks at the start | SM %s (max %s), memory %s (max %s), power limit %s |\n| CPU | %s |\n"
+            "| fluidsurf | %s |\n| provenance | %s |\n\n"
+            "Files: `env.csv` (the machine), `status.csv` (every cell, its time and exit status), one CSV per "
+            "step (`xiao2017_table1.csv`, `xu2022_fig9.csv`, `inacio2010_tables.csv`, "
+            "`iwasaki2006_density_grid.csv`, `demo_timings.csv` and `demo_metrics.csv` of `fluidsurf compare` on "
+            "the bundled dam break, cell %s), `logs/` (the steps' stderr), `run.log`, `demo_panel_small.png` (the "
+            "demo's panel as the GPU drew it, scaled down; the lean build writes no labels: reference, spheres, "
+            "raycast_pca, aniso_ssf, surfels, volume_raycast, with the error maps under them). Each CSV starts with "
+            "the provenance line of the commit the packed binaries were built from.\n\n" % (
+                env.get("mode", "?"), env.get("date", "?"), env.get("gl_renderer", "?").strip('"'),
+                env.get("gl_version", "?").strip('"'), env.get("gpu", "no nvidia-smi").strip('"'),
+                env.get("driver", "?"), env.get("gpu_memory", "?"), env.get("clock_sm", "?"),
+                env.get("clock_max_sm", "?"), env.get("clock_mem", "?"), env.get("clock_max_mem", "?"),
+                env.get("power_limit", "?"), env.get("cpu", "?").strip('"'), env.get("fluidsurf", "?").strip('"'),
+                provenance(d, "env.csv"), ", ".join(demo_cell) or "none"))
+
+
+SOFTWARE = ("llvmpipe", "softpipe", "swrast", "software rasterizer")
+
+
+def about(d):
+    """What the renderer is: the note on Hopper's graphics, or a warning for a CPU rasteriser."""
+    r = {x["key"]: x["value"] for x in rows(d, "env.csv")}.get("gl_renderer", "").lower()
+    if any(w in r for w in SOFTWARE):
+        return "## The renderer\n\nGL_RENDERER is a CPU rasteriser: these timings say nothing about a GPU.\n"
+    return ABOUT_GPU if ("h200" in r or "h100" in r) else ""
+
+
+def report(d):
+    out = [header(d), about(d)]
+    for title, f in (("xiao2017 Table 1 (raycast_pca; also Fig. 9)", xiao), ("xu2022 Fig. 9 (aniso_ssf)", xu),
+                     ("inacio2010 Tables I and II (the simulator, volume_raycast, spheres; also Fig. 5)", inacio),
+                     ("iwasaki2006 section 4: the density grid (Fig. 8's 88x)", iwasaki),
+                     ("The demo comparison (every GL method and the CPU reference)", demo)):
+        out.append("## %s\n\n%s" % (title, f(d)))
+    bad = [r for r in rows(d, "status.csv") if r["exit"] != "0"]
+    if bad:
+        out.append("## Cells that did not finish\n\n" + table(("step", "cell", "exit", "note"),
+                                                              [(r["step"], r["cell"], r["exit"], r["note"]) for r in bad]))
+    return "\n".join(out)
 
 
 def main():
-    d = sys.argv[1] if len(sys.argv) > 1 else "results/gpu"
-    env = {r["key"]: r["value"] for r in rows(d, "env.csv")}
-    print("Run: %s, %s mode; GL_RENDERER %s, GL_VERSION %s; %s.\n" % (
-        env.get("date", "?"), env.get("mode", "?"), env.get("gl_renderer", "?"), env.get("gl_version", "?"),
-        env.get("gpu", "no nvidia-smi")))
-    for title, f in (("xiao2017 Table 1 (raycast_pca)", xiao), ("xu2022 Fig. 9 (aniso_ssf)", xu),
-                     ("inacio2010 Tables I and II", inacio), ("iwasaki2006 density grid", iwasaki),
-                     ("Demo comparison", demo)):
-        print("### %s\n\n%s" % (title, f(d)))
-    skipped = [r for r in rows(d, "status.csv") if r["exit"] != "0"]
-    if skipped:
-        print("### Cells that did not finish\n\n" + table(("step", "cell", "exit", "note"),
-              [(r["step"], r["cell"], r["exit"], r["note"]) for r in skipped]))
+    args = sys.argv[1:]
+    check = bool(args) and args[0] == "--check"
+    d = (args[1:] if check else args or ["results/gpu"])[0]
+    text = report(d)
+    if not check:
+        sys.stdout.write(text)
+        return
+    with open(os.path.join(d, "README.md")) as f:
+        if f.read() != text:
+            sys.exit("report.py: %s/README.md is stale: regenerate it with "
+                     "python3 experiments/gpu/report.py %s > %s/README.md" % (d, d, d))
+    print("report.py: %s/README.md matches its CSVs" % d)
 
 
 if __name__ == "__main__":
