@@ -208,6 +208,9 @@ def xu(d):
     st = stage_medians(rs, lambda r: (int(r["particles"]),) + variant(r["variant"]))
     an = [st.get((n, "on", "narrow"), {}).get("anisotropy", (None, None))[1] for n in ns]
     nr = [g.get((n, "on", "narrow")) for n in ns]
+    on, off = st.get((ns[-1], "on", "narrow"), {}), st.get((ns[-1], "off", "narrow"), {})
+    extra = ", ".join("%s %s ms" % (x, fmt((on.get(x, (0, 0))[1] or 0) - (off.get(x, (0, 0))[1] or 0)))
+                      for x in ("anisotropy", "splat", "thickness", "filter"))
     lines = ["The paper (RTX 3060) gives Fig. 9 as a plot of frame rates without numbers in its text, so the comparison "
              "is with its three statements:", ""]
     if ratios:
@@ -218,6 +221,8 @@ def xu(d):
                          min(g[(ns[-1], "on", f)] / g[(ns[-1], "off", f)] for f in FILTERS if (ns[-1], "on", f) in g),
                          max(g[(ns[-1], "on", f)] / g[(ns[-1], "off", f)] for f in FILTERS if (ns[-1], "on", f) in g),
                          " -> ".join(fmt(a) for a in an), ns[0], ns[-1]))
+        lines.append("- Where anisotropy's extra time goes at %d particles (narrow-range, on minus off, GL clock): %s: "
+                     "the pass that computes the ellipsoids, then the larger ellipsoid sprites." % (ns[-1], extra))
     if nr[0] and nr[-1]:
         lines.append("- *Narrow-range keeps the time almost linear in the particle count*: %.0fx the particles cost %sx "
                      "the time (anisotropy on: %s ms), so the frame grows more slowly than linearly here." % (
