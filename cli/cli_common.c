@@ -1,6 +1,7 @@
 #include "cli.h"
 #include "method.h"
 #include "fs_error.h"
+#include "gl_context.h"
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -68,6 +69,16 @@ int cli_float(const char *cmd, const char *opt, const char *text, double lo, dou
     if (!text || end == text || *end || errno || !isfinite(v) || v < lo || v > hi)
         return cli_usage(cmd, "%s %s: expected a number in [%g, %g]", opt, text ? text : "(missing)", lo, hi);
     *out = (float)v;
+    return FS_OK;
+}
+
+int cli_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int height)
+{
+    static int said; /* a process may make several contexts: the line is said once */
+    int rc = fs_gl_context_create(c, kind, width, height);
+    if (rc || kind != FS_CTX_EGL || said) return rc;
+    said = 1;
+    fs_note("OpenGL: %s (EGL device %d of %d)", c->renderer, c->device, c->ndevices);
     return FS_OK;
 }
 

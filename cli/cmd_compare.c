@@ -40,11 +40,12 @@ static const char epilogue[] =
 
 static void free_view(cmp_view *v) { fs_run_image_free(v); }
 
-static int make_outdir(const char *dir)
+static int make_outdir(const char *dir, int *made)
 {
     struct stat st;
     if (stat(dir, &st) != 0) {
         if (mkdir(dir, 0755) != 0) return fs_fail(FS_ERR_INPUT, "%s: cannot create the output folder: %s", dir, strerror(errno));
+        *made = 1;
     } else if (!S_ISDIR(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: exists and is not a folder", dir);
     if (access(dir, W_OK) != 0) return fs_fail(FS_ERR_INPUT, "%s: output folder is not writable", dir);
     return FS_OK;
@@ -451,7 +452,7 @@ static int plan_references(cmp_run *r, const cmp_options *o)
     if (!rc && o->nimports && s->frame_first >= 0 && s->frame_last > s->frame_first)
         rc = fs_fail(FS_ERR_INPUT, "--import needs a single-frame scene");
     for (int i = 0; i < o->nimports && !rc; i++) rc = parse_import(r, o->imports[i]);
-    if (!rc) rc = make_outdir(r->outdir);
+    if (!rc) rc = make_outdir(r->outdir, &r->made_outdir);
     if (rc) {
         for (int i = 0; i < r->nentries; i++) free_view(&r->entries[i].first);
         return cli_error(rc);
@@ -667,7 +668,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     int have_ctx = 0;
     double t_start = fs_now_ms();
     rc = !frames_p || !grids ? fs_fail(FS_ERR_RUNTIME, "out of memory") : load_frames(r, o->radius, frames_p, grids);
-    if (!rc && need_gl(r)) { rc = fs_gl_context_create(&ctx, o->ctx_kind, 16, 16); have_ctx = !rc; }
+    if (!rc && need_gl(r)) { rc = cli_gl_context_create(&ctx, o->ctx_kind, 16, 16); have_ctx = !rc; }
     if (!rc) rc = provenance(r, &ctx, have_ctx);
     if (!rc) rc = alloc_results(r);
     if (!rc) rc = render_all(r, frames_p, grids, &ctx);
@@ -675,6 +676,7 @@ static int compare(cmp_run *r, const cmp_options *o)
     if (r->merge) { int prc = cmp_merge_publish(r->merge, !rc); rc = rc ? rc : prc; }
     if (!rc) done_notes(r, t_start);
     if (rc) cli_error(rc);
+    if (rc && r->made_outdir) rmdir(r->outdir); /* only if still empty: a refused context (--require-gpu) left nothing */
     free_results(r, frames_p, grids);
     if (have_ctx) fs_gl_context_destroy(&ctx);
     return rc;
@@ -688,7 +690,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
     memset(r, 0, sizeof *r);
     const char *input = NULL, *out = NULL, *methods = NULL, *cache_dir = NULL, *shard = NULL;
     const char *refspecs[CMP_MAX_REFS + 1], *imports[CMP_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
-    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, counters = 0, rc;
+    int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, counters = 0, require_gpu = 0, rc;
     float radius = 0, nscale = 0, dscale = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     r->repeat = 3;
@@ -718,6 +720,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
         CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
         CLI_OPT_GL(ctx_kind),
+        CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_OPT_QUIET(r->quiet),
         CLI_END,
     };
@@ -725,6 +728,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     fs_note_quiet(r->quiet);
+    fs_gl_context_require_gpu(require_gpu);
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (no_cache && cache_dir) return cli_usage("compare", "--cache and --no-cache: choose one");

@@ -96,7 +96,7 @@ static int render_one(const fs_scene *scene, const fs_particles *p, const render
     fs_run *run = NULL;
     fs_stages counts = {0};
     int cached = job->cache && job->cache->on;
-    int rc = job->m->needs_gl ? fs_gl_context_create(&ctx, kind, 16, 16) : FS_OK;
+    int rc = job->m->needs_gl ? cli_gl_context_create(&ctx, kind, 16, 16) : FS_OK;
     if (!rc) rc = fs_run_open(&run, job->m, scene, job->params, job->m->needs_gl ? &ctx : NULL);
     if (!rc) rc = run_job(run, scene, p, job, st, &counts);
     if (!rc && job->counters && !cached) { /* after the timed render, same inputs (docs/DESIGN.md, "Work counters") */
@@ -175,7 +175,7 @@ static int check_cache(const fs_method *m, const char *dir, const char *out)
 int cmd_render(int argc, char **argv)
 {
     const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL, *cache_dir = NULL;
-    int w = 0, h = 0, frame = -1, timings = 0, counters = 0, quiet = 0, own_look = 0, rc;
+    int w = 0, h = 0, frame = -1, timings = 0, counters = 0, quiet = 0, own_look = 0, require_gpu = 0, rc;
     float radius = 0;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     static fs_scene scene;
@@ -190,6 +190,7 @@ int cmd_render(int argc, char **argv)
         CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
         CLI_INT_OPT("--frame", frame, 0, 100000000, "N", "frame of a sequence scene (default: its first)"),
         CLI_OPT_GL(ctx_kind),
+        CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the renderer they ran on"),
         CLI_FLAG_OPT("--counters", counters, "print per-stage work counts (CSV) of a separate counting\n"
                      "render after the timed one"),
@@ -210,6 +211,7 @@ int cmd_render(int argc, char **argv)
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     fs_note_quiet(quiet);
+    fs_gl_context_require_gpu(require_gpu);
     if (!input) return cli_usage("render", "no scene or particle file given");
     if (!out && !nexports) return cli_usage("render", "no output given (-o OUT.png|OUT.exr)");
     const fs_method *m = fs_method_find(mname);

@@ -27,7 +27,7 @@ static const char epilogue[] =
 
 typedef struct opts {
     const char *scene, *out, *stats;
-    int frames, particles, gpu, substeps, quiet;
+    int frames, particles, gpu, substeps, quiet, require_gpu;
     float fps, dt;
     fs_ctx_kind ctx;
     fs_sph_params prm;
@@ -47,6 +47,7 @@ static int parse(int argc, char **argv, opts *o)
         CLI_STORE_OPT("--cpu", o->gpu, 0, "simulate in C + OpenMP (default)"),
         CLI_STORE_OPT("--gpu", o->gpu, 1, "simulate with GL compute shaders on the --gl context"),
         CLI_OPT_GL(o->ctx),
+        CLI_OPT_REQUIRE_GPU(o->require_gpu),
         CLI_CHOICE_OPT("--eos", o->prm.eos, "tait|ideal", ((const int[]){FS_SPH_TAIT, FS_SPH_IDEAL}),
                        "equation of state (default tait; ideal: p = k (rho - rho0))"),
         CLI_FLOAT_OPT("--fps", o->fps, 0.01, 100000, "F",
@@ -98,10 +99,12 @@ int cmd_simulate(int argc, char **argv)
     memset(&o, 0, sizeof o);
     int rc = parse(argc, argv, &o);
     if (rc) return rc < 0 ? 0 : rc;
+    fs_note_quiet(o.quiet); /* before the context, whose renderer line -q silences */
+    fs_gl_context_require_gpu(o.require_gpu);
     fs_gl_context ctx;
     const char *renderer = "CPU (C + OpenMP)";
     if (o.gpu) {
-        if ((rc = fs_gl_context_create(&ctx, o.ctx, 16, 16))) return cli_error(rc);
+        if ((rc = cli_gl_context_create(&ctx, o.ctx, 16, 16))) return cli_error(rc);
         renderer = ctx.renderer;
     }
     fs_sph *s = NULL;
@@ -127,7 +130,6 @@ int cmd_simulate(int argc, char **argv)
         fprintf(csv, "frame,t,particles,steps,dt_min,dt_max,bound_min,violations,v_max,clamps,outside,density_err,"
                 "density_abs_err,depth,depth_expected,kinetic,step_ms,frame_ms\n");
     }
-    fs_note_quiet(o.quiet);
     if (!o.quiet)
         fprintf(stderr, "simulate %s: %zu fluid + %zu boundary particles on %s, %s, c = %.3g m/s, dt bound %.3g s\n",
                 o.scene, fs_sph_count(s), fs_sph_boundary_count(s), o.gpu ? renderer : "the CPU",

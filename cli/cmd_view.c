@@ -528,7 +528,7 @@ static int view_main(const view_options *o)
 int cmd_view(int argc, char **argv)
 {
     const char *input = NULL, *simulate = NULL, *mname = NULL, *script = NULL, *events = NULL;
-    int W = 0, H = 0, gpu = 0, paused = 0, verbose = 0, max_frames = 0, particles = 0, rc;
+    int W = 0, H = 0, gpu = 0, paused = 0, verbose = 0, max_frames = 0, particles = 0, require_gpu = 0, rc;
     float scale = 1, radius = 0, dt = 1.0f / 60;
     const char *sets[FS_MAX_SETS];
     int nsets = 0;
@@ -544,6 +544,7 @@ int cmd_view(int argc, char **argv)
         CLI_OPT_SIZE(W, H, 16, 8192, "window", "the scene's image size, else 800x600"),
         CLI_FLOAT_OPT("--scale", scale, 1.0 / 16, 2, "S", "G-buffer size / window size, 1/16..2 (default 1)"),
         CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
+        CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_FLAG_OPT("--paused", paused, "start paused"),
         CLI_INT_OPT("--frames", max_frames, 1, 100000000, "N", "quit after N displayed frames"),
         CLI_FLAG_OPT("-v", verbose, "print the title bar (method, ms, renderer, scale, frame) each frame"),
@@ -554,6 +555,7 @@ int cmd_view(int argc, char **argv)
     const cli_command cmd = {"view", "SCENE.json|PARTICLES [options]\n--simulate NAME [options]", opts,
                              {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
+    fs_gl_context_require_gpu(require_gpu);
     if (!input == !simulate) return cli_usage("view", "give a scene or particle file, or --simulate NAME (not both)");
     if (script && events) return cli_usage("view", "--script and --events: give one");
     if (!simulate && (gpu || particles)) return cli_usage("view", "--gpu and --particles apply to --simulate only");

@@ -59,6 +59,7 @@ typedef struct cmp_run {
     char outdir[1024];
     char command[4096];
     int nentries, nrefs, nframes, first_frame, repeat, quiet, sequence;
+    int made_outdir; /* this run made outdir: a failure before any output removes it */
     int counters;        /* --counters: a counting render per variant and frame */
     int resume, resumed; /* --resume; the work items it loaded */
     int shard_k, shard_n; /* --shard K/N; 0/0 renders every work item */

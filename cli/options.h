@@ -47,7 +47,7 @@ typedef struct cli_opt {
 #define CLI_END {.name = NULL}
 
 /* The options that several commands share, defined once (--gl wants
- * gl_context.h, --set scene.h). */
+ * gl_context.h, --set scene.h; --require-gpu goes to fs_gl_context_require_gpu). */
 #define CLI_OPT_OUT(var, mv, hlp) CLI_STRING_OPT("-o", var, mv, hlp)
 #define CLI_OPT_SIZE(wvar, hvar, lo_, hi_, what, dflt)                                                        \
     {.name = "-W", .alias = "--width", .kind = CLI_INT, .i = &(wvar), .lo = lo_, .hi = hi_, .meta = "N",      \
@@ -57,6 +57,9 @@ typedef struct cli_opt {
 #define CLI_OPT_GL(var)                                                                                        \
     CLI_CHOICE_OPT("--gl", var, "osmesa|egl", ((const int[]){FS_CTX_OSMESA, FS_CTX_EGL}),                    \
                    "OpenGL context (default " FS_CTX_DEFAULT_NAME ", or FLUIDSURF_GL)")
+#define CLI_OPT_REQUIRE_GPU(var)                                                                     \
+    CLI_FLAG_OPT("--require-gpu", var, "refuse a software OpenGL renderer (llvmpipe, ...): exit 1,\n" \
+                 "nothing written (or FLUIDSURF_REQUIRE_GPU=1)")
 #define CLI_OPT_SET(arr, cnt) \
     CLI_LIST_OPT("--set", arr, cnt, FS_MAX_SETS, "M.P=V", "set a method parameter (repeatable)")
 #define CLI_OPT_CACHE(var, hlp) CLI_STRING_OPT("--cache", var, "DIR", hlp)

@@ -60,3 +60,10 @@ endif()
 add_test(NAME cli_obstacles COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_obstacles.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_BINARY_DIR}/test-out/cli_obstacles)
 set_tests_properties(cli_obstacles PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 300)
+# The context on a machine that is not ours: EGL's renderer line (once, not under -q, not
+# on OSMesa), --require-gpu and FLUIDSURF_REQUIRE_GPU=1 refusing llvmpipe, in every command
+# and in render_bench. Real EGL on Mesa's software device; in the lean build too.
+add_test(NAME cli_require_gpu COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_require_gpu.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_require_gpu $<BOOL:${FS_WITH_OSMESA}>
+         $<BOOL:${FS_WITH_GLFW}> $<TARGET_FILE:render_bench>)
+set_tests_properties(cli_require_gpu PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 180)

@@ -10,15 +10,15 @@ fails=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 declare -A want=(
-  [render]="--method -o --set -W --width -H --height --radius --format --frame --gl --timings --counters --export --appearance --cache -q"
-  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --shard --counters -W --width -H --height --radius --gl -q"
+  [render]="--method -o --set -W --width -H --height --radius --format --frame --gl --require-gpu --timings --counters --export --appearance --cache -q"
+  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --shard --counters -W --width -H --height --radius --gl --require-gpu -q"
   [merge]="-o -q"
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius"
   [info]="--radius --volume-scale --format"
   [convert]="-o --from --to"
   [methods]=""
-  [simulate]="--frames -o --particles --cpu --gpu --gl --eos --fps --dt --substeps --radius --nu --sound-speed --k --cfl --stats -q"
-  [view]="--simulate --particles --gpu --dt --method --set -W --width -H --height --scale --radius --paused --frames -v --script --events"
+  [simulate]="--frames -o --particles --cpu --gpu --gl --require-gpu --eos --fps --dt --substeps --radius --nu --sound-speed --k --cfl --stats -q"
+  [view]="--simulate --particles --gpu --dt --method --set -W --width -H --height --scale --radius --require-gpu --paused --frames -v --script --events"
 )
 
 shared="-o -W --width -H --height --gl --set -q --radius"
@@ -58,7 +58,7 @@ done
 
 # the shared options read the same everywhere: one definition
 bad=$fails
-for opt in "--set M.P=V" "--gl osmesa|egl" "-q "; do
+for opt in "--set M.P=V" "--gl osmesa|egl" "--require-gpu " "-q "; do
   texts=$(cat "$T"/help_* | grep -F -- "  $opt" | sed 's/  */ /g' | sort -u)
   [ "$(printf '%s\n' "$texts" | grep -c .)" -le 1 ] || fail "'$opt' has different help texts: $texts"
 done

@@ -1,2 +1,4 @@
 fs_add_test(test_gl fs_gl test_gl.c)
+# The EGL device choice and the software-renderer list, as pure functions (no GPU needed).
+fs_add_test(test_gl_device fs_gl test_gl_device.c)
 fs_add_test(test_spheres fs_test_methods test_spheres.c golden.c)

@@ -1,6 +1,7 @@
 #define _GNU_SOURCE /* dl_iterate_phdr */
 #include "gl_context.h"
 #include "fs_error.h"
+#include "gl_device.h"
 
 typedef void *(*fs_gl_getproc)(const char *name);
 int fs_gl_load(fs_gl_getproc getproc);
@@ -116,68 +117,148 @@ typedef struct egl_fns {
     PFNEGLMAKECURRENTPROC MakeCurrent;
     PFNEGLDESTROYCONTEXTPROC DestroyContext;
     PFNEGLTERMINATEPROC Terminate;
+    /* for creation only */
+    PFNEGLQUERYDEVICESEXTPROC QueryDevices;
+    PFNEGLQUERYDEVICESTRINGEXTPROC QueryDeviceString; /* NULL without EGL_EXT_device_query */
+    PFNEGLGETPLATFORMDISPLAYEXTPROC GetPlatformDisplay;
+    PFNEGLINITIALIZEPROC Initialize;
+    PFNEGLBINDAPIPROC BindAPI;
+    PFNEGLCHOOSECONFIGPROC ChooseConfig;
+    PFNEGLCREATECONTEXTPROC CreateContext;
 } egl_fns;
 static egl_fns *egl_current;
 /* EGL displays are per device and eglTerminate ends every context on one, so
  * only the last EGL context terminates it. */
 static int egl_users;
+#ifndef GL_RENDERER
+#define GL_RENDERER 0x1F01 /* gl.h is not included here (see the OSMesa include) */
+#endif
+typedef const unsigned char *(*gl_get_string_fn)(unsigned int name);
 
 static void *egl_getproc(const char *name) { return (void *)egl_current->GetProcAddress(name); }
+
+/* libEGL and its entry points; NULL, or why not. */
+static const char *egl_load(egl_fns *e)
+{
+    e->lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!e->lib) return "libEGL.so.1 not found";
+    e->GetProcAddress = (PFNEGLGETPROCADDRESSPROC)dlsym(e->lib, "eglGetProcAddress");
+    if (!e->GetProcAddress) return "eglGetProcAddress missing";
+#define LOAD(field, T, name) e->field = (T)e->GetProcAddress(name)
+    LOAD(MakeCurrent, PFNEGLMAKECURRENTPROC, "eglMakeCurrent");
+    LOAD(DestroyContext, PFNEGLDESTROYCONTEXTPROC, "eglDestroyContext");
+    LOAD(Terminate, PFNEGLTERMINATEPROC, "eglTerminate");
+    LOAD(QueryDevices, PFNEGLQUERYDEVICESEXTPROC, "eglQueryDevicesEXT");
+    LOAD(QueryDeviceString, PFNEGLQUERYDEVICESTRINGEXTPROC, "eglQueryDeviceStringEXT");
+    LOAD(GetPlatformDisplay, PFNEGLGETPLATFORMDISPLAYEXTPROC, "eglGetPlatformDisplayEXT");
+    LOAD(Initialize, PFNEGLINITIALIZEPROC, "eglInitialize");
+    LOAD(BindAPI, PFNEGLBINDAPIPROC, "eglBindAPI");
+    LOAD(ChooseConfig, PFNEGLCHOOSECONFIGPROC, "eglChooseConfig");
+    LOAD(CreateContext, PFNEGLCREATECONTEXTPROC, "eglCreateContext");
+#undef LOAD
+    if (!e->QueryDevices || !e->GetPlatformDisplay) return "device enumeration (EGL_EXT_device_enumeration) unavailable";
+    if (!e->MakeCurrent || !e->DestroyContext || !e->Terminate || !e->Initialize || !e->BindAPI || !e->ChooseConfig ||
+        !e->CreateContext)
+        return "an EGL 1.4 entry point is missing";
+    return NULL;
+}
+
+/* A 4.5 core context on dev, current, its GL_RENDERER in c->renderer; NULL, or
+ * why not (egl_close undoes what was done either way). */
+static const char *egl_open(egl_fns *e, EGLDeviceEXT dev, fs_gl_context *c)
+{
+    EGLint major, minor, ncfg = 0;
+    EGLConfig cfg;
+    EGLDisplay d = e->GetPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, dev, NULL);
+    if (d == EGL_NO_DISPLAY || !e->Initialize(d, &major, &minor)) return "no EGL display initialises";
+    e->dpy = d;
+    const EGLint cfg_attr[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    if (!e->BindAPI(EGL_OPENGL_API) || !e->ChooseConfig(d, cfg_attr, &cfg, 1, &ncfg) || ncfg < 1) return "no OpenGL config";
+    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext ctx = e->CreateContext(d, cfg, EGL_NO_CONTEXT, ctx_attr);
+    if (ctx == EGL_NO_CONTEXT) return "cannot create a 4.5 core context";
+    c->handle = ctx;
+    if (!e->MakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) return "cannot make the context current";
+    gl_get_string_fn get_string = (gl_get_string_fn)e->GetProcAddress("glGetString");
+    const unsigned char *r = get_string ? get_string(GL_RENDERER) : NULL;
+    snprintf(c->renderer, sizeof c->renderer, "%s", r ? (const char *)r : "");
+    return NULL;
+}
+
+/* Undoes egl_open. The display stays initialised while another context uses it. */
+static void egl_close(egl_fns *e, fs_gl_context *c)
+{
+    if (c->handle) {
+        e->MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        e->DestroyContext(e->dpy, c->handle);
+        c->handle = NULL;
+    }
+    if (e->dpy && !egl_users) e->Terminate(e->dpy);
+    e->dpy = NULL;
+    c->renderer[0] = 0;
+}
+
+/* fs_gl_device_choose's view of the devices */
+typedef struct egl_pick {
+    egl_fns *e;
+    fs_gl_context *c;
+    EGLDeviceEXT devs[FS_GL_MAX_DEVICES];
+    fs_gl_device_class cls[FS_GL_MAX_DEVICES];
+    const char *why; /* the last device's reason not to open */
+} egl_pick;
+
+static int egl_pick_open(void *data, int i)
+{
+    egl_pick *p = data;
+    const char *why = egl_open(p->e, p->devs[i], p->c);
+    if (why) {
+        egl_close(p->e, p->c);
+        p->why = why;
+        return -1;
+    }
+    return p->cls[i] == FS_GL_DEVICE_SOFTWARE || fs_gl_renderer_is_software(p->c->renderer);
+}
+
+static void egl_pick_close(void *data, int i)
+{
+    egl_pick *p = data;
+    (void)i;
+    egl_close(p->e, p->c);
+}
+
+/* Opens the device fs_gl_device_choose picks (hardware before software), its
+ * index, count and software flag in c; NULL, or why none opened. */
+static const char *egl_choose(egl_fns *e, fs_gl_context *c)
+{
+    egl_pick p = {.e = e, .c = c, .why = "no EGL device opens"};
+    EGLint n = 0;
+    if (!e->QueryDevices(FS_GL_MAX_DEVICES, p.devs, &n)) n = 0;
+    for (int i = 0; i < n; i++) /* what EGL says before any context is made */
+        p.cls[i] = fs_gl_device_classify(e->QueryDeviceString ? e->QueryDeviceString(p.devs[i], EGL_EXTENSIONS) : NULL);
+    if (n < 1) return "no EGL device";
+    int i = fs_gl_device_choose(p.cls, n, egl_pick_open, egl_pick_close, &p);
+    if (i < 0) return p.why;
+    c->device = i, c->ndevices = n;
+    c->software = p.cls[i] == FS_GL_DEVICE_SOFTWARE; /* fs_gl_context_create adds GL_RENDERER's word */
+    return NULL;
+}
 
 static int create_egl(fs_gl_context *c)
 {
     egl_fns *e = calloc(1, sizeof *e);
     if (!e) return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory");
-    e->lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
-    if (!e->lib) { free(e); return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: libEGL.so.1 not found"); }
-    e->GetProcAddress = (PFNEGLGETPROCADDRESSPROC)dlsym(e->lib, "eglGetProcAddress");
-    const char *why = "eglGetProcAddress missing";
-    if (!e->GetProcAddress) goto fail;
-#define LOAD(T, n) T n = (T)e->GetProcAddress(#n)
-    LOAD(PFNEGLQUERYDEVICESEXTPROC, eglQueryDevicesEXT);
-    LOAD(PFNEGLGETPLATFORMDISPLAYEXTPROC, eglGetPlatformDisplayEXT);
-    LOAD(PFNEGLINITIALIZEPROC, eglInitialize);
-    LOAD(PFNEGLBINDAPIPROC, eglBindAPI);
-    LOAD(PFNEGLCHOOSECONFIGPROC, eglChooseConfig);
-    LOAD(PFNEGLCREATECONTEXTPROC, eglCreateContext);
-#undef LOAD
-    e->MakeCurrent = (PFNEGLMAKECURRENTPROC)e->GetProcAddress("eglMakeCurrent");
-    e->DestroyContext = (PFNEGLDESTROYCONTEXTPROC)e->GetProcAddress("eglDestroyContext");
-    e->Terminate = (PFNEGLTERMINATEPROC)e->GetProcAddress("eglTerminate");
-    why = "device enumeration (EGL_EXT_device_enumeration) unavailable";
-    if (!eglQueryDevicesEXT || !eglGetPlatformDisplayEXT || !eglInitialize || !e->MakeCurrent) goto fail;
-    EGLDeviceEXT devs[8];
-    EGLint ndev = 0, major, minor;
-    why = "no EGL device";
-    if (!eglQueryDevicesEXT(8, devs, &ndev) || ndev < 1) goto fail;
-    /* Take the first device that initialises (the GPU comes first on NVIDIA). */
-    for (int i = 0; i < ndev && !e->dpy; i++) {
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devs[i], NULL);
-        if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) e->dpy = d;
+    const char *why = egl_load(e);
+    if (!why) why = egl_choose(e, c);
+    pin_loaded_libraries();
+    if (why) {
+        if (e->lib) dlclose(e->lib);
+        free(e);
+        return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: %s", why);
     }
-    why = "no EGL display initialises";
-    if (!e->dpy) goto fail;
-    const EGLint cfg_attr[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-    EGLConfig cfg;
-    EGLint ncfg = 0;
-    why = "no OpenGL config";
-    if (!eglBindAPI(EGL_OPENGL_API) || !eglChooseConfig(e->dpy, cfg_attr, &cfg, 1, &ncfg) || ncfg < 1) goto fail;
-    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext ctx = eglCreateContext(e->dpy, cfg, EGL_NO_CONTEXT, ctx_attr);
-    why = "cannot create a 4.5 core context";
-    if (ctx == EGL_NO_CONTEXT) goto fail;
-    c->handle = ctx;
     c->extra = e;
     egl_users++;
-    pin_loaded_libraries();
     return FS_OK;
-fail:
-    pin_loaded_libraries();
-    if (e->dpy && e->Terminate && !egl_users) e->Terminate(e->dpy);
-    dlclose(e->lib);
-    free(e);
-    return fs_fail(FS_ERR_RUNTIME, "OpenGL: EGL: %s", why);
 }
 
 /* ---- GLFW ---- */
@@ -278,18 +359,38 @@ int fs_gl_context_make_current(fs_gl_context *c)
     return fs_gl_check_core45(c->renderer, sizeof c->renderer, c->version, sizeof c->version);
 }
 
+/* fs_gl_context_require_gpu, or FLUIDSURF_REQUIRE_GPU in the environment */
+static int require_gpu;
+
+void fs_gl_context_require_gpu(int on) { require_gpu = on; }
+
+/* A software rasterizer when a GPU is required: one line naming the renderer and
+ * what asked for a GPU. */
+static int check_required_gpu(const fs_gl_context *c)
+{
+    const char *env = getenv("FLUIDSURF_REQUIRE_GPU");
+    int from_env = env && *env && strcmp(env, "0");
+    if (!c->software || !(require_gpu || from_env)) return FS_OK;
+    char who[64] = "--require-gpu";
+    if (!require_gpu) snprintf(who, sizeof who, "FLUIDSURF_REQUIRE_GPU=%s", env);
+    return fs_fail(FS_ERR_RUNTIME, "%s: the OpenGL renderer is %s, a software rasterizer", who, c->renderer);
+}
+
 int fs_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int height)
 {
     memset(c, 0, sizeof *c);
     c->kind = kind;
     c->width = width > 0 ? width : 16;
     c->height = height > 0 ? height : 16;
+    c->device = -1;
     /* Creating may bind and unbind (GLFW): release the bound context first and
      * give it back if creation fails. */
     fs_gl_context prev = bound;
     release_bound();
     int rc = kind == FS_CTX_EGL ? create_egl(c) : kind == FS_CTX_GLFW ? create_glfw(c) : create_osmesa(c);
     if (!rc) rc = fs_gl_context_make_current(c);
+    if (!rc) c->software |= fs_gl_renderer_is_software(c->renderer);
+    if (!rc) rc = check_required_gpu(c);
     if (rc) {
         char msg[1024];
         snprintf(msg, sizeof msg, "%s", fs_error_message());
