@@ -2,8 +2,10 @@
 (tests/python.cmake runs it on the installed prefix). FS_BIN: the fluidsurf
 binary; FS_SRC: the source tree."""
 import os
+import re
 import resource
 import subprocess
+import sys
 import threading
 import time
 
@@ -194,3 +196,20 @@ def test_renders_do_not_grow_memory(dam):
         fluidsurf.render(sub, R, method="raycast_pca", width=SIZE, height=SIZE)
     grown_mb = (peak_rss_kb() - before) / 1024
     assert grown_mb <= 5, f"peak RSS grew {grown_mb:.1f} MB over 50 renders"
+
+
+def test_require_gpu_reaches_the_library():
+    """FLUIDSURF_REQUIRE_GPU=1 is the library's --require-gpu (its context has no option):
+    a GL method on a software renderer is a fluidsurf.Error naming it, a CPU method still
+    renders. A fresh interpreter, as the library makes its context once per process;
+    OSMesa, as it is llvmpipe on every machine."""
+    code = ("import numpy as np, fluidsurf\n"
+            "p = np.zeros((1, 3), np.float32)\n"
+            "fluidsurf.render(p, 0.025, method='reference', width=16, height=16)\n"
+            "try:\n"
+            "    fluidsurf.render(p, 0.025, method='spheres', width=16, height=16)\n"
+            "except fluidsurf.Error as e:\n"
+            "    print(e)\n")
+    env = {**os.environ, "FLUIDSURF_REQUIRE_GPU": "1", "FLUIDSURF_GL": "osmesa"}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True).stdout
+    assert re.fullmatch(r"FLUIDSURF_REQUIRE_GPU=1: the OpenGL renderer is llvmpipe.*, a software rasterizer\n", out), out
