@@ -18,7 +18,10 @@
  * camera. Every function that can fail returns FLUIDSURF_OK (0) or an error
  * code, with one line for fluidsurf_last_error() (per thread). Nothing here
  * prints or calls exit(). Renders may be called from any thread; they run one
- * at a time (each uses every core), and GL methods share one OpenGL context.
+ * at a time (each uses every core), and GL methods share one OpenGL context:
+ * OSMesa, or EGL with FLUIDSURF_GL=egl in the environment; FLUIDSURF_REQUIRE_GPU=1
+ * makes a GL render on a software renderer (llvmpipe) fail with
+ * FLUIDSURF_ERR_RUNTIME, its message naming the renderer.
  *
  * Versioning: FLUIDSURF_API_VERSION grows with every change; a program built
  * against version V runs with any library whose fluidsurf_api_version() >= V
