@@ -47,6 +47,9 @@ cd "$(dirname "$0")/../.." # relative -o and --bin were resolved against the cal
 [ -n "$BINDIR" ] || BINDIR=build-lean
 [ -n "$OUTDIR" ] || OUTDIR=out/gpu$([ $QUICK = 1 ] && echo -quick)
 export FLUIDSURF_GL=${FLUIDSURF_GL:-egl}
+# a timing run refuses a software renderer (fluidsurf --require-gpu), so it never times llvmpipe
+# by mistake; --quick runs on llvmpipe; FLUIDSURF_REQUIRE_GPU=0 lets a full run check itself there
+[ $QUICK = 1 ] || export FLUIDSURF_REQUIRE_GPU=${FLUIDSURF_REQUIRE_GPU:-1}
 # glvnd finds NVIDIA's EGL through its vendor file; a bare node may keep it off the default path
 nv_vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f $nv_vendor ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv_vendor
