@@ -6,7 +6,7 @@ PKGS=(build-essential cmake pkg-config git
       libosmesa6-dev libglfw3-dev libegl-dev
       libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
       libopenimageio-dev openimageio-tools libvtk9-dev libcjson-dev zlib1g-dev
-      libopenexr-dev libstb-dev
+      libopenexr-dev libstb-dev glslang-tools
       clang libclang-rt-14-dev
       xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9
       slurm-wlm munge

@@ -3,6 +3,7 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_counters.h"
+#include "shader_dump.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -173,6 +174,7 @@ unsigned fs_program_build(const char *const *stages, const char *defines_in)
         map.n = map.lines = 0;
         int rc = expand(&src, stages[i], &map, defines, 0);
         if (rc) { free(src.s); goto fail; }
+        fs_shader_dump(stages[i], defines, src.s);
         GLuint s = glCreateShader(type);
         const char *text = src.s;
         glShaderSource(s, 1, &text, NULL);
