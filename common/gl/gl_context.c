@@ -2,6 +2,7 @@
 #include "gl_context.h"
 #include "fs_error.h"
 #include "gl_device.h"
+#include "gl_limits.h"
 
 typedef void *(*fs_gl_getproc)(const char *name);
 int fs_gl_load(fs_gl_getproc getproc);
@@ -391,6 +392,7 @@ int fs_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int heig
     if (!rc) rc = fs_gl_context_make_current(c);
     if (!rc) c->software |= fs_gl_renderer_is_software(c->renderer);
     if (!rc) rc = check_required_gpu(c);
+    if (!rc) rc = fs_gl_limits_check_current(c->renderer); /* docs/DESIGN.md, "GL limits" */
     if (rc) {
         char msg[1024];
         snprintf(msg, sizeof msg, "%s", fs_error_message());
