@@ -2,3 +2,6 @@ fs_add_test(test_gl fs_gl test_gl.c)
 # The EGL device choice and the software-renderer list, as pure functions (no GPU needed).
 fs_add_test(test_gl_device fs_gl test_gl_device.c)
 fs_add_test(test_spheres fs_test_methods test_spheres.c golden.c)
+# The GL limits (docs/DESIGN.md, "GL limits"): each refused one below its need with one
+# line, and the build's own context (OSMesa; EGL in the lean build) meets every need.
+fs_add_test(test_gl_limits fs_gl test_gl_limits.c)

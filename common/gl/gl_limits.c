@@ -91,10 +91,16 @@ const fs_gl_limit *fs_gl_limits(int *n)
 
 int fs_gl_limits_check(const long long *have, const char *renderer)
 {
-    for (int i = 0; i < NLIMITS; i++)
-        if (have[i] < table[i].need)
-            return fs_fail(FS_ERR_RUNTIME, "OpenGL: %s is %lld on %s; fluidsurf needs %lld (%s)", table[i].name, have[i],
-                           renderer && *renderer ? renderer : "this renderer", table[i].need, table[i].what);
+    const char *r = renderer && *renderer ? renderer : "this renderer";
+    for (int i = 0; i < NLIMITS; i++) {
+        const fs_gl_limit *l = &table[i];
+        if (have[i] < 0) /* the query failed: a driver that does not know the limit */
+            return fs_fail(FS_ERR_RUNTIME, "OpenGL: %s is not reported on %s; fluidsurf needs %lld (%s)", l->name, r,
+                           l->need, l->what);
+        if (have[i] < l->need)
+            return fs_fail(FS_ERR_RUNTIME, "OpenGL: %s is %lld on %s; fluidsurf needs %lld (%s)", l->name, have[i], r,
+                           l->need, l->what);
+    }
     return FS_OK;
 }
 

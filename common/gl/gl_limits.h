@@ -21,7 +21,8 @@ typedef struct fs_gl_limit {
 const fs_gl_limit *fs_gl_limits(int *n);
 /* Checks driver values (have[i] for table entry i) against the needs: FS_OK, or
  * FS_ERR_RUNTIME with "OpenGL: GL_MAX_X is N on RENDERER; fluidsurf needs M (what)"
- * for the first limit below its need. Pure: unit-testable without a context. */
+ * for the first limit below its need (a negative value: "is not reported on").
+ * Pure: unit-testable without a context. */
 int fs_gl_limits_check(const long long *have, const char *renderer);
 /* Queries every limit on the current context into have (the table's length). */
 void fs_gl_limits_query(long long *have);

@@ -101,6 +101,16 @@ int fs_sph_gpu_init(fs_sph *s)
     }
     memcpy(G->origin0, G->origin, sizeof G->origin);
     memcpy(G->box0, s->box_lo, sizeof G->box0);
+    /* run() dispatches one work group per 128 particles and per 64 cells; the cell
+     * table is one storage block (docs/DESIGN.md, "GL limits") */
+    GLint maxgroups = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxgroups);
+    if ((n + 127) / 128 > (size_t)maxgroups || ceil(cells / 64) > maxgroups)
+        return fs_fail(FS_ERR_INPUT, "sph: %zu particles (boundary included) or %.0f grid cells need more than "
+                       "GL_MAX_COMPUTE_WORK_GROUP_COUNT[x] = %d work groups on the GPU path", n, cells, maxgroups);
+    if ((cells + 1) * 4 > (double)(unsigned)maxssbo)
+        return fs_fail(FS_ERR_INPUT, "sph: %.0f grid cells exceed one shader storage buffer (%d bytes) on the GPU path",
+                       cells, maxssbo);
     G->ncells = (unsigned)cells;
     G->nblocks = (G->ncells + SPH_BLOCK - 1) / SPH_BLOCK;
     glCreateBuffers(B_N, G->buf);
