@@ -4,6 +4,7 @@
  *
  *   render_bench SCENE.json LABEL METHOD SIZES RUNS [VARIANT ...]
  *   render_bench --probe
+ *   render_bench --limits
  *
  * SIZES: comma list of square image sizes ("512,1024"). VARIANT: ';'-joined
  * "method.param=value" settings on top of the scene's ("-" or none: the
@@ -16,12 +17,14 @@
  *   label,particles,method,variant,size,run,stage,ms,gpu_ms,gl_renderer,gl_version
  * ms: wall clock between glFinish calls; gpu_ms: the GL clock (gl_stage.h),
  * empty for CPU stages. --probe prints the default context's GL_RENDERER and
- * GL_VERSION on two lines. With RENDER_BENCH_PNG=PREFIX, the last render of each
+ * GL_VERSION on two lines; --limits the context's value of every GL limit fluidsurf
+ * relies on, as CSV "limit,value,need,what" (gl_limits.h). With RENDER_BENCH_PNG=PREFIX, the last render of each
  * variant and size is shaded and written to PREFIX_<variant>_<size>.png, to look
  * at what was timed. */
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
+#include "gl_limits.h"
 #include "image_io.h"
 #include "method.h"
 #include "run.h"
@@ -126,11 +129,28 @@ static int probe(void)
     return 0;
 }
 
+/* The driver's value of each limit beside fluidsurf's need (docs/DESIGN.md, "GL limits"). */
+static int limits(void)
+{
+    fs_gl_context ctx;
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
+    int n = 0;
+    const fs_gl_limit *t = fs_gl_limits(&n);
+    long long have[128];
+    if (n > 128) n = 128;
+    fs_gl_limits_query(have);
+    printf("limit,value,need,what\n");
+    for (int i = 0; i < n; i++) printf("%s,%lld,%lld,\"%s\"\n", t[i].name, have[i], t[i].need, t[i].what);
+    fs_gl_context_destroy(&ctx);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && !strcmp(argv[1], "--probe")) return probe();
+    if (argc == 2 && !strcmp(argv[1], "--limits")) return limits();
     if (argc < 6) {
-        fprintf(stderr, "usage: render_bench SCENE.json LABEL METHOD SIZES RUNS [VARIANT ...] | --probe\n");
+        fprintf(stderr, "usage: render_bench SCENE.json LABEL METHOD SIZES RUNS [VARIANT ...] | --probe | --limits\n");
         return 2;
     }
     fs_methods_register_builtin();

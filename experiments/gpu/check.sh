@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# A short check of a GPU node in one device call (about a minute, after the machine's
+# start): the driver's value of every GL limit fluidsurf relies on (render_bench
+# --limits, docs/DESIGN.md "GL limits"), and every shader variant compiled and run by the
+# vendor's driver, with a software renderer refused (FLUIDSURF_REQUIRE_GPU=1): compare of
+# every method on the bundled dam break, plain and with --counters (the counting
+# variants), and the GPU simulator. FS_SHADER_DUMP records what each run compiled.
+# Writes into OUT: limits.csv, compiled.csv (run, stage file, defines), check.log, and
+# metrics.csv / counters.csv of the two compares.
+# usage: experiments/gpu/check.sh [--bin DIR] [-o OUT]   (default DIR .gpu/pack, OUT $OUT or out/check)
+# Exit status: 0 when every step passed, 1 otherwise (check.log says which).
+set -uo pipefail
+bin=.gpu/pack out=${OUT:-}
+while [ $# -gt 0 ]; do
+  case $1 in
+    --bin|-o) [ $# -ge 2 ] || { echo "check.sh: $1 needs a folder" >&2; exit 2; }
+              if [ "$1" = -o ]; then out=$2; else bin=$2; fi; shift ;;
+    *) echo "check.sh: unknown argument $1 (usage: check.sh [--bin DIR] [-o OUT])" >&2; exit 2 ;;
+  esac
+  shift
+done
+out=$(realpath -m "${out:-out/check}") bin=$(realpath -m "$bin")
+cd "$(dirname "$0")/../.."
+mkdir -p "$out"
+export FLUIDSURF_GL=${FLUIDSURF_GL:-egl} FLUIDSURF_REQUIRE_GPU=${FLUIDSURF_REQUIRE_GPU:-1}
+nv_vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f $nv_vendor ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv_vendor
+if command -v nvidia-smi > /dev/null && compgen -G '.gl/*.deb' > /dev/null; then
+  for f in .gl/*.deb; do dpkg -x "$f" /; done
+  ldconfig
+fi
+prov=$(cat "$bin/provenance" 2> /dev/null || echo "commit=unknown; dirty=1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fails=0
+step() { # step NAME CMD...: runs CMD, logs its exit status and last stderr line
+  local name=$1; shift
+  mkdir -p "$work/dump/$name"
+  FS_SHADER_DUMP=$work/dump/$name "$@" > "$work/$name.out" 2> "$work/$name.err"
+  local rc=$?
+  echo "$name: exit $rc $(tail -1 "$work/$name.err")" | tee -a "$out/check.log"
+  [ $rc = 0 ] || fails=$((fails + 1))
+}
+: > "$out/check.log"
+step limits "$bin/render_bench" --limits
+{ echo "# experiments/gpu/check.sh; $prov; $("$bin/render_bench" --probe 2> /dev/null | tr '\n' ';')"
+  cat "$work/limits.out"; } > "$out/limits.csv"
+scene=experiments/scenes/dam_break_ply.json
+step compare "$bin/fluidsurf" compare "$scene" -W 256 -H 256 -q --no-cache -o "$work/compare"
+step counters "$bin/fluidsurf" compare "$scene" -W 256 -H 256 -q --no-cache --counters -o "$work/counters"
+step simulate "$bin/fluidsurf" simulate dam_break --gpu --particles 20000 --frames 2 -q -o "$work/sim_%04d.ply"
+cp "$work/compare/metrics.csv" "$out/metrics.csv" 2> /dev/null
+cp "$work/counters/counters.csv" "$out/counters.csv" 2> /dev/null
+{ echo "# experiments/gpu/check.sh; $prov"; echo "run,stage,defines"
+  for d in "$work"/dump/*/; do
+    [ -f "$d/index.tsv" ] && awk -F'\t' -v r="$(basename "$d")" '{print r "," $1 ",\"" $2 "\""}' "$d/index.tsv" | sort -u
+  done; } > "$out/compiled.csv"
+echo "check.sh: $(($(grep -c . "$out/compiled.csv") - 2)) stage variants compiled by the driver; $fails failed steps" |
+  tee -a "$out/check.log"
+[ $fails = 0 ]
