@@ -417,6 +417,26 @@ def about(d):
     return ABOUT_GPU if ("h200" in r or "h100" in r) else ""
 
 
+def repeat(d):
+    """A second run in DIR/repeat (another lease, another machine maybe): the ratio of its
+    GL-clock frame times to this run's, per cell, for the two render tables."""
+    r = os.path.join(d, "repeat")
+    if not os.path.isdir(r):
+        return ""
+    env = {x["key"]: x["value"] for x in rows(r, "env.csv")}
+    body = []
+    for name, stages, key in (("xiao2017_table1.csv", T1_STAGES, lambda x: (int(x["particles"]), int(x["size"]))),
+                              ("xu2022_fig9.csv", F9_STAGES, lambda x: (int(x["particles"]), x["variant"]))):
+        a, b = frames(rows(d, name), stages, key), frames(rows(r, name), stages, key)
+        q = sorted(b[k][1] / a[k][1] for k in a if k in b and a[k][1] and b[k][1])
+        if q:
+            body.append((name, len(q), "%.2f" % statistics.median(q), "%.2f" % q[0], "%.2f" % q[-1]))
+    return ("## Repeatability\n\nThe same script run again (`repeat/`: %s, %s, %s), each cell's GL-clock frame "
+            "time over this run's:\n\n" % (env.get("date", "?"), env.get("gl_renderer", "?").strip('"'),
+                                             provenance(r, "env.csv"))
+            + table(("CSV", "cells", "median repeat / first", "lowest", "highest"), body))
+
+
 def report(d):
     out = [header(d), about(d)]
     for title, f in (("xiao2017 Table 1 (raycast_pca; also Fig. 9)", xiao), ("xu2022 Fig. 9 (aniso_ssf)", xu),
@@ -424,6 +444,8 @@ def report(d):
                      ("iwasaki2006 section 4: the density grid (Fig. 8's 88x)", iwasaki),
                      ("The demo comparison (every GL method and the CPU reference)", demo)):
         out.append("## %s\n\n%s" % (title, f(d)))
+    if repeat(d):
+        out.append(repeat(d))
     bad = [r for r in rows(d, "status.csv") if r["exit"] != "0"]
     if bad:
         out.append("## Cells that did not finish\n\n" + table(("step", "cell", "exit", "note"),
