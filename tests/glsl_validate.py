@@ -77,11 +77,13 @@ def main():
     if not shutil.which("glslangValidator"):
         sys.exit("FAIL glslangValidator not found (Debian glslang-tools; scripts/setup.sh installs it)")
     runs = {os.path.basename(d): index(d) for d in sorted(glob.glob(os.path.join(dump, "*"))) if os.path.isdir(d)}
-    jobs = []  # (label, source file)
+    jobs = []  # (label, source file): each distinct source once (its name holds its hash)
     nmax = invocations_max(src)
     tmp = tempfile.mkdtemp()
+    done = set()
     for run, entries in runs.items():
-        for name in sorted({e[2] for e in entries}):
+        for name in sorted({e[2] for e in entries} - done):
+            done.add(name)
             path = os.path.join(dump, run, name)
             jobs.append(("%s/%s" % (run, name), path))
             if "#define INVOCATIONS " in open(path).read():
