@@ -29,7 +29,7 @@ int cli_scene_from_arg(fs_scene *s, const char *arg);
 int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out);
 int cli_float(const char *cmd, const char *opt, const char *text, double lo, double hi, float *out);
 /* fs_gl_context_create, then on EGL one note naming the renderer and the device,
- * "fluidsurf: note: OpenGL: NVIDIA H200/PCIe/SSE2 (EGL device 0 of 2)", once per
+ * "fluidsurf: note: OpenGL: NVIDIA H200/PCIe/SSE2 (EGL device 0 of 1)", once per
  * process and not under -q (fs_note_quiet): on a machine that is not ours it says
  * what the run rendered on. OSMesa is always llvmpipe, so it says nothing. */
 int cli_gl_context_create(fs_gl_context *c, fs_ctx_kind kind, int width, int height);

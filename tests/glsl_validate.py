@@ -56,7 +56,10 @@ def invocation_variants(path, nmax, tmp):
     for k in range(1, nmax + 1):
         out = os.path.join(tmp, "inv%d%s" % (k, ext))
         with open(out, "w") as f:
-            f.write(re.sub(r"(?m)^#define INVOCATIONS \d+$", "#define INVOCATIONS %d" % k, text))
+            var, n = re.subn(r"(?m)^#define INVOCATIONS \d+$", "#define INVOCATIONS %d" % k, text)
+            if n != 1:
+                sys.exit("FAIL %s: %d '#define INVOCATIONS' lines, not 1" % (path, n))
+            f.write(var)
         yield k, out
 
 
@@ -64,11 +67,12 @@ def literal_defines(src):
     """Every literal defines string given to fs_program_build in the C sources, ';'-joined."""
     found = set()
     for path in glob.glob(os.path.join(src, "**", "*.c"), recursive=True):
-        if "/build" in path or "/tests/" in path:
+        rel = os.path.relpath(path, src)
+        if rel.startswith(("build", "tests/", "out/")):
             continue
         for m in CALL.finditer(open(path).read()):
             text = "".join(re.findall(r'"((?:[^"\\]|\\.)*)"', m.group(1)))
-            found.add((os.path.relpath(path, src), text.replace("\\n", ";")))
+            found.add((rel, text.replace("\\n", ";")))
     return found
 
 

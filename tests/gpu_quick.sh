@@ -22,9 +22,9 @@ for f in xiao2017_table1 xu2022_fig9; do
 done
 grep -q ',I,march,[0-9.]*,[0-9.]\+,"' "$R/inacio2010_tables.csv" || fail "inacio2010 ray casting rows lack gpu_ms"
 grep -q ',slice_splat,.*,[0-9.]\+,"[^"]\+"$' "$R/iwasaki2006_density_grid.csv" || fail "slice splat rows lack gpu_ms or GL version"
-# the sizes asked for are the sizes timed
 # every CSV names the commit it was made at
 for f in "$R"/*.csv; do head -1 "$f" | grep -q '^# .*commit=[0-9a-f]\+; dirty=[01]' || fail "$(basename "$f") lacks its provenance line"; done
+# the sizes asked for are the sizes timed
 [ "$(awk -F, 'NR > 1 && $6 == "1" {print $5}' "$R/xiao2017_table1.csv" | sort -un | tr '\n' ' ')" = "128 192 " ] ||
   fail "xiao2017 sizes are not 128 and 192"
 [ "$(awk -F, 'NR > 1 && $6 == "1" && $7 == "splat" {print $4}' "$R/xu2022_fig9.csv" | sort -u | wc -l)" = 10 ] ||

@@ -10,7 +10,7 @@
 # usage: experiments/gpu/check.sh [--bin DIR] [-o OUT]   (default DIR .gpu/pack, OUT $OUT or out/check)
 # Exit status: 0 when every step passed, 1 otherwise (check.log says which).
 set -uo pipefail
-bin=.gpu/pack out=${OUT:-}
+bin="" out=${OUT:-}
 while [ $# -gt 0 ]; do
   case $1 in
     --bin|-o) [ $# -ge 2 ] || { echo "check.sh: $1 needs a folder" >&2; exit 2; }
@@ -19,16 +19,16 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
-out=$(realpath -m "${out:-out/check}") bin=$(realpath -m "$bin")
+# a folder given is the caller's; the defaults are the repository's
+[ -n "$bin" ] && bin=$(realpath -m "$bin")
+[ -n "$out" ] && out=$(realpath -m "$out")
 cd "$(dirname "$0")/../.."
+bin=${bin:-$PWD/.gpu/pack} out=${out:-$PWD/out/check}
 mkdir -p "$out"
 export FLUIDSURF_GL=${FLUIDSURF_GL:-egl} FLUIDSURF_REQUIRE_GPU=${FLUIDSURF_REQUIRE_GPU:-1}
-nv_vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
-[ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f $nv_vendor ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv_vendor
-if command -v nvidia-smi > /dev/null && compgen -G '.gl/*.deb' > /dev/null; then
-  for f in .gl/*.deb; do dpkg -x "$f" /; done
-  ldconfig
-fi
+source experiments/gpu/node_env.sh
+node_gl_env
+node_unpack_loaders
 prov=$(cat "$bin/provenance" 2> /dev/null || echo "commit=unknown; dirty=1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -23,18 +23,20 @@ out=$(realpath -m "${out:-out/device}")
 cd "$(dirname "$0")/../.."
 [ -x .gpu/pack/fluidsurf ] || { echo "device.sh: .gpu/pack/fluidsurf missing (bash scripts/pack_lean.sh --gl .gpu/pack)" >&2; exit 2; }
 mkdir -p "$out"
-# the loaders: only on a GPU node (never over this machine's own libraries)
-if command -v nvidia-smi > /dev/null && compgen -G '.gl/*.deb' > /dev/null; then
-  for f in .gl/*.deb; do dpkg -x "$f" /; done
-  ldconfig
-fi
+source experiments/gpu/node_env.sh
+node_unpack_loaders
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export FLUIDSURF_GL=egl BUDGET_S=${BUDGET_S:-290}
 bash experiments/gpu/run.sh "${quick[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
 rc=${PIPESTATUS[0]}
-python3 experiments/gpu/report.py "$work/gpu" > "$work/gpu/README.md" 2>> "$out/run.log"
-cp "$work/gpu/README.md" "$work/gpu/status.csv" "$out/" 2> /dev/null
+# the README only when report.py succeeds (a failure is in run.log, and no empty README travels)
+if python3 experiments/gpu/report.py "$work/gpu" > "$work/README.tmp" 2>> "$out/run.log"; then
+  mv "$work/README.tmp" "$work/gpu/README.md" && cp "$work/gpu/README.md" "$out/"
+else
+  echo "device.sh: report.py failed (run.log)" | tee -a "$out/run.log" >&2
+fi
+[ -f "$work/gpu/status.csv" ] && cp "$work/gpu/status.csv" "$out/"
 tar -czf "$out/gpu.tar.gz" -C "$work" gpu
 cat "$work/gpu/README.md" 2> /dev/null
 echo "device.sh: run.sh exit $rc; $(du -b "$out/gpu.tar.gz" | cut -f1) bytes in $out/gpu.tar.gz"

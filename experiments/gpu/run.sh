@@ -50,9 +50,8 @@ export FLUIDSURF_GL=${FLUIDSURF_GL:-egl}
 # a timing run refuses a software renderer (fluidsurf --require-gpu), so it never times llvmpipe
 # by mistake; --quick runs on llvmpipe; FLUIDSURF_REQUIRE_GPU=0 lets a full run check itself there
 [ $QUICK = 1 ] || export FLUIDSURF_REQUIRE_GPU=${FLUIDSURF_REQUIRE_GPU:-1}
-# glvnd finds NVIDIA's EGL through its vendor file; a bare node may keep it off the default path
-nv_vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
-[ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f $nv_vendor ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$nv_vendor
+source experiments/gpu/node_env.sh
+node_gl_env
 
 tool() { # the path of a program in BINDIR (pack folder) or BINDIR/experiments (build folder)
   for p in "$BINDIR/$1" "$BINDIR/experiments/$1"; do [ -x "$p" ] && { echo "$p"; return; }; done
@@ -66,7 +65,7 @@ if [ $QUICK = 1 ]; then
   T1_SIDES="16 24" T1_SIZES="128,192" T1_RUNS=1
   F9_SIDES="16" F9_SIZE=96 F9_RUNS=1
   IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=1 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
-  DG_SCENE=experiments/scenes/dam_break_ply.json DG_RES="64" DG_RUNS=1
+  DG_SCENE=experiments/scenes/dam_break_ply.json DG_RES="64" DG_RUNS=1 DG_ONE=64
   DEMO_SIZE=128 DEMO_RUNS=1
   SHARE_F9=${SHARE_F9:-30} SHARE_IN=${SHARE_IN:-30} SHARE_DG=${SHARE_DG:-15} SHARE_DEMO=${SHARE_DEMO:-40}
 else
@@ -75,9 +74,9 @@ else
   T1_SIDES="92 127 231 336 522" T1_SIZES="512,768,1024,1440,1920" T1_RUNS=3
   F9_SIDES="46 67 100 144" F9_SIZE=1024 F9_RUNS=3
   IN_COUNTS="1024 2048 4096 8192 32768 131072" IN_SETTLE=2 IN_FRAMES=3 IN_SIZE=512 IN_GRID=128 IN_LIMIT=20
-  DG_SCENE=experiments/scenes/box_200k.json DG_RES="128 256" DG_RUNS=3
+  DG_SCENE=experiments/scenes/box_200k.json DG_RES="128 256" DG_RUNS=3 DG_ONE=256
   DEMO_SIZE=1024 DEMO_RUNS=3
-  SHARE_F9=${SHARE_F9:-40} SHARE_IN=${SHARE_IN:-40} SHARE_DG=${SHARE_DG:-20} SHARE_DEMO=${SHARE_DEMO:-30}
+  SHARE_F9=${SHARE_F9:-40} SHARE_IN=${SHARE_IN:-40} SHARE_DG=${SHARE_DG:-45} SHARE_DEMO=${SHARE_DEMO:-30}
 fi
 mkdir -p "$OUTDIR"
 if [ -f "$BINDIR/provenance" ]; then PROV=$(cat "$BINDIR/provenance")
@@ -158,6 +157,9 @@ step_share "$SHARE_DG"
 for res in $DG_RES; do
   cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
 done
+# the exact sum on one CPU thread too: the paper's 88x is against one core
+cell iwasaki2006_density_grid "res_${DG_ONE}_1thread" 60 env OMP_NUM_THREADS=1 "$DB" "$DG_SCENE" \
+  "$(basename "$DG_SCENE" .json)_1thread" "$DG_ONE" 1 16
 # ---- the demo comparison ----
 step_share "$SHARE_DEMO"
 cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \

@@ -15,8 +15,10 @@ COMMIT = re.compile(r"commit[=: ]+([0-9a-f]{7,40})(-dirty)?")
 def csv_commit(path):
     """(commit, dirty) of a CSV's first line, or None when it names no commit."""
     with open(path) as f:
-        m = COMMIT.search(f.readline())
-    return (m.group(1), bool(m.group(2))) if m else None
+        line = f.readline()
+    m = COMMIT.search(line)
+    # a dirty tree is written "-dirty" after the commit, or "dirty=1" (experiments/lib.sh)
+    return (m.group(1), bool(m.group(2)) or "dirty=1" in line) if m else None
 
 
 def check_row(cells, folder):

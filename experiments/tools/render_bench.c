@@ -136,11 +136,12 @@ static int limits(void)
     if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) return die("OpenGL");
     int n = 0;
     const fs_gl_limit *t = fs_gl_limits(&n);
-    long long have[128];
-    if (n > 128) n = 128;
+    long long *have = malloc(n * sizeof *have);
+    if (!have) return die("out of memory");
     fs_gl_limits_query(have);
     printf("limit,value,need,what\n");
     for (int i = 0; i < n; i++) printf("%s,%lld,%lld,\"%s\"\n", t[i].name, have[i], t[i].need, t[i].what);
+    free(have);
     fs_gl_context_destroy(&ctx);
     return 0;
 }
