@@ -35,15 +35,13 @@ WIDTH = {"float": 1, "int": 1, "uint": 1, "vec2": 2, "ivec2": 2, "vec3": 3, "ive
 
 
 def programs(run):
-    """The programs of one run: its index lines grouped, a program starting at each vertex
-    or compute stage (fs_program_build dumps a program's stages in order, vertex first)."""
-    progs = []
+    """The programs of one run: its index lines grouped by their program column ("PID.N",
+    common/gl/shader_dump.h), stages in the order they were compiled."""
+    progs = collections.OrderedDict()
     for line in open(os.path.join(run, "index.tsv")):
-        stage, defines, name = line.rstrip("\n").split("\t")
-        if stage.endswith((".vert.glsl", ".comp.glsl")) or not progs:
-            progs.append([])
-        progs[-1].append((stage, defines, os.path.join(run, name)))
-    return progs
+        stage, defines, name, prog = line.rstrip("\n").split("\t")
+        progs.setdefault(prog, []).append((stage, defines, os.path.join(run, name)))
+    return list(progs.values())
 
 
 def reflect(files):

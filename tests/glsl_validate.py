@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checks the shader sources tests/glsl_validate.sh dumped, one folder per run (compare,
-counters, simulate, view), each with index.tsv (stage file, ';'-joined defines, dump name):
+counters, simulate, view), each with index.tsv (stage file, ";"-joined defines, dump name, program):
 
 1. glslangValidator (the Khronos reference compiler) accepts every dumped source as
    GLSL 4.50 core with OpenGL semantics; the layered splat's sources also at every

@@ -174,7 +174,7 @@ unsigned fs_program_build(const char *const *stages, const char *defines_in)
         map.n = map.lines = 0;
         int rc = expand(&src, stages[i], &map, defines, 0);
         if (rc) { free(src.s); goto fail; }
-        fs_shader_dump(stages[i], defines, src.s);
+        fs_shader_dump(stages[i], defines, src.s, i == 0);
         GLuint s = glCreateShader(type);
         const char *text = src.s;
         glShaderSource(s, 1, &text, NULL);

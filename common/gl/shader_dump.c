@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* FNV-1a: names a source by its text, so identical sources share one file. */
 static uint32_t text_hash(const char *s)
@@ -31,10 +32,12 @@ static void write_file(const char *path, const char *text)
     if (f) fclose(f);
 }
 
-void fs_shader_dump(const char *stage, const char *defines, const char *source)
+void fs_shader_dump(const char *stage, const char *defines, const char *source, int first)
 {
+    static int program; /* this process's programs, counted */
     const char *dir = getenv("FS_SHADER_DUMP");
     if (!dir || !*dir) return;
+    program += first != 0;
     char base[512], path[1024];
     snprintf(base, sizeof base, "%s", stage);
     for (char *p = base; *p; p++)
@@ -49,6 +52,6 @@ void fs_shader_dump(const char *stage, const char *defines, const char *source)
     if (!f) { fprintf(stderr, "fluidsurf: FS_SHADER_DUMP: %s: cannot write\n", path); return; }
     fprintf(f, "%s\t", stage);
     for (const char *d = defines ? defines : ""; *d; d++) fputc(*d == '\n' ? ';' : *d, f);
-    fprintf(f, "\t%s\n", name);
+    fprintf(f, "\t%s\t%ld.%d\n", name, (long)getpid(), program);
     fclose(f);
 }

@@ -507,6 +507,12 @@ def main():
     args = sys.argv[1:]
     check = bool(args) and args[0] == "--check"
     d = (args[1:] if check else args or ["results/gpu"])[0]
+    if not os.path.isfile(os.path.join(d, "env.csv")):
+        sys.stderr.write("report.py: %s: no env.csv: not a folder of experiments/gpu/run.sh\n" % d)
+        sys.exit(2)
+    if check and not os.path.isfile(os.path.join(d, "README.md")):
+        sys.stderr.write("report.py: %s/README.md: missing (write it with report.py %s)\n" % (d, d))
+        sys.exit(2)
     text = report(d)
     if not check:
         sys.stdout.write(text)

@@ -43,6 +43,9 @@ def check_row(cells, folder):
 
 def main():
     readme = sys.argv[1] if len(sys.argv) > 1 else "results/README.md"
+    if not os.path.isfile(readme):
+        sys.stderr.write("check_index: %s: no such file\n" % readme)
+        sys.exit(2)
     folder = os.path.dirname(os.path.abspath(readme))
     bad, n = [], 0
     for line in open(readme):
