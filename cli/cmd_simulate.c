@@ -122,9 +122,9 @@ int cmd_simulate(int argc, char **argv)
             if (o.gpu) fs_gl_context_destroy(&ctx);
             return cli_error(rc);
         }
-        fprintf(csv, "# fluidsurf %s (%s) simulate %s: %zu fluid + %zu boundary particles; path %s; renderer %s; "
+        fprintf(csv, "# commit=%s; dirty=%d; fluidsurf %s simulate %s: %zu fluid + %zu boundary particles; path %s; renderer %s; "
                 "threads %d; eos %s; r %g; H %g; rho0 %g; mass %g; c %g; nu %g; cfl %g; fixed_dt %g; fps %g\n",
-                fs_version, fs_commit, o.scene, fs_sph_count(s), fs_sph_boundary_count(s), o.gpu ? "gpu" : "cpu",
+                fs_commit, fs_dirty, fs_version, o.scene, fs_sph_count(s), fs_sph_boundary_count(s), o.gpu ? "gpu" : "cpu",
                 renderer, omp_get_max_threads(), P->eos == FS_SPH_TAIT ? "tait" : "ideal", P->r, P->support * P->r,
                 P->rho0, fs_sph_mass(s), P->c, P->nu, P->cfl, P->fixed_dt, o.fps);
         fprintf(csv, "frame,t,particles,steps,dt_min,dt_max,bound_min,violations,v_max,clamps,outside,density_err,"

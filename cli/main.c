@@ -34,7 +34,7 @@ int main(int argc, char **argv)
     fs_interrupt_install();
     if (argc < 2) return usage(stderr);
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) return usage(stdout);
-    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s)\n", fs_version, fs_commit); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s%s)\n", fs_version, fs_commit, fs_dirty ? "-dirty" : ""); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
     fprintf(stderr, "fluidsurf: unknown command '%s' (try 'fluidsurf --help')\n", argv[1]);

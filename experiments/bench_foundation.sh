@@ -53,7 +53,7 @@ bench() {
 }
 
 {
-  echo "# fluidsurf foundation benchmark; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# fluidsurf foundation benchmark; $STUDY_PROV; $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
   echo "# medians of $RUNS runs; peak_rss_kib is the largest over the runs (whole process)"
   echo "scene,method,size,stage,ms_median,runs,peak_rss_kib,renderer"
@@ -65,5 +65,6 @@ bench box_${BOXN}_ref$S1 $box reference $S1
 bench box_${BOXN}_sph$S1 $box spheres $S1
 bench box_${BOXN}_sph$S2 $box spheres $S2
 mv "$out.new" "$out"
+stamp_csv "$out"
 rm -f "$tmp" "$tmp".*
 echo "wrote $out"

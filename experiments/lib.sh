@@ -41,6 +41,39 @@ study_commit() {
   git diff --quiet HEAD -- . ':!results' 2> /dev/null || d=1
   echo "commit=$(git rev-parse --short=10 HEAD 2> /dev/null || echo unknown); dirty=$d"
 }
+# The commit a study's numbers are made at: taken once, when the script starts.
+STUDY_PROV=$(study_commit)
+PROV_RE='^#.*(^|[ ;#])commit=[0-9a-f]{7,40}[;, ].*(^|[ ;])dirty=[01]([; ,]|$)'
+# stamp_csv FILE...: makes sure each CSV's first '#' line names the commit and the tree's
+# state (STUDY_PROV), putting them first on that line, or on a new first line when the file
+# has none; a CSV that names them already (fluidsurf's own provenance) is left as it is.
+# Call it on the CSVs a script measured, never on CSVs of other runs.
+stamp_csv() {
+  local f first
+  for f; do
+    first=$(grep -m1 '^#' "$f" || true)
+    if grep -qE "$PROV_RE" <<< "$first"; then continue; fi
+    if [ -n "$first" ] && [ "$(head -1 "$f")" = "$first" ]; then
+      sed -i "1s/^# */# $STUDY_PROV; /" "$f"
+    else
+      sed -i "1i # $STUDY_PROV" "$f"
+    fi
+  done
+}
+# csv_commit FILE...: "commit=...; dirty=..." for a CSV assembled from the CSVs named: the
+# first one's, and "sources=NAME@COMMIT,..." when they were not all made at one commit
+csv_commit() {
+  local f c all=() first=""
+  for f; do
+    c=$(grep -m1 '^#' "$f" | grep -oE 'commit=[0-9a-f]{7,40}(-dirty)?; dirty=[01]' | head -1)
+    [ -n "$c" ] || c="commit=none; dirty=1"
+    [ -n "$first" ] || first=$c
+    all+=("$(basename "$f")@$(sed 's/commit=\([^;]*\); dirty=\(.\)/\1 dirty=\2/' <<< "$c" | tr ' ' ':')")
+  done
+  if [ "$(printf '%s\n' "${all[@]}" | sed 's/^[^@]*@//' | sort -u | wc -l)" -gt 1 ]; then
+    echo "$first; sources=$(IFS=,; echo "${all[*]}")"
+  else echo "$first"; fi
+}
 
 # ---- simulated sequences (xiao2017 fig4.sh, fig6.sh) ---------------------------------
 # simulated_frames BIN SCENE N LAST PATTERN: fluidsurf's SPH of SCENE with about N particles,

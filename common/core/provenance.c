@@ -23,6 +23,7 @@ void fs_provenance_init_base(fs_provenance *p, const char *renderer, const char 
     p->n = 0;
     fs_provenance_set(p, "version", fs_version);
     fs_provenance_set(p, "commit", fs_commit);
+    fs_provenance_set(p, "dirty", fs_dirty ? "1" : "0");
     fs_provenance_set(p, "gl_renderer", renderer ? renderer : "CPU");
     fs_provenance_set(p, "gl_version", gl_version ? gl_version : "none");
     snprintf(v, sizeof v, "%d", omp_get_max_threads());

@@ -12,9 +12,11 @@ extern "C" {
 /* A string attribute (EXR header entry). */
 typedef struct fs_attr { const char *name, *value; } fs_attr;
 
-/* fluidsurf's version and `git describe` of the build (generated fs_version.c). */
+/* fluidsurf's version, the commit it was built at ("unknown" outside git) and whether the
+ * tree outside results/ differed from that commit (1) or not (0) (generated fs_version.c). */
 extern const char fs_version[];
 extern const char fs_commit[];
+extern const int fs_dirty;
 
 typedef struct fs_provenance {
     int n;

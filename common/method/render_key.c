@@ -12,9 +12,9 @@ void fs_render_key_build(char *buf, int size)
 {
     struct stat st;
     /* the commit does not say which uncommitted edits were built: the binary does */
-    int modified = strstr(fs_commit, "dirty") || !strcmp(fs_commit, "unknown");
+    int modified = fs_dirty || !strcmp(fs_commit, "unknown");
     if (modified && stat("/proc/self/exe", &st) == 0)
-        snprintf(buf, size, "%s %s exe:%lld:%lld.%09ld", fs_version, fs_commit, (long long)st.st_size,
+        snprintf(buf, size, "%s %s-dirty exe:%lld:%lld.%09ld", fs_version, fs_commit, (long long)st.st_size,
                  (long long)st.st_mtim.tv_sec, (long)st.st_mtim.tv_nsec);
     else snprintf(buf, size, "%s %s", fs_version, fs_commit);
 }

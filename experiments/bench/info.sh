@@ -72,6 +72,7 @@ print(f"{name},{kind},{n},{rt},{re},{float(re) / float(rt):.4f},{target},{statis
 EOF
 done
 { echo "# $("$BIN" --version), $(nproc) cores, info on PLY files without a radius; whole-process wall time"; cat "$csv"; } > "$OUT/info.csv"
+stamp_csv "$OUT/info.csv"
 cat "$OUT/info.csv"
 # the table of README-info.md, written from the CSV (full mode only)
 [ $quick = 1 ] && exit 0

@@ -7,7 +7,7 @@ boxes of edge e centred at 20 seeded points near the lattice's centre:
   taylor:   phi(c) - |grad phi(c)|_1 e/2 - M hd^2 / 2         (reference_interior.c)
 A box is proven inside when its lower bound is at least iso.
 Writes results/bench/interior_bounds.csv. Standard library only."""
-import math, os, random, sys
+import math, os, random, subprocess, sys
 
 R, H, ISO = 1.0, 4.0, 0.6
 S = 8.0 / (math.pi * H ** 3)
@@ -44,6 +44,16 @@ def bounds(c, e, pts):
     taylor = phi - sum(abs(x) for x in g) * e / 2 - m * hd * hd / 2
     return mono, taylor, phi
 
+def study_commit():
+    """experiments/lib.sh's study_commit: the commit and whether the tree outside results/ differs."""
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")
+    try:
+        c = subprocess.run(["git", "-C", root, "rev-parse", "--short=10", "HEAD"], capture_output=True, text=True, check=True).stdout.strip()
+        d = subprocess.run(["git", "-C", root, "diff", "--quiet", "HEAD", "--", ".", ":!results"]).returncode != 0
+    except (OSError, subprocess.CalledProcessError):
+        return "commit=unknown; dirty=1"
+    return "commit=%s; dirty=%d" % (c, d)
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "../../results/bench/interior_bounds.csv")
     rnd = random.Random(1)
@@ -58,7 +68,7 @@ def main():
             rows.append((name, e, min(v), sum(v) / len(v), sum(x >= ISO for x in v) / len(v)))
         phis = [r[2] for r in res]
     with open(out, "w") as f:
-        f.write("# experiments/bench/interior_bounds.py: lower bounds of phi over boxes of edge e inside a liquid\n")
+        f.write("# %s; experiments/bench/interior_bounds.py: lower bounds of phi over boxes of edge e inside a liquid\n" % study_commit())
         f.write("# lattice 2r, jitter 0.1 r, V (2r)^3, cubic spline, H = 4r, iso 0.6; 20 seeded box centres; phi at the centres %.3f..%.3f\n" % (min(phis), max(phis)))
         f.write("bound,edge_r,lower_min,lower_mean,proven_fraction\n")
         for r in rows: f.write("%s,%g,%.3f,%.3f,%.2f\n" % r)

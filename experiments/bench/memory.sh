@@ -79,7 +79,7 @@ measure() {
 
 # the provenance: study_commit in the state's header line; each row's commit column names the
 # same commit, with -dirty when study_commit says dirty=1
-provenance=$(study_commit)
+provenance=$STUDY_PROV
 commit=$(sed 's/^commit=\([^;]*\);.*/\1/' <<< "$provenance")
 case $provenance in *dirty=1) commit=$commit-dirty ;; esac
 sides=$(quick "46 100" "16 30")
@@ -92,10 +92,17 @@ for side in $sides; do
   for m in $FILE_METHODS; do measure ply "$n" "$m" "$(ply "$side")"; done
 done
 
-# Keep the other states' rows and header lines; replace this state's.
+# Keep the other states' rows and header lines; replace this state's. The first line names
+# this run's commit and, as sources=, the kept states' (check_results.sh)
+kept_sources() {
+  [ -f "$csv" ] || return 0
+  local s
+  s=$(grep '^# state ' "$csv" | grep -v "^# state $STATE:" | sed -E 's/^# state ([^:]*):.*commit[= ]([0-9a-f]+)(; dirty=([01]))?.*/state_\1@\2:dirty=\4/; s/:dirty=$/:dirty=unknown/' | paste -sd,)
+  [ -z "$s" ] || echo "; sources=state_$STATE@$(sed 's/commit=\([^;]*\); dirty=\(.\)/\1:dirty=\2/' <<< "$provenance"),$s"
+}
 header="# state $STATE: $provenance; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $("$BIN" --version 2>/dev/null | head -1)"
 {
-  echo "# fluidsurf peak memory benchmark (experiments/bench/memory.sh): peak RSS (/usr/bin/time %M, KiB) of whole 'fluidsurf render' processes"
+  echo "# $provenance$(kept_sources); fluidsurf peak memory benchmark (experiments/bench/memory.sh): peak RSS (/usr/bin/time %M, KiB) of whole 'fluidsurf render' processes"
   echo "# inputs: synthetic = box of n particles from a scene JSON; ply = the same lattice read from a binary PLY file; median/min/max over runs"
   [ -f "$csv" ] && grep '^# state ' "$csv" | grep -v "^# state $STATE:" || true
   echo "$header"

@@ -41,7 +41,7 @@ esac
 source experiments/lib.sh # median, auto_camera, vdb_aperture, quick, RESULTS, study_commit
 # The tree the binaries were built from, taken once at the start: an edit made while the
 # benchmark runs does not change what it measures.
-PROV=$(study_commit)
+PROV=$STUDY_PROV
 [ "$FS_QUICK" = 1 ] && QUICK=1
 RUNS=${RUNS:-$(quick 3 1)}; SIZE=${SIZE:-$(quick 1024 128)}; OUT=$RESULTS/bench
 BIN=${BIN:-./build/fluidsurf}

@@ -56,7 +56,9 @@ awk -F, -v base="reference@$BASE" -v size="$SIZE" -v g1="$G1" -v g2="$G2" -v g3=
       v = (m[g2, q] != "" && m[g3, q] != "" && n[g3] > n[g2]) ? (m[g3, q] - m[g2, q]) * 1048576 / (n[g3] - n[g2]) : ""
       row("peak RSS bytes per particle " g2 " -> " g3, g2 " -> " g3, q, v, tg, v <= 96)
     }
-  }' "$CSV" > "$RAT"
+  }' "$CSV" > "$RAT.body"
+{ echo "# $(csv_commit "$CSV"); ratios of $(basename "$CSV") (experiments/bench/speed_report.sh)"; cat "$RAT.body"; } > "$RAT"
+rm -f "$RAT.body"
 
 # ---- plot: time and peak RSS against particles, log-log; lines join the synthetic boxes
 tmpd=$(mktemp -d); trap 'rm -rf "$tmpd"' EXIT
@@ -144,7 +146,7 @@ fi
   echo
   echo "| quantity | sets | method | measured | target | met |"
   echo "|---|---|---|---|---|---|"
-  tail -n +2 "$RAT" | awk -F, '{printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4 == "" ? "—" : $4, $5 == "" ? "—" : $5, $6}'
+  grep -v '^#' "$RAT" | tail -n +2 | awk -F, '{printf "| %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4 == "" ? "—" : $4, $5 == "" ? "—" : $5, $6}'
   echo
   echo "bytes per particle = (peak RSS of the larger set - peak RSS of the smaller) / (difference in particles)."
   echo "Thickness ratios are left out for a set where the reference covers no pixel."

@@ -29,6 +29,7 @@ printf '{"particles": "dam_0010.bgeo", "radius": %s, "up": "y", "material": "wat
     -o "$TMP/compare" -q 2> "$TMP/compare.log"
 cp "$TMP/compare/metrics.csv" "$OUT/fig2_metrics.csv"
 cp "$TMP/compare/timings.csv" "$OUT/fig2_timings.csv"
+stamp_csv "$OUT/fig2_metrics.csv" "$OUT/fig2_timings.csv"
 frames_mosaic "$OUT/fig2_pair.png" 3x1 "$(quick 400x400 64x64)" "$TMP/compare/spheres.png" \
     "$TMP/compare/volume_raycast.png" "$TMP/compare/volume_raycast_own.png"
 echo "wrote $OUT/fig2_metrics.csv, $OUT/fig2_timings.csv, $OUT/fig2_pair.png"

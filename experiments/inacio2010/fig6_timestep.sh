@@ -55,6 +55,7 @@ for path in cpu gpu; do
   done
 done
 mv "$tmp" "$csv"
+stamp_csv "$csv"
 rm -rf "$T"
 if [ "$FS_QUICK" = 1 ] && [ $missing -gt 0 ]; then echo "fig6_timestep: $missing runs left no --stats record" >&2; exit 1; fi
 column -s, -t < "$csv"

@@ -21,7 +21,7 @@ idiff -a -fail 0.05 "$surface" "$translucent" > "$TMP/idiff.txt" 2>&1 || true # 
 stat() { sed -n "s/^ *$1 *= *\([-0-9.e+]*\).*/\1/p" "$TMP/idiff.txt" | head -1; }
 over=$(sed -n 's/^ *[0-9]* pixels (\([0-9.]*\)%) over 0.05.*/\1/p' "$TMP/idiff.txt" | head -1)
 {
-  echo "# $(study_commit); images and metrics from volume_raycast.sh ($(sed -n '1s/^# *//p' "$R/volume_raycast_bar.csv" | cut -c1-200))"
+  echo "# $(csv_commit "$R/volume_raycast_bar.csv"); images and metrics from volume_raycast.sh ($(sed -n '1s/^# *//p' "$R/volume_raycast_bar.csv" | cut -c1-200))"
   echo "row,mask_iou,normal_mean_deg,interior_normal_mean_deg,image_mean_error,image_rms_error,image_max_error,image_psnr_db,image_pixels_over_0.05_pct"
   awk -F, '$1 == "volume_raycast" { m = $2; sub(/.*mode=/, "", m); print m " against reference," $5 "," $9 "," $11 ",,,,," }' \
     "$R/volume_raycast_bar.csv"

@@ -75,5 +75,6 @@ if [ "$k" -gt 0 ]; then
   oiiotool "${own[@]}" --mosaic "${k}x1" -o "$OUT/fig9_panel_own.png"
 fi
 mv "$csv" "$OUT/fig9.csv"
+stamp_csv "$OUT/fig9.csv"
 if [ "$FS_QUICK" = 1 ] && [ "$k" -ne "$(wc -w <<< "$COUNTS")" ]; then echo "fig9: only $k of the counts $COUNTS rendered" >&2; exit 1; fi
 column -s, -t < "$OUT/fig9.csv"

@@ -68,6 +68,7 @@ for path in cpu gpu; do
     "$OUT/sim_bar_${path}_frames.csv" >> "$tmp"
 done
 mv "$tmp" "$csv"
+stamp_csv "$csv" "$OUT"/sim_bar_{cpu,gpu}_frames.csv
 if [ "$FS_QUICK" = 1 ]; then # a quick run fails unless both paths ran every frame
   for path in cpu gpu; do
     [ "$(tail -1 "$OUT/sim_bar_${path}_frames.csv" 2> /dev/null | cut -d, -f1)" = "$FRAMES" ] ||

@@ -34,6 +34,7 @@ for n in $COUNTS; do
   done
 done
 mv "$tmp" "$OUT/sim_speed.csv"
+stamp_csv "$OUT/sim_speed.csv"
 rm -rf "$T"
 if [ "$FS_QUICK" = 1 ]; then # a quick run fails unless every run gave its row
   rows=$(grep -vc '^#\|^particles_requested' "$OUT/sim_speed.csv") want=$((2 * $(wc -w <<< "$COUNTS")))

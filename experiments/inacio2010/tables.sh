@@ -43,7 +43,7 @@ OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-prov="dam break (Tait, r 0.025, fluidsurf simulate's defaults); $SETTLE untimed frames of 1/60 s, warm-up render, medians of $FRAMES frames; ${SIZE}x${SIZE}; volume_raycast grid_res $GRID build=layered thickness=off; spheres thickness=off; first-frame limit ${LIMIT_S} s; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ); $(study_commit)"
+prov="$STUDY_PROV; dam break (Tait, r 0.025, fluidsurf simulate's defaults); $SETTLE untimed frames of 1/60 s, warm-up render, medians of $FRAMES frames; ${SIZE}x${SIZE}; volume_raycast grid_res $GRID build=layered thickness=off; spheres thickness=off; first-frame limit ${LIMIT_S} s; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)"
 frames=$T/frames.csv
 echo "# inacio_tables: $prov" > "$frames"
 echo "particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms" >> "$frames"
@@ -68,10 +68,14 @@ done
 if [ -n "${KEEP_FRAMES:-}" ]; then
   cp "$KEEP_FRAMES" "$T/keep.csv"
   kept=$(awk -F, -v c=" $COUNTS " '!/^#/ && $1 != "particles_requested" && index(c, " " $1 " ") == 0 { print $1 }' "$T/keep.csv" | sort -un | tr '\n' ' ')
-  grep '^#' "$T/keep.csv" | sed 's/^# /# earlier run: /' > "$T/merged.csv"
-  cat "$frames" >> "$T/merged.csv"
+  { grep '^#' "$frames"; grep '^#' "$T/keep.csv" | sed 's/^# /# earlier run: /'; grep -v '^#' "$frames"; } > "$T/merged.csv"
   awk -F, -v c=" $COUNTS " '!/^#/ && $1 != "particles_requested" && index(c, " " $1 " ") == 0' "$T/keep.csv" >> "$T/merged.csv"
   mv "$T/merged.csv" "$frames"
+  # the earlier run is a source of its own: its commit goes into the first line (check_results.sh)
+  kc=$(grep -m1 '^#' "$T/keep.csv" | grep -oE 'commit=[0-9a-f]+; dirty=[01]' | head -1)
+  src() { sed 's/commit=\([^;]*\); dirty=\(.\)/\1:dirty=\2/' <<< "${1:-commit=none; dirty=1}"; }
+  sed -i "1s|\$|; sources=this_run@$(src "$STUDY_PROV"),kept@$(src "$kc")|" "$T/merged.csv"
+  prov="$prov; sources=this_run@$(src "$STUDY_PROV"),kept@$(src "$kc")"
   prov="$prov; the cells of counts ${kept% } are kept from the earlier run(s) in tables_frames.csv ($(grep '^#' "$T/keep.csv" | grep -o 'load before: [^;]*; [0-9T:-]*Z' | tr '\n' ' ' | sed 's/ $//'))"
 fi
 cp "$frames" "$OUT/tables_frames.csv"

@@ -111,5 +111,6 @@ JSON
 done
 mv "$csv.new" "$csv"
 summarize "$csv" > "$R/volume_raycast_summary.csv"
+stamp_csv "$csv" "$R/volume_raycast_summary.csv" "$R/volume_raycast_bar.csv"
 column -t -s, "$R/volume_raycast_bar.csv" | cut -c1-200
 column -t -s, "$R/volume_raycast_summary.csv"

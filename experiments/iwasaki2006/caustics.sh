@@ -70,4 +70,5 @@ csv=$R/caustics.csv
   echo "zero_outside_sphere,$zero_sph,0,,$(verdict "$zero_sph == 0"),image corner: floor with no water above"
 } > "$csv.new"
 mv "$csv.new" "$csv"
+stamp_csv "$csv"
 column -t -s, "$csv"

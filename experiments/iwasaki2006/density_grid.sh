@@ -63,4 +63,5 @@ done <<< "$SETS"
 # The machine may be shared: the load averages before and after go into the header.
 sed -i "2s|\$|; load average before: $load0, after: $(cut -d' ' -f1-3 /proc/loadavg)|" "$csv.new"
 mv "$csv.new" "$csv"
+stamp_csv "$csv"
 echo "wrote $csv"

@@ -16,6 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 "$BIN" compare --no-cache experiments/iwasaki2006/dam_break_side.json --methods surfels -W "$SIZE" -H "$SIZE" \
     --repeat 1 -q -o "$tmp/side"
 cp "$tmp/side/metrics.csv" "$R/fig7_metrics.csv"
+stamp_csv "$R/fig7_metrics.csv"
 cp "$tmp/side/surfels_own.png" "$R/fig7_own.png"
 cp "$tmp/side/surfels.png" "$R/fig7_shared.png"
 cp "$tmp/side/reference.png" "$R/fig7_reference.png"

@@ -30,6 +30,7 @@ val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/diff.txt"; }
     print g ",reference," $5 "," $7 "," $9 "," $11 "," $12 "," $13 }' "$TMP/metrics.csv"
   echo "splat,exact,$(val mask_iou),$(val depth_rmse_r),$(val normal_mean_deg),$(val interior_normal_mean_deg),$(val psnr_db),$(val ssim)"
 } > "$OUT/fig8.csv"
+stamp_csv "$OUT/fig8.csv"
 frames_mosaic "$OUT/fig8_pair.png" 2x1 "$(quick 400x400 64x64)" "$TMP/surfels_grid_build=splat_own.png" \
   "$TMP/surfels_grid_build=exact_own.png"
 echo "wrote $OUT/fig8.csv, $OUT/fig8_pair.png"

@@ -37,4 +37,5 @@ for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/
   oiiotool "$tmp/$name/surfels_caustics=on.exr" --ch caustics --ch 0,0,0 -o "$R/${name}_caustics.png"
 done
 mv "$csv.new" "$csv"
+stamp_csv "$csv" "$R"/{dam_break,double_dam}_metrics.csv
 column -t -s, "$csv"

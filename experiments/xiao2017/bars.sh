@@ -22,7 +22,7 @@ verdict() { awk "BEGIN {print ($1) ? \"pass\" : \"FAIL\"}"; }
 B='normals=blend;normal_filter=on' Ba='normals=basic;normal_filter=on'
 csv=$R/bars.csv
 {
-  echo "# issue 4 bars, raycast_pca shipped defaults; from fig3_*.csv and table1.csv (llvmpipe)"
+  echo "# $(csv_commit $R/fig3_slab_metrics.csv $R/fig3_slab_bands.csv $R/fig3_box_bands.csv $R/fig3_dam_metrics.csv $R/table1.csv); issue 4 bars, raycast_pca shipped defaults; from fig3_*.csv and table1.csv (llvmpipe)"
   echo "bar,measured,threshold,verdict,note"
   # 1. slab, harness interior mask (includes the rounded band along the slab's edges)
   b=$(metric $R/fig3_slab_metrics.csv "$B" 11); a=$(metric $R/fig3_slab_metrics.csv "$Ba" 11)

@@ -28,7 +28,7 @@ fi
 
 csv=$OUT/fig10.csv
 {
-  echo "# xiao2017 Fig. 10 analogue; $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores"
+  echo "# xiao2017 Fig. 10 analogue; $STUDY_PROV; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores"
   echo "# raycast_pca shipped defaults, ${SIZE}x${SIZE}, medians of $RUNS runs; frame = sum of splat..readback"
   echo "scene,particles,iso,frame_ms,march_ms,runs,renderer"
 } > "$csv.new"

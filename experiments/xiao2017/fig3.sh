@@ -35,6 +35,7 @@ for shape in slab box; do
   "$TOOL" --profile "experiments/scenes/$shape.json" "$d/analytic.exr" "${exrs[@]}" |
       sed "/^#/!{s|$d/raycast_pca_normals=||; s|_normal_filter=|,filter=|; s|\.exr,|,|}; s|^file,region|normals,filter,region|" \
       > "$OUT/fig3_${shape}_bands.csv"
+  stamp_csv "$OUT/fig3_${shape}_metrics.csv" "$OUT/fig3_${shape}_bands.csv"
   for n in basic blend; do
     "$TOOL" --map "$TMP/${shape}_errmap_$n.png" "experiments/scenes/$shape.json" "$d/analytic.exr" \
         "$d/raycast_pca_normals=${n}_normal_filter=on.exr" > /dev/null
@@ -47,5 +48,6 @@ done
 d=$TMP/dam
 "$BIN" compare --no-cache experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
 cp "$d/metrics.csv" "$OUT/fig3_dam_metrics.csv"
+stamp_csv "$OUT/fig3_dam_metrics.csv"
 small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig3_dam_panel.png"
 echo "fig3: dam break done; wrote $OUT/fig3_*"

@@ -27,6 +27,7 @@ methods=$("$BIN" methods | awk '/^[^ ]/ && $1 != "reference" { print $1 }' | pas
 "$BIN" compare --no-cache experiments/scenes/dam_break.json --methods aniso_ssf --set aniso_ssf.anisotropy=off \
     --set aniso_ssf.filter=curvature -W "$SIZE" -H "$SIZE" --repeat 1 -o "$TMP"_ssf 2> "$W/fig5_ssf.log"
 { cat "$TMP/metrics.csv"; awk -F, -v OFS=, '!/^#/ && $1 == "aniso_ssf" { $2 = "anisotropy=off;filter=curvature"; print }' "$TMP"_ssf/metrics.csv; } > "$OUT/fig5_metrics.csv"
+stamp_csv "$OUT/fig5_metrics.csv"
 oiiotool "$TMP"_ssf/aniso_ssf.png --resize "$(quick 256x256 128x128)" -o "$OUT/fig5_ssf.png"
 frames_mosaic "$OUT/fig5_paper_row.png" 4x1 "$(quick 384x384 64x64)" "$TMP/reference.png" "$TMP"_ssf/aniso_ssf.png \
     "$TMP/aniso_ssf.png" "$TMP/raycast_pca.png"

@@ -60,7 +60,7 @@ params_of() { echo "$1" | sed -n 's/.*pca_radius=\([0-9.]*\)\(_min_neighbors=\([
 } | sort -t, -k1,1 -k2,2 -k3,3n -k4,4n > "$csv.body"
 renderer=$(sed -n '1s/.*gl_renderer=\([^;]*\);.*/\1/p' "$TMP/dam_break_blend_$size/metrics.csv")
 {
-  echo "# $(study_commit); size=${size}x${size}; slab and box against analytic (edge_bands, band 2r), dam_break against reference; gl_renderer=$renderer"
+  echo "# $STUDY_PROV; size=${size}x${size}; slab and box against analytic (edge_bands, band 2r), dam_break against reference; gl_renderer=$renderer"
   echo "scene,normals,pca_radius_r,min_neighbors,interior_deg,face_deg,edge_band_deg"
   cat "$csv.body"
 } > "$csv.new"

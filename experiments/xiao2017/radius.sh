@@ -31,4 +31,4 @@ for shape in slab box; do
       END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
     sort >> "$csv.new"
 done
-mv "$csv.new" "$csv"; column -t -s, "$csv"
+mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"

@@ -48,7 +48,7 @@ STAGES_RPCA="splat march normals filter thickness readback"
 
 csv=$OUT/table1.csv
 {
-  echo "# xiao2017 Table 1 analogue (raycast_pca, shipped defaults); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# xiao2017 Table 1 analogue (raycast_pca, shipped defaults); $STUDY_PROV; $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores"
   echo "# medians of runs (RUNS=$RUNS; cells whose first run took > ${BIG} s keep 1 run); first-run limit ${LIMIT} s (reference: ${LIMIT_REF} s); frame = sum of splat..readback"
   echo "label,particles,method,size,stage,ms_median,runs,renderer,note"
@@ -101,12 +101,13 @@ cell dam_break_24k 24389 experiments/scenes/dam_break.json reference "$REF_SIZE"
 IFS=: read -r label n scene <<< "$BIGBOX"
 cell "$label" "$n" "$scene" reference "$REF_SIZE" "march" "$LIMIT_REF"
 mv "$csv.new" "$csv"
+stamp_csv "$csv"
 echo "wrote $csv"
 
 # Growth ratios beside the paper's Table 1 (seconds, GTX 970, RealFlow sets).
 rat=$OUT/table1_ratios.csv
 {
-  echo "# growth of frame time: by resolution (t(size) / t(512) per particle set) and by particle count (t(N) / t(smallest) per size)"
+  echo "# $(csv_commit "$csv"); growth of frame time: by resolution (t(size) / t(512) per particle set) and by particle count (t(N) / t(smallest) per size)"
   echo "# ours: raycast_pca on llvmpipe, $csv; paper: Xiao et al. 2017 Table 1 (GTX 970), particle sets 779,752 .. 142,612,764"
   echo "series,particles,size,seconds,ratio_to_512,ratio_to_smallest_set"
   awk -F, '!/^#/ && $3 == "raycast_pca" && $5 == "frame" && $6 != "" {print $1 "," $2 "," $4 "," $6}' "$csv" |

@@ -28,7 +28,7 @@ verdict() { awk "BEGIN {print ($1) ? \"pass\" : \"FAIL\"}"; }
 renderer=$(awk -F, '!/^#/ && NR > 4 {print $8; exit}' $R/timings.csv | tr -d '"' | tr ',' ';')
 csv=$R/bars.csv
 {
-  echo "# issue 5 bars, aniso_ssf shipped defaults; from fig6_*_metrics.csv, $S/*.exr, timings.csv ($renderer)"
+  echo "# $(csv_commit $R/fig6_slab_metrics.csv $R/fig6_box_metrics.csv $R/timings.csv); issue 5 bars, aniso_ssf shipped defaults; from fig6_*_metrics.csv, $S/*.exr, timings.csv ($renderer)"
   echo "bar,measured,threshold,verdict,note"
   # (a) anisotropic vs isotropic sprites, both with the narrow-range filter
   for s in slab box; do

@@ -30,7 +30,7 @@ for spec in oblique:experiments/scenes/slab.json topdown:experiments/xu2022/slab
       -W $(quick 512 128) -H $(quick 512 128) --repeat 1 -q -o "$TMP/narrow_$view" 2> "$TMP/narrow_$view.log"
   pick "$view" "$TMP/narrow_$view/metrics.csv" >> "$csv.new"
 done
-mv "$csv.new" "$csv"; column -t -s, "$csv"
+mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
 
 csv=$OUT/doubts_curvature.csv
 echo "size,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
@@ -40,4 +40,4 @@ for size in $(quick "256 512 1024" "64 128"); do
       -W $size -H $size --repeat 1 -q -o "$TMP/curv_$size" 2> "$TMP/curv_$size.log"
   pick "$size" "$TMP/curv_$size/metrics.csv" >> "$csv.new"
 done
-mv "$csv.new" "$csv"; column -t -s, "$csv"
+mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"

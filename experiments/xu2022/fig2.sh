@@ -22,7 +22,7 @@ for spec in box:analytic dam:reference; do
   imgs+=("$D/$scene/$ref.png" "$D/$scene/aniso_ssf_anisotropy=off_filter=none.png" "$D/$scene/aniso_ssf_anisotropy=on_filter=none.png")
 done
 {
-  echo "# $(study_commit); from fig6.sh's metrics ($D/{box,dam}/metrics.csv), filter none"
+  echo "# $(csv_commit "$D/box/metrics.csv" "$D/dam/metrics.csv"); from fig6.sh's metrics ($D/{box,dam}/metrics.csv), filter none"
   echo "scene,reference,anisotropy,mask_iou,normal_mean_deg,interior_normal_mean_deg,depth_rmse_r"
   for spec in box:analytic dam:reference; do
     IFS=: read -r scene ref <<< "$spec"

@@ -77,6 +77,7 @@ awk -F, 'NR == 1 { print; next } NR == 2 { print "reference,filter,frames,frames
                                                  else printf "%s,0,0,nan\n", k } }' \
     "$TMP/fig5_bands.csv" > "$TMP/fig5_interface.csv"
 mv "$TMP"/fig5_bands.csv "$TMP"/fig5_bands_summary.csv "$TMP"/fig5_interface.csv "$OUT/"
+stamp_csv "$OUT"/fig5_{metrics,bands,bands_summary,interface}.csv
 show=$(printf _f%04d "$SHOW")
 frames_mosaic "$OUT/fig5_row.png" 3x1 "$(quick 400x400 64x64)" "$d/reference$show.png" \
     "$d/aniso_ssf_anisotropy=off_filter=narrow$show.png" "$d/aniso_ssf_anisotropy=on_filter=narrow$show.png"

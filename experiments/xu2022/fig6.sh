@@ -51,6 +51,7 @@ for spec in "dam:experiments/scenes/dam_break.json:400x400+50+30" "double_dam:ex
   "$BIN" compare --no-cache "$scene" "${SWEEP[@]}" --reference reference --reference reference:field=anisotropic \
       -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/$label.log"
   cp "$d/metrics.csv" "$OUT/fig6_${label}_metrics.csv"
+  stamp_csv "$OUT/fig6_${label}_metrics.csv"
   small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig6_${label}_panel.png"
   grid "$d" "$OUT/fig6_${label}_grid.png" reference "$crop"
   echo "fig6: $label done"
@@ -67,6 +68,7 @@ for spec in slab:440x300+30+150 box:460x460+26+10; do
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "${exrs[@]}" |
       sed "/^#/!{s|$d/aniso_ssf_anisotropy=||; s|_filter=|,|; s|\.exr,|,|}; s|^file,region|anisotropy,filter,region|" \
       > "$OUT/fig6_${shape}_bands.csv"
+  stamp_csv "$OUT/fig6_${shape}_metrics.csv" "$OUT/fig6_${shape}_bands.csv"
   small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig6_${shape}_panel.png"
   grid "$d" "$OUT/fig6_${shape}_grid.png" analytic "$crop"
   echo "fig6: $shape done"

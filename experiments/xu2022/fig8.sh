@@ -39,7 +39,7 @@ done
 # fig8_highlights.csv: the highlight layout of every image, the reference's too, over
 # luminance thresholds (below about 0.6 the refracted white squares of the floor count)
 {
-  echo "# $(study_commit); tool=experiments/tools/highlights --min-area 16; images as in fig8.csv"
+  echo "# $(csv_commit "$D/metrics.csv") (the images); highlights tool built at ${STUDY_PROV//=/ }; tool=experiments/tools/highlights --min-area 16; images as in fig8.csv"
   echo "image,threshold,highlight_pct,areas,largest_px,share_in_large_pct"
   for t in 0.6 0.7 0.8; do
     "$TOOL" --threshold "$t" --min-area 16 "${exrs[@]}" | awk -F, -v t="$t" -v dir="$D/" 'NR > 1 {

@@ -36,7 +36,7 @@ box_8k:8000:$TMP/box_8k.json"
 fi
 STAGES="anisotropy splat filter normals thickness readback"
 head_lines() {
-  echo "# xu2022 Fig. 9 analogue (aniso_ssf, shipped defaults except filter/anisotropy); $(study_commit); $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "# xu2022 Fig. 9 analogue (aniso_ssf, shipped defaults except filter/anisotropy); $STUDY_PROV; $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores; ${SIZE}x${SIZE}"
   echo "# medians of RUNS=$RUNS runs (cells whose first run took > ${BIG} s keep 1 run); frame = sum of $STAGES"
 }
