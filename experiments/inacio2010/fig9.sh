@@ -13,8 +13,11 @@
 # volume resolution), SIZE^2 (default 512), shared shading and the method's own
 # opaque surface, the camera framing the fluid; the images are labelled with the
 # particle count and put side by side.
+# The same frames are rendered with `spheres` (radius r, shared shading), the paper's other
+# half: ray casting against spheres at the same counts.
 # Writes results/inacio2010/fig9_panel.png (shared shading), fig9_panel_own.png
-# (the paper's opaque-surface look) and fig9.csv (count, r, steps, wall time).
+# (the paper's opaque-surface look), fig9_panel_spheres.png (spheres), fig9_rows.png
+# (ray casting above spheres) and fig9.csv (count, r, steps, wall time).
 # Usage: experiments/inacio2010/fig9.sh [BIN]   (COUNTS, SIM_TIME, SIZE, GRID,
 #        TIMEOUT_S (per simulation, default 1200), BIN= override)
 # FS_QUICK=1 (run_all.sh --quick): 512 and 1024 particles, 0.05 s, 128^2, grid 64, into
@@ -35,7 +38,7 @@ trap 'rm -rf "$T"' EXIT
 csv=$T/fig9.csv
 echo "# fluidsurf simulate dam_break --particles N --radius R (fixed tank); $SIM_TIME s; CPU path; render volume_raycast grid_res $GRID, ${SIZE}x${SIZE}; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)" > "$csv"
 echo "particles_requested,particles,r,boundary,t,steps,sim_wall_s,render_ms,renderer,image,note" >> "$csv"
-shared=() own=()
+shared=() own=() spheres=()
 for n in $COUNTS; do
   r=$(awk -v n="$n" 'BEGIN { printf "%.6g", 0.5 / exp(log(n) / 3) }')
   t0=$(date +%s.%N)
@@ -62,17 +65,20 @@ for n in $COUNTS; do
     $1 == "march" { s = $rc; for (i = rc + 1; i <= NF; i++) s = s "," $i; print s; exit }' "$T/timings_$n.csv")
   echo "$n,$np,$r,$nb,${steps#*,},${steps%,*},$wall,$rms,\"$rend\",fig9_panel.png," >> "$csv"
   label="$(echo "$np" | sed ':a;s/\B[0-9]\{3\}\>/,&/;ta') particles, r = $(awk -v r="$r" 'BEGIN { printf "%.4f", r }') m"
-  for v in "" _own; do
+  "$BIN" render "$T/dam_${n}_0010.bgeo" --method spheres --radius "$r" -W "$SIZE" -H "$SIZE" -q -o "$T/fig9_${n}_spheres.png"
+  for v in "" _own _spheres; do
     oiiotool "$T/fig9_${n}${v}.png" --ch R,G,B --text:x=12:y=$((SIZE / 16)):size=$((SIZE / 20)):color=1,1,1:shadow=2:font=DejaVuSans "$label" \
       -o "$T/lab_${n}${v}.png"
   done
-  shared+=("$T/lab_$n.png"); own+=("$T/lab_${n}_own.png")
+  shared+=("$T/lab_$n.png"); own+=("$T/lab_${n}_own.png"); spheres+=("$T/lab_${n}_spheres.png")
   echo "fig9: $n ($np particles, r $r): $wall s simulated, rendered" >&2
 done
 k=${#shared[@]}
 if [ "$k" -gt 0 ]; then
   oiiotool "${shared[@]}" --mosaic "${k}x1" -o "$OUT/fig9_panel.png"
   oiiotool "${own[@]}" --mosaic "${k}x1" -o "$OUT/fig9_panel_own.png"
+  oiiotool "${spheres[@]}" --mosaic "${k}x1" -o "$OUT/fig9_panel_spheres.png"
+  oiiotool "${shared[@]}" "${spheres[@]}" --mosaic "${k}x2" --resize "$((k * 256))x512" -o "$OUT/fig9_rows.png"
 fi
 mv "$csv" "$OUT/fig9.csv"
 stamp_csv "$OUT/fig9.csv"
