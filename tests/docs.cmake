@@ -4,3 +4,8 @@ add_test(NAME readme_tables COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/readme_tabl
 add_test(NAME gpu_readme COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/gpu/report.py --check ${CMAKE_SOURCE_DIR}/results/gpu)
 # results/README.md's commit column names each row's main CSV's commit.
 add_test(NAME results_index COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tools/check_index.py ${CMAKE_SOURCE_DIR}/results/README.md)
+# Every measured number typed in the READMEs' prose carries <!--n CSV EXPR FORMAT--> and equals
+# what that CSV gives; the index's verdicts have no measured number without one.
+add_test(NAME results_numbers COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tools/check_numbers.py)
+# Every committed CSV under results/ names a clean commit (or awaits a listed re-run).
+add_test(NAME results_clean COMMAND bash ${CMAKE_SOURCE_DIR}/experiments/tools/check_results.sh ${CMAKE_SOURCE_DIR})

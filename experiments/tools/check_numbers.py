@@ -15,9 +15,11 @@ In results/README.md's verdict column, every number that looks measured (a decim
 percentage, a ratio such as 5.25x) must carry such a comment, or `<!--paper-->` when it is
 the paper's number; a parameter value written after "=" is left alone.
 
-    check_numbers.py [FILE.md ...]   (default: results/README.md, results/*/README*.md,
-                                      methods/*/README.md)
-Exit 0 when every number agrees, 1 naming each that does not, 2 on bad input.
+    check_numbers.py [--fix] [FILE.md ...]   (default: results/README.md, results/*/README*.md,
+                                              methods/*/README.md)
+--fix rewrites each annotated number to what its CSV gives now (after a study is re-run), and
+lists each one it changed, so the prose around it can be read again: a claim may have flipped.
+Exit 0 when every number agrees (or was fixed), 1 naming each that does not, 2 on bad input.
 """
 import csv
 import glob
@@ -82,6 +84,25 @@ def value(folder, path, expr):
         raise Bad("%s: cannot evaluate %s" % (path, expr))
 
 
+def fix_notes(md, text):
+    """text with each annotated number replaced by its CSV's value; prints each change."""
+    folder, out, last = os.path.dirname(os.path.abspath(md)), [], 0
+    for m in NOTE.finditer(text):
+        try:
+            want = m.group(3) % value(folder, m.group(1), m.group(2))
+        except Bad:
+            continue  # check_notes reports it
+        before = text[last:m.start()]
+        got = re.search(r"[-+]?\d[\d.,]*%?x?$", before)
+        if got and got.group(0) != want:
+            line = text.count("\n", 0, m.start()) + 1
+            print("%s:%d: %s -> %s" % (rel(md), line, got.group(0), want))
+            before = before[:got.start()] + want
+        out.append(before + m.group(0))
+        last = m.end()
+    return "".join(out) + text[last:]
+
+
 def check_notes(md, text):
     """Errors for each <!--n--> note whose text before it is not its value."""
     errs, folder = [], os.path.dirname(os.path.abspath(md))
@@ -125,7 +146,10 @@ def check_bare(md, text):
 
 def main():
     root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")
-    files = sys.argv[1:] or sorted(
+    args = sys.argv[1:]
+    fix = "--fix" in args
+    args = [a for a in args if a != "--fix"]
+    files = args or sorted(
         [os.path.join(root, "results/README.md")] + glob.glob(os.path.join(root, "results/*/README*.md")) +
         glob.glob(os.path.join(root, "methods/*/README.md")))
     errs, notes = [], 0
@@ -134,6 +158,13 @@ def main():
             sys.stderr.write("check_numbers: %s: no such file\n" % md)
             sys.exit(2)
         text = open(md, encoding="utf-8").read()
+        if fix:
+            fixed = fix_notes(md, text)
+            if fixed != text:
+                with open(md + ".tmp", "w", encoding="utf-8") as f:
+                    f.write(fixed)
+                os.replace(md + ".tmp", md)
+                text = fixed
         notes += len(NOTE.findall(text))
         errs += check_notes(md, text)
         if os.path.basename(md) == "README.md" and os.path.basename(os.path.dirname(os.path.abspath(md))) == "results":
