@@ -3,7 +3,9 @@
 commit must be the one in the provenance line of its main CSV (the first CSV its analogue
 column links), or "none recorded" when that CSV names none. Lists each row that differs.
 
-    python3 experiments/tools/check_index.py [results/README.md]
+    python3 experiments/tools/check_index.py [--fix] [results/README.md]
+
+--fix writes each row's commit column from its main CSV (after a study is re-run).
 """
 import os
 import re
@@ -41,12 +43,33 @@ def check_row(cells, folder):
     return None
 
 
+def fix_rows(readme, folder):
+    """Rewrites each row's commit column from its main CSV; prints each change."""
+    out = []
+    for line in open(readme):
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if line.startswith("| ") and not line.startswith("| item |") and len(cells) == 5 and check_row(cells, folder):
+            links = re.findall(r"\]\(([^)]+\.csv)\)", cells[2])
+            got = csv_commit(os.path.join(folder, links[0])) if links and os.path.exists(os.path.join(folder, links[0])) else None
+            if got and not got[1]:
+                print("check_index: %s: %s -> %s" % (cells[0], cells[4], got[0]))
+                cells[4] = got[0]
+                line = "| " + " | ".join(cells) + " |\n"
+        out.append(line)
+    with open(readme + ".tmp", "w") as f:
+        f.write("".join(out))
+    os.replace(readme + ".tmp", readme)
+
+
 def main():
-    readme = sys.argv[1] if len(sys.argv) > 1 else "results/README.md"
+    args = [a for a in sys.argv[1:] if a != "--fix"]
+    readme = args[0] if args else "results/README.md"
     if not os.path.isfile(readme):
         sys.stderr.write("check_index: %s: no such file\n" % readme)
         sys.exit(2)
     folder = os.path.dirname(os.path.abspath(readme))
+    if "--fix" in sys.argv[1:]:
+        fix_rows(readme, folder)
     bad, n = [], 0
     for line in open(readme):
         if not line.startswith("| ") or line.startswith("| item |"):
