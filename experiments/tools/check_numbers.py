@@ -84,6 +84,18 @@ def value(folder, path, expr):
         raise Bad("%s: cannot evaluate %s" % (path, expr))
 
 
+def trailing_number(s):
+    """The match of the number that ends s (an exponent and a sign included, a range's hyphen
+    as in 0.7-1.2 not), or None."""
+    m = re.search(r"\d[\d.,]*(?:[eE][-+]?\d+)?%?x?$", s)
+    if not m:
+        return None
+    start = m.start()
+    if start > 0 and s[start - 1] in "-+" and (start == 1 or not (s[start - 2].isalnum() or s[start - 2] == ".")):
+        start -= 1
+    return re.compile(re.escape(s[start:]) + "$").search(s, start)
+
+
 def fix_notes(md, text):
     """text with each annotated number replaced by its CSV's value; prints each change."""
     folder, out, last = os.path.dirname(os.path.abspath(md)), [], 0
@@ -93,7 +105,7 @@ def fix_notes(md, text):
         except Bad:
             continue  # check_notes reports it
         before = text[last:m.start()]
-        got = re.search(r"[-+]?\d[\d.,]*%?x?$", before)
+        got = trailing_number(before)
         if got and got.group(0) != want:
             line = text.count("\n", 0, m.start()) + 1
             print("%s:%d: %s -> %s" % (rel(md), line, got.group(0), want))
@@ -115,7 +127,7 @@ def check_notes(md, text):
             continue
         before = text[:m.start()]
         if not before.endswith(want) or re.search(r"[\d.]$", before[:len(before) - len(want)]):
-            got = re.search(r"[-+]?[\d.,]*\d[^\s<]*$", before)
+            got = trailing_number(before)
             errs.append("%s:%d: the text says %s, %s gives %s" % (rel(md), line, got.group(0) if got else "nothing", m.group(1), want))
     return errs
 
