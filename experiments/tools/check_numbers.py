@@ -15,7 +15,7 @@ In results/README.md's verdict column, every number that looks measured (a decim
 percentage, a ratio such as 5.25x) must carry such a comment, or `<!--paper-->` when it is
 the paper's number; a parameter value written after "=" is left alone.
 
-    check_numbers.py [--fix] [FILE.md ...]   (default: results/README.md, results/*/README*.md,
+    check_numbers.py [--fix] [FILE.md ...]   (default: results/README.md, results/*/*.md,
                                               methods/*/README.md)
 --fix rewrites each annotated number to what its CSV gives now (after a study is re-run), and
 lists each one it changed, so the prose around it can be read again: a claim may have flipped.
@@ -85,13 +85,13 @@ def value(folder, path, expr):
 
 
 def trailing_number(s):
-    """The match of the number that ends s (an exponent and a sign included, a range's hyphen
-    as in 0.7-1.2 not), or None."""
+    """The match of the number that ends s (an exponent included; a sign only after a space or
+    an opening bracket, so a range's hyphen as in 0.7-1.2 or 80<!--n ...-->-300 is not), or None."""
     m = re.search(r"\d[\d.,]*(?:[eE][-+]?\d+)?%?x?$", s)
     if not m:
         return None
     start = m.start()
-    if start > 0 and s[start - 1] in "-+" and (start == 1 or not (s[start - 2].isalnum() or s[start - 2] == ".")):
+    if start > 0 and s[start - 1] in "-+" and (start == 1 or s[start - 2] in " \t\n([~"):
         start -= 1
     return re.compile(re.escape(s[start:]) + "$").search(s, start)
 
@@ -104,12 +104,12 @@ def fix_notes(md, text):
             want = m.group(3) % value(folder, m.group(1), m.group(2))
         except Bad:
             continue  # check_notes reports it
+        got = trailing_number(text[:m.start()])
         before = text[last:m.start()]
-        got = trailing_number(before)
-        if got and got.group(0) != want:
+        if got and got.start() >= last and got.group(0) != want:
             line = text.count("\n", 0, m.start()) + 1
             print("%s:%d: %s -> %s" % (rel(md), line, got.group(0), want))
-            before = before[:got.start()] + want
+            before = text[last:got.start()] + want
         out.append(before + m.group(0))
         last = m.end()
     return "".join(out) + text[last:]
@@ -162,7 +162,7 @@ def main():
     fix = "--fix" in args
     args = [a for a in args if a != "--fix"]
     files = args or sorted(
-        [os.path.join(root, "results/README.md")] + glob.glob(os.path.join(root, "results/*/README*.md")) +
+        [os.path.join(root, "results/README.md")] + glob.glob(os.path.join(root, "results/*/*.md")) +
         glob.glob(os.path.join(root, "methods/*/README.md")))
     errs, notes = [], 0
     for md in files:
