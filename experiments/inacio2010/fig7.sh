@@ -31,7 +31,8 @@ for cfg in "1 0.01" "10 0.001"; do
   "$BIN" simulate dam_break --particles "$PARTICLES" --eos ideal --sound-speed 15 --dt "$2" --substeps "$1" \
       --frames "$frames" --cpu -q -o "$TMP/s$1/frame_%04d.bgeo" --stats "$TMP/s$1/stats.csv"
   last=$(printf "$TMP/s$1/frame_%04d.bgeo" "$frames")
-  stats=$(awk -F, '$1 ~ /^[0-9]+$/ && $1 > 0 { c += $10; if ($9 > v) v = $9; n = $3 } END { print n "," c "," v }' "$TMP/s$1/stats.csv")
+  # the stats' clamps column is the running total (fs_sph_stats.clamps): the last frame's is the count
+  stats=$(awk -F, '$1 ~ /^[0-9]+$/ && $1 > 0 { c = $10; if ($9 > v) v = $9; n = $3 } END { print n "," c "," v }' "$TMP/s$1/stats.csv")
   top=$("$BIN" info "$last" 2> /dev/null | awk '/^bbox max:/ { print $4 }')
   echo "${1}x$2,$frames,$stats,$top" >> "$TMP/fig7.csv"
 done
