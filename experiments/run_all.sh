@@ -6,7 +6,8 @@
 #                                     so every CSV names a clean commit)
 #   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
 #                                     minutes; CI runs it so that no study script can rot), then
-#                                     the checks below
+#                                     each study's numbers against bounds that hold by definition
+#                                     (tools/check_quick.py) and the checks below
 #   experiments/run_all.sh --check    the checks of the committed results: every generated README
 #                                     table is its CSV's, and every committed CSV under results/
 #                                     names a clean commit (tools/check_results.sh)
@@ -99,6 +100,9 @@ study tables bash experiments/tables.sh # after every study: pivots of their CSV
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
 if [ $mode = quick ]; then
+  # a study that ran to the end can still measure nonsense: its numbers against bounds
+  # that hold by definition, every study at least one (experiments/tools/check_quick.py)
+  study quick_bounds python3 experiments/tools/check_quick.py "$FS_RESULTS"
   readme_check
   study results_clean bash experiments/tools/check_results.sh
 fi

@@ -10,7 +10,10 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 n=$(($(grep -c '|| fail' "$0") - 1)) # minus this line
 cube=$SRC/experiments/data/splashsurf/cube_2366_particles.vtk
 "$BIN" render "$cube" --method spheres -W 96 -H 64 -q --timings -o "$T/cube.exr" > "$T/timings.csv" || fail "spheres exr render"
-grep -q '^splat,.*llvmpipe\|^splat,.*,' "$T/timings.csv" || fail "timings lack the splat stage: $(cat "$T/timings.csv")"
+# the splat stage is GL work: a wall time, a GL-clock time (GL_TIMESTAMP, core since GL 3.3)
+# and the GL renderer's name, not CPU and not empty (the EXR's gl_renderer, checked below)
+splat_renderer=$(awk -F, '$1 == "splat" && $2 ~ /^[0-9]+\.[0-9]+$/ && $3 ~ /^[0-9]+\.[0-9]+$/ && $4 != "" && $4 != "CPU" {
+  sub(/^[^,]*,[^,]*,[^,]*,/, ""); print; n++ } END { exit n != 1 }' "$T/timings.csv") || fail "timings lack one splat row with ms, gpu_ms and a GL renderer: $(cat "$T/timings.csv")"
 grep -q '^load,.*,CPU$' "$T/timings.csv" || fail "load stage not marked CPU"
 # spheres reads no neighbour grid (FS_GRID_UNUSED), so none is built; a method that reads one times it on the CPU
 ! grep -q '^grid,' "$T/timings.csv" || fail "spheres built a grid nobody reads"
@@ -21,6 +24,7 @@ if command -v iinfo >/dev/null; then
   for ch in depth normal.X normal.Y normal.Z thickness coverage; do grep -q "$ch" "$T/iinfo.txt" || fail "EXR lacks channel $ch"; done
   for a in fluidsurf:commit fluidsurf:gl_renderer fluidsurf:camera fluidsurf:params fluidsurf:scene_hash; do
     grep -q "$a" "$T/iinfo.txt" || fail "EXR lacks attribute $a"; done
+  grep -qF "fluidsurf:gl_renderer: \"$splat_renderer\"" "$T/iinfo.txt" || fail "--timings names renderer '$splat_renderer', the EXR: $(grep gl_renderer "$T/iinfo.txt")"
   grep -q "96 x  *64" "$T/iinfo.txt" || fail "EXR size is not 96x64: $(head -3 "$T/iinfo.txt")"
 else
   fail "iinfo (openimageio-tools) missing"

@@ -9,3 +9,9 @@ add_test(NAME results_index COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tool
 add_test(NAME results_numbers COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tools/check_numbers.py)
 # Every committed CSV under results/ names a clean commit (or awaits a listed re-run).
 add_test(NAME results_clean COMMAND bash ${CMAKE_SOURCE_DIR}/experiments/tools/check_results.sh ${CMAKE_SOURCE_DIR})
+# The bounds that run_all.sh --quick checks each study's numbers against
+# (experiments/tools/check_quick.py): every study has one, the committed results meet
+# them, and a broken number fails naming the study, the CSV and the number. The quick
+# studies themselves run in CI through scripts/test.sh, not here.
+add_test(NAME quick_bounds COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_quick.sh ${CMAKE_SOURCE_DIR}
+         ${CMAKE_BINARY_DIR}/test-out/quick_bounds)
