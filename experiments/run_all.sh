@@ -37,10 +37,17 @@ study() {
 }
 
 readme_check() { study readme_tables bash tests/readme_tables.sh "$PWD"; }
+# the prose numbers (<!--n--> notes) and the index's commit column against the committed CSVs
+numbers_check() {
+  study results_numbers python3 experiments/tools/check_numbers.py
+  study results_index python3 experiments/tools/check_index.py results/README.md
+}
 
 if [ $mode = check ]; then
   readme_check
+  numbers_check
   study results_clean bash experiments/tools/check_results.sh
+  study results_bounds python3 experiments/tools/check_quick.py results --skip bench_make_splash
   exit 0
 fi
 if [ $mode = quick ]; then
@@ -104,6 +111,7 @@ if [ $mode = quick ]; then
   # that hold by definition, every study at least one (experiments/tools/check_quick.py)
   study quick_bounds python3 experiments/tools/check_quick.py "$FS_RESULTS"
   readme_check
+  numbers_check
   study results_clean bash experiments/tools/check_results.sh
 fi
 echo "run_all: every study ran ($mode)"
