@@ -119,7 +119,8 @@ const char *fluidsurf_image_provenance_value(const fluidsurf_image *im, int i)
     return prov_ok(im, i) ? im->prov.value[i] : NULL;
 }
 
-int fluidsurf_metrics_compute(const fluidsurf_image *a, const fluidsurf_image *b, double radius, fluidsurf_metrics *out)
+int fluidsurf_metrics_compute2(const fluidsurf_image *a, const fluidsurf_image *b, double radius, fluidsurf_metrics *out,
+                               fluidsurf_depth_metrics *depth)
 {
     int rc;
     if ((rc = fs_api_check(a, "method image")) || (rc = fs_api_check(b, "reference image")) || (rc = fs_api_check(out, "out")))
@@ -131,5 +132,13 @@ int fluidsurf_metrics_compute(const fluidsurf_image *a, const fluidsurf_image *b
     *out = (fluidsurf_metrics){m.mask_iou, m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.normal_mean_deg,
                                m.normal_p95_deg, m.interior_normal_mean_deg, m.psnr_db, m.ssim,
                                m.n_both, m.n_union, m.n_interior};
+    if (depth)
+        *depth = (fluidsurf_depth_metrics){m.depth_median_r, m.depth_abs_p50_r, m.depth_abs_p95_r, m.depth_abs_p99_r,
+                                           m.depth_over_1r_frac};
     return FLUIDSURF_OK;
+}
+
+int fluidsurf_metrics_compute(const fluidsurf_image *a, const fluidsurf_image *b, double radius, fluidsurf_metrics *out)
+{
+    return fluidsurf_metrics_compute2(a, b, radius, out, NULL);
 }

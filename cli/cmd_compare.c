@@ -33,6 +33,8 @@ static const char epilogue[] =
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
     "<label>_own.png for a method with its own appearance (fluidsurf methods says which),\n"
     "report.md (and temporal.csv for a sequence); with --counters also counters.csv.\n"
+    "metrics.csv's last columns (depth_median_r, depth_abs_p50/p95/p99_r,\n"
+    "depth_over_1r_frac) measure the depth error itself, not around its mean.\n"
     "Reference G-buffers are cached (--cache DIR, default $XDG_CACHE_HOME/fluidsurf or\n"
     "~/.cache/fluidsurf), keyed by a hash of the particles, field, camera, image size,\n"
     "the reference's parameters and fluidsurf's commit; a hit is named in report.md and\n"

@@ -1,60 +1,103 @@
-/* fluidsurf diff A.exr B.exr: the compare metrics between two outputs, and an
- * exit status for regression checks (3 when a threshold is crossed). */
+/* fluidsurf diff A.exr B.exr: the compare metrics between two outputs that can be
+ * compared (diff_check.c), as text or JSON (diff_print.c), the heatmaps with -o,
+ * and an exit status for regression checks (3 when a threshold is crossed). */
 #include "cli.h"
+#include "diff.h"
+#include "diff_panel.h"
 #include "fs_error.h"
-#include "metrics.h"
 #include "options.h"
+#include "output_file.h"
 #include "render_output.h"
+#include "stats.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 /* what --help says after the options */
 static const char epilogue[] =
-    "Prints the metrics of A against B (B is the reference); exits 3 when a --fail-*\n"
-    "threshold is crossed, 0 otherwise.\n";
+    "Prints the metrics of A against B (B is the reference), named as metrics.csv's\n"
+    "columns: depth_bias_r, depth_rmse_r and depth_p95_r measure around the mean error;\n"
+    "depth_median_r, depth_abs_p50/p95/p99_r and depth_over_1r_frac the error itself,\n"
+    "which a few far outliers barely move. The EXRs must be comparable: a different\n"
+    "size or camera (fluidsurf:camera) is refused (exit 2); a different scene\n"
+    "(fluidsurf:scene_hash) or r (fluidsurf:r), or provenance that cannot tell, gives\n"
+    "a warning, or with --strict a refusal. Exits 3 when a --fail-* threshold is\n"
+    "crossed, 0 otherwise.\n";
+
+typedef struct diff_opts {
+    float fail_iou, fail_normal, fail_depth, radius, nscale, dscale;
+    int strict, json;
+    const char *out;
+} diff_opts;
+
+/* The thresholds crossed; a NAN metric (nothing to compare) never passes a threshold that asks for it. */
+static int thresholds(const diff_opts *o, const fs_metrics *m, diff_fail *fails)
+{
+    int n = 0;
+    if (o->fail_iou >= 0 && !(m->mask_iou >= o->fail_iou)) snprintf(fails[n++].text, sizeof fails->text, "mask_iou < %g", o->fail_iou);
+    if (o->fail_normal >= 0 && !(m->normal_mean_deg <= o->fail_normal))
+        snprintf(fails[n++].text, sizeof fails->text, "normal_mean_deg > %g", o->fail_normal);
+    if (o->fail_depth >= 0 && !(fabs(m->depth_bias_r) <= o->fail_depth && m->depth_rmse_r <= o->fail_depth))
+        snprintf(fails[n++].text, sizeof fails->text, "|depth_bias_r| or depth_rmse_r > %g", o->fail_depth);
+    return n;
+}
+
+/* -o FILE.png: compare's heatmaps, scaled as compare scales them by default. */
+static int write_heatmaps(const diff_opts *o, const char *const files[2], const fs_gbuffer g[2], float r,
+                          const fs_metrics *m)
+{
+    double ns = o->nscale > 0 ? o->nscale : fs_nice_ceil(m->normal_p95_deg > 0 ? m->normal_p95_deg : 10);
+    double ds = o->dscale > 0 ? o->dscale : fs_nice_ceil(m->depth_p95_r > 0 ? m->depth_p95_r : 1);
+    char title[2 * 600];
+    snprintf(title, sizeof title, "%s against %s", files[0], files[1]);
+    return fs_write_diff_panel(o->out, &g[0], &g[1], r, m->depth_bias_r, ns, ds, title);
+}
+
+/* Reads, checks and measures; prints; 0, 3 (a threshold crossed) or an error code. */
+static int run_diff(const diff_opts *o, const char *const files[2], fs_gbuffer g[2], float *rgba[2])
+{
+    float r[2] = {0, 0};
+    int rc = fs_read_render(files[0], &g[0], &rgba[0], &r[0]);
+    if (!rc) rc = fs_read_render(files[1], &g[1], &rgba[1], &r[1]);
+    if (!rc) rc = diff_check_comparable(files, g, r, o->strict, o->radius > 0);
+    float rr = o->radius > 0 ? o->radius : r[0] > 0 ? r[0] : r[1];
+    if (!rc && !(rr > 0)) rc = fs_fail(FS_ERR_INPUT, "%s: no fluidsurf:r attribute; give --radius", files[0]);
+    fs_metrics m;
+    if (!rc) rc = fs_metrics_compute(&g[0], rgba[0], &g[1], rgba[1], rr, &m);
+    if (!rc && o->out) rc = write_heatmaps(o, files, g, rr, &m);
+    if (rc) return rc;
+    diff_fail fails[3];
+    int nfails = thresholds(o, &m, fails);
+    if (o->json) diff_print_json(stdout, files, rr, &m, fails, nfails);
+    else diff_print_text(stdout, files, rr, &m, fails, nfails);
+    return nfails ? FS_ERR_DIFF : FS_OK;
+}
 
 int cmd_diff(int argc, char **argv)
 {
     const char *files[2] = {NULL, NULL};
-    float fail_iou = -1, fail_normal = -1, fail_depth = -1, radius = 0;
+    diff_opts o = {-1, -1, -1, 0, 0, 0, 0, 0, NULL};
     int nfiles = 0, rc;
     const cli_opt opts[] = {
-        CLI_FLOAT_OPT("--fail-iou", fail_iou, 0, 1, "X", "exit 3 when the mask IoU is below X"),
-        CLI_FLOAT_OPT("--fail-normal-deg", fail_normal, 0, 180, "Y", "exit 3 when the mean normal angle exceeds Y degrees"),
-        CLI_FLOAT_OPT("--fail-depth-r", fail_depth, 0, 1e9, "Z", "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
-        CLI_OPT_RADIUS(radius, "A's provenance, fluidsurf:r"),
+        CLI_FLOAT_OPT("--fail-iou", o.fail_iou, 0, 1, "X", "exit 3 when the mask IoU is below X"),
+        CLI_FLOAT_OPT("--fail-normal-deg", o.fail_normal, 0, 180, "Y", "exit 3 when the mean normal angle exceeds Y degrees"),
+        CLI_FLOAT_OPT("--fail-depth-r", o.fail_depth, 0, 1e9, "Z", "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
+        CLI_OPT_RADIUS(o.radius, "A's provenance, fluidsurf:r"),
+        CLI_FLAG_OPT("--strict", o.strict, "refuse (exit 2) a different scene or r, or provenance that\ncannot tell, instead of warning"),
+        CLI_FLAG_OPT("--json", o.json, "print the metrics as one JSON object (NaN as null,\ninfinity as 1e999)"),
+        CLI_OPT_OUT(o.out, "FILE.png", "write the normal and depth error heatmaps (as compare's\ndiff_<label>.png)"),
+        CLI_FLOAT_OPT("--normal-scale", o.nscale, 1e-6, 180, "DEG", "heatmap scale of the normal error (default: from the data)"),
+        CLI_FLOAT_OPT("--depth-scale", o.dscale, 1e-9, 1e9, "R", "heatmap scale of the depth error, in r (default: from the data)"),
         CLI_END,
     };
     const cli_command cmd = {"diff", "A.exr B.exr [options]", opts, {files, &nfiles, 2, "more than two files"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (nfiles != 2) return cli_usage("diff", "needs two EXR files");
+    if (o.out && !fs_path_ends_with(o.out, ".png")) return cli_usage("diff", "-o %s: the heatmaps are a .png", o.out);
     fs_gbuffer g[2] = {{0}};
-    float *rgba[2] = {NULL, NULL}, r[2] = {0, 0};
-    rc = fs_read_render(files[0], &g[0], &rgba[0], &r[0]);
-    if (!rc) rc = fs_read_render(files[1], &g[1], &rgba[1], &r[1]);
-    if (!rc && (g[0].w != g[1].w || g[0].h != g[1].h))
-        rc = fs_fail(FS_ERR_INPUT, "%s: %dx%d, but %s is %dx%d", files[1], g[1].w, g[1].h, files[0], g[0].w, g[0].h);
-    float rr = radius > 0 ? radius : r[0] > 0 ? r[0] : r[1];
-    if (!rc && !(rr > 0)) rc = fs_fail(FS_ERR_INPUT, "%s: no fluidsurf:r attribute; give --radius", files[0]);
-    fs_metrics m;
-    if (!rc) rc = fs_metrics_compute(&g[0], rgba[0], &g[1], rgba[1], rr, &m);
-    int crossed = 0;
-    if (!rc) {
-        printf("a: %s\nb: %s (reference)\nr: %g\n", files[0], files[1], rr);
-        printf("mask_iou %.6g\ndepth_bias_r %.6g\ndepth_rmse_r %.6g\ndepth_p95_r %.6g\n", m.mask_iou, m.depth_bias_r,
-               m.depth_rmse_r, m.depth_p95_r);
-        printf("normal_mean_deg %.6g\nnormal_p95_deg %.6g\ninterior_normal_mean_deg %.6g\npsnr_db %.6g\nssim %.6g\n",
-               m.normal_mean_deg, m.normal_p95_deg, m.interior_normal_mean_deg, m.psnr_db, m.ssim);
-        /* a NAN metric (nothing to compare) never passes a threshold that asks for it */
-        if (fail_iou >= 0 && !(m.mask_iou >= fail_iou)) { printf("FAIL mask_iou < %g\n", fail_iou); crossed = 1; }
-        if (fail_normal >= 0 && !(m.normal_mean_deg <= fail_normal)) { printf("FAIL normal_mean_deg > %g\n", fail_normal); crossed = 1; }
-        if (fail_depth >= 0 && !(fabs(m.depth_bias_r) <= fail_depth && m.depth_rmse_r <= fail_depth)) {
-            printf("FAIL |depth_bias_r| or depth_rmse_r > %g\n", fail_depth);
-            crossed = 1;
-        }
-    }
+    float *rgba[2] = {NULL, NULL};
+    rc = run_diff(&o, files, g, rgba);
     for (int k = 0; k < 2; k++) { fs_gbuffer_free(&g[k]); free(rgba[k]); }
-    if (rc) return cli_error(rc);
-    return crossed ? FS_ERR_DIFF : 0;
+    if (rc && rc != FS_ERR_DIFF) return cli_error(rc);
+    return rc;
 }

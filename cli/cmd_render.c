@@ -17,7 +17,8 @@
 /* what --help says after the options */
 static const char epilogue[] =
     "EXR output holds R G B A depth normal.X/Y/Z thickness coverage, the AOVs the method\n"
-    "writes (fluidsurf methods lists them) and the provenance.\n";
+    "writes (fluidsurf methods lists them) and the provenance. Depth is 0 where coverage\n"
+    "is 0 (fluidsurf:empty_depth), so OpenImageIO's idiff reports finite numbers.\n";
 
 /* What to do with the loaded frame. */
 typedef struct render_job {

@@ -2,6 +2,7 @@
  * written to a temporary file and renamed (output_file.h). */
 #include "compare.h"
 #include "counters_csv.h"
+#include "diff_panel.h"
 #include "figure.h"
 #include "fs_error.h"
 #include "output_file.h"
@@ -71,7 +72,9 @@ int cmp_write_metrics(const cmp_run *r)
     FILE *f = cf.f;
     provenance_header(r, f);
     fputs("method,variant,reference,frame,mask_iou,depth_bias_r,depth_rmse_r,depth_p95_r,normal_mean_deg,normal_p95_deg,"
-          "interior_normal_mean_deg,psnr_db,ssim,frame_ms,n_both,n_interior\n", f);
+          "interior_normal_mean_deg,psnr_db,ssim,frame_ms,n_both,n_interior,"
+          /* appended, so the columns before keep their positions (scripts read them by index) */
+          "depth_median_r,depth_abs_p50_r,depth_abs_p95_r,depth_abs_p99_r,depth_over_1r_frac\n", f);
     for (int i = 0; i < r->nentries; i++) {
         const cmp_entry *e = &r->entries[i];
         int nf = e->imported ? 1 : r->nframes;
@@ -85,7 +88,11 @@ int cmp_write_metrics(const cmp_run *r)
                 const double v[] = {m->mask_iou, m->depth_bias_r, m->depth_rmse_r, m->depth_p95_r, m->normal_mean_deg,
                                     m->normal_p95_deg, m->interior_normal_mean_deg, m->psnr_db, m->ssim, e->frame_ms[fr]};
                 for (int j = 0; j < 10; j++) { fputc(',', f); num(f, v[j], j == 9 ? "%.3f" : "%.6g"); }
-                fprintf(f, ",%zu,%zu\n", m->n_both, m->n_interior);
+                fprintf(f, ",%zu,%zu", m->n_both, m->n_interior);
+                const double d[] = {m->depth_median_r, m->depth_abs_p50_r, m->depth_abs_p95_r, m->depth_abs_p99_r,
+                                    m->depth_over_1r_frac};
+                for (int j = 0; j < 5; j++) { fputc(',', f); num(f, d[j], "%.6g"); }
+                fputc('\n', f);
             }
     }
     return cmp_close(&cf);
@@ -192,44 +199,19 @@ static int write_rgba_png(const cmp_run *r, const char *name, const fs_rgba_imag
 /* The normal-error heatmap of entry e against the first reference. */
 static int normal_heatmap(const cmp_run *r, const cmp_entry *e, fs_rgba_image *out)
 {
-    const fs_gbuffer *a = &e->first.g, *b = &r->refs[0].frames[0].g;
-    float *map = malloc((size_t)a->w * a->h * sizeof *map);
-    if (!map) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-    fs_normal_error_map(a, b, map);
-    int rc = fs_heatmap(map, a->w, a->h, r->normal_scale_deg, "normal error", "deg", out);
-    free(map);
-    return rc;
-}
-
-static int depth_heatmap(const cmp_run *r, const cmp_entry *e, fs_rgba_image *out)
-{
-    const fs_gbuffer *a = &e->first.g, *b = &r->refs[0].frames[0].g;
-    float *map = malloc((size_t)a->w * a->h * sizeof *map);
-    if (!map) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-    double bias = e->metrics[0].depth_bias_r;
-    fs_depth_error_map(a, b, r->scene.radius, isfinite(bias) ? bias : 0, map);
-    int rc = fs_heatmap(map, a->w, a->h, r->depth_scale_r, "|depth error - bias|", "r", out);
-    free(map);
-    return rc;
+    return fs_normal_heatmap(&e->first.g, &r->refs[0].frames[0].g, r->normal_scale_deg, out);
 }
 
 int cmp_write_diffs(const cmp_run *r)
 {
     for (int i = 0; i < r->nentries; i++) {
         const cmp_entry *e = &r->entries[i];
-        fs_rgba_image hm[2] = {{0}}, panel = {0};
-        int rc = normal_heatmap(r, e, &hm[0]);
-        if (!rc) rc = depth_heatmap(r, e, &hm[1]);
-        char title[400], name[300];
+        char title[400], name[300], path[1400];
         snprintf(title, sizeof title, "%s against %s", e->label, r->refs[0].spec);
-        const fs_rgba_image *tiles[2] = {&hm[0], &hm[1]};
-        fs_panel_spec spec = {1, 2, tiles, NULL, NULL, NULL, title};
-        if (!rc) rc = fs_panel_compose(&spec, &panel);
         snprintf(name, sizeof name, "diff_%s.png", e->label);
-        if (!rc) rc = write_rgba_png(r, name, &panel);
-        fs_rgba_free(&hm[0]);
-        fs_rgba_free(&hm[1]);
-        fs_rgba_free(&panel);
+        cmp_path(r, name, path, sizeof path);
+        int rc = fs_write_diff_panel(path, &e->first.g, &r->refs[0].frames[0].g, r->scene.radius,
+                                     e->metrics[0].depth_bias_r, r->normal_scale_deg, r->depth_scale_r, title);
         if (rc) return rc;
     }
     return FS_OK;
@@ -485,7 +467,9 @@ int cmp_write_report(const cmp_run *r)
         fputc('\n', f);
     }
     fprintf(f, "Depth errors are in multiples of r = %g: the bias is the mean signed difference (method - reference) over "
-               "pixels both cover, RMSE and p95 measure the error around that bias. Normal angles are over pixels both "
+               "pixels both cover, RMSE and p95 measure the error around that bias (so a few far outliers, which pull the "
+               "bias, inflate them); metrics.csv also holds the median signed error, percentiles of |error| and the "
+               "share of pixels with |error| > 1 r, which such outliers barely move. Normal angles are over pixels both "
                "cover; \"interior\" keeps pixels at least 3 px from either silhouette. PSNR and SSIM (Wang et al. 2004) "
                "are on sRGB luminance over the union of the coverage masks. Frame times are medians of %d runs after a "
                "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",

@@ -12,6 +12,11 @@ add_test(NAME cli_compare COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_compare.s
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_compare)
 set_tests_properties(cli_compare PROPERTIES
   ENVIRONMENT "${FS_TEST_ENV}")
+# diff: text and JSON, -o heatmaps, EXRs of another size or camera refused, another scene or r
+# a warning (--strict: refused), empty depth that OpenImageIO's idiff reads as finite.
+add_test(NAME cli_diff COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_diff.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_BINARY_DIR}/test-out/cli_diff)
+set_tests_properties(cli_diff PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 # compare --shard K/N and merge: shards merged equal one process, bad shard sets refused.
 add_test(NAME cli_shard COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_shard.sh $<TARGET_FILE:fluidsurf>
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_shard)

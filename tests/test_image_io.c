@@ -1,9 +1,11 @@
 /* Image files through OpenImageIO: EXR with AOV channels and attributes, sRGB
- * PNG, safe writes and errors; and the golden-image helper itself. */
+ * PNG, safe writes and errors, how a G-buffer EXR marks empty depth; and the
+ * golden-image helper itself. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "golden.h"
 #include "image_io.h"
+#include "render_output.h"
 #include <dirent.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -323,9 +325,77 @@ static void test_golden(void)
     free(changed);
 }
 
+/* Every other pixel of a 4x3 G-buffer covered, depth 1 + 0.1 i there. */
+static void empty_depth_gbuffer(fs_gbuffer *g)
+{
+    CHECK(fs_gbuffer_alloc(g, 4, 3) == FS_OK, "gbuffer: %s", fs_error_message());
+    fs_gbuffer_clear(g);
+    for (int i = 1; i < 12; i += 2) {
+        g->coverage[i] = 1;
+        g->depth[i] = 1 + 0.1f * i;
+        g->normal[3 * i + 2] = 1;
+    }
+}
+
+/* What fs_read_render gives back for path: infinity where empty, the depth where covered. */
+static void check_read_depth(const char *path, const fs_gbuffer *want, const char *what)
+{
+    fs_gbuffer g;
+    float *rgba = NULL, r = 0;
+    CHECK(fs_read_render(path, &g, &rgba, &r) == FS_OK, "%s: read: %s", what, fs_error_message());
+    int bad = 0;
+    for (int i = 0; i < 12 && g.depth; i++)
+        bad += want->coverage[i] ? g.depth[i] != want->depth[i] : !(isinf(g.depth[i]) && g.depth[i] > 0);
+    CHECK(g.depth && bad == 0, "%s: %d pixels' depth read back wrong", what, bad);
+    fs_gbuffer_free(&g);
+    free(rgba);
+}
+
+/* fs_write_render writes empty depth as FS_EXR_EMPTY_DEPTH (0, so that idiff's
+ * means stay finite) and says so in fluidsurf:empty_depth; fs_read_render turns
+ * that, the infinity of older files, and NaN into infinity. */
+static void test_empty_depth(void)
+{
+    fs_gbuffer g;
+    empty_depth_gbuffer(&g);
+    float rgba[4 * 12] = {0};
+    fs_provenance prov;
+    fs_provenance_init_base(&prov, NULL, "none");
+    const char *path = FS_TEST_OUT "/image_io_empty_depth.exr";
+    CHECK(fs_write_render(path, &g, rgba, &prov) == FS_OK, "write: %s", fs_error_message());
+    fs_image raw;
+    CHECK(fs_read_image(path, &raw) == FS_OK, "read raw: %s", fs_error_message());
+    int dc = fs_image_channel(&raw, "depth"), nonfinite = 0, bad = 0;
+    for (int i = 0; i < 12 * raw.nch; i++) nonfinite += !isfinite(raw.pix[i]);
+    for (int i = 0; i < 12 && dc >= 0; i++) bad += raw.pix[i * raw.nch + dc] != (g.coverage[i] ? g.depth[i] : 0.0f);
+    CHECK(dc >= 0 && nonfinite == 0 && bad == 0, "the file holds %d non-finite values, %d depths not 0 where empty",
+          nonfinite, bad);
+    fs_image_free(&raw);
+    char buf[16];
+    CHECK(fs_read_image_attr(path, "fluidsurf:empty_depth", buf, sizeof buf) == 1 && !strcmp(buf, "0"),
+          "fluidsurf:empty_depth '%s'", buf);
+    check_read_depth(path, &g, "empty depth 0");
+    /* files that marked it otherwise: infinity (before fluidsurf:empty_depth), NaN */
+    const float marks[2] = {INFINITY, NAN};
+    const char *names[2] = {"empty depth inf (older files)", "empty depth NaN"};
+    for (int m = 0; m < 2; m++) {
+        float pix[12 * AOV_N] = {0};
+        for (int i = 0; i < 12; i++) {
+            pix[i * AOV_N + 4] = g.coverage[i] ? g.depth[i] : marks[m];
+            pix[i * AOV_N + 7] = g.normal[3 * i + 2];
+            pix[i * AOV_N + 9] = g.coverage[i];
+        }
+        fs_image img = {4, 3, AOV_N, AOV_NAMES, pix};
+        CHECK(fs_write_exr(path, &img, NULL, 0) == FS_OK, "write: %s", fs_error_message());
+        check_read_depth(path, &g, names[m]);
+    }
+    fs_gbuffer_free(&g);
+}
+
 int main(void)
 {
     test_exr_roundtrip();
+    test_empty_depth();
     test_srgb();
     test_png_roundtrip();
     test_errors();

@@ -85,6 +85,13 @@ static double p95_sorted(double *v, size_t n)
     return v[(size_t)ceil(0.95 * n - 1e-9) - 1];
 }
 
+/* Nearest-rank pct-th percentile by sorting: the ceil(pct n / 100)-th smallest. */
+static double pct_sorted(double *v, size_t n, int pct)
+{
+    qsort(v, n, sizeof *v, cmp_double);
+    return v[((size_t)pct * n + 99) / 100 - 1];
+}
+
 static size_t count_covered(const fs_gbuffer *g)
 {
     size_t c = 0;
@@ -164,6 +171,52 @@ static void test_depth_spread(void)
     CHECK(bad == 0, "%d depth-map pixels differ from |error - bias|", bad);
     CHECK(isnan(map[0]) && isnan(map[N - 1]), "depth map is NAN where not both cover");
     free(map);
+    fs_gbuffer_free(&a);
+    fs_gbuffer_free(&b);
+}
+
+/* Issue 32's constructed case: a tilted plane of 50 x 50 px whose errors spread
+ * within +-0.004 r, with 0.2% of its pixels (5 of 2500) moved 50 r. The outliers
+ * pull the mean to ~0.1 r, so bias and depth_p95_r (around the mean) read their
+ * pull; the median, the percentiles of |e| and the share over 1 r read the plane. */
+static void test_depth_outliers(void)
+{
+    enum { S = 50, NP = S * S, NOUT = 5 };
+    fs_gbuffer a = new_gbuf(), b = new_gbuf();
+    double n[3] = {0, 0, 1}, d[NP], ad[NP];
+    for (int k = 0; k < NP; k++) {
+        int x = 7 + k % S, y = 5 + k / S;
+        double db = 3 + 0.01 * x + 0.005 * y, e = 0.004 * sin(1.7 * k) * R_PART;
+        if (k % (NP / NOUT) == 250) e = 50 * R_PART; /* 5 outliers spread over the plane */
+        set_px(&b, x, y, db, n);
+        set_px(&a, x, y, db + e, n);
+        size_t i = (size_t)y * W + x;
+        d[k] = ((double)a.depth[i] - b.depth[i]) / R_PART;
+        ad[k] = fabs(d[k]);
+    }
+    fs_metrics m;
+    CHECK(fs_metrics_compute(&a, NULL, &b, NULL, R_PART, &m) == FS_OK, "%s", fs_error_message());
+    CHECK(m.n_both == NP, "n_both %zu", m.n_both);
+    printf("outliers: bias %.6g rmse %.6g p95 %.6g | median %.3g abs p50 %.3g p95 %.3g p99 %.3g over_1r %.6g\n",
+           m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.depth_median_r, m.depth_abs_p50_r, m.depth_abs_p95_r,
+           m.depth_abs_p99_r, m.depth_over_1r_frac);
+    /* what the outliers move: the mean, and the spread around it */
+    CHECK_NEAR(m.depth_bias_r, 0.1, 1e-3, "bias pulled to 5 x 50 r / 2500 = 0.1 r");
+    CHECK(m.depth_p95_r > 0.095 && m.depth_p95_r < 0.105, "depth_p95_r reads the pull, |0 - bias|: %g", m.depth_p95_r);
+    CHECK(m.depth_rmse_r > 2, "rmse %g", m.depth_rmse_r);
+    /* what they do not move */
+    CHECK(fabs(m.depth_median_r) < 0.005 && m.depth_abs_p50_r < 0.005 && m.depth_abs_p95_r < 0.005 &&
+              m.depth_abs_p99_r < 0.005,
+          "median %g, |e| p50 %g p95 %g p99 %g: not within the plane's 0.005 r", m.depth_median_r, m.depth_abs_p50_r,
+          m.depth_abs_p95_r, m.depth_abs_p99_r);
+    CHECK(m.depth_over_1r_frac == (double)NOUT / NP, "over_1r_frac %g, want %g", m.depth_over_1r_frac, (double)NOUT / NP);
+    /* each exactly the nearest-rank value of the sorted errors */
+    CHECK_NEAR(m.depth_abs_p50_r, pct_sorted(ad, NP, 50), 1e-12, "|e| p50 (nearest rank)");
+    CHECK_NEAR(m.depth_abs_p95_r, pct_sorted(ad, NP, 95), 1e-12, "|e| p95 (nearest rank)");
+    CHECK_NEAR(m.depth_abs_p99_r, pct_sorted(ad, NP, 99), 1e-12, "|e| p99 (nearest rank)");
+    CHECK_NEAR(m.depth_median_r, pct_sorted(d, NP, 50), 1e-12, "median of the signed error (nearest rank)");
+    CHECK(m.depth_median_r != m.depth_abs_p50_r, "median %g is signed, |e| p50 %g is not", m.depth_median_r,
+          m.depth_abs_p50_r);
     fs_gbuffer_free(&a);
     fs_gbuffer_free(&b);
 }
@@ -258,6 +311,9 @@ static void test_masks(void)
     CHECK(m.mask_iou == 0 && m.n_both == 0 && m.n_union == N && m.n_interior == 0, "disjoint: IoU %g n %zu %zu %zu",
           m.mask_iou, m.n_both, m.n_union, m.n_interior);
     CHECK(isnan(m.depth_bias_r) && isnan(m.depth_rmse_r) && isnan(m.depth_p95_r), "disjoint depth not NAN");
+    CHECK(isnan(m.depth_median_r) && isnan(m.depth_abs_p50_r) && isnan(m.depth_abs_p95_r) && isnan(m.depth_abs_p99_r) &&
+              isnan(m.depth_over_1r_frac),
+          "disjoint robust depth not NAN");
     CHECK(isnan(m.normal_mean_deg) && isnan(m.normal_p95_deg) && isnan(m.interior_normal_mean_deg),
           "disjoint normals not NAN");
     CHECK(isfinite(m.psnr_db) && isfinite(m.ssim) && m.ssim < 1, "disjoint PSNR %g SSIM %g", m.psnr_db, m.ssim);
@@ -450,6 +506,7 @@ int main(void)
     test_identical();
     test_depth_offset();
     test_depth_spread();
+    test_depth_outliers();
     test_normal_rotation();
     test_masks();
     test_interior();

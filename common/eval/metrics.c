@@ -4,7 +4,9 @@
  *   mask_iou           |A and B| / |A or B|; 1 when both masks are empty
  *   depth (in r)       d = (a - b) / r over pixels both cover; bias = mean(d);
  *                      rmse = sqrt(mean((d - bias)^2)), the error around the bias;
- *                      p95 = 95th percentile of |d - bias|
+ *                      p95 = 95th percentile of |d - bias|;
+ *                      median = median of d (signed); abs p50/p95/p99 =
+ *                      percentiles of |d|; over_1r_frac = share with |d| > 1
  *   normal angle       acos(clamp(dot(na, nb), -1, 1)) in degrees over pixels both
  *                      cover (computed as atan2(|na x nb|, na . nb): the same angle for
  *                      unit vectors, but exact near 0 deg, where acos of a float dot
@@ -13,11 +15,13 @@
  *   psnr_db            10 log10(1 / MSE) of sRGB luminance over the union; INFINITY if
  *                      MSE == 0
  *   ssim               Wang et al. 2004 on sRGB luminance, averaged over the union
- * Percentiles are nearest-rank: the ceil(0.95 n)-th smallest value (1-based).
+ * Percentiles are nearest-rank: the ceil(0.95 n)-th smallest value (1-based; the
+ * median is the ceil(0.5 n)-th).
  * A metric without any pixel to average over is NAN. Sums are taken per row and
  * added in row order, so results do not depend on the thread count. */
 #include "metrics.h"
 #include "fs_error.h"
+#include "percentile.h"
 #include "srgb.h"
 #include <math.h>
 #include <stdlib.h>
@@ -37,37 +41,6 @@ static double normal_angle_deg(const float *na, const float *nb)
     double cross = sqrt(cx * cx + cy * cy + cz * cz), dot = ax * bx + ay * by + az * bz;
     if (cross == 0 && dot == 0) return 90.0;
     return atan2(cross, dot) * RAD2DEG;
-}
-
-/* Nearest-rank 95th percentile: the ceil(0.95 n)-th smallest of v (reordered).
- * Quickselect (Hoare partition around a median of three), O(n) expected; NAN
- * when n == 0 or any value is NaN. */
-static double percentile95(double *v, size_t n)
-{
-    if (n == 0) return NAN;
-    for (size_t i = 0; i < n; i++)
-        if (isnan(v[i])) return NAN;
-    ptrdiff_t k = (ptrdiff_t)((95 * n + 99) / 100) - 1;
-    ptrdiff_t lo = 0, hi = (ptrdiff_t)n - 1;
-    while (lo < hi) {
-        double p0 = v[lo], p1 = v[lo + (hi - lo) / 2], p2 = v[hi];
-        double pivot = p0 < p1 ? (p1 < p2 ? p1 : (p0 < p2 ? p2 : p0)) : (p0 < p2 ? p0 : (p1 < p2 ? p2 : p1));
-        ptrdiff_t i = lo, j = hi;
-        while (i <= j) {
-            while (v[i] < pivot) i++;
-            while (v[j] > pivot) j--;
-            if (i <= j) {
-                double t = v[i];
-                v[i++] = v[j];
-                v[j--] = t;
-            }
-        }
-        /* now v[lo..j] <= pivot, v[i..hi] >= pivot, v[j+1..i-1] == pivot */
-        if (k <= j) hi = j;
-        else if (k >= i) lo = i;
-        else return v[k];
-    }
-    return v[k];
 }
 
 /* Sum of per-row partial sums in row order (deterministic for any thread count). */
@@ -303,6 +276,37 @@ static int check_gbuffer(const fs_gbuffer *g, const char *which)
     return FS_OK;
 }
 
+/* Copies the depth errors d of the pixels both cover into s->vals, in row order,
+ * as d (signed) or |d|; counts per row (s->row_a) those with |d| > 1. */
+static void gather_depth(int w, int h, metric_scratch *s, int absolute)
+{
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < h; y++) {
+        double *v = s->vals + s->row_off[y], over = 0;
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            if (!s->both[i]) continue;
+            double d = s->dd[i];
+            over += fabs(d) > 1;
+            *v++ = absolute ? fabs(d) : d;
+        }
+        s->row_a[y] = over;
+    }
+}
+
+/* The depth error itself, not around its mean: median of d, percentiles of |d|,
+ * the share with |d| > 1 r. A few far outliers move none of these much. */
+static void robust_depth_stats(const fs_gbuffer *a, metric_scratch *s, size_t nb, fs_metrics *out)
+{
+    gather_depth(a->w, a->h, s, 0);
+    out->depth_median_r = fs_percentile(s->vals, nb, 50);
+    gather_depth(a->w, a->h, s, 1);
+    out->depth_abs_p50_r = fs_percentile(s->vals, nb, 50);
+    out->depth_abs_p95_r = fs_percentile(s->vals, nb, 95);
+    out->depth_abs_p99_r = fs_percentile(s->vals, nb, 99);
+    out->depth_over_1r_frac = nb ? sum_rows(s->row_a, a->h) / (double)nb : NAN;
+}
+
 /* Depth and normal statistics over the pixels both cover. */
 static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r, metric_scratch *s, fs_metrics *out)
 {
@@ -358,7 +362,8 @@ static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r
         s->row_a[y] = sq;
     }
     out->depth_rmse_r = nb ? sqrt(sum_rows(s->row_a, h) / (double)nb) : NAN;
-    out->depth_p95_r = percentile95(s->vals, nb);
+    out->depth_p95_r = fs_percentile(s->vals, nb, 95);
+    robust_depth_stats(a, s, nb, out);
 
     /* pass 3: angles for their percentile */
 #pragma omp parallel for schedule(static)
@@ -369,7 +374,7 @@ static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r
             if (s->both[i]) *v++ = s->ang[i];
         }
     }
-    out->normal_p95_deg = percentile95(s->vals, nb);
+    out->normal_p95_deg = fs_percentile(s->vals, nb, 95);
 }
 
 static void interior_stats(const fs_gbuffer *a, const fs_gbuffer *b, metric_scratch *s, fs_metrics *out)

@@ -33,11 +33,12 @@ static int aov_channel_names(const fs_aov *a, char names[][FS_AOV_NAME_MAX + 2])
     return 4;
 }
 
-/* One pixel of the EXR: the core channels, then every AOV's components. */
+/* One pixel of the EXR: the core channels, then every AOV's components. An empty
+ * pixel's depth (infinity in memory) is written as FS_EXR_EMPTY_DEPTH. */
 static void pack_pixel(const fs_gbuffer *g, const float *rgba, size_t i, float *o)
 {
     memcpy(o, rgba + 4 * i, 4 * sizeof(float));
-    o[4] = g->depth[i];
+    o[4] = g->coverage[i] > 0.5f ? g->depth[i] : FS_EXR_EMPTY_DEPTH;
     memcpy(o + 5, g->normal + 3 * i, 3 * sizeof(float));
     o[8] = g->thickness[i];
     o[9] = g->coverage[i];
@@ -62,7 +63,10 @@ static int write_exr(const char *path, const fs_gbuffer *g, const float *rgba, c
     if (!pix) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
     for (size_t i = 0; i < n; i++) pack_pixel(g, rgba, i, pix + i * nch);
     fs_image img = {g->w, g->h, nch, names, pix};
-    int rc = fs_write_exr(path, &img, prov->attr, prov->n);
+    fs_attr attrs[FS_PROV_MAX + 1]; /* the provenance, then how empty depth is marked */
+    memcpy(attrs, prov->attr, (size_t)prov->n * sizeof *attrs);
+    attrs[prov->n] = (fs_attr){"fluidsurf:empty_depth", FS_EXR_EMPTY_DEPTH_TEXT};
+    int rc = fs_write_exr(path, &img, attrs, prov->n + 1);
     free(pix);
     return rc;
 }
@@ -123,7 +127,9 @@ static int add_read_aovs(const char *path, const fs_image *img, fs_gbuffer *g, i
     return FS_OK;
 }
 
-/* Pixel i of the image into g and rgba (depth and normal only where covered). */
+/* Pixel i of the image into g and rgba (depth and normal only where covered): an
+ * empty pixel's depth becomes infinity whatever the file holds there, so files
+ * that marked it with infinity (before fluidsurf:empty_depth) read the same. */
 static void unpack_pixel(const float *px, const int core[CORE_CHANNELS], const int src[][4], size_t i, fs_gbuffer *g,
                          float *rgba)
 {

@@ -8,6 +8,14 @@
 extern "C" {
 #endif
 
+/* The depth an EXR holds where coverage is 0 (infinity in memory): 0, never a
+ * surface's depth (which is positive), finite so that OpenImageIO's idiff reports
+ * finite errors (it gives inf or nan for inf or NaN pixels), and OpenImageIO's own
+ * "zero is infinitely far" convention (oiiotool --zover:zeroisinf=1). Written as
+ * the attribute fluidsurf:empty_depth = "0" (docs/DESIGN.md, "The G-buffer"). */
+#define FS_EXR_EMPTY_DEPTH 0.0f
+#define FS_EXR_EMPTY_DEPTH_TEXT "0"
+
 /* EXR channel names: R G B A depth normal.X normal.Y normal.Z thickness coverage,
  * then every AOV of g by name, in g's order: NAME for a 1-component AOV, NAME.R
  * NAME.G NAME.B NAME.A for a 4-component one (color.R.., own.R.., caustics). */
@@ -17,6 +25,8 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
  * into g (allocated here) and rgba (malloc'd, 4 per pixel). Every other channel
  * NAME without a '.' and every complete group NAME.R/G/B/A comes back as the AOV
  * NAME (in the order the file lists them); channels of any other shape are skipped.
+ * Depth is infinity wherever coverage is not above 0.5, whatever the file holds
+ * there (0 in fluidsurf's files since fluidsurf:empty_depth, infinity before, NaN).
  * r_out: the particle radius from the "fluidsurf:r" attribute, 0 when absent.
  * FS_ERR_INPUT "FILE: no channel 'depth'" etc., or for a channel group that
  * cannot be an AOV (fs_gbuffer_add_aov: a 1-channel "color", too many groups). */

@@ -25,7 +25,10 @@
  *
  * Versioning: FLUIDSURF_API_VERSION grows with every change; a program built
  * against version V runs with any library whose fluidsurf_api_version() >= V
- * and whose soname (libfluidsurf.so.0) is the same. */
+ * and whose soname (libfluidsurf.so.0) is the same. So a struct the caller
+ * allocates never grows (a program built against an older header would pass one
+ * too small): new fields come in a new struct, filled by a new function.
+ * Version 2 added fluidsurf_depth_metrics and fluidsurf_metrics_compute2. */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -37,7 +40,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 1 };
+enum { FLUIDSURF_API_VERSION = 2 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -174,7 +177,7 @@ typedef struct fluidsurf_metrics {
     double mask_iou;                 /* coverage IoU (1 when both are empty) */
     double depth_bias_r;             /* mean depth difference where both cover, in r */
     double depth_rmse_r;             /* RMS of the difference around the bias, in r */
-    double depth_p95_r;
+    double depth_p95_r;              /* 95th percentile of |difference - bias|: around the mean */
     double normal_mean_deg;          /* mean normal angle where both cover */
     double normal_p95_deg;
     double interior_normal_mean_deg; /* >= 3 px from either silhouette */
@@ -187,6 +190,20 @@ typedef struct fluidsurf_metrics {
  * depth errors (<= 0: the reference image's). NAN where no pixel counts. */
 int fluidsurf_metrics_compute(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
                               fluidsurf_metrics *out);
+
+/* Since version 2: the depth difference e (method - reference, in r, where both
+ * cover) itself rather than around its mean, which a few far outliers pull. */
+typedef struct fluidsurf_depth_metrics {
+    double depth_median_r;     /* median of e (signed) */
+    double depth_abs_p50_r;    /* 50th, 95th, 99th percentiles of |e| (nearest rank) */
+    double depth_abs_p95_r;
+    double depth_abs_p99_r;
+    double depth_over_1r_frac; /* share of the pixels both cover with |e| > 1 */
+} fluidsurf_depth_metrics;
+
+/* fluidsurf_metrics_compute, plus the depth metrics above into depth (NULL: none). */
+int fluidsurf_metrics_compute2(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
+                               fluidsurf_metrics *out, fluidsurf_depth_metrics *depth);
 /* cffi:end */
 
 #pragma GCC visibility pop

@@ -214,10 +214,18 @@ def read_gbuffer(path):
     return _image_dict(ffi.gc(out[0], lib.fluidsurf_image_free))
 
 
-def _metrics_dict(m):
+def _metrics_dict(m, d):
     names = ("mask_iou", "depth_bias_r", "depth_rmse_r", "depth_p95_r", "normal_mean_deg", "normal_p95_deg",
              "interior_normal_mean_deg", "psnr_db", "ssim", "n_both", "n_union", "n_interior")
-    return {k: getattr(m, k) for k in names}
+    depth = ("depth_median_r", "depth_abs_p50_r", "depth_abs_p95_r", "depth_abs_p99_r", "depth_over_1r_frac")
+    return {**{k: getattr(m, k) for k in names}, **{k: getattr(d, k) for k in depth}}
+
+
+def _metrics(image, reference, radius):
+    """fluidsurf_metrics_compute2 of two image handles, as a dict."""
+    m, d = ffi.new("fluidsurf_metrics *"), ffi.new("fluidsurf_depth_metrics *")
+    _check(lib.fluidsurf_metrics_compute2(image, reference, radius, m, d))
+    return _metrics_dict(m, d)
 
 
 def _image_from_dict(d, name):
@@ -244,11 +252,12 @@ def _image_from_dict(d, name):
 
 def metrics(image, reference, radius=None):
     """The metrics of image against reference (dicts as render() returns, the
-    same size): IoU, depth bias/RMSE/p95 in r, normal error in degrees, PSNR, SSIM."""
+    same size): IoU; depth bias, RMSE and p95 around the bias (in r); the depth
+    error's median, the 50th/95th/99th percentiles of its magnitude and the share
+    of pixels over 1 r, which a few far outliers do not move; normal error in
+    degrees, PSNR, SSIM (docs/DESIGN.md, "Metrics")."""
     a, b = _image_from_dict(image, "image"), _image_from_dict(reference, "reference")
-    m = ffi.new("fluidsurf_metrics *")
-    _check(lib.fluidsurf_metrics_compute(a, b, 0 if radius is None else _arrays.positive(radius, "radius"), m))
-    return _metrics_dict(m)
+    return _metrics(a, b, 0 if radius is None else _arrays.positive(radius, "radius"))
 
 
 def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=512, camera=None, params=None,
@@ -266,10 +275,8 @@ def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=
     rows = []
     for name in methods:
         im = _render_handle(s, p, name, (params or {}).get(name))
-        m = ffi.new("fluidsurf_metrics *")
-        _check(lib.fluidsurf_metrics_compute(im, ref, 0, m))
         total = sum(lib.fluidsurf_image_stage_ms(im, i) for i in range(lib.fluidsurf_image_stage_count(im)))
-        rows.append({"method": name, **_metrics_dict(m), "total_ms": total})
+        rows.append({"method": name, **_metrics(im, ref, 0), "total_ms": total})
     try:
         import pandas
     except ImportError:

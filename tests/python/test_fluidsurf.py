@@ -100,6 +100,40 @@ def test_methods_and_compare(dam):
     assert m["mask_iou"] == 1 and m["normal_mean_deg"] == 0 and m["psnr_db"] == float("inf")
 
 
+def test_depth_metrics_see_through_outliers():
+    """Issue 32's constructed case: a plane whose errors spread within 0.004 r,
+    with 0.2% of its pixels (5 of 2500) moved 50 r. The bias and depth_p95_r
+    (around the bias) read the outliers' pull, 0.1 r; the median, the
+    percentiles of |error| and the share over 1 r read the plane."""
+    yy, xx = np.mgrid[0:50, 0:50]
+    plane = (3 + 0.01 * xx + 0.005 * yy).astype(np.float32)
+    err = 0.004 * R * np.sin(1.7 * np.arange(2500)).reshape(50, 50)
+    err.flat[250::500] = 50 * R
+    moved = (plane + err).astype(np.float32)
+    normal = np.zeros((50, 50, 3), np.float32)
+    normal[..., 2] = 1
+    cov = np.ones((50, 50), np.float32)
+    a, b = {"depth": moved, "normal": normal, "coverage": cov}, {"depth": plane, "normal": normal, "coverage": cov}
+    m = fluidsurf.metrics(a, b, radius=R)
+    assert m["n_both"] == 2500
+    assert m["depth_bias_r"] == pytest.approx(0.1, abs=1e-3) and m["depth_p95_r"] == pytest.approx(0.1, abs=5e-3)
+    assert abs(m["depth_median_r"]) < 0.005
+    assert max(m["depth_abs_p50_r"], m["depth_abs_p95_r"], m["depth_abs_p99_r"]) < 0.005
+    assert m["depth_over_1r_frac"] == 0.002
+    # nearest rank (the ceil(q n)-th smallest) of e in r as the library computes it, r a float
+    e = (moved.astype(np.float64) - plane.astype(np.float64)).ravel() / np.float64(np.float32(R))
+    rank = lambda v, q: np.sort(v)[int(np.ceil(q * v.size)) - 1]
+    assert m["depth_median_r"] == pytest.approx(rank(e, 0.5), rel=1e-12)
+    for q in (50, 95, 99):
+        assert m[f"depth_abs_p{q}_r"] == pytest.approx(rank(np.abs(e), q / 100), rel=1e-12), q
+    # the version-1 function, kept for programs built against it, fills its own fields alike
+    old = fluidsurf.ffi.new("fluidsurf_metrics *")
+    ia, ib = fluidsurf._image_from_dict(a, "a"), fluidsurf._image_from_dict(b, "b")
+    assert fluidsurf.lib.fluidsurf_metrics_compute(ia, ib, R, old) == 0
+    assert old.depth_bias_r == m["depth_bias_r"] and old.depth_p95_r == m["depth_p95_r"]
+    assert fluidsurf.lib.fluidsurf_api_version() >= 2
+
+
 BAD_POSITIONS = [
     (np.zeros((5, 2), np.float32), "N x 3"),
     (np.zeros(9, np.float32), "N x 3"),
