@@ -33,6 +33,15 @@ struct fluidsurf_image {
 void fs_api_camera_out(const fs_camera *k, fluidsurf_camera *c);
 /* Once per process: the built-in methods registered, notes and progress silenced. */
 void fs_api_init(void);
+/* The scene of one render or mesh of method m on particles fp into sc (the
+ * caller's, with params "param=value" of m added), m's parameter values, and
+ * p, the particles validated: r and the camera settled as the command line's
+ * first frame settles them. sc is large: the caller allocates it. */
+int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, const fs_method *m,
+                   const char *const *params, int nparams, fs_scene *sc, fs_particles *p, double *values);
+/* Takes (on = 1) or releases the lock that runs renders and meshes one at a time:
+ * each uses every core, and the methods' process-wide state needs no more care. */
+void fs_api_lock(int on);
 /* code with the message of fs_fail kept (the library never prints). */
 int fs_api_check(const void *ptr, const char *what);
 

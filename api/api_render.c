@@ -71,8 +71,14 @@ static int run_method(const fs_method *m, const fs_scene *sc, const double *valu
     return rc;
 }
 
+void fs_api_lock(int on)
+{
+    if (on) pthread_mutex_lock(&render_lock);
+    else pthread_mutex_unlock(&render_lock);
+}
+
 /* The frame settles r and the camera as the command line's first frame does. */
-static int prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, const fs_method *m, const char *const *params,
+int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, const fs_method *m, const char *const *params,
                    int nparams, fs_scene *sc, fs_particles *p, double *values)
 {
     int rc = render_scene(s, m, params, nparams, sc);
@@ -95,18 +101,22 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, co
         return rc;
     fs_api_init();
     const fs_method *m = fs_method_find(method);
-    if (!m) return fs_fail(FS_ERR_INPUT, "unknown method '%.60s' (fluidsurf_method_name lists them)", method);
+    if (!m) {
+        char names[600];
+        fs_method_names(names, sizeof names);
+        return fs_fail(FS_ERR_INPUT, "unknown method '%.60s' (methods: %s)", method, names);
+    }
     fs_scene *sc = malloc(sizeof *sc);
     fs_particles p;
     double values[FS_MAX_PARAMS];
     fluidsurf_image *im = calloc(1, sizeof *im);
     if (!sc || !im) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-    if (!rc) rc = prepare(s, fp, m, params, nparams, sc, &p, values);
+    if (!rc) rc = fs_api_prepare(s, fp, m, params, nparams, sc, &p, values);
     if (!rc) {
-        pthread_mutex_lock(&render_lock);
+        fs_api_lock(1);
         rc = m->needs_gl ? gl_acquire() : FLUIDSURF_OK;
         if (!rc) rc = run_method(m, sc, values, &p, im);
-        pthread_mutex_unlock(&render_lock);
+        fs_api_lock(0);
     }
     if (!rc) im->radius = sc->radius, im->camera = sc->camera, im->has_camera = 1;
     free(sc);

@@ -64,10 +64,10 @@ int fs_param_split(const char *text, fs_param_setting *out)
 {
     const char *dot = strchr(text, '.'), *eq = strchr(text, '=');
     if (!dot || !eq || dot > eq || dot == text || eq == dot + 1 || !eq[1])
-        return fs_fail(FS_ERR_INPUT, "--set %s: expected METHOD.PARAM=VALUE", text);
+        return fs_fail(FS_ERR_INPUT, "%s: expected METHOD.PARAM=VALUE", text);
     int nm = (int)(dot - text), np = (int)(eq - dot - 1);
     if (nm >= (int)sizeof out->method || np >= (int)sizeof out->param)
-        return fs_fail(FS_ERR_INPUT, "--set %s: method or parameter name too long", text);
+        return fs_fail(FS_ERR_INPUT, "%s: method or parameter name too long", text);
     snprintf(out->method, sizeof out->method, "%.*s", nm, text);
     snprintf(out->param, sizeof out->param, "%.*s", np, dot + 1);
     out->value = eq + 1;

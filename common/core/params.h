@@ -1,6 +1,7 @@
 /* Method parameters: each method declares a table of fs_param_def, one entry per
  * double field of its parameter struct (enums hold the choice index, bools 0/1).
- * "--set METHOD.PARAM=VALUE" strings are split here and validated against the table. */
+ * "METHOD.PARAM=VALUE" strings (--set, scene files, the library) are split here and
+ * validated against the table. */
 #ifndef FS_PARAMS_H
 #define FS_PARAMS_H
 #include <stddef.h>
@@ -35,7 +36,7 @@ typedef struct fs_param_setting {
 } fs_param_setting;
 
 /* The one parser of "METHOD.PARAM=VALUE" (scenes, --set, sweeps, tests): FS_ERR_INPUT
- * with "--set TEXT: ..." when a part is missing or empty or a name is too long. */
+ * with "TEXT: ..." when a part is missing or empty or a name is too long. */
 int fs_param_split(const char *text, fs_param_setting *out);
 
 /* Parses text for def into *out. FS_ERR_INPUT with a message naming what on error. */

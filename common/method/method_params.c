@@ -4,15 +4,39 @@
 #include <stdlib.h>
 #include <string.h>
 
+void fs_method_names(char *buf, int size)
+{
+    int n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < fs_method_count() && n < size; i++)
+        n += snprintf(buf + n, size - n, "%s%s", i ? ", " : "", fs_method_at(i)->name);
+}
+
+void fs_method_param_names(const fs_method *m, char *buf, int size)
+{
+    int n = 0;
+    buf[0] = 0;
+    for (int i = 0; i < m->nparams && n < size; i++)
+        n += snprintf(buf + n, size - n, "%s%s", i ? ", " : "", m->params[i].name);
+}
+
+/* The messages name the setting as written, not the flag or file it came from:
+ * the command line, a scene file and the library (api/) all report them. */
 int fs_method_setting_find(const char *text, fs_method_setting *out)
 {
     fs_param_setting split;
+    char names[600];
     int rc = fs_param_split(text, &split);
     if (rc) return rc;
-    if (!(out->m = fs_method_find(split.method)))
-        return fs_fail(FS_ERR_INPUT, "--set %s: unknown method '%s' (see 'fluidsurf methods')", text, split.method);
-    if ((out->param = fs_method_param_index(out->m, split.param)) < 0)
-        return fs_fail(FS_ERR_INPUT, "--set %s: %s has no parameter '%s'", text, split.method, split.param);
+    if (!(out->m = fs_method_find(split.method))) {
+        fs_method_names(names, sizeof names);
+        return fs_fail(FS_ERR_INPUT, "%s: unknown method '%s' (methods: %s)", text, split.method, names);
+    }
+    if ((out->param = fs_method_param_index(out->m, split.param)) < 0) {
+        fs_method_param_names(out->m, names, sizeof names);
+        return fs_fail(FS_ERR_INPUT, "%s: %s has no parameter '%s' (its parameters: %s)", text, split.method,
+                       split.param, names);
+    }
     out->value = split.value;
     return FS_OK;
 }
@@ -21,7 +45,7 @@ int fs_method_setting_parse(const fs_method_setting *set, const char *value, dou
 {
     const fs_param_def *def = &set->m->params[set->param];
     char what[160];
-    snprintf(what, sizeof what, "--set %s.%s", set->m->name, def->name);
+    snprintf(what, sizeof what, "%s.%s", set->m->name, def->name);
     return fs_param_parse(def, value, out, what);
 }
 

@@ -18,8 +18,12 @@ typedef struct fs_method_setting {
 /* Splits text (fs_param_split) and finds its method and parameter; FS_ERR_INPUT
  * naming text when either is unknown. The value is not parsed. */
 int fs_method_setting_find(const char *text, fs_method_setting *out);
-/* Parses one value for the setting's parameter; errors name "--set METHOD.PARAM". */
+/* Parses one value for the setting's parameter; errors name "METHOD.PARAM". */
 int fs_method_setting_parse(const fs_method_setting *set, const char *value, double *out);
+
+/* "a, b, c": the registered methods' names, and m's parameters' names (cut at size). */
+void fs_method_names(char *buf, int size);
+void fs_method_param_names(const fs_method *m, char *buf, int size);
 
 /* FS_ERR_INPUT when a setting names an unknown method or parameter, or a bad
  * value; settings for other methods are checked but not applied. */

@@ -28,10 +28,14 @@
  * and whose soname (libfluidsurf.so.0) is the same. So a struct the caller
  * allocates never grows (a program built against an older header would pass one
  * too small): new fields come in a new struct, filled by a new function.
- * Version 2 added fluidsurf_depth_metrics and fluidsurf_metrics_compute2. */
+ * Version 2 added fluidsurf_depth_metrics and fluidsurf_metrics_compute2.
+ * Version 3 added fluidsurf_mesh (fluidsurf_mesh_build and its accessors), and
+ * messages that name settings as written ("raycast_pca.normals=x: ...") and list
+ * the valid methods or parameters, with no command-line flags in them. */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
+#include <stdint.h>
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -40,7 +44,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 2 };
+enum { FLUIDSURF_API_VERSION = 3 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -204,6 +208,29 @@ typedef struct fluidsurf_depth_metrics {
 /* fluidsurf_metrics_compute, plus the depth metrics above into depth (NULL: none). */
 int fluidsurf_metrics_compute2(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
                                fluidsurf_metrics *out, fluidsurf_depth_metrics *depth);
+/* ---- meshes (since version 3) ------------------------------------------ */
+typedef struct fluidsurf_mesh fluidsurf_mesh;
+
+/* The surface of particles p as a triangle mesh, without rendering (as
+ * `fluidsurf mesh` makes it): the mesh method's marching cubes of the scene's
+ * field (methods/mesh/README.md). params: nparams "param=value" settings of the
+ * method "mesh" (cube, smooth, smooth_iters, field, ...), applied after the
+ * scene's. r as fluidsurf_render settles it. FLUIDSURF_ERR_INPUT in a library
+ * built without OpenVDB (FS_WITH_OPENVDB=OFF, the lean build). */
+int fluidsurf_mesh_build(const fluidsurf_scene *s, const fluidsurf_particles *p, const char *const *params, int nparams,
+                         fluidsurf_mesh **out);
+size_t fluidsurf_mesh_vertex_count(const fluidsurf_mesh *m);
+size_t fluidsurf_mesh_triangle_count(const fluidsurf_mesh *m);
+/* 3 floats per vertex, scene units. */
+const float *fluidsurf_mesh_vertices(const fluidsurf_mesh *m);
+/* 3 floats per vertex: the unit outward normal -grad phi / |grad phi| (0, 0, 0
+ * where the gradient vanishes). */
+const float *fluidsurf_mesh_normals(const fluidsurf_mesh *m);
+/* 3 vertex indices per triangle, counter-clockwise seen from outside. */
+const uint32_t *fluidsurf_mesh_triangles(const fluidsurf_mesh *m);
+/* The radius r it was built with. */
+double fluidsurf_mesh_radius(const fluidsurf_mesh *m);
+void fluidsurf_mesh_free(fluidsurf_mesh *m);
 /* cffi:end */
 
 #pragma GCC visibility pop

@@ -4,11 +4,15 @@ exact reference and metrics, from NumPy arrays (docs/DESIGN.md, "The library").
     import fluidsurf
     out = fluidsurf.render(positions, 0.025, method="raycast_pca", width=256, height=256)
     out["depth"], out["normal"], out["rgb"], out["timings"]
+    vertices, faces, normals = fluidsurf.mesh(positions, 0.025)
 
 A thin layer over libfluidsurf.so (include/fluidsurf/fluidsurf.h) through cffi's
 ABI mode: the C declarations are read from the header installed beside this
 file, and every call into the library releases the GIL. Set FLUIDSURF_LIBRARY to
 load another build of the library."""
+import copy
+import errno
+import functools
 import os
 
 import numpy as np
@@ -16,7 +20,7 @@ from cffi import FFI
 
 from . import _arrays, _paths
 
-__all__ = ["Error", "read_particles", "read_gbuffer", "render", "compare", "metrics", "methods", "version"]
+__all__ = ["Error", "read_particles", "read_gbuffer", "render", "compare", "mesh", "metrics", "methods", "version"]
 
 _here = os.path.dirname(os.path.abspath(__file__))
 
@@ -55,6 +59,15 @@ def version():
     return _text(lib.fluidsurf_version())
 
 
+def _path(path, name):
+    """path for the library, as bytes; FileNotFoundError naming the argument when
+    nothing is there (the library would say ValueError, as for a bad file)."""
+    p = os.fspath(path)
+    if not os.path.exists(p):
+        raise FileNotFoundError(errno.ENOENT, f"{name}: no such file", os.fsdecode(p))
+    return os.fsencode(p)
+
+
 # ---- particles --------------------------------------------------------------
 
 class _Particles:
@@ -81,7 +94,7 @@ def read_particles(path, format=None):
     it holds: 'velocity' (N x 3), 'color' (N x 3 linear RGB), 'phase' (N int32),
     'radius' (when the file stores one)."""
     out = ffi.new("fluidsurf_particles **")
-    _check(lib.fluidsurf_particles_read(os.fsencode(path), format.encode() if format else ffi.NULL, out))
+    _check(lib.fluidsurf_particles_read(_path(path, "path"), format.encode() if format else ffi.NULL, out))
     p = ffi.gc(out[0], lib.fluidsurf_particles_free)
     n = lib.fluidsurf_particles_count(p)
 
@@ -106,15 +119,21 @@ def read_particles(path, format=None):
 
 # ---- scenes -----------------------------------------------------------------
 
-def _scene(scene, radius, width, height, camera):
+def _scene(scene, radius):
+    """A scene: the file's (scene=) or the defaults, with the caller's field settings."""
     out = ffi.new("fluidsurf_scene **")
     if scene is None:
         _check(lib.fluidsurf_scene_new(out))
     else:
-        _check(lib.fluidsurf_scene_load(os.fsencode(scene), out))
+        _check(lib.fluidsurf_scene_load(_path(scene, "scene"), out))
     s = ffi.gc(out[0], lib.fluidsurf_scene_free)
     if radius is not None:
         _check(lib.fluidsurf_scene_set_radius(s, _arrays.positive(radius, "radius")))
+    return s
+
+
+def _view(s, width, height, camera):
+    """The image size and, when given, the camera of scene s."""
     _check(lib.fluidsurf_scene_set_size(s, _arrays.size(width, "width"), _arrays.size(height, "height")))
     if camera is not None:
         _check(lib.fluidsurf_scene_set_camera(s, _camera(camera, width, height)))
@@ -136,17 +155,134 @@ def _camera(camera, width, height):
     return c
 
 
-def _settings(params, name="params"):
+# ---- methods and their parameters ---------------------------------------------
+
+def _typed(kind, value, choices):
+    """A parameter's number from the library as Python's type: an enum's name, int, bool, float."""
+    if kind == "enum":
+        return choices[int(value)]
+    return {"int": int, "bool": bool}.get(kind, float)(value)
+
+
+@functools.lru_cache(maxsize=None)
+def _registry():
+    """{method: its methods() entry, with 'table': {parameter: its entry}}, read once."""
+    info = ffi.new("fluidsurf_param *")
+    result = {}
+    for i in range(lib.fluidsurf_method_count()):
+        name = lib.fluidsurf_method_name(i)
+        params = []
+        for j in range(lib.fluidsurf_param_count(name)):
+            _check(lib.fluidsurf_param_info(name, j, info))
+            kind, choices = _text(info.type), [c for c in _text(info.choices).split("|") if c]
+            ranged = kind in ("int", "float")
+            params.append({"name": _text(info.name), "type": kind, "default": _typed(kind, info.default_value, choices),
+                           "min": _typed(kind, info.min, choices) if ranged else None,
+                           "max": _typed(kind, info.max, choices) if ranged else None,
+                           "choices": choices, "help": _text(info.help)})
+        result[_text(name)] = {"name": _text(name), "description": _text(lib.fluidsurf_method_description(name)),
+                               "paper": _text(lib.fluidsurf_method_paper(name)),
+                               "needs_gl": bool(lib.fluidsurf_method_needs_gl(name)), "params": params}
+    return result
+
+
+def _method(name, arg):
+    """name, a registered method, else ValueError naming the argument and listing them."""
+    if not isinstance(name, str):
+        raise ValueError(f"{arg}: expected a method name, got {name!r}")
+    if name not in _registry():
+        raise ValueError(f"{arg}: unknown method {name!r} (methods: {', '.join(_registry())})")
+    return name
+
+
+def _value_text(p, value):
+    """(text, None): value for parameter p (a methods() entry) as the library's
+    text, or (None, what is wrong with it)."""
+    kind = p["type"]
+    if kind == "enum":
+        ok = isinstance(value, str) and value in p["choices"]
+        return (value, None) if ok else (None, f"expected one of {', '.join(map(repr, p['choices']))}")
+    if kind == "bool":
+        if isinstance(value, str) and value in ("on", "off", "true", "false"):
+            return value, None
+        ok = isinstance(value, (bool, np.bool_, int, np.integer)) and value in (0, 1)
+        return ("on" if value else "off", None) if ok else (None, "expected True or False")
+    number = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, (bool, np.bool_))
+    if not number or not np.isfinite(value) or (kind == "int" and value != int(value)):
+        return None, f"expected {'an integer' if kind == 'int' else 'a number'}"
+    if not p["min"] <= value <= p["max"]:
+        return None, f"outside [{p['min']}, {p['max']}]"
+    return repr(int(value) if kind == "int" else float(value)), None
+
+
+def _setting(method, param, value, where):
+    """'param=value' for method, checked; where: the caller's argument, as written."""
+    table = {p["name"]: p for p in _registry()[method]["params"]}
+    if param not in table:
+        raise ValueError(f"{where}: {method} has no parameter {param!r} (its parameters: {', '.join(table) or 'none'})")
+    text, wrong = _value_text(table[param], value)
+    if wrong:
+        raise ValueError(f"{where}: {method}.{param} {value!r}: {wrong}")
+    return f"{param}={text}"
+
+
+def _split(key, value, arg):
+    """One flat key of params as (method, param, value, where): 'method.param' or
+    'param' (method None); where names the argument as the caller wrote it."""
+    if not isinstance(key, str):
+        raise ValueError(f"{arg}: expected parameter names as keys, got {key!r}")
+    method, _, param = key.rpartition(".")
+    return method or None, param, value, f"{arg}={{{key!r}: {value!r}}}"
+
+
+def _settings(method, params, arg="params"):
+    """params of one render of method, {parameter: value} or {'method.parameter':
+    value}, as the library's "param=value" texts, every one checked."""
     if params is None:
         return []
     if not isinstance(params, dict):
-        raise ValueError(f"{name}: expected a dict of parameter values, got {type(params).__name__}")
-    text = []
-    for k, v in params.items():
-        if isinstance(v, bool):
-            v = "on" if v else "off"
-        text.append(ffi.new("char[]", f"{k}={v}".encode()))
-    return text
+        raise ValueError(f"{arg}: expected a dict of parameter values, got {type(params).__name__}")
+    texts = []
+    for key, value in params.items():
+        m, param, v, where = _split(key, value, arg)
+        if m is not None and m != method:
+            raise ValueError(f"{where}: {m!r} is not the method rendered ({method!r})")
+        texts.append(_setting(method, param, v, where))
+    return texts
+
+
+def _study_settings(params, names, arg="params"):
+    """compare's params, {method: {parameter: value}} or {'method.parameter': value},
+    as {method: ["param=value", ...]} for the methods named (names), every one checked."""
+    if params is None:
+        return {}
+    if not isinstance(params, dict):
+        raise ValueError(f"{arg}: expected {{method: {{parameter: value}}}} or {{'method.parameter': value}}")
+    per = {}
+    for key, value in params.items():
+        m, param, v, where = _split(key, value, arg)
+        if m is None:  # {method: {parameter: value}}
+            m, param = param, None
+        if m not in names:
+            raise ValueError(f"{where}: {m!r} is not a method of this comparison ({', '.join(names)}); "
+                             f"expected {{method: {{parameter: value}}}} or {{'method.parameter': value}}")
+        if param is not None:
+            items = [(param, v, where)]
+        elif isinstance(value, dict):
+            items = [(p, v, f"{arg}={{{key!r}: {{{p!r}: {v!r}}}}}") for p, v in value.items()]
+        else:
+            raise ValueError(f"{where}: expected a dict of parameter values of {m}")
+        for p, v, w in items:
+            per.setdefault(m, []).append(_setting(m, p, v, w))
+    return per
+
+
+def methods():
+    """Every method: name, description, paper, needs_gl and its parameters, each
+    with name, type ('float', 'int', 'bool', 'enum'), default (of that type: an
+    enum's name), min and max (numbers; None for bool and enum), choices (an
+    enum's names) and help."""
+    return copy.deepcopy(list(_registry().values()))
 
 
 # ---- images -----------------------------------------------------------------
@@ -180,13 +316,17 @@ def _image_dict(im):
     return d
 
 
-def _render_handle(scene, particles, method, params):
-    if not isinstance(method, str):
-        raise ValueError(f"method: expected a method name, got {method!r}")
-    settings = _settings(params)
+def _c_settings(texts):
+    """("char *[]" or NULL, its count, the strings to keep alive) of "param=value" texts."""
+    keep = [ffi.new("char[]", t.encode()) for t in texts]
+    return (ffi.new("char *[]", keep) if keep else ffi.NULL), len(keep), keep
+
+
+def _render_handle(scene, particles, method, settings):
+    """An image handle: method on particles, with its checked "param=value" settings."""
+    arr, n, _keep = _c_settings(settings)
     out = ffi.new("fluidsurf_image **")
-    arr = ffi.new("char *[]", settings) if settings else ffi.NULL
-    _check(lib.fluidsurf_render(scene, particles.handle, method.encode(), arr, len(settings), out))
+    _check(lib.fluidsurf_render(scene, particles.handle, method.encode(), arr, n, out))
     return ffi.gc(out[0], lib.fluidsurf_image_free)
 
 
@@ -196,21 +336,26 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
 
     radius: r (None: the r the spacing implies, as the command line estimates);
     camera: {'eye', 'target', 'up', 'fov'} (None: frames the particles as the
-    command line does); params: {parameter: value} of the method; scene: a
-    scene file whose field, light and settings to use; colors: N x 3 linear RGB.
+    command line does); params: {parameter: value} (or {'method.parameter':
+    value}) of the method, values of the types methods() gives (an enum's name,
+    True/False); scene: a scene file whose field, light and settings to use;
+    colors: N x 3 linear RGB. A missing file raises FileNotFoundError; an unknown
+    method or parameter, or a bad value, ValueError naming it.
     Returns a dict of H x W float32 arrays 'depth' (inf where empty), 'normal'
     (view space), 'thickness', 'coverage', 'rgb' (linear, the shared shading),
     'alpha', the method's AOVs by name, and 'timings', 'provenance', 'radius'
     and 'camera' (the framing chosen: pass it on to keep a sequence's view)."""
+    method = _method(method, "method")
+    settings = _settings(method, params)
     p = _Particles(positions, colors)
-    s = _scene(scene, radius, width, height, camera)
-    return _image_dict(_render_handle(s, p, method, params))
+    s = _view(_scene(scene, radius), width, height, camera)
+    return _image_dict(_render_handle(s, p, method, settings))
 
 
 def read_gbuffer(path):
     """A G-buffer EXR that fluidsurf wrote (render -o OUT.exr, compare), as render's dict."""
     out = ffi.new("fluidsurf_image **")
-    _check(lib.fluidsurf_image_read(os.fsencode(path), out))
+    _check(lib.fluidsurf_image_read(_path(path, "path"), out))
     return _image_dict(ffi.gc(out[0], lib.fluidsurf_image_free))
 
 
@@ -264,17 +409,21 @@ def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=
             reference="reference", scene=None, colors=None):
     """Each method against the reference on one particle set: a list of dicts
     (method, the metrics, total_ms), or a pandas DataFrame when pandas is there.
-    params: {method: {parameter: value}}."""
+    params: {method: {parameter: value}} or {'method.parameter': value}, for the
+    methods and the reference; every method and parameter is checked before the
+    first render (ValueError naming it)."""
     if isinstance(methods, str) or not all(isinstance(m, str) for m in methods):
         raise ValueError(f"methods: expected a list of method names, got {methods!r}")
-    if params is not None and not isinstance(params, dict):
-        raise ValueError("params: expected {method: {parameter: value}}")
+    for name in methods:
+        _method(name, "methods")
+    reference = _method(reference, "reference")
+    settings = _study_settings(params, [*methods, reference] if reference not in methods else list(methods))
     p = _Particles(positions, colors)
-    s = _scene(scene, radius, width, height, camera)
-    ref = _render_handle(s, p, reference, None)
+    s = _view(_scene(scene, radius), width, height, camera)
+    ref = _render_handle(s, p, reference, settings.get(reference, []))
     rows = []
     for name in methods:
-        im = _render_handle(s, p, name, (params or {}).get(name))
+        im = _render_handle(s, p, name, settings.get(name, []))
         total = sum(lib.fluidsurf_image_stage_ms(im, i) for i in range(lib.fluidsurf_image_stage_count(im)))
         rows.append({"method": name, **_metrics(im, ref, 0), "total_ms": total})
     try:
@@ -284,19 +433,26 @@ def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=
     return pandas.DataFrame(rows)
 
 
-def methods():
-    """Every method: name, description, paper, needs_gl and its parameters."""
-    info = ffi.new("fluidsurf_param *")
-    result = []
-    for i in range(lib.fluidsurf_method_count()):
-        name = lib.fluidsurf_method_name(i)
-        params = []
-        for j in range(lib.fluidsurf_param_count(name)):
-            _check(lib.fluidsurf_param_info(name, j, info))
-            params.append({"name": _text(info.name), "type": _text(info.type), "default": info.default_value,
-                           "min": info.min, "max": info.max, "choices": _text(info.choices),
-                           "help": _text(info.help)})
-        result.append({"name": _text(name), "description": _text(lib.fluidsurf_method_description(name)),
-                       "paper": _text(lib.fluidsurf_method_paper(name)),
-                       "needs_gl": bool(lib.fluidsurf_method_needs_gl(name)), "params": params})
-    return result
+def mesh(positions, radius=None, params=None, scene=None):
+    """The surface of positions (N x 3) as a triangle mesh, as `fluidsurf mesh`
+    makes it: marching cubes of the scene's field (the mesh method,
+    methods/mesh/README.md), without rendering. Returns (vertices, faces,
+    normals): N x 3 float32 in scene units, M x 3 int64 vertex indices wound
+    counter-clockwise seen from outside, N x 3 float32 unit outward normals (the
+    field's gradient; 0 where it vanishes), as pysplashsurf's reconstruction
+    gives them. radius and scene as render(); params: {parameter: value} of the
+    method mesh (cube, the voxel size in r; smooth; smooth_iters; field; ...).
+    A library built without OpenVDB refuses (ValueError naming the option)."""
+    # without OpenVDB the method is not registered: the library's refusal says why
+    settings = _settings("mesh", params) if "mesh" in _registry() else []
+    p = _Particles(positions)
+    s = _scene(scene, radius)
+    arr, n, _keep = _c_settings(settings)
+    out = ffi.new("fluidsurf_mesh **")
+    _check(lib.fluidsurf_mesh_build(s, p.handle, arr, n, out))
+    m = ffi.gc(out[0], lib.fluidsurf_mesh_free)
+    nv, nt = lib.fluidsurf_mesh_vertex_count(m), lib.fluidsurf_mesh_triangle_count(m)
+    vertices = _arrays.rows(ffi, lib.fluidsurf_mesh_vertices(m), nv, np.float32)
+    normals = _arrays.rows(ffi, lib.fluidsurf_mesh_normals(m), nv, np.float32)
+    faces = _arrays.rows(ffi, lib.fluidsurf_mesh_triangles(m), nt, np.uint32).astype(np.int64)
+    return vertices, faces, normals

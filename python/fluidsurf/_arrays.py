@@ -66,6 +66,13 @@ def layer(ffi, ptr, w, h, ncomp):
     return a.reshape((h, w)) if ncomp == 1 else a.reshape((h, w, ncomp))
 
 
+def rows(ffi, ptr, n, dtype):
+    """A copy of n rows of 3 values of dtype at ptr as an n x 3 array (empty when n is 0)."""
+    if n == 0 or ptr == ffi.NULL:
+        return np.zeros((0, 3), dtype)
+    return np.frombuffer(ffi.buffer(ptr, n * 3 * np.dtype(dtype).itemsize), dtype=dtype).reshape((n, 3)).copy()
+
+
 def image_array(value, shape, name, required=True):
     """value as a C-ordered float32 array of this shape (None when not required)."""
     if value is None:

@@ -169,7 +169,6 @@ BAD_ARGS = [
     ({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}}, "^camera: eye equals target"),
     ({"camera": {"eye": [0, 0, 1], "target": [0, 0, 0], "zoom": 2}}, "^camera: unknown keys"),
     ({"colors": np.zeros((3, 3))}, r"^colors: expected shape \(4, 3\)"),
-    ({"scene": "/nonexistent/scene.json"}, "/nonexistent/scene.json"),
 ]
 
 
@@ -181,8 +180,6 @@ def test_bad_arguments(kwargs, words):
 
 
 def test_bad_files_and_images(tmp_path):
-    with pytest.raises(ValueError, match="missing.ply"):
-        fluidsurf.read_particles(str(tmp_path / "missing.ply"))
     junk = tmp_path / "junk.ply"
     junk.write_bytes(b"ply\nformat nonsense\n")
     with pytest.raises(ValueError, match="junk.ply"):
@@ -247,3 +244,165 @@ def test_require_gpu_reaches_the_library():
     env = {**os.environ, "FLUIDSURF_REQUIRE_GPU": "1", "FLUIDSURF_GL": "osmesa"}
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True).stdout
     assert re.fullmatch(r"FLUIDSURF_REQUIRE_GPU=1: the OpenGL renderer is llvmpipe.*, a software rasterizer\n", out), out
+
+
+# ---- issue 32, part 7: Python's own errors, typed methods(), mesh() -------------
+
+def test_missing_files_raise_file_not_found(tmp_path):
+    """A path that leads nowhere is FileNotFoundError (an OSError, not a ValueError),
+    naming the argument and the path, for every function that takes one."""
+    missing = str(tmp_path / "missing.ply")
+    p = np.zeros((1, 3), np.float32)
+    calls = [
+        ("path", lambda: fluidsurf.read_particles(missing)),
+        ("path", lambda: fluidsurf.read_gbuffer(missing)),
+        ("scene", lambda: fluidsurf.render(p, R, method="spheres", width=16, height=16, scene=missing)),
+        ("scene", lambda: fluidsurf.compare(p, R, methods=["spheres"], width=16, height=16, scene=missing)),
+        ("scene", lambda: fluidsurf.mesh(p, R, scene=missing)),
+    ]
+    for arg, call in calls:
+        with pytest.raises(FileNotFoundError) as e:
+            call()
+        assert not isinstance(e.value, ValueError)
+        assert e.value.errno == 2 and e.value.filename == missing
+        assert str(e.value) == f"[Errno 2] {arg}: no such file: '{missing}'"
+
+
+P4 = np.random.default_rng(1).random((4, 3), dtype=np.float32)
+PCA_PARAMS = "its parameters: splat_radius, step, max_steps, refine, step_back, normals,"
+UNKNOWN = [
+    # compare's params: a key that is no method of the comparison, a method.param the method lacks
+    (lambda: fluidsurf.compare(P4, R, methods=["spheres"], params={"radius_scale": 2}),
+     r"^params=\{'radius_scale': 2\}: 'radius_scale' is not a method of this comparison \(spheres, reference\)"),
+    (lambda: fluidsurf.compare(P4, R, methods=["raycast_pca"], params={"raycast_pca.normal": "pca"}),
+     r"^params=\{'raycast_pca.normal': 'pca'\}: raycast_pca has no parameter 'normal' \(" + PCA_PARAMS),
+    (lambda: fluidsurf.compare(P4, R, methods=["raycast_pca"], params={"raycast_pca": {"normal": "pca"}}),
+     r"^params=\{'raycast_pca': \{'normal': 'pca'\}\}: raycast_pca has no parameter 'normal' \(" + PCA_PARAMS),
+    (lambda: fluidsurf.compare(P4, R, methods=["spheres"], params={"reference.nosuch": 1}),
+     r"^params=\{'reference.nosuch': 1\}: reference has no parameter 'nosuch' \(its parameters: step_min,"),
+    (lambda: fluidsurf.compare(P4, R, methods=["spheres"], params={"spheres": 2}),
+     r"^params=\{'spheres': 2\}: expected a dict of parameter values of spheres"),
+    (lambda: fluidsurf.compare(P4, R, methods=["spheres", "nosuch"]),
+     r"^methods: unknown method 'nosuch' \(methods: .*reference.*raycast_pca"),
+    (lambda: fluidsurf.compare(P4, R, methods=["spheres"], reference="nosuch"),
+     r"^reference: unknown method 'nosuch' \(methods: .*reference"),
+    # render's params: {parameter: value} or {'method.parameter': value} of its method
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"normal": "pca"}),
+     r"^params=\{'normal': 'pca'\}: raycast_pca has no parameter 'normal' \(" + PCA_PARAMS),
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"aniso_ssf.kappa": 4}),
+     r"^params=\{'aniso_ssf.kappa': 4\}: 'aniso_ssf' is not the method rendered \('raycast_pca'\)"),
+    (lambda: fluidsurf.render(P4, R, method="nosuch"), r"^method: unknown method 'nosuch' \(methods: .*spheres"),
+    # values, checked against methods()' types and ranges
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"normals": "zz"}),
+     r"^params=\{'normals': 'zz'\}: raycast_pca.normals 'zz': expected one of 'basic', 'pca', 'blend'$"),
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"normals": 1}),
+     r"^params=\{'normals': 1\}: raycast_pca.normals 1: expected one of"),
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"min_neighbors": 2.5}),
+     r"^params=\{'min_neighbors': 2.5\}: raycast_pca.min_neighbors 2.5: expected an integer$"),
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"min_neighbors": -5}),
+     r"^params=\{'min_neighbors': -5\}: raycast_pca.min_neighbors -5: outside \[3, 1000000\]$"),
+    (lambda: fluidsurf.render(P4, R, method="raycast_pca", params={"step": "far"}),
+     r"^params=\{'step': 'far'\}: raycast_pca.step 'far': expected a number$"),
+    (lambda: fluidsurf.render(P4, R, method="spheres", params={"thickness": 2}),
+     r"^params=\{'thickness': 2\}: spheres.thickness 2: expected True or False$"),
+    (lambda: fluidsurf.mesh(P4, R, params={"nosuch": 1}),
+     r"^params=\{'nosuch': 1\}: mesh has no parameter 'nosuch' \(its parameters: cube, smooth,"),
+]
+
+
+@pytest.mark.parametrize("call,words", UNKNOWN)
+def test_unknown_methods_parameters_and_values(call, words):
+    """Each is refused before any render, naming the argument as Python wrote it
+    and what is valid; no message speaks of the command line's flags."""
+    with pytest.raises(ValueError, match=words) as e:
+        call()
+    assert "--" not in str(e.value)
+
+
+def test_library_messages_name_no_flags():
+    """A setting the module does not check (a scene's) reaches the library, whose
+    message names it as written, lists the valid names and quotes no flag."""
+    scene = fluidsurf._scene(None, R)
+    assert fluidsurf.lib.fluidsurf_scene_set(scene, b"reference.nosuch=1") == 0
+    with pytest.raises(ValueError) as e:
+        fluidsurf._render_handle(scene, fluidsurf._Particles(P4), "reference", [])
+    assert str(e.value).startswith("reference.nosuch=1: reference has no parameter 'nosuch' (its parameters: step_min,")
+    for bad in (["normals=zz"], ["min_neighbors=-5"]):
+        with pytest.raises(ValueError) as e:
+            fluidsurf._render_handle(fluidsurf._scene(None, R), fluidsurf._Particles(P4), "raycast_pca", bad)
+        assert re.match(r"raycast_pca\.(normals: 'zz' is not one of|min_neighbors: -5 is outside)", str(e.value)), e.value
+        assert "--" not in str(e.value)
+
+
+def test_methods_defaults_are_typed():
+    """An enum's default is its name, ints are int, floats float, bools bool; and
+    every method's defaults, handed back as params, are accepted as they are."""
+    ms = {m["name"]: m for m in fluidsurf.methods()}
+    kinds = set()
+    for m in ms.values():
+        for p in m["params"]:
+            kinds.add(p["type"])
+            want = {"enum": str, "int": int, "float": float, "bool": bool}[p["type"]]
+            assert type(p["default"]) is want, (m["name"], p)
+            if p["type"] == "enum":
+                assert p["default"] in p["choices"] and p["min"] is None and p["max"] is None
+            elif p["type"] in ("int", "float"):
+                assert type(p["min"]) is want and type(p["max"]) is want and p["min"] <= p["default"] <= p["max"]
+        defaults = {p["name"]: p["default"] for p in m["params"]}
+        assert len(fluidsurf._settings(m["name"], defaults)) == len(defaults)
+    assert kinds == {"enum", "int", "float", "bool"}
+    ref = {p["name"]: p["default"] for p in ms["reference"]["params"]}
+    assert ref["interior"] == "auto" and ref["thickness"] is True and ref["max_layers"] == 64 and ref["step_min"] == 0.02
+    pca = {p["name"]: p for p in ms["raycast_pca"]["params"]}
+    assert pca["normals"]["default"] == "blend" and pca["normals"]["choices"] == ["basic", "pca", "blend"]
+    # the defaults given back render what no params render
+    p = np.random.default_rng(3).random((300, 3), dtype=np.float32) * 0.3
+    plain = fluidsurf.render(p, R, method="reference", width=24, height=24)
+    again = fluidsurf.render(p, R, method="reference", width=24, height=24, params=ref)
+    np.testing.assert_array_equal(plain["depth"], again["depth"])
+    # methods() is a copy: changing it changes nothing
+    ms["reference"]["params"].clear()
+    assert len({m["name"]: m for m in fluidsurf.methods()}["reference"]["params"]) == len(ref)
+
+
+def ball(radius_in_r=8):
+    """A ball of particles on a lattice of spacing 2r, centred at (1, 2, 3)."""
+    k = np.arange(-radius_in_r // 2, radius_in_r // 2 + 1)
+    g = np.stack(np.meshgrid(k, k, k, indexing="ij"), axis=-1).reshape(-1, 3) * 2 * R
+    return (g[np.linalg.norm(g, axis=1) <= radius_in_r * R * 1.0001] + [1, 2, 3]).astype(np.float32)
+
+
+def test_mesh_of_a_ball():
+    """mesh() is pysplashsurf's triple: a closed mesh around the ball, its faces
+    indexing its vertices, its normals unit and outward."""
+    centre, outer = np.array([1, 2, 3]), 8 * R
+    v, f, n = fluidsurf.mesh(ball(), R)
+    assert v.dtype == np.float32 and n.dtype == np.float32 and f.dtype == np.int64
+    assert v.ndim == 2 and v.shape[1] == 3 and n.shape == v.shape and f.ndim == 2 and f.shape[1] == 3
+    assert len(v) > 100 and len(f) > 100
+    assert f.min() >= 0 and f.max() < len(v)
+    d = np.linalg.norm(v - centre, axis=1)
+    # the iso-surface of a lattice ball lies within r of its outer particles' centres
+    assert outer - R < d.min() and d.max() < outer + R, (d.min(), d.max())
+    np.testing.assert_allclose(np.linalg.norm(n, axis=1), 1, atol=1e-5)
+    assert (np.sum(n * (v - centre), axis=1) / d > 0.5).all()
+    # closed and consistently wound: every directed edge once, its reverse once
+    edges = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
+    key = edges[:, 0] * len(v) + edges[:, 1]
+    assert len(np.unique(key)) == len(key)
+    assert np.isin(edges[:, 1] * len(v) + edges[:, 0], key).all()
+    # the enclosed volume is the ball's (wound outward: positive)
+    vol = np.einsum("ij,ij->i", v[f[:, 0]] - centre, np.cross(v[f[:, 1]] - centre, v[f[:, 2]] - centre)).sum() / 6
+    assert 4 / 3 * np.pi * (outer - R) ** 3 < vol < 4 / 3 * np.pi * (outer + R) ** 3
+    # parameters are the mesh method's: a finer cube gives more vertices
+    fine, _, _ = fluidsurf.mesh(ball(), R, params={"cube": 0.25})
+    assert len(fine) > 3 * len(v)
+
+
+def test_mesh_equals_the_command_line(tmp_path):
+    """mesh() of a file's positions is `fluidsurf mesh`'s mesh: the same counts."""
+    out = subprocess.run([BIN, "mesh", BGEO, "-o", str(tmp_path / "m.ply"), "--radius", str(R), "--timings", "-q"],
+                         check=True, capture_output=True, text=True).stdout
+    total = [line.split(",") for line in out.splitlines() if ",total," in line]
+    v, f, _ = fluidsurf.mesh(fluidsurf.read_particles(BGEO)["positions"], R)
+    assert (len(v), len(f)) == (int(total[0][3]), int(total[0][4]))
