@@ -23,8 +23,20 @@ int cli_usage(const char *cmd, const char *fmt, ...) __attribute__((format(print
  * CMake option when this build leaves a built-in method out ("--method levelset
  * needs a build with FS_WITH_OPENVDB=ON"), else it is cli_usage's "unknown method". */
 int cli_unknown_method(const char *cmd, const char *option, const char *name);
-/* A scene from SCENE.json, or a default scene around a particle file. */
+/* A scene from SCENE.json, or a default scene around a particle file (its up
+ * axis auto: the first frame decides). */
 int cli_scene_from_arg(fs_scene *s, const char *arg);
+/* --up, --volume-scale, --iso, --support, --kernel (CLI_OPT_SCENE): set ones
+ * win over the scene file's; unset ones are -1 (up, kernel) or 0. */
+enum { CLI_UP_AUTO = 3 };
+typedef struct cli_scene_opts {
+    int up, kernel;
+    float volume_scale, iso, support;
+} cli_scene_opts;
+#define CLI_SCENE_OPTS_UNSET {.up = -1, .kernel = -1}
+/* Applies the set options to s, and folds them into its hash (a different
+ * field is a different scene to diff and the caches). */
+void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o);
 /* Parses a positive integer / float option value; 2 on error. */
 int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out);
 int cli_float(const char *cmd, const char *opt, const char *text, double lo, double hi, float *out);

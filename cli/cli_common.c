@@ -37,6 +37,12 @@ int cli_unknown_method(const char *cmd, const char *option, const char *name)
     return cli_usage(cmd, "unknown method '%s' (see 'fluidsurf methods')", name);
 }
 
+static unsigned long long fnv1a(unsigned long long h, const void *data, size_t n)
+{
+    for (size_t i = 0; i < n; i++) h = (h ^ ((const unsigned char *)data)[i]) * 1099511628211ull;
+    return h;
+}
+
 int cli_scene_from_arg(fs_scene *s, const char *arg)
 {
     size_t n = strlen(arg);
@@ -44,10 +50,21 @@ int cli_scene_from_arg(fs_scene *s, const char *arg)
     fs_scene_defaults(s);
     if (n >= sizeof s->source) return fs_fail(FS_ERR_INPUT, "%s: path too long", arg);
     strcpy(s->source, arg);
-    unsigned long long h = 1469598103934665603ull;
-    for (const char *p = arg; *p; p++) h = (h ^ (unsigned char)*p) * 1099511628211ull;
-    s->hash = h;
+    s->up_source = FS_UP_AUTO;
+    s->hash = fnv1a(1469598103934665603ull, arg, n);
     return FS_OK;
+}
+
+void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o)
+{
+    if (o->up == CLI_UP_AUTO) s->up_source = FS_UP_AUTO;
+    else if (o->up >= 0) s->up_axis = o->up, s->up_source = FS_UP_OPTION;
+    if (o->kernel >= 0) s->kernel = (fs_kernel)o->kernel;
+    if (o->volume_scale > 0) s->volume_scale = o->volume_scale;
+    if (o->iso > 0) s->iso = o->iso;
+    if (o->support > 0) s->support_r = o->support;
+    if (o->up >= 0 || o->kernel >= 0 || o->volume_scale > 0 || o->iso > 0 || o->support > 0)
+        s->hash = fnv1a(s->hash, o, sizeof *o);
 }
 
 int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out)

@@ -97,11 +97,13 @@ static int mesh_frame(mesh_job *j, int frame)
 }
 
 /* IN as a scene: a .json, a file, or a pattern with --frames. */
-static int scene_of(const char *in, const char *frames, fs_scene *s, int *first, int *last)
+static int scene_of(const char *in, const char *frames, const cli_scene_opts *sopts, fs_scene *s, int *first, int *last)
 {
     char pat[FS_PATH_MAX];
     int rc = cli_scene_from_arg(s, in);
     if (rc) return cli_error(rc);
+    if (s->up_source == FS_UP_AUTO) s->up_source = FS_UP_DEFAULT; /* a mesh has no up: no note */
+    cli_scene_opts_apply(s, sopts);
     int json = strlen(in) > 5 && !strcmp(in + strlen(in) - 5, ".json");
     if (!json && is_pattern(in)) {
         if (!frames) return cli_usage("mesh", "%s: a frame pattern needs --frames FIRST:LAST", in);
@@ -123,10 +125,13 @@ int cmd_mesh(int argc, char **argv)
     int nsets = 0, timings = 0, quiet = 0, rc;
     static fs_scene scene;
     mesh_job j = {.scene = &scene};
+    cli_scene_opts sopts = CLI_SCENE_OPTS_UNSET;
     const cli_opt opts[] = {
         CLI_OPT_OUT(out, "OUT.ply|.obj|.vtk|.vtp", "the mesh file (a {} pattern for several frames)"),
         CLI_OPT_SET(sets, nsets),
-        CLI_OPT_RADIUS(j.radius, "the scene's, else the file's, else 0.025"),
+        CLI_OPT_RADIUS(j.radius, "the scene's, else the file's, else estimated from\n"
+                       "the particle spacing (a note says so; fluidsurf info shows it)"),
+        CLI_OPT_FIELD(sopts),
         CLI_STRING_OPT("--frames", frames, "A:B", "frames of a pattern input"),
         CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the mesh size (CSV on stdout)"),
@@ -142,7 +147,7 @@ int cmd_mesh(int argc, char **argv)
     if (!m) return cli_usage("mesh", "the mesh method is not registered");
     if (!fs_mesh_export_known(out))
         return cli_usage("mesh", "%s: unknown mesh format (the mesh exports %s)", out, FS_MESH_EXPORTS);
-    if ((rc = scene_of(in, frames, &scene, &j.first, &j.last))) return rc;
+    if ((rc = scene_of(in, frames, &sopts, &scene, &j.first, &j.last))) return rc;
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
     if (j.last > j.first && !is_pattern(out)) return cli_usage("mesh", "%s: %d frames need {} in -o", out, j.last - j.first + 1);
     if (cli_same_file(in, out)) return cli_usage("mesh", "%s: output would overwrite the input", out);

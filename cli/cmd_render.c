@@ -178,6 +178,7 @@ int cmd_render(int argc, char **argv)
     const char *input = NULL, *out = NULL, *mname = "reference", *format = NULL, *cache_dir = NULL;
     int w = 0, h = 0, frame = -1, timings = 0, counters = 0, quiet = 0, own_look = 0, require_gpu = 0, rc;
     float radius = 0;
+    cli_scene_opts sopts = CLI_SCENE_OPTS_UNSET;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     static fs_scene scene;
     const char *sets[FS_MAX_SETS], *exports[4];
@@ -187,7 +188,9 @@ int cmd_render(int argc, char **argv)
         CLI_OPT_OUT(out, "OUT.png|OUT.exr", "the image: PNG, or EXR with the G-buffer and provenance"),
         CLI_OPT_SET(sets, nsets),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
-        CLI_OPT_RADIUS(radius, "the scene's, else 0.025"),
+        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else estimated from\n"
+                       "the particle spacing (a note says so; fluidsurf info shows it)"),
+        CLI_OPT_SCENE(sopts),
         CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
         CLI_INT_OPT("--frame", frame, 0, 100000000, "N", "frame of a sequence scene (default: its first)"),
         CLI_OPT_GL(ctx_kind),
@@ -221,6 +224,7 @@ int cmd_render(int argc, char **argv)
     if ((rc = check_cache(m, cache_dir, out))) return rc;
     if (counters && (rc = fs_run_check_counters(m))) return cli_error(rc);
     if ((rc = cli_scene_from_arg(&scene, input))) return cli_error(rc);
+    cli_scene_opts_apply(&scene, &sopts);
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
     for (int i = 0; i < nsets; i++)
         if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);

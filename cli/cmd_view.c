@@ -409,6 +409,7 @@ typedef struct view_options {
     const char *const *sets;
     int nsets, W, H, gpu, paused, verbose, max_frames, particles, method;
     float scale, radius, dt;
+    cli_scene_opts field;
 } view_options;
 
 /* Everything the user typed is checked before a window opens: the scene, the
@@ -419,6 +420,7 @@ static int check_input(viewer *w, const view_options *o)
     int rc;
     if (o->simulate) fs_scene_defaults(&w->scene);
     else if ((rc = cli_scene_from_arg(&w->scene, o->input))) return rc;
+    cli_scene_opts_apply(&w->scene, &o->field);
     for (int i = 0; i < o->nsets; i++)
         if ((rc = fs_scene_add_set(&w->scene, o->sets[i]))) return rc;
     double check[FS_MAX_PARAMS];
@@ -530,6 +532,7 @@ int cmd_view(int argc, char **argv)
     const char *input = NULL, *simulate = NULL, *mname = NULL, *script = NULL, *events = NULL;
     int W = 0, H = 0, gpu = 0, paused = 0, verbose = 0, max_frames = 0, particles = 0, require_gpu = 0, rc;
     float scale = 1, radius = 0, dt = 1.0f / 60;
+    cli_scene_opts field = CLI_SCENE_OPTS_UNSET;
     const char *sets[FS_MAX_SETS];
     int nsets = 0;
     const cli_opt opts[] = {
@@ -543,7 +546,9 @@ int cmd_view(int argc, char **argv)
         CLI_OPT_SET(sets, nsets),
         CLI_OPT_SIZE(W, H, 16, 8192, "window", "the scene's image size, else 800x600"),
         CLI_FLOAT_OPT("--scale", scale, 1.0 / 16, 2, "S", "G-buffer size / window size, 1/16..2 (default 1)"),
-        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
+        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else estimated from\n"
+                       "the particle spacing (a note says so; fluidsurf info shows it)"),
+        CLI_OPT_SCENE(field),
         CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_FLAG_OPT("--paused", paused, "start paused"),
         CLI_INT_OPT("--frames", max_frames, 1, 100000000, "N", "quit after N displayed frames"),
@@ -559,12 +564,13 @@ int cmd_view(int argc, char **argv)
     if (!input == !simulate) return cli_usage("view", "give a scene or particle file, or --simulate NAME (not both)");
     if (script && events) return cli_usage("view", "--script and --events: give one");
     if (!simulate && (gpu || particles)) return cli_usage("view", "--gpu and --particles apply to --simulate only");
+    if (simulate && field.up >= 0) return cli_usage("view", "--up applies to a scene or particle file (the simulator's is y)");
     int mi = 0;
     if (mname) {
         for (mi = 0; mi < fs_method_count() && strcmp(fs_method_at(mi)->name, mname); mi++) {}
         if (mi == fs_method_count()) return cli_unknown_method("view", "--method", mname);
     }
     const view_options o = {input, simulate, script, events, sets, nsets, W, H, gpu, paused, verbose, max_frames,
-                            particles, mi, scale, radius, dt};
+                            particles, mi, scale, radius, dt, field};
     return view_main(&o);
 }

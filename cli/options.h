@@ -66,6 +66,23 @@ typedef struct cli_opt {
 #define CLI_OPT_QUIET(var) CLI_FLAG_OPT("-q", var, "quiet: no notes or progress on stderr")
 #define CLI_OPT_RADIUS_IN(var, l, h, dflt) CLI_FLOAT_OPT("--radius", var, l, h, "R", "particle radius r (default: " dflt ")")
 #define CLI_OPT_RADIUS(var, dflt) CLI_OPT_RADIUS_IN(var, 1e-9, 1e9, dflt)
+/* The field and up axis over the scene's (cli_scene_opts in cli.h); mesh,
+ * which has no camera, takes the field only. */
+#define CLI_OPT_UP(o)                                                                                   \
+    CLI_CHOICE_OPT("--up", (o).up, "auto|x|y|z", ((const int[]){CLI_UP_AUTO, 0, 1, 2}),                \
+                   "the up axis (default: the scene's, else y; auto for a\n"                            \
+                   "particle file: its format's convention, else its thinnest\n"                        \
+                   "axis, the pile-up breaking ties; a note names it)")
+#define CLI_OPT_FIELD(o)                                                                                \
+    CLI_FLOAT_OPT("--volume-scale", (o).volume_scale, 1e-6, 1e6, "S",                                  \
+                  "particle volume V = S (2r)^3 (default: the scene's, else 1)"),                       \
+    CLI_FLOAT_OPT("--iso", (o).iso, 1e-6, 1e6, "T", "iso value of the density field (default: the\n"    \
+                  "scene's, else 0.6)"),                                                                 \
+    CLI_FLOAT_OPT("--support", (o).support, 0.5, 64, "K", "kernel support H = K r (default: the scene's,\n" \
+                  "else 4)"),                                                                            \
+    CLI_CHOICE_OPT("--kernel", (o).kernel, "cubic|poly6|spiky|wyvill", NULL,                            \
+                   "the field's kernel (default: the scene's, else cubic)")
+#define CLI_OPT_SCENE(o) CLI_OPT_UP(o), CLI_OPT_FIELD(o)
 
 /* The positional arguments: up to max of them go to v[0..], counted in *n
  * (when n is given). too_many is the error's printf format; its arguments

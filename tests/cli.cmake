@@ -72,3 +72,10 @@ add_test(NAME cli_require_gpu COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_requi
          ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_require_gpu $<BOOL:${FS_WITH_OSMESA}>
          $<BOOL:${FS_WITH_GLFW}> $<TARGET_FILE:render_bench>)
 set_tests_properties(cli_require_gpu PROPERTIES ENVIRONMENT "${FS_TEST_ENV}" TIMEOUT 180 SKIP_RETURN_CODE 77)
+# A particle file's scene from the command line: --up auto|x|y|z with its note, the
+# field options, r_source in the provenance (read from the EXRs: OpenImageIO's iinfo).
+if(FS_WITH_OIIO)
+  add_test(NAME cli_scene_axes COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_scene_axes.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_scene_axes)
+  set_tests_properties(cli_scene_axes PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+endif()

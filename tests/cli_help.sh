@@ -10,15 +10,15 @@ fails=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 declare -A want=(
-  [render]="--method -o --set -W --width -H --height --radius --format --frame --gl --require-gpu --timings --counters --export --appearance --cache -q"
-  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --shard --counters -W --width -H --height --radius --gl --require-gpu -q"
-  [merge]="-o -q"
+  [render]="--method -o --set -W --width -H --height --radius --up --volume-scale --iso --support --kernel --format --frame --gl --require-gpu --timings --counters --export --appearance --cache -q"
+  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --force --shard --counters -W --width -H --height --radius --up --volume-scale --iso --support --kernel --gl --require-gpu -q"
+  [merge]="-o --force -q"
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius --strict --json -o --normal-scale --depth-scale"
   [info]="--radius --volume-scale --format"
   [convert]="-o --from --to"
   [methods]=""
   [simulate]="--frames -o --particles --cpu --gpu --gl --require-gpu --eos --fps --dt --substeps --radius --nu --sound-speed --k --cfl --stats -q"
-  [view]="--simulate --particles --gpu --dt --method --set -W --width -H --height --scale --radius --require-gpu --paused --frames -v --script --events"
+  [view]="--simulate --particles --gpu --dt --method --set -W --width -H --height --scale --radius --up --volume-scale --iso --support --kernel --require-gpu --paused --frames -v --script --events"
 )
 
 shared="-o -W --width -H --height --gl --set -q --radius"

@@ -1,6 +1,7 @@
 #include "fs_error.h"
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 static _Thread_local char fs_msg[1024];
 static _Thread_local int fs_code;
@@ -45,5 +46,9 @@ void fs_note(const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "fluidsurf: note: %s\n", line);
+    /* a note of several lines: each its own prefixed line */
+    for (char *l = line, *nl; l; l = nl) {
+        if ((nl = strchr(l, '\n'))) *nl++ = 0;
+        fprintf(stderr, "fluidsurf: note: %s\n", l);
+    }
 }

@@ -3,6 +3,7 @@
 #include "particle_io.h"
 #include "particle_stats.h"
 #include "synthetic.h"
+#include "up_axis.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -23,30 +24,54 @@ int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p)
 }
 
 /* Where r came from, for the notes. */
-static const char *radius_source(const fs_scene *s, const fs_particles *p, float radius_opt)
+static const char *radius_source(const fs_scene *s)
 {
-    return radius_opt > 0 ? "--radius" : s->path[0] ? "the scene" : p->radius > 0 ? "the file" : NULL;
+    switch (s->r_source) {
+    case FS_R_OPTION: return "--radius";
+    case FS_R_SCENE: return "the scene";
+    case FS_R_FILE: return "the file";
+    default: return NULL;
+    }
 }
 
-void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)
+/* r: the option's, else the scene file's, else the particle file's, else the
+ * spacing's (note), else the default (note). */
+static void settle_radius(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)
 {
-    note[0] = 0;
-    const char *from = radius_source(s, p, radius_opt);
-    if (radius_opt > 0) s->radius = radius_opt;
-    else if (!s->path[0] && p->radius > 0) s->radius = p->radius;
+    if (radius_opt > 0) s->radius = radius_opt, s->r_source = FS_R_OPTION;
+    else if (!s->synth.shape && s->r_source != FS_R_SCENE && p->radius > 0) s->radius = p->radius, s->r_source = FS_R_FILE;
     float est = 0;
     /* a synthetic set is made at its r: nothing to estimate or check */
     int have_est = s->synth.shape == FS_SYNTH_NONE && fs_particles_estimate_radius(p, &est) == FS_OK;
     if (!have_est) fs_error_clear();
+    const char *from = radius_source(s);
     if (!from && have_est) {
         s->radius = est;
-        snprintf(note, (size_t)size, "%s gives no particle radius: r = %g estimated from its spacing (set --radius)",
+        s->r_source = FS_R_ESTIMATED;
+        snprintf(note, (size_t)size, "%.400s gives no particle radius: r = %g estimated from its spacing (set --radius)",
                  s->source, est);
     } else if (!from && s->synth.shape == FS_SYNTH_NONE) {
-        snprintf(note, (size_t)size, "%s: used r = %g (set --radius)", s->source, s->radius);
+        snprintf(note, (size_t)size, "%.400s: used the default r = %g (set --radius)", s->source, s->radius);
     } else if (from && have_est && (s->radius > 4 * est || 4 * s->radius < est)) {
-        snprintf(note, (size_t)size, "%s: r = %g from %s is %.2g times the r its spacing implies (%g): check the units",
+        snprintf(note, (size_t)size, "%.400s: r = %g from %s is %.2g times the r its spacing implies (%g): check the units",
                  s->source, s->radius, from, s->radius / est, est);
     }
+}
+
+/* --up auto: the first frame decides, and a note says how. */
+static void settle_up(fs_scene *s, const fs_particles *p, char *note, int size)
+{
+    if (s->up_source != FS_UP_AUTO) return;
+    char why[160];
+    s->up_axis = fs_up_axis_guess(p, s->source, why, sizeof why);
+    snprintf(note, (size_t)size, "%.200s: up is %c (auto: %s; set --up)", s->source, 'x' + s->up_axis, why);
+}
+
+void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)
+{
+    char r_note[640] = "", up_note[400] = "";
+    settle_radius(s, p, radius_opt, r_note, sizeof r_note);
+    settle_up(s, p, up_note, sizeof up_note);
+    snprintf(note, (size_t)size, "%s%s%s", r_note, r_note[0] && up_note[0] ? "\n" : "", up_note);
     fs_scene_frame_particles(s, p);
 }

@@ -13,12 +13,13 @@ extern "C" {
 void fs_scene_frames(const fs_scene *s, int *first, int *last);
 /* Loads frame `frame` (ignored for a single file) and validates it. */
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
-/* Settles what the first frame decides for the whole run, once: a scene given
- * as a bare particle file takes r from the file, unless radius_opt > 0 sets it
- * (a scene file's r stays); a file without one gets the r its spacing implies
- * (fs_particles_estimate_radius). The camera frames the particles unless the
- * scene places it. note receives one line for stderr, or "": the estimate, or
- * a given r more than 4 times off the estimate either way. */
+/* Settles what the first frame decides for the whole run, once: r is
+ * radius_opt when > 0, else the scene file's, else the particle file's, else
+ * the r its spacing implies (fs_particles_estimate_radius), and s->r_source
+ * says which; an up axis left to auto is chosen (fs_up_axis_guess). The camera
+ * frames the particles unless the scene places it. note receives up to two
+ * lines for stderr (fs_note prints each), or "": the estimate, a given r more
+ * than 4 times off the estimate either way, the up axis chosen. */
 void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size);
 
 #ifdef __cplusplus

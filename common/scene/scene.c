@@ -36,6 +36,18 @@ void fs_scene_defaults(fs_scene *s)
     s->background = FS_BACKGROUND_CHECKER;
 }
 
+const char *fs_radius_source_name(fs_radius_source r)
+{
+    static const char *const names[] = {"default", "scene", "file", "option", "estimated"};
+    return (unsigned)r < 5 ? names[r] : "?";
+}
+
+const char *fs_up_source_name(fs_up_source u)
+{
+    static const char *const names[] = {"default", "scene", "option", "auto"};
+    return (unsigned)u < 4 ? names[u] : "?";
+}
+
 fs_field fs_scene_field(const fs_scene *s)
 {
     fs_field f;
@@ -355,6 +367,7 @@ int fs_scene_load(fs_scene *s, const char *path)
     const cJSON *v;
     if (!c.rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(&c, "particles", "is missing");
     else if (!c.rc) parse_particles(s, &c, v);
+    if (cJSON_HasObjectItem(root, "radius")) s->r_source = FS_R_SCENE;
     get_num(&c, root, "radius", &s->radius, 1e-9, 1e9);
     get_num(&c, root, "volume_scale", &s->volume_scale, 1e-6, 1e6);
     get_num(&c, root, "support", &s->support_r, 0.5, 64);
@@ -363,8 +376,10 @@ int fs_scene_load(fs_scene *s, const char *path)
     if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0) bad(&c, "kernel", "must be cubic, poly6, spiky or wyvill");
     const char *up = get_str(&c, root, "up");
     if (up) {
+        s->up_source = FS_UP_SCENE;
         if (strlen(up) == 1 && up[0] >= 'x' && up[0] <= 'z') s->up_axis = up[0] - 'x';
-        else bad(&c, "up", "must be x, y or z");
+        else if (!strcmp(up, "auto")) s->up_source = FS_UP_AUTO;
+        else bad(&c, "up", "must be x, y, z or auto");
     }
     if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "camera"))) parse_camera(s, &c, v);
     if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "light"))) {

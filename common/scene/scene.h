@@ -16,6 +16,10 @@ extern "C" {
 typedef enum { FS_MATERIAL_WATER = 0, FS_MATERIAL_OPAQUE } fs_material_kind;
 typedef enum { FS_BACKGROUND_SKY = 0, FS_BACKGROUND_CHECKER } fs_background_kind;
 typedef enum { FS_SYNTH_NONE = 0, FS_SYNTH_SLAB, FS_SYNTH_SPHERE, FS_SYNTH_BOX } fs_synth_shape;
+/* Where r came from, for the provenance (r_source=...). */
+typedef enum { FS_R_DEFAULT = 0, FS_R_SCENE, FS_R_FILE, FS_R_OPTION, FS_R_ESTIMATED } fs_radius_source;
+/* Where the up axis came from; FS_UP_AUTO: the first frame decides (up_axis.h). */
+typedef enum { FS_UP_DEFAULT = 0, FS_UP_SCENE, FS_UP_OPTION, FS_UP_AUTO } fs_up_source;
 
 typedef struct fs_synthetic {
     fs_synth_shape shape;
@@ -33,11 +37,13 @@ typedef struct fs_scene {
     fs_synthetic synth;
 
     float radius;        /* particle radius r */
+    fs_radius_source r_source;
     float volume_scale;  /* V = volume_scale (2r)^3 */
     fs_kernel kernel;
     float support_r;     /* H in multiples of r */
     float iso;
     int up_axis;         /* 0 x, 1 y, 2 z */
+    fs_up_source up_source;
 
     fs_camera camera;
     int has_camera;      /* 0: frame the particles */
@@ -60,6 +66,9 @@ typedef struct fs_scene {
 } fs_scene;
 
 void fs_scene_defaults(fs_scene *s);
+/* "default", "scene", "file", "option", "estimated"; "auto" ... for up. */
+const char *fs_radius_source_name(fs_radius_source r);
+const char *fs_up_source_name(fs_up_source u);
 /* Reads a scene file; FS_ERR_INPUT with "path: what" on malformed JSON, bad keys
  * or values. Relative particle paths are resolved against the scene's folder. */
 int fs_scene_load(fs_scene *s, const char *path);

@@ -14,6 +14,9 @@ void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *rendere
     fs_provenance_set(p, "seed", v);
     snprintf(v, sizeof v, "%.9g", s->radius);
     fs_provenance_set(p, "r", v);
+    fs_provenance_set(p, "r_source", fs_radius_source_name(s->r_source));
+    snprintf(v, sizeof v, "%c;%s", 'x' + s->up_axis, fs_up_source_name(s->up_source));
+    fs_provenance_set(p, "up", v);
     snprintf(v, sizeof v, "kernel=%s;support=%.9gr;iso=%.9g;volume_scale=%.9g", fs_kernel_name(s->kernel), s->support_r,
              s->iso, s->volume_scale);
     fs_provenance_set(p, "field", v);
