@@ -21,7 +21,7 @@ static int new_scene(fluidsurf_scene **out)
 int fluidsurf_scene_new(fluidsurf_scene **out)
 {
     int rc = new_scene(out);
-    if (!rc) fs_scene_defaults(&(*out)->s);
+    if (!rc) fs_scene_defaults(&(*out)->s), (*out)->s.up_source = FS_UP_AUTO;
     return rc;
 }
 
@@ -67,14 +67,24 @@ int fluidsurf_scene_set_field(fluidsurf_scene *s, const fluidsurf_field *f)
 {
     int rc;
     if ((rc = fs_api_check(s, "scene")) || (rc = fs_api_check(f, "field"))) return rc;
-    if ((rc = positive("radius", f->radius)) || (rc = positive("volume_scale", f->volume_scale)) ||
+    if ((f->radius != 0 && (rc = positive("radius", f->radius))) || (rc = positive("volume_scale", f->volume_scale)) ||
         (rc = positive("support", f->support)) || (rc = positive("iso", f->iso)))
         return rc;
     int k = fs_kernel_from_name(f->kernel);
     if (k < 0) return fs_fail(FS_ERR_INPUT, "kernel '%.16s': expected cubic, poly6, spiky or wyvill", f->kernel);
-    s->s.radius = (float)f->radius, s->s.volume_scale = (float)f->volume_scale;
+    if (f->radius != 0) s->s.radius = (float)f->radius, s->radius_set = 1;
+    s->s.volume_scale = (float)f->volume_scale;
     s->s.support_r = (float)f->support, s->s.iso = (float)f->iso, s->s.kernel = (fs_kernel)k;
-    s->radius_set = 1;
+    return FLUIDSURF_OK;
+}
+
+int fluidsurf_scene_set_up(fluidsurf_scene *s, const char *up)
+{
+    int rc;
+    if ((rc = fs_api_check(s, "scene")) || (rc = fs_api_check(up, "up"))) return rc;
+    if (!strcmp(up, "auto")) s->s.up_source = FS_UP_AUTO;
+    else if (strlen(up) == 1 && up[0] >= 'x' && up[0] <= 'z') s->s.up_axis = up[0] - 'x', s->s.up_source = FS_UP_OPTION;
+    else return fs_fail(FS_ERR_INPUT, "up '%.16s': expected x, y, z or auto", up);
     return FLUIDSURF_OK;
 }
 

@@ -90,14 +90,19 @@ typedef struct fluidsurf_camera {
 } fluidsurf_camera;
 
 /* The defaults of a scene built from a bare particle file (README.md, "Scenes");
- * its camera frames the particles at each render, as the command line does. */
+ * its camera frames the particles at each render, as the command line does, and
+ * its up axis is "auto" (chosen from the particles at render time). */
 int fluidsurf_scene_new(fluidsurf_scene **out);
 /* A scene file (JSON), with its particle source, field, camera and settings. */
 int fluidsurf_scene_load(const char *path, fluidsurf_scene **out);
 int fluidsurf_scene_copy(const fluidsurf_scene *s, fluidsurf_scene **out);
 void fluidsurf_scene_free(fluidsurf_scene *s);
 int fluidsurf_scene_get_field(const fluidsurf_scene *s, fluidsurf_field *f);
+/* radius 0 keeps r unset: the file's, else the one the spacing implies. */
 int fluidsurf_scene_set_field(fluidsurf_scene *s, const fluidsurf_field *f);
+/* The up axis: "x", "y", "z", or "auto" (the particles decide at render time,
+ * as `--up auto` does; the image's provenance "up" says which and why). */
+int fluidsurf_scene_set_up(fluidsurf_scene *s, const char *up);
 int fluidsurf_scene_set_radius(fluidsurf_scene *s, double radius);
 /* The scene's camera; *placed is 0 while it is framed on the particles at render time. */
 int fluidsurf_scene_get_camera(const fluidsurf_scene *s, fluidsurf_camera *c, int *placed);

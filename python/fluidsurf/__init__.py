@@ -14,6 +14,7 @@ import copy
 import errno
 import functools
 import os
+import warnings
 
 import numpy as np
 from cffi import FFI
@@ -119,8 +120,12 @@ def read_particles(path, format=None):
 
 # ---- scenes -----------------------------------------------------------------
 
-def _scene(scene, radius):
-    """A scene: the file's (scene=) or the defaults, with the caller's field settings."""
+_FIELD_KEYS = ("volume_scale", "iso", "support", "kernel")
+
+
+def _scene(scene, radius, up=None, field=None):
+    """A scene: the file's (scene=) or the defaults, with the caller's r, up axis
+    ("auto", "x", "y", "z") and field settings ({volume_scale, iso, support, kernel})."""
     out = ffi.new("fluidsurf_scene **")
     if scene is None:
         _check(lib.fluidsurf_scene_new(out))
@@ -129,7 +134,38 @@ def _scene(scene, radius):
     s = ffi.gc(out[0], lib.fluidsurf_scene_free)
     if radius is not None:
         _check(lib.fluidsurf_scene_set_radius(s, _arrays.positive(radius, "radius")))
+    if up is not None:
+        if up not in ("auto", "x", "y", "z"):
+            raise ValueError(f"up={up!r}: expected 'auto', 'x', 'y' or 'z'")
+        _check(lib.fluidsurf_scene_set_up(s, up.encode()))
+    if field:
+        _set_field(s, field)
     return s
+
+
+def _set_field(s, field):
+    """field= over the scene's field; r stays as it was settled (radius=, the scene's, or unset)."""
+    unknown = sorted(set(field) - set(_FIELD_KEYS))
+    if unknown:
+        raise ValueError(f"field: unknown key(s) {', '.join(map(repr, unknown))}; expected {', '.join(_FIELD_KEYS)}")
+    f = ffi.new("fluidsurf_field *")
+    _check(lib.fluidsurf_scene_get_field(s, f))
+    for key in ("volume_scale", "iso", "support"):
+        if key in field:
+            setattr(f, key, _arrays.positive(field[key], f"field['{key}']"))
+    if "kernel" in field:
+        if not isinstance(field["kernel"], str):
+            raise ValueError(f"field['kernel']={field['kernel']!r}: expected cubic, poly6, spiky or wyvill")
+        f.kernel = field["kernel"].encode()[:15]
+    f.radius = 0  # keeps r as it is: set_radius above, or unset
+    _check(lib.fluidsurf_scene_set_field(s, f))
+
+
+def _warn_estimated(prov):
+    """Python's form of the command line's note: r came from the spacing, not the caller."""
+    if prov.get("fluidsurf:r_source") == "estimated":
+        warnings.warn(f"no radius given: r = {float(prov['fluidsurf:r']):.6g} estimated from the particle spacing "
+                      "(a few percent low on compressed SPH output; pass radius=)", stacklevel=3)
 
 
 def _view(s, width, height, camera):
@@ -287,6 +323,11 @@ def methods():
 
 # ---- images -----------------------------------------------------------------
 
+def _provenance(im):
+    return {_text(lib.fluidsurf_image_provenance_name(im, i)): _text(lib.fluidsurf_image_provenance_value(im, i))
+            for i in range(lib.fluidsurf_image_provenance_count(im))}
+
+
 def _image_dict(im):
     """A libfluidsurf image as arrays: the G-buffer, rgb, AOVs, timings, provenance."""
     w, h = lib.fluidsurf_image_width(im), lib.fluidsurf_image_height(im)
@@ -307,8 +348,7 @@ def _image_dict(im):
                      "ms": lib.fluidsurf_image_stage_ms(im, i),
                      "renderer": _text(lib.fluidsurf_image_stage_renderer(im, i))}
                     for i in range(lib.fluidsurf_image_stage_count(im))]
-    d["provenance"] = {_text(lib.fluidsurf_image_provenance_name(im, i)): _text(lib.fluidsurf_image_provenance_value(im, i))
-                       for i in range(lib.fluidsurf_image_provenance_count(im))}
+    d["provenance"] = _provenance(im)
     d["radius"] = lib.fluidsurf_image_radius(im)
     cam = ffi.new("fluidsurf_camera *")
     if lib.fluidsurf_image_camera(im, cam) == lib.FLUIDSURF_OK:
@@ -331,10 +371,14 @@ def _render_handle(scene, particles, method, settings):
 
 
 def render(positions, radius=None, method="raycast_pca", width=512, height=512, camera=None, params=None,
-           scene=None, colors=None):
+           scene=None, colors=None, up=None, field=None):
     """Renders positions (N x 3, float32 or float64, any order) with one method.
 
-    radius: r (None: the r the spacing implies, as the command line estimates);
+    radius: r (None: the scene's, else the r the spacing implies, as the command
+    line estimates, with a UserWarning saying so; provenance['r_source'] tells);
+    up: 'auto' (the default without scene=: the particles decide, as the command
+    line's --up auto; provenance['up'] says which), 'x', 'y' or 'z';
+    field: {'volume_scale', 'iso', 'support', 'kernel'} over the scene's;
     camera: {'eye', 'target', 'up', 'fov'} (None: frames the particles as the
     command line does); params: {parameter: value} (or {'method.parameter':
     value}) of the method, values of the types methods() gives (an enum's name,
@@ -348,8 +392,10 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
     method = _method(method, "method")
     settings = _settings(method, params)
     p = _Particles(positions, colors)
-    s = _view(_scene(scene, radius), width, height, camera)
-    return _image_dict(_render_handle(s, p, method, settings))
+    s = _view(_scene(scene, radius, up, field), width, height, camera)
+    image = _image_dict(_render_handle(s, p, method, settings))
+    _warn_estimated(image["provenance"])
+    return image
 
 
 def read_gbuffer(path):
@@ -406,9 +452,10 @@ def metrics(image, reference, radius=None):
 
 
 def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=512, camera=None, params=None,
-            reference="reference", scene=None, colors=None):
+            reference="reference", scene=None, colors=None, up=None, field=None):
     """Each method against the reference on one particle set: a list of dicts
     (method, the metrics, total_ms), or a pandas DataFrame when pandas is there.
+    radius, up, field, scene as render().
     params: {method: {parameter: value}} or {'method.parameter': value}, for the
     methods and the reference; every method and parameter is checked before the
     first render (ValueError naming it)."""
@@ -419,8 +466,9 @@ def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=
     reference = _method(reference, "reference")
     settings = _study_settings(params, [*methods, reference] if reference not in methods else list(methods))
     p = _Particles(positions, colors)
-    s = _view(_scene(scene, radius), width, height, camera)
+    s = _view(_scene(scene, radius, up, field), width, height, camera)
     ref = _render_handle(s, p, reference, settings.get(reference, []))
+    _warn_estimated(_provenance(ref))
     rows = []
     for name in methods:
         im = _render_handle(s, p, name, settings.get(name, []))
@@ -433,20 +481,23 @@ def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=
     return pandas.DataFrame(rows)
 
 
-def mesh(positions, radius=None, params=None, scene=None):
+def mesh(positions, radius=None, params=None, scene=None, field=None):
     """The surface of positions (N x 3) as a triangle mesh, as `fluidsurf mesh`
     makes it: marching cubes of the scene's field (the mesh method,
     methods/mesh/README.md), without rendering. Returns (vertices, faces,
     normals): N x 3 float32 in scene units, M x 3 int64 vertex indices wound
     counter-clockwise seen from outside, N x 3 float32 unit outward normals (the
     field's gradient; 0 where it vanishes), as pysplashsurf's reconstruction
-    gives them. radius and scene as render(); params: {parameter: value} of the
+    gives them. radius, field and scene as render() (a mesh has no up); params: {parameter: value} of the
     method mesh (cube, the voxel size in r; smooth; smooth_iters; field; ...).
     A library built without OpenVDB refuses (ValueError naming the option)."""
     # without OpenVDB the method is not registered: the library's refusal says why
     settings = _settings("mesh", params) if "mesh" in _registry() else []
     p = _Particles(positions)
-    s = _scene(scene, radius)
+    s = _scene(scene, radius, None, field)
+    if radius is None and scene is None:  # arrays carry no r: the library estimates it
+        warnings.warn("no radius given: r estimated from the particle spacing (a few percent low on compressed "
+                      "SPH output; pass radius=)", stacklevel=2)
     arr, n, _keep = _c_settings(settings)
     out = ffi.new("fluidsurf_mesh **")
     _check(lib.fluidsurf_mesh_build(s, p.handle, arr, n, out))

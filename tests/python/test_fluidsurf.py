@@ -406,3 +406,49 @@ def test_mesh_equals_the_command_line(tmp_path):
     total = [line.split(",") for line in out.splitlines() if ",total," in line]
     v, f, _ = fluidsurf.mesh(fluidsurf.read_particles(BGEO)["positions"], R)
     assert (len(v), len(f)) == (int(total[0][3]), int(total[0][4]))
+
+
+def _lattice(nx, ny, nz, spacing=0.05):
+    """A jittered lattice at spacing 2r, as the command line's tests build."""
+    rng = np.random.default_rng(7)
+    g = np.stack(np.meshgrid(np.arange(nx), np.arange(ny), np.arange(nz), indexing="ij"), -1).reshape(-1, 3)
+    return (g * spacing + 0.002 * rng.random(g.shape)).astype(np.float32)
+
+
+def test_up_field_and_estimated_radius_warning(tmp_path):
+    pool = _lattice(24, 16, 4)  # thin along z: a z-up pool
+    with pytest.warns(UserWarning, match="estimated from the particle spacing"):
+        auto = fluidsurf.render(pool, method="reference", width=32, height=24)
+    assert auto["provenance"]["fluidsurf:up"] == "z;auto"
+    assert auto["provenance"]["fluidsurf:r_source"] == "estimated"
+    assert auto["camera"]["up"] == pytest.approx([0, 0, 1], abs=1e-6)
+    # the same as the command line on the same particles
+    path = tmp_path / "pool.ply"
+    with open(path, "w") as f:
+        f.write(f"ply\nformat ascii 1.0\nelement vertex {len(pool)}\nproperty float x\nproperty float y\n"
+                "property float z\nend_header\n")
+        np.savetxt(f, pool, fmt="%.9g")
+    out = tmp_path / "pool.exr"
+    subprocess.run([BIN, "render", str(path), "--method", "reference", "-W", "32", "-H", "24", "-o", str(out), "-q"],
+                   check=True)
+    np.testing.assert_array_equal(fluidsurf.read_gbuffer(out)["depth"], auto["depth"])
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a given r: no warning
+        given = fluidsurf.render(pool, 0.025, method="reference", width=32, height=24, up="x",
+                                 field={"iso": 0.3, "kernel": "poly6", "support": 3, "volume_scale": 1.2})
+    prov = given["provenance"]
+    assert prov["fluidsurf:up"] == "x;option" and prov["fluidsurf:r_source"] == "option"
+    assert prov["fluidsurf:field"] == "kernel=poly6;support=3r;iso=0.300000012;volume_scale=1.20000005"
+    assert float(prov["fluidsurf:r"]) == pytest.approx(0.025)
+    # field= alone leaves r to the estimate
+    with pytest.warns(UserWarning, match="estimated"):
+        iso = fluidsurf.render(pool, method="reference", width=32, height=24, field={"iso": 0.3})
+    assert iso["provenance"]["fluidsurf:r_source"] == "estimated"
+    assert "iso=0.300000012" in iso["provenance"]["fluidsurf:field"]
+    with pytest.warns(UserWarning, match="estimated"):
+        fluidsurf.compare(pool, methods=["spheres"], width=32, height=24)
+    for bad, words in [({"up": "w"}, "up='w'"), ({"field": {"isovalue": 1}}, "isovalue"),
+                       ({"field": {"iso": -1}}, "field['iso']"), ({"field": {"kernel": "gauss"}}, "gauss")]:
+        with pytest.raises(ValueError, match=re.escape(words)):
+            fluidsurf.render(pool, 0.025, method="reference", width=8, height=8, **bad)
