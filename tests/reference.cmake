@@ -8,3 +8,4 @@ if(FS_WITH_VTK) # its golden is of the bundled .vtk cube
   fs_add_test(test_reference_golden fs_test_methods test_reference_golden.c golden.c)
 endif()
 fs_add_test(test_reference_accel fs_test_methods test_reference_accel.c test_render.c)
+fs_add_test(test_reference_supersample fs_test_methods test_reference_supersample.c)

@@ -13,9 +13,10 @@
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct reference_params {
-    double step_min, thickness, max_layers, accel, interior, field;
+    double step_min, thickness, max_layers, accel, interior, field, supersample;
     fs_aniso_param_values aniso;
 } reference_params;
 
@@ -30,6 +31,8 @@ static const fs_param_def params[] = {
     {FIELD(interior), FS_PARAM_ENUM, 0, 0, 2, "auto|on|off",
      "accel, thickness on: fine interior bounds; auto builds them when the rays per cell pay for them"},
     {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
+    {FIELD(supersample), FS_PARAM_INT, 1, 1, FS_REF_MAX_SUPERSAMPLE, NULL,
+     "N x N rays per pixel, depth, normal, coverage and thickness averaged (against moire where r is about a pixel)"},
     FS_ANISO_PARAM_DEFS(reference_params),
 };
 #undef FIELD
@@ -65,6 +68,7 @@ static void *create(const fs_method_setup *setup)
     R->accel = p.accel != 0;
     R->interior = (int)p.interior;
     R->max_layers = (int)p.max_layers;
+    R->supersample = (int)p.supersample;
     R->lip_unit = f->volume * fs_kernel_max_dw(f->kernel, f->H);
     return R;
 }
@@ -143,6 +147,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     reference *R = self;
     R->g = NULL;
+    for (int a = 0; a < 3; a++) R->centre[a] = 0.5f * (g->bulk_lo[a] + g->bulk_hi[a]);
     if (R->aniso) {
         if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
         int rc = upload_aniso(R, p, g);
@@ -168,28 +173,107 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
  * a tile walk the same cells, and a tile is enough work to hide the schedule. */
 #define FS_REF_TILE 16
 
-/* One pixel's ray into the G-buffer; its work added to w. */
-static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                        fs_gbuffer *out, ray_work *w)
+/* One ray's answer in view space: whether it hit, and there its eye depth, its
+ * normal facing the camera and the thickness along it. */
+typedef struct ray_sample {
+    int hit;
+    float depth, n[3], thick;
+} ray_sample;
+
+/* The ray through pixel position (fx, fy); its work added to w. */
+static void cast(const reference *R, const fs_camera *cam, const float fwd[3], float fx, float fy, void *buf,
+                 ray_work *w, ray_sample *out)
 {
     float d[3];
     ray_result res;
-    fs_camera_ray(cam, px + 0.5f, py + 0.5f, d);
+    fs_camera_ray(cam, fx, fy, d);
     if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
     w->evals += res.w.evals;
     w->samples += res.w.samples;
     w->nbrs += res.w.nbrs;
-    size_t id = (size_t)py * cam->width + px;
-    out->thickness[id] = res.thick;
+    out->hit = res.hit;
+    out->thick = res.thick;
     if (!res.hit) return;
     float nv[3], dv[3];
     fs_camera_to_view_dir(cam, res.n, nv);
     fs_camera_to_view_dir(cam, d, dv);
     float s = nv[0] * dv[0] + nv[1] * dv[1] + nv[2] * dv[2] > 0 ? -1.0f : 1.0f; /* face the camera */
-    for (int a = 0; a < 3; a++) out->normal[3 * id + a] = s * nv[a];
-    out->depth[id] = res.t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+    for (int a = 0; a < 3; a++) out->n[a] = s * nv[a];
+    out->depth = res.t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+}
+
+/* supersample = N > 1: N x N rays through the centres of an N x N grid over the
+ * pixel. Coverage is the share that hit, thickness the mean over all, depth the
+ * mean over the hits and the normal their sum, renormalised. */
+static void shade_supersampled(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
+                               fs_gbuffer *out, ray_work *w)
+{
+    int n = R->supersample, hits = 0;
+    double depth = 0, thick = 0, sum[3] = {0, 0, 0};
+    float first[3] = {0, 0, 1};
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            ray_sample s;
+            cast(R, cam, fwd, px + (i + 0.5f) / n, py + (j + 0.5f) / n, buf, w, &s);
+            thick += s.thick;
+            if (!s.hit) continue;
+            if (!hits++) memcpy(first, s.n, sizeof first);
+            depth += s.depth;
+            for (int a = 0; a < 3; a++) sum[a] += s.n[a];
+        }
+    size_t id = (size_t)py * cam->width + px;
+    out->thickness[id] = (float)(thick / (n * n));
+    if (!hits) return;
+    double len = sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    for (int a = 0; a < 3; a++) out->normal[3 * id + a] = len > 1e-6 * hits ? (float)(sum[a] / len) : first[a];
+    out->depth[id] = (float)(depth / hits);
+    out->coverage[id] = (float)hits / (float)(n * n);
+}
+
+/* One pixel into the G-buffer; its work added to w. supersample = 1 casts the
+ * pixel centre alone and writes its answer as it is. */
+static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
+                        fs_gbuffer *out, ray_work *w)
+{
+    if (R->supersample > 1) {
+        shade_supersampled(R, cam, fwd, px, py, buf, out, w);
+        return;
+    }
+    ray_sample s;
+    cast(R, cam, fwd, px + 0.5f, py + 0.5f, buf, w, &s);
+    size_t id = (size_t)py * cam->width + px;
+    out->thickness[id] = s.thick;
+    if (!s.hit) return;
+    for (int a = 0; a < 3; a++) out->normal[3 * id + a] = s.n[a];
+    out->depth[id] = s.depth;
     out->coverage[id] = 1.0f;
+}
+
+/* r in pixels at the depth of the particles' bulk box centre (the grid's bulk
+ * box: far strays left out), where a pixel spans 2 z tan(fovy / 2) / height
+ * scene units; 0 when the centre is not in front of the camera. */
+static double radius_px(const reference *R, const fs_camera *cam, const float fwd[3])
+{
+    double z = 0;
+    for (int a = 0; a < 3; a++) z += (R->centre[a] - cam->eye[a]) * fwd[a];
+    if (!(z > 0)) return 0;
+    return R->f.r * cam->height / (2 * z * tan(cam->fovy_deg * M_PI / 360));
+}
+
+/* Once per run: a note when r is under FS_REF_SMALL_R_PX pixels, where the
+ * surface's bumps (a particle's width) alias into moire that dominates the
+ * normals; not when supersample = N rays a pixel side sample r at N px * r. */
+static void note_small_radius(reference *R, const fs_camera *cam, const float fwd[3])
+{
+    double px = radius_px(R, cam, fwd);
+    if (R->noted_small || !(px > 0 && px * R->supersample < FS_REF_SMALL_R_PX)) return;
+    R->noted_small = 1;
+    int n = (int)ceil(FS_REF_SMALL_R_PX / px);
+    if (n > FS_REF_MAX_SUPERSAMPLE) n = FS_REF_MAX_SUPERSAMPLE;
+    fs_note("reference: r is %.2f px at the particles' centre (under %d px, the surface's bumps alias into moire): "
+            "set reference.supersample=%d (N x N rays a pixel) or a larger image",
+            px, FS_REF_SMALL_R_PX, n);
 }
 
 /* Rays per interior cell at which the fine interior bounds pay for themselves:
@@ -261,6 +345,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (!bufs) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %d ray buffers", nth);
     float right[3], up[3], fwd[3];
     fs_camera_basis(cam, right, up, fwd);
+    note_small_radius(R, cam, fwd);
     fs_gbuffer_clear(out);
     int tw = (cam->width + FS_REF_TILE - 1) / FS_REF_TILE, th = (cam->height + FS_REF_TILE - 1) / FS_REF_TILE;
     fs_progress_sub_total((long)tw * th);

@@ -20,6 +20,9 @@ typedef struct reference {
     fs_field f;
     float step_min;      /* scene units */
     int thickness, max_layers, accel;
+    int supersample;     /* N x N rays per pixel (1: the pixel centre) */
+    int noted_small;     /* the note of a radius under FS_REF_SMALL_R_PX was given */
+    float centre[3];     /* the centre of the particles' bulk box (the grid's), for that note */
     int interior;        /* 0 auto, 1 on, 2 off: the fine interior bits (reference_interior.c) */
     int interior_done;   /* the interior decision was taken for the current upload */
     int bounds_done;     /* the sub-cell bounds decision was taken for the current upload */
@@ -47,6 +50,11 @@ typedef struct reference {
  * a multiple of every coarse count (1, 2, 4), and one vector row. */
 #define FS_REF_FINE 8
 #define FS_REF_FINE3 (FS_REF_FINE * FS_REF_FINE * FS_REF_FINE)
+
+/* reference.supersample's largest N, and the radius in pixels below which a
+ * render notes that the image aliases (reference.c, note_small_radius). */
+#define FS_REF_MAX_SUPERSAMPLE 8
+#define FS_REF_SMALL_R_PX 2
 
 /* Quantisation of the sub-cell bounds: value v is stored as v / (iso / FS_REF_Q). */
 #define FS_REF_Q 64
