@@ -65,8 +65,8 @@ int fs_scene_add_set(fs_scene *s, const char *set)
     fs_param_setting split; /* only checked here: methods resolve the setting later */
     int rc = fs_param_split(set, &split);
     if (rc) return rc;
-    if (s->nsets == FS_MAX_SETS) return fs_fail(FS_ERR_INPUT, "--set %s: too many settings", set);
-    if (strlen(set) >= sizeof s->sets[0]) return fs_fail(FS_ERR_INPUT, "--set %s: too long", set);
+    if (s->nsets == FS_MAX_SETS) return fs_fail(FS_ERR_INPUT, "setting %.80s: more than %d settings", set, FS_MAX_SETS);
+    if (strlen(set) >= sizeof s->sets[0]) return fs_fail(FS_ERR_INPUT, "setting %.80s...: longer than %d characters", set, (int)sizeof s->sets[0] - 1);
     strcpy(s->sets[s->nsets++], set);
     return FS_OK;
 }
