@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "compare.h"
 #include "compare_merge.h"
+#include "compare_outdir.h"
 #include "compare_resume.h"
 #include "compare_shard.h"
 #include "compare_temporal.h"
@@ -33,6 +34,11 @@ static const char epilogue[] =
     "Writes DIR/<label>.png|.exr, diff_<label>.png, metrics.csv, timings.csv, panel.png,\n"
     "<label>_own.png for a method with its own appearance (fluidsurf methods says which),\n"
     "report.md (and temporal.csv for a sequence); with --counters also counters.csv.\n"
+    "A label is [A-Za-z0-9_-]: the method, then _PARAM-VALUE per swept parameter, '.'\n"
+    "written 'p' and '-' 'm' (spheres_radius_scale-0p8); report.md maps each label to its\n"
+    "parameters, and metrics.csv has a column per swept parameter after 'variant'.\n"
+    "The files written are listed in DIR/fluidsurf-outputs.txt; a DIR holding another\n"
+    "run's outputs is refused unless --resume or --force.\n"
     "metrics.csv's last columns (depth_median_r, depth_abs_p50/p95/p99_r,\n"
     "depth_over_1r_frac) measure the depth error itself, not around its mean.\n"
     "Reference G-buffers are cached (--cache DIR, default $XDG_CACHE_HOME/fluidsurf or\n"
@@ -80,8 +86,12 @@ static int parse_ref(cmp_run *r, const char *spec)
             snprintf(set, sizeof set, "reference.%s", tok);
             int rc = fs_scene_add_set(&s, set);
             if (rc) return rc;
+            char value[160];
+            const char *eq = strchr(tok, '='); /* there is one: fs_scene_add_set checked */
+            fs_label_value(eq + 1, value, sizeof value);
             size_t l = strlen(ref->label);
-            snprintf(ref->label + l, sizeof ref->label - l, "_%s", tok);
+            if (snprintf(ref->label + l, sizeof ref->label - l, "_%.*s-%s", (int)(eq - tok), tok, value) >= (int)(sizeof ref->label - l))
+                return fs_fail(FS_ERR_INPUT, "--reference %s: too long", spec);
         }
     }
     int n = fs_sweep_variants(m, &s, NULL, 0, &ref->v, 1);
@@ -98,11 +108,11 @@ static int parse_import(cmp_run *r, const char *spec)
     cmp_entry *e = &r->entries[r->nentries];
     memset(e, 0, sizeof *e);
     snprintf(e->name, sizeof e->name, "%.*s", (int)(eq - spec), spec);
-    for (const char *c = e->name; *c; c++)
-        if (*c == '/' || *c == ' ') return fs_fail(FS_ERR_INPUT, "--import %s: NAME must not contain '/' or spaces", spec);
+    if (!fs_label_is_safe(e->name)) return fs_fail(FS_ERR_INPUT, "--import %s: NAME may hold only letters, digits, '_' and '-'", spec);
     strcpy(e->label, e->name); /* name is shorter than label */
     snprintf(e->variant, sizeof e->variant, "import");
     e->imported = 1;
+    e->file = eq + 1;
     float rr;
     int rc = fs_read_render(eq + 1, &e->first.g, &e->first.rgba, &rr);
     if (rc) return rc;
@@ -198,13 +208,15 @@ static int write_view(const cmp_run *r, const char *label, int frame, const cmp_
 {
     char path[1400];
     cmp_view_path(r, NULL, label, frame, "", "png", path, sizeof path);
-    int rc = fs_write_render(path, &v->g, v->rgba, prov);
+    int rc = cmp_outdir_record(path);
+    if (!rc) rc = fs_write_render(path, &v->g, v->rgba, prov);
     const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
     if (!rc && own) { /* the method's own appearance beside the shared shading */
         cmp_view_path(r, NULL, label, frame, "_own", "png", path, sizeof path);
-        rc = fs_write_render(path, &v->g, own, prov);
+        if (!(rc = cmp_outdir_record(path))) rc = fs_write_render(path, &v->g, own, prov);
     }
     cmp_view_path(r, NULL, label, frame, "", "exr", path, sizeof path);
+    if (!rc) rc = cmp_outdir_record(path);
     return rc ? rc : fs_write_render(path, &v->g, v->rgba, prov);
 }
 
@@ -378,6 +390,7 @@ typedef struct cmp_options {
     const char *const *sets;
     int nsets, w, h;
     float radius, nscale, dscale;
+    cli_scene_opts field;
     fs_ctx_kind ctx_kind;
     const char *cache_dir; /* NULL: the default folder */
     int no_cache;
@@ -417,12 +430,25 @@ static int add_variants(cmp_run *r, const char *methods, const fs_sweep *sweeps,
     return FS_OK;
 }
 
+/* metrics.csv's parameter columns: each swept parameter's name once, in --set order. */
+static void param_columns(cmp_run *r, const fs_sweep *sweeps, int nsweeps)
+{
+    r->npcols = 0;
+    for (int i = 0; i < nsweeps; i++) {
+        const char *name = sweeps[i].m->params[sweeps[i].param].name;
+        int seen = 0;
+        for (int k = 0; k < r->npcols; k++) seen |= !strcmp(r->pcols[k], name);
+        if (!seen) snprintf(r->pcols[r->npcols++], sizeof r->pcols[0], "%s", name);
+    }
+}
+
 /* The scene and the variants: plain settings go to the scene, comma lists become sweeps. */
 static int plan_variants(cmp_run *r, const cmp_options *o)
 {
     fs_scene *s = &r->scene;
     int rc = cli_scene_from_arg(s, o->input);
     if (rc) return cli_error(rc);
+    cli_scene_opts_apply(s, &o->field);
     if (o->w) s->camera.width = o->w;
     if (o->h) s->camera.height = o->h;
     if ((long)s->camera.width * s->camera.height > 16384L * 16384L / 4)
@@ -437,10 +463,46 @@ static int plan_variants(cmp_run *r, const cmp_options *o)
         if (rc) return cli_error(rc);
     }
     if ((rc = add_variants(r, o->methods, sweeps, nsweeps))) return rc;
+    param_columns(r, sweeps, nsweeps);
     for (int i = 0; o->counters && i < r->nentries; i++)
         if ((rc = fs_run_check_counters(r->entries[i].v.m))) return cli_error(rc);
     double check[FS_MAX_PARAMS]; /* every plain --set must name a real method and parameter */
     if ((rc = fs_method_params_resolve(fs_method_at(0), s, check))) return cli_error(rc);
+    return FS_OK;
+}
+
+/* The label of view i: the references first, then the entries. */
+static const char *view_label(const cmp_run *r, int i)
+{
+    return i < r->nrefs ? r->refs[i].label : r->entries[i - r->nrefs].label;
+}
+
+/* 1 when views i and j are one view: a reference and the entry that is it (same
+ * method and parameters), which write the same files. */
+static int same_view(const cmp_run *r, int i, int j)
+{
+    if ((i < r->nrefs) == (j < r->nrefs)) return 0;
+    const cmp_ref *ref = &r->refs[i < r->nrefs ? i : j];
+    const cmp_entry *e = &r->entries[(i < r->nrefs ? j : i) - r->nrefs];
+    return !ref->analytic && e->v.m == ref->v.m && !memcmp(e->v.params, ref->v.params, ref->v.m->nparams * sizeof e->v.params[0]);
+}
+
+/* Every view's label names its files: two views alike would overwrite each
+ * other's, and one called like a summary file (panel.png, diff_*.png) would
+ * overwrite it. */
+static int check_labels(const cmp_run *r)
+{
+    int n = r->nrefs + r->nentries;
+    for (int i = 0; i < n; i++) {
+        const char *a = view_label(r, i);
+        if (!strcmp(a, "panel") || !strncmp(a, "diff_", 5))
+            return fs_fail(FS_ERR_INPUT, "%s: a view with this label would overwrite compare's own %s files", a,
+                           a[0] == 'p' ? "panel" : "diff_*");
+        for (int j = 0; j < i; j++)
+            if (!strcmp(a, view_label(r, j)) && !same_view(r, i, j))
+                return fs_fail(FS_ERR_INPUT, "two views get the file label %s (a value given twice, or two that differ "
+                               "only in characters a label cannot hold)", a);
+    }
     return FS_OK;
 }
 
@@ -454,7 +516,10 @@ static int plan_references(cmp_run *r, const cmp_options *o)
     if (!rc && o->nimports && s->frame_first >= 0 && s->frame_last > s->frame_first)
         rc = fs_fail(FS_ERR_INPUT, "--import needs a single-frame scene");
     for (int i = 0; i < o->nimports && !rc; i++) rc = parse_import(r, o->imports[i]);
+    if (!rc) rc = check_labels(r);
     if (!rc) rc = make_outdir(r->outdir, &r->made_outdir);
+    /* a merge writes into its fresh staging folder; merge itself checks the output */
+    if (!rc && !r->made_outdir && !r->merge) rc = cmp_outdir_claim(r->outdir, "compare", r->resume, r->force);
     if (rc) {
         for (int i = 0; i < r->nentries; i++) free_view(&r->entries[i].first);
         return cli_error(rc);
@@ -694,6 +759,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
     const char *refspecs[CMP_MAX_REFS + 1], *imports[CMP_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
     int nrefspecs = 0, nimports = 0, nsets = 0, w = 0, h = 0, no_cache = 0, counters = 0, require_gpu = 0, rc;
     float radius = 0, nscale = 0, dscale = 0;
+    cli_scene_opts field = CLI_SCENE_OPTS_UNSET;
     fs_ctx_kind ctx_kind = fs_gl_context_default_kind();
     r->repeat = 3;
     const cli_opt opts[] = {
@@ -714,13 +780,17 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
         CLI_FLAG_OPT("--no-cache", no_cache, "render every reference; read and write no cache"),
         CLI_FLAG_OPT("--resume", r->resume, "load the work items an earlier run of the same command\n"
                      "finished in DIR (their EXRs) instead of rendering them"),
+        CLI_FLAG_OPT("--force", r->force, "DIR holds another run's outputs: remove them first\n"
+                     "(fluidsurf's own files only; without it compare refuses)"),
         CLI_STRING_OPT("--shard", shard, "K/N", "render only shard K's share of the work items (K = 1..N),\n"
                        "into DIR with a manifest and a DONE marker; 'fluidsurf merge'\n"
                        "joins the N shards' folders into this command's outputs"),
         CLI_FLAG_OPT("--counters", counters, "also count each variant's and reference's work in a\n"
                      "separate render after the timed ones: counters.csv"),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
-        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else 0.025"),
+        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else estimated from\n"
+                       "the particle spacing (a note says so; fluidsurf info shows it)"),
+        CLI_OPT_SCENE(field),
         CLI_OPT_GL(ctx_kind),
         CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_OPT_QUIET(r->quiet),
@@ -734,6 +804,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
     if (!input) return cli_usage("compare", "no scene or particle file given");
     if (!out) return cli_usage("compare", "no output folder given (-o DIR)");
     if (no_cache && cache_dir) return cli_usage("compare", "--cache and --no-cache: choose one");
+    if (r->resume && r->force) return cli_usage("compare", "--resume and --force: choose one");
     if (strlen(out) >= sizeof r->outdir - 300) return cli_usage("compare", "output folder path too long");
     snprintf(r->outdir, sizeof r->outdir, "%s", m ? m->staging : out);
     quote_command(r->command, sizeof r->command, argc, argv);
@@ -741,7 +812,7 @@ static int compare_main(int argc, char **argv, cmp_merge *m)
     r->argc = argc, r->argv = argv, r->merge = m;
     if (shard && (rc = cmp_shard_parse(shard, &r->shard_k, &r->shard_n))) return cli_error(rc);
     const cmp_options o = {input, methods, refspecs, nrefspecs, imports, nimports, sets, nsets, w, h, radius, nscale,
-                           dscale, ctx_kind, cache_dir, no_cache, counters};
+                           dscale, field, ctx_kind, cache_dir, no_cache, counters};
     rc = compare(r, &o);
     free(r->owner);
     return rc;

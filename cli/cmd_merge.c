@@ -2,6 +2,7 @@
  * study joined into what one compare process writes (compare_merge.h). */
 #include "cli.h"
 #include "compare_merge.h"
+#include "compare_outdir.h"
 #include "compare_shard.h"
 #include "fs_error.h"
 #include "options.h"
@@ -30,8 +31,9 @@ static int absolute(const char *path, char *out, int size)
     return FS_OK;
 }
 
-/* DIR, when it exists, is a writable folder and none of the shards'. */
-static int check_out(const cmp_merge *m)
+/* DIR, when it exists, is a writable folder, none of the shards' and holds no
+ * other run's outputs (with force: they are removed, compare_outdir.h). */
+static int check_out(const cmp_merge *m, int force)
 {
     struct stat st;
     char real[4096];
@@ -40,7 +42,7 @@ static int check_out(const cmp_merge *m)
         if (access(m->out, W_OK) != 0) return fs_fail(FS_ERR_INPUT, "%s: output folder is not writable", m->out_arg);
         for (int s = 0; realpath(m->out, real) && s < m->n; s++)
             if (!strcmp(real, m->shards[s].dir)) return fs_fail(FS_ERR_INPUT, "%s: is shard %d's folder; merge into another", m->out_arg, s + 1);
-        return FS_OK;
+        return cmp_outdir_claim(m->out_arg, "merge", 0, force);
     }
     return FS_OK; /* made once the staging folder beside it could be */
 }
@@ -53,7 +55,7 @@ static char **merged_argv(const cmp_merge *m, int *argc)
     int n = 0;
     for (int i = 0; v && i < d->argc; i++) {
         if (!strcmp(d->argv[i], "--shard") && i + 1 < d->argc) { i++; continue; }
-        if (!strcmp(d->argv[i], "--resume")) continue; /* the merge renders nothing */
+        if (!strcmp(d->argv[i], "--resume") || !strcmp(d->argv[i], "--force")) continue; /* the merge renders nothing */
         v[n++] = d->argv[i];
         if (!strcmp(d->argv[i], "-o") && i + 1 < d->argc) v[n++] = (char *)m->out_arg, i++;
     }
@@ -64,9 +66,11 @@ static char **merged_argv(const cmp_merge *m, int *argc)
 int cmd_merge(int argc, char **argv)
 {
     const char *dirs[CMP_MAX_SHARDS + 1], *out = NULL;
-    int ndirs = 0, quiet = 0, rc;
+    int ndirs = 0, quiet = 0, force = 0, rc;
     const cli_opt opts[] = {
         CLI_OPT_OUT(out, "DIR", "the merged output folder (made if missing)"),
+        CLI_FLAG_OPT("--force", force, "DIR holds another run's outputs: remove them first\n"
+                     "(fluidsurf's own files only; without it merge refuses)"),
         CLI_OPT_QUIET(quiet),
         CLI_END,
     };
@@ -78,7 +82,7 @@ int cmd_merge(int argc, char **argv)
     static cmp_merge m;
     rc = cmp_merge_read(&m, ndirs, dirs, out);
     if (!rc) rc = absolute(out, m.out, sizeof m.out);
-    if (!rc) rc = check_out(&m);
+    if (!rc) rc = check_out(&m, force);
     if (!rc) snprintf(m.staging, sizeof m.staging, "%s.merging-%ld", m.out, (long)getpid());
     if (!rc && mkdir(m.staging, 0755) != 0)
         rc = fs_fail(FS_ERR_INPUT, "%s: cannot create the output folder: %s", out, strerror(errno));

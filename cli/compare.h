@@ -37,9 +37,10 @@ typedef struct cmp_ref {
 typedef struct cmp_entry {
     fs_variant v;        /* v.m NULL for an import */
     char name[64];       /* method name, or the import's NAME */
-    char label[200];
+    char label[200];     /* file-safe, [A-Za-z0-9_-] (fs_label_value) */
     char variant[200];
     int imported;
+    const char *file;    /* an import's EXR (argv) */
     cmp_view first;      /* the first frame's view, kept for the panel and heatmaps */
     fs_metrics *metrics; /* [nrefs][nframes] */
     double *frame_ms;    /* nframes; NAN for imports */
@@ -62,6 +63,9 @@ typedef struct cmp_run {
     int made_outdir; /* this run made outdir: a failure before any output removes it */
     int counters;        /* --counters: a counting render per variant and frame */
     int resume, resumed; /* --resume; the work items it loaded */
+    int force;           /* --force: an earlier run's files are removed first (compare_outdir.h) */
+    char pcols[FS_MAX_SWEEPS][64]; /* metrics.csv's parameter columns: each swept parameter's name once */
+    int npcols;
     int shard_k, shard_n; /* --shard K/N; 0/0 renders every work item */
     int *owner;          /* with --shard: each work item's shard, 1..N (cmp_item_id) */
     struct cmp_merge *merge; /* fluidsurf merge: every item comes from a shard's folder */

@@ -1,6 +1,7 @@
 /* fluidsurf merge: reading and checking the shards, loading their work items,
  * publishing the joined output (compare_merge.h). */
 #include "compare_merge.h"
+#include "compare_outdir.h"
 #include "compare_resume.h"
 #include "compare_shard.h"
 #include "fs_error.h"
@@ -98,15 +99,16 @@ static int same(const cmp_shard_dir *a, const cmp_shard_dir *b, const char *what
     return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: %s %s, not %s", b->dir, a->dir, what, vb, va);
 }
 
-/* How many of argv[i..] only steer the run (output, shard, resume, cache, quiet), not
+/* How many of argv[i..] only steer the run (output, shard, resume, force, cache, quiet), not
  * what is computed: shards of one study may differ in them. */
 static int run_control(char **argv, int argc, int i)
 {
-    static const char *with_value[] = {"--shard", "-o", "--cache"}, *flags[] = {"--resume", "--no-cache", "-q"};
-    for (int k = 0; k < 3; k++) {
+    static const char *with_value[] = {"--shard", "-o", "--cache"};
+    static const char *flags[] = {"--resume", "--no-cache", "-q", "--force"};
+    for (size_t k = 0; k < sizeof with_value / sizeof *with_value; k++)
         if (!strcmp(argv[i], with_value[k])) return i + 1 < argc ? 2 : 1;
+    for (size_t k = 0; k < sizeof flags / sizeof *flags; k++)
         if (!strcmp(argv[i], flags[k])) return 1;
-    }
     return 0;
 }
 
@@ -310,7 +312,8 @@ static int take_view(cmp_run *r, const char *dir, const char *label, int frame, 
         cmp_view_path(r, dir, label, frame, files[j][0], files[j][1], src, sizeof src);
         cmp_view_path(r, NULL, label, frame, files[j][0], files[j][1], dst, sizeof dst);
         if (j == 1 && access(src, F_OK) != 0) continue;
-        int rc = link_or_copy(src, dst);
+        int rc = cmp_outdir_record(dst);
+        if (!rc) rc = link_or_copy(src, dst);
         if (rc) return rc;
     }
     char exr[1400];

@@ -1,9 +1,12 @@
 /* The files `compare` writes: CSVs, heatmaps, the panel and the report. Each is
- * written to a temporary file and renamed (output_file.h). */
+ * written to a temporary file and renamed (output_file.h), and recorded in the
+ * folder's list of fluidsurf's files before it is written (compare_outdir.h). */
 #include "compare.h"
+#include "compare_outdir.h"
 #include "counters_csv.h"
 #include "diff_panel.h"
 #include "figure.h"
+#include "method_params.h"
 #include "fs_error.h"
 #include "output_file.h"
 #include "stats.h"
@@ -25,7 +28,8 @@ void cmp_view_path(const cmp_run *r, const char *dir, const char *label, int fra
 int cmp_open(const cmp_run *r, const char *name, cmp_file *cf)
 {
     cmp_path(r, name, cf->final, sizeof cf->final);
-    int rc = fs_output_begin(cf->final, cf->tmp, sizeof cf->tmp);
+    int rc = cmp_outdir_record(cf->final);
+    if (!rc) rc = fs_output_begin(cf->final, cf->tmp, sizeof cf->tmp);
     if (rc) return rc;
     if (!(cf->f = fopen(cf->tmp, "w"))) {
         fs_output_end(cf->final, cf->tmp, 0);
@@ -64,6 +68,21 @@ static void provenance_header(const cmp_run *r, FILE *f)
     fprintf(f, "%s\n", line);
 }
 
+/* Entry e's value of each parameter column, "" where its method has no such parameter. */
+static void param_cells(const cmp_run *r, const cmp_entry *e, FILE *f)
+{
+    for (int c = 0; c < r->npcols; c++) {
+        const fs_method *m = e->imported ? NULL : e->v.m;
+        for (int j = 0; m && j < m->nparams; j++)
+            if (!strcmp(m->params[j].name, r->pcols[c])) {
+                char v[64];
+                fs_param_format(&m->params[j], e->v.params[j], v, sizeof v);
+                csv_text(f, v);
+            }
+        fputc(',', f);
+    }
+}
+
 int cmp_write_metrics(const cmp_run *r)
 {
     cmp_file cf;
@@ -71,7 +90,9 @@ int cmp_write_metrics(const cmp_run *r)
     if (rc) return rc;
     FILE *f = cf.f;
     provenance_header(r, f);
-    fputs("method,variant,reference,frame,mask_iou,depth_bias_r,depth_rmse_r,depth_p95_r,normal_mean_deg,normal_p95_deg,"
+    fputs("method,variant,", f);
+    for (int c = 0; c < r->npcols; c++) fprintf(f, "%s,", r->pcols[c]); /* one per swept parameter */
+    fputs("reference,frame,mask_iou,depth_bias_r,depth_rmse_r,depth_p95_r,normal_mean_deg,normal_p95_deg,"
           "interior_normal_mean_deg,psnr_db,ssim,frame_ms,n_both,n_interior,"
           /* appended, so the columns before keep their positions (scripts read them by index) */
           "depth_median_r,depth_abs_p50_r,depth_abs_p95_r,depth_abs_p99_r,depth_over_1r_frac\n", f);
@@ -83,6 +104,7 @@ int cmp_write_metrics(const cmp_run *r)
                 const fs_metrics *m = &e->metrics[k * r->nframes + fr];
                 csv_text(f, e->name); fputc(',', f);
                 csv_text(f, e->variant); fputc(',', f);
+                param_cells(r, e, f);
                 csv_text(f, r->refs[k].spec); fputc(',', f);
                 if (r->sequence) fprintf(f, "%d", r->first_frame + fr);
                 const double v[] = {m->mask_iou, m->depth_bias_r, m->depth_rmse_r, m->depth_p95_r, m->normal_mean_deg,
@@ -193,7 +215,8 @@ static int write_rgba_png(const cmp_run *r, const char *name, const fs_rgba_imag
     cmp_path(r, name, path, sizeof path);
     const char *names[4] = {"R", "G", "B", "A"};
     fs_image img = {im->w, im->h, 4, names, im->pix};
-    return fs_write_png(path, &img);
+    int rc = cmp_outdir_record(path);
+    return rc ? rc : fs_write_png(path, &img);
 }
 
 /* The normal-error heatmap of entry e against the first reference. */
@@ -210,7 +233,8 @@ int cmp_write_diffs(const cmp_run *r)
         snprintf(title, sizeof title, "%s against %s", e->label, r->refs[0].spec);
         snprintf(name, sizeof name, "diff_%s.png", e->label);
         cmp_path(r, name, path, sizeof path);
-        int rc = fs_write_diff_panel(path, &e->first.g, &r->refs[0].frames[0].g, r->scene.radius,
+        int rc = cmp_outdir_record(path);
+        if (!rc) rc = fs_write_diff_panel(path, &e->first.g, &r->refs[0].frames[0].g, r->scene.radius,
                                      e->metrics[0].depth_bias_r, r->normal_scale_deg, r->depth_scale_r, title);
         if (rc) return rc;
     }
@@ -437,6 +461,32 @@ static void write_ref_sources(const cmp_run *r, FILE *f)
           "`timings.csv` is the stage `cache` (loading the entry) in place of rendering.\n\n", f);
 }
 
+/* The labels that name the files, each with its method and parameters. */
+static void write_labels(const cmp_run *r, FILE *f)
+{
+    fputs("## Files\n\nEach view is written as `LABEL.png` (shaded), `LABEL.exr` (the G-buffer with its provenance)", f);
+    fputs(r->sequence ? ", per frame as `LABEL_fNNNN.png` and `.exr`," : "", f);
+    fputs(" and, for a method, `diff_LABEL.png` (heatmaps against the first reference). A label holds only letters, "
+          "digits, `_` and `-`: the method, then `_PARAM-VALUE` for each swept parameter, with `.` in a value written "
+          "`p` and a minus sign `m` (`0.8` is `0p8`); the settings are the swept values (a reference's, those of its spec).\n\n"
+          "| label | method | settings | every parameter |\n|---|---|---|---|\n", f);
+    char params[1024];
+    for (int k = 0; k < r->nrefs; k++) {
+        const cmp_ref *ref = &r->refs[k];
+        if (ref->analytic) { fprintf(f, "| `%s` | %s (ground truth) | — | the ideal shape of the synthetic scene |\n", ref->label, ref->spec); continue; }
+        fs_method_params_string(ref->v.m, ref->v.params, params, sizeof params);
+        const char *colon = strchr(ref->spec, ':');
+        fprintf(f, "| `%s` | %s (ground truth) | %s | %s |\n", ref->label, ref->v.m->name, colon ? colon + 1 : "—", params);
+    }
+    for (int i = 0; i < r->nentries; i++) {
+        const cmp_entry *e = &r->entries[i];
+        if (e->imported) { fprintf(f, "| `%s` | imported | — | %s |\n", e->label, e->file); continue; }
+        fs_method_params_string(e->v.m, e->v.params, params, sizeof params);
+        fprintf(f, "| `%s` | %s | %s | %s |\n", e->label, e->name, e->variant[0] ? e->variant : "—", params);
+    }
+    fputc('\n', f);
+}
+
 int cmp_write_report(const cmp_run *r)
 {
     cmp_file cf;
@@ -474,6 +524,7 @@ int cmp_write_report(const cmp_run *r)
                "are on sRGB luminance over the union of the coverage masks. Frame times are medians of %d runs after a "
                "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",
             r->scene.radius, r->repeat, r->normal_scale_deg, r->depth_scale_r);
+    write_labels(r, f);
     write_ref_sources(r, f);
     if (r->counters) write_counter_table(r, f);
     fputs("## Renderers\n\n", f);

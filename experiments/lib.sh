@@ -3,6 +3,17 @@
 # median: the median of the numbers on stdin, one per line (empty when there are none).
 median() { sort -g | awk '{a[NR]=$1} END {if (NR == 0) print ""; else print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 
+# csv_awk [-v VAR=VALUE]... PROGRAM FILE: runs the awk statements PROGRAM on each row of
+# the CSV FILE ('#' lines and the header skipped), where col("NAME") is the row's value of
+# the header's column NAME (a missing column stops awk with exit 2). Read compare's CSVs
+# this way, never by position: metrics.csv has one column per swept parameter after
+# `variant` (docs/DESIGN.md, "Output folders").
+csv_awk() {
+  local n=$# file=${!#} prog=${*: -2:1}
+  awk -F, "${@:1:n-2}" 'function col(name) { if (!(name in C)) { printf "csv_awk: %s has no column %s\n", FILENAME, name > "/dev/stderr"; exit 2 } return $(C[name]) }
+    /^#/ { next } !H { for (i = 1; i <= NF; i++) C[$i] = i; H = 1; next } { '"$prog"' }' "$file"
+}
+
 # exr_attr FILE NAME: a fluidsurf provenance attribute of an EXR (iinfo: openimageio-tools)
 exr_attr() { iinfo -v "$1" | sed -n "s/^ *fluidsurf:$2: \"\(.*\)\"$/\1/p" | head -1; }
 # kv "eye=a,b,c;target=..." KEY

@@ -33,10 +33,21 @@ check 'grep -q "fluidsurf compare" "$T/a/report.md" && grep -q "| spheres |" "$T
 "$BIN" compare "$box" --methods spheres --set spheres.radius_scale=0.8,1.2 --set spheres.thickness=on,off -W 48 -H 48 --repeat 1 -q --no-cache -o "$T/sweep" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ]' "two-parameter sweep runs"
 check '[ "$(grep -vc "^#" "$T/sweep/metrics.csv")" -eq 5 ]' "sweep gives 4 rows"
-check 'grep -q "^spheres,radius_scale=1.2;thickness=off,reference," "$T/sweep/metrics.csv"' "variant column p=v;q=w"
-check '[ -s "$T/sweep/spheres_radius_scale=0.8_thickness=on.png" ]' "variant label in file names"
+check 'grep -q "^spheres,radius_scale=1.2;thickness=off,1.2,off,reference," "$T/sweep/metrics.csv"' "variant column p=v;q=w, then a column per swept parameter"
+check 'grep -v "^#" "$T/sweep/metrics.csv" | head -1 | grep -q "^method,variant,radius_scale,thickness,reference,frame,mask_iou,"' "metrics.csv has the swept parameters' columns beside variant"
+check '[ -s "$T/sweep/spheres_radius_scale-0p8_thickness-on.png" ] && [ -s "$T/sweep/diff_spheres_radius_scale-1p2_thickness-off.png" ]' "variant label in file names (. written p, = written -)"
+check '[ -z "$(ls "$T/sweep" | sed "s/\.[a-z]*$//" | grep -vE "^[A-Za-z0-9_-]+$")" ]' "every file name is [A-Za-z0-9_-] plus its extension: $(ls "$T/sweep" | tr '\n' ' ')"
+check 'grep -qF "| \`spheres_radius_scale-0p8_thickness-on\` | spheres | radius_scale=0.8;thickness=on | radius_scale=0.8;thickness=on |" "$T/sweep/report.md"' "report.md maps each label to its method and parameters"
 read -r sw sh <<< "$(size "$T/sweep/panel.png")"
 check '[ "${sh:-0}" -ge $((2 * 48)) ] && [ "${sh:-0}" -le $((2 * 48 + 150)) ] && [ "${sw:-0}" -ge $((4 * 48)) ]' "sweep panel is a 2-row grid (${sw}x${sh})"
+
+# 2b. the parameter columns across methods: empty where a method has no such parameter,
+# its own value where it has one it does not sweep; a reference:P=V label
+"$BIN" compare "$box" --methods spheres,reference --set spheres.thickness=on,off --set spheres.radius_scale=0.8,1.2 \
+  --reference reference:thickness=off -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/cols" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ] && grep -v "^#" "$T/cols/metrics.csv" | head -1 | grep -q "^method,variant,thickness,radius_scale,reference,frame,"' "parameter columns in --set order"
+check 'grep -q "^spheres,thickness=off;radius_scale=0.8,off,0.8,reference:thickness=off,," "$T/cols/metrics.csv" && grep -q "^reference,,on,,reference:thickness=off,," "$T/cols/metrics.csv"' "reference's row: its own thickness, no radius_scale"
+check '[ -s "$T/cols/reference_thickness-off.exr" ] && grep -qF "| \`reference_thickness-off\` | reference (ground truth) | thickness=off |" "$T/cols/report.md"' "a reference:P=V view is labelled reference_P-V, in report.md's table"
 
 # 3. --import of a written EXR gives zero error against itself
 "$BIN" compare "$box" --methods spheres --import mine="$T/a/reference.exr" -W 64 -H 64 --repeat 1 -q --no-cache -o "$T/imp" 2>/dev/null; rc=$?
@@ -74,6 +85,27 @@ check '[ $rc -eq 3 ] && grep -q "^FAIL normal" "$T/d2"' "diff beyond a threshold
 "$BIN" diff "$T/a/spheres.exr" "$T/a/reference.exr" > "$T/d3" 2>&1; rc=$?
 check '[ $rc -eq 0 ]' "diff without thresholds exits 0"
 
+# 5b. an output folder that holds another run's outputs (compare_outdir.h)
+snap() { (cd "$1" && find . -type f -printf '%p %s %T@\n' | sort); }
+before=$(snap "$T/a")
+"$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/a" 2> "$T/used.err"; rc=$?
+check '[ $rc -eq 2 ] && [ "$(wc -l < "$T/used.err")" -eq 1 ] && grep -q "^fluidsurf: $T/a: holds another run.s outputs .*--force.*--resume" "$T/used.err" && [ "$(snap "$T/a")" = "$before" ]' \
+  "a second compare into a used folder is refused, nothing changed: $(cat "$T/used.err")"
+mkdir -p "$T/reuse" && echo keep > "$T/reuse/notes.txt" && cp "$T/a/spheres.png" "$T/reuse/mine.png"
+"$BIN" compare "$box" --methods spheres,reference --set spheres.radius_scale=0.8,1.2 -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/reuse" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ] && [ -s "$T/reuse/spheres_radius_scale-0p8.png" ] && grep -qx "metrics.csv" "$T/reuse/fluidsurf-outputs.txt"' "a folder with only other files is fine; compare lists what it wrote in fluidsurf-outputs.txt"
+"$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 --no-cache --force -o "$T/reuse" 2> "$T/force.err"; rc=$?
+check '[ $rc -eq 0 ] && [ ! -e "$T/reuse/spheres_radius_scale-0p8.png" ] && [ ! -e "$T/reuse/diff_reference.png" ] && [ -s "$T/reuse/spheres.png" ] && [ "$(cat "$T/reuse/notes.txt")" = keep ] && [ -s "$T/reuse/mine.png" ] && grep -q "note: $T/reuse: --force: removed" "$T/force.err"' \
+  "--force removes the earlier run's files only: $(ls "$T/reuse" | tr '\n' ' ')"
+"$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 --no-cache --resume -o "$T/reuse" 2> "$T/resume.err"; rc=$?
+check '[ $rc -eq 0 ] && grep -q "resume: 1 work item(s) loaded" "$T/resume.err"' "--resume into a used folder keeps what matches"
+rm "$T/reuse/fluidsurf-outputs.txt" # as an older fluidsurf left it
+"$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/reuse" 2> "$T/old.err"; rc=$?
+check '[ $rc -eq 2 ] && grep -q "holds another run.s outputs (metrics.csv" "$T/old.err"' "a folder an older fluidsurf wrote (no list) is recognised by its files"
+"$BIN" compare "$box" --methods reference -W 32 -H 32 --repeat 1 -q --no-cache --force -o "$T/reuse" 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ] && [ ! -e "$T/reuse/spheres.png" ] && [ ! -e "$T/reuse/diff_spheres.png" ] && [ -s "$T/reuse/mine.png" ] && [ -s "$T/reuse/notes.txt" ]' \
+  "--force there removes its EXRs and the PNGs named after them, no other file: $(ls "$T/reuse" | tr '\n' ' ')"
+
 # 6. bad arguments: exit 2, one line, no output folder made
 bad() {
   local name=$1 word=$2; shift 2
@@ -90,6 +122,9 @@ bad "bad reference" "--reference" compare "$box" --methods spheres --reference b
 bad "analytic needs synthetic" analytic compare "$SRC/experiments/scenes/dam_break.json" --methods spheres --reference analytic -o "$T/bad"
 bad "EXR without the channels" "no channel" compare "$box" --methods spheres --import x="$T/rgb_only.exr" -o "$T/bad"
 bad "import of the wrong size" "64x64" compare "$box" --methods spheres -W 32 -H 32 --import x="$T/a/reference.exr" -o "$T/bad"
+bad "--resume with --force" "choose one" compare "$box" --methods spheres --resume --force -o "$T/bad"
+bad "a value swept twice" "file label spheres_radius_scale-0p8" compare "$box" --methods spheres --set spheres.radius_scale=0.8,0.8 -o "$T/bad"
+bad "an import NAME a file name cannot hold" "letters, digits" compare "$box" --methods spheres --import "a.b=$T/a/reference.exr" -o "$T/bad"
 bad "unwritable output folder" "$T/a/metrics.csv" compare "$box" --methods spheres -o "$T/a/metrics.csv/sub"
 bad "diff of a non-fluidsurf EXR" "no channel" diff "$T/rgb_only.exr" "$T/a/reference.exr"
 bad "diff of one file" "two EXR" diff "$T/a/reference.exr"

@@ -57,6 +57,12 @@ read -r sw sh <<< "$(size single/panel.png)"; read -r mw mh <<< "$(size study/me
 check '[ -n "$sh" ] && [ "$sh" = "$mh" ] && [ $((mw - sw)) -le 24 ] && [ $((sw - mw)) -le 24 ]' "the merged panel has the single panel's layout (${mw}x${mh} against ${sw}x${sh})"
 check 'grep -q "fluidsurf:shards.*3" study/merged/report.md && grep -q "| aniso_ssf |" study/merged/report.md && ! grep -q -- "--shard" study/merged/report.md' "merged report.md has the table, names the shards, shows the command without --shard"
 check '[ -z "$(ls -d study/merged.merging-* 2>/dev/null)" ]' "no staging folder left after a merge"
+# a second merge into the merged folder: refused unless --force, which keeps other files
+echo keep > study/merged/notes.txt
+"$BIN" merge study/shards/1 study/shards/2 study/shards/3 -o study/merged 2> again.err; rc=$?
+check '[ $rc -eq 2 ] && [ "$(wc -l < again.err)" -eq 1 ] && grep -q "holds another run.s outputs" again.err' "merge into a used folder is refused ($(cat again.err))"
+"$BIN" merge study/shards/1 study/shards/2 study/shards/3 -o study/merged --force 2>/dev/null; rc=$?
+check '[ $rc -eq 0 ] && [ -s study/merged/notes.txt ] && diff <(body single/metrics.csv | cut -d, -f1-13,15-) <(body study/merged/metrics.csv | cut -d, -f1-13,15-) >/dev/null' "merge --force replaces it, the other file kept"
 
 # 2. a shard killed midway: no DONE, merge names it; --resume finishes it
 rm study/shards/2/DONE study/shards/2/spheres_f0001.exr 2>/dev/null

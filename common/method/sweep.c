@@ -1,6 +1,7 @@
 #include "sweep.h"
 #include "fs_error.h"
 #include "method_params.h"
+#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -33,6 +34,25 @@ int fs_sweep_add(fs_sweep *sweeps, int *nsweeps, const char *spec)
     return FS_OK;
 }
 
+void fs_label_value(const char *value, char *out, int size)
+{
+    int n = 0;
+    for (const char *c = value; *c && n + 1 < size; c++) {
+        unsigned char ch = (unsigned char)*c;
+        if (ch == '+') continue;
+        out[n++] = isalnum(ch) || ch == '_' ? (char)ch : ch == '.' ? 'p' : ch == '-' ? 'm' : 'x';
+    }
+    if (size > 0) out[n] = 0;
+}
+
+int fs_label_is_safe(const char *text)
+{
+    if (!*text) return 0;
+    for (const char *c = text; *c; c++)
+        if (!isalnum((unsigned char)*c) && *c != '_' && *c != '-') return 0;
+    return 1;
+}
+
 int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *sweeps, int nsweeps, fs_variant *out, int max)
 {
     int mine[FS_MAX_SWEEPS], n = 0, total = 1;
@@ -59,8 +79,13 @@ int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *swe
             const fs_sweep *sw = &sweeps[mine[k]];
             const fs_param_def *def = &m->params[sw->param];
             fs_param_parse(def, sw->values[idx[k]], &o->params[sw->param], def->name);
-            lab += snprintf(o->label + lab, sizeof o->label - lab, "_%s=%s", def->name, sw->values[idx[k]]);
+            char safe[sizeof sw->values[0]];
+            fs_label_value(sw->values[idx[k]], safe, sizeof safe);
+            lab += snprintf(o->label + lab, sizeof o->label - lab, "_%s-%s", def->name, safe);
             var += snprintf(o->variant + var, sizeof o->variant - var, "%s%s=%s", k ? ";" : "", def->name, sw->values[idx[k]]);
+            if (lab >= (int)sizeof o->label || var >= (int)sizeof o->variant) /* a cut label could name another variant */
+                return -fs_fail(FS_ERR_INPUT, "%s: the sweep's variant names are longer than %d characters", m->name,
+                                (int)sizeof o->label - 1);
             if (k < 2) { o->sweep_index[k] = mine[k]; o->value_index[k] = idx[k]; }
         }
         o->nswept = n;

@@ -32,7 +32,8 @@ echo "## Convergence as cube shrinks (\`convergence.csv\`, \`convergence.png\`)"
 echo
 echo "| cube (r) | IoU | depth RMSE (r) | depth p95 (r) | normal mean (deg) |"
 echo "|---|---|---|---|---|"
-awk -F, 'NR > 2 {split($2, a, "="); printf "| %s | %.4f | %.3f | %.3f | %.2f |\n", a[2], $5, $7, $8, $9}' "$D/convergence.csv"
+# by name (lib.sh): compare put the swept cube in a column of its own after variant
+csv_awk 'split(col("variant"), a, "="); printf "| %s | %.4f | %.3f | %.3f | %.2f |\n", a[2], col("mask_iou"), col("depth_rmse_r"), col("depth_p95_r"), col("normal_mean_deg")' "$D/convergence.csv"
 echo
 echo "![depth error against cube size](convergence.png)"
 echo

@@ -59,7 +59,7 @@ QSIZE=$(quick "" "-W $SIZE -H $SIZE") # quick: the compare images at SIZE (full:
   --repeat 1 $QSIZE -o "$tmp/c" > /dev/null
 { echo "$prov"; grep -v '^#' "$tmp/c/metrics.csv" | awk -F, 'NR == 1 || $1 == "mesh"'; } > "$OUT/convergence.csv"
 if command -v gnuplot > /dev/null; then
-  awk -F, 'NR > 2 { split($2, a, "="); print a[2], $7, $8 }' "$OUT/convergence.csv" > "$tmp/conv.dat"
+  csv_awk 'split(col("variant"), a, "="); print a[2], col("depth_rmse_r"), col("depth_p95_r")' "$OUT/convergence.csv" > "$tmp/conv.dat"
   gnuplot <<GP
 set terminal pngcairo size 640,420
 set output "$OUT/convergence.png"

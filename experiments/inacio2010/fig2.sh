@@ -25,7 +25,7 @@ frame=$TMP/dam_0010.bgeo
     --frames 10 --cpu -q -o "$TMP/dam_%04d.bgeo" --stats "$TMP/stats.csv"
 printf '{"particles": "dam_0010.bgeo", "radius": %s, "up": "y", "material": "water", "background": "checker"}\n' "$r" \
     > "$TMP/scene.json"
-"$BIN" compare --no-cache "$TMP/scene.json" --methods spheres,volume_raycast -W "$SIZE" -H "$SIZE" --repeat 3 \
+"$BIN" compare --force --no-cache "$TMP/scene.json" --methods spheres,volume_raycast -W "$SIZE" -H "$SIZE" --repeat 3 \
     -o "$TMP/compare" -q 2> "$TMP/compare.log"
 cp "$TMP/compare/metrics.csv" "$OUT/fig2_metrics.csv"
 cp "$TMP/compare/timings.csv" "$OUT/fig2_timings.csv"

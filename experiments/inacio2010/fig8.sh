@@ -23,7 +23,8 @@ over=$(sed -n 's/^ *[0-9]* pixels (\([0-9.]*\)%) over 0.05.*/\1/p' "$TMP/idiff.t
 {
   echo "# $(csv_commit "$R/volume_raycast_bar.csv"); images and metrics from volume_raycast.sh ($(sed -n '1s/^# *//p' "$R/volume_raycast_bar.csv" | cut -c1-200))"
   echo "row,mask_iou,normal_mean_deg,interior_normal_mean_deg,image_mean_error,image_rms_error,image_max_error,image_psnr_db,image_pixels_over_0.05_pct"
-  awk -F, '$1 == "volume_raycast" { m = $2; sub(/.*mode=/, "", m); print m " against reference," $5 "," $9 "," $11 ",,,,," }' \
+  csv_awk 'if (col("method") == "volume_raycast") { m = col("variant"); sub(/.*mode=/, "", m)
+    print m " against reference," col("mask_iou") "," col("normal_mean_deg") "," col("interior_normal_mean_deg") ",,,,," }' \
     "$R/volume_raycast_bar.csv"
   echo "translucent image against surface image,,,,$(stat "Mean error"),$(stat "RMS error"),$(stat "Max error"),$(stat "Peak SNR"),${over:-0}"
 } > "$R/fig8.csv"

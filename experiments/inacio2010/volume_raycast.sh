@@ -65,12 +65,12 @@ if [ "${SKIP_BAR:-0}" != 1 ]; then
   -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/dam"
 { echo "# volume_raycast vs reference, experiments/scenes/dam_break.json (24389 particles), ${SIZE}x${SIZE}, grid $GRID; fluidsurf compare metrics.csv"
   grep -v '^#' "$tmp/dam/metrics.csv"; } > "$R/volume_raycast_bar.csv"
-cp "$tmp/dam/volume_raycast_mode=surface.png" "$R/volume_raycast_dam_shared.png"
-cp "$tmp/dam/volume_raycast_mode=surface_own.png" "$R/volume_raycast_dam_own_surface.png"
-cp "$tmp/dam/volume_raycast_mode=translucent_own.png" "$R/volume_raycast_dam_own_translucent.png"
+cp "$tmp/dam/volume_raycast_mode-surface.png" "$R/volume_raycast_dam_shared.png"
+cp "$tmp/dam/volume_raycast_mode-surface_own.png" "$R/volume_raycast_dam_own_surface.png"
+cp "$tmp/dam/volume_raycast_mode-translucent_own.png" "$R/volume_raycast_dam_own_translucent.png"
 cp "$tmp/dam/reference.png" "$R/volume_raycast_dam_reference.png"
 cp "$tmp/dam/panel.png" "$R/volume_raycast_dam_panel.png"
-cp "$tmp/dam/diff_volume_raycast_mode=surface.png" "$R/volume_raycast_dam_diff.png"
+cp "$tmp/dam/diff_volume_raycast_mode-surface.png" "$R/volume_raycast_dam_diff.png"
 fi
 
 # 2. stage times on synthetic boxes

@@ -17,20 +17,20 @@ OUT=$RESULTS/iwasaki2006
 TMP=out/$(quick "" quick/)iwasaki2006/fig8
 mkdir -p "$OUT" "$TMP"
 [ -x "$BIN" ] || { echo "fig8.sh: $BIN missing: cmake -S . -B build && cmake --build build" >&2; exit 2; }
-"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods surfels --set surfels.grid_build=splat,exact \
+"$BIN" compare --force --no-cache experiments/scenes/dam_break.json --methods surfels --set surfels.grid_build=splat,exact \
     --reference reference -W "$SIZE" -H "$SIZE" --repeat 1 -o "$TMP" -q 2> "$TMP/compare.log"
-splat=$TMP/surfels_grid_build=splat.exr exact=$TMP/surfels_grid_build=exact.exr
+splat=$TMP/surfels_grid_build-splat.exr exact=$TMP/surfels_grid_build-exact.exr
 "$BIN" diff "$splat" "$exact" > "$TMP/diff.txt"
 # diff prints "name value" lines, named as metrics.csv's columns
 val() { awk -v k="$1" '$1 == k { print $2 }' "$TMP/diff.txt"; }
 {
   sed -n 1p "$TMP/metrics.csv" | cut -c1-600
   echo "image,against,mask_iou,depth_rmse_r,normal_mean_deg,interior_normal_mean_deg,psnr_db,ssim"
-  awk -F, '$1 == "surfels" { g = $2; sub(/.*grid_build=/, "", g)
-    print g ",reference," $5 "," $7 "," $9 "," $11 "," $12 "," $13 }' "$TMP/metrics.csv"
+  csv_awk 'if (col("method") == "surfels") { g = col("variant"); sub(/.*grid_build=/, "", g)
+    print g ",reference," col("mask_iou") "," col("depth_rmse_r") "," col("normal_mean_deg") "," col("interior_normal_mean_deg") "," col("psnr_db") "," col("ssim") }' "$TMP/metrics.csv"
   echo "splat,exact,$(val mask_iou),$(val depth_rmse_r),$(val normal_mean_deg),$(val interior_normal_mean_deg),$(val psnr_db),$(val ssim)"
 } > "$OUT/fig8.csv"
 stamp_csv "$OUT/fig8.csv"
-frames_mosaic "$OUT/fig8_pair.png" 2x1 "$(quick 400x400 64x64)" "$TMP/surfels_grid_build=splat_own.png" \
-  "$TMP/surfels_grid_build=exact_own.png"
+frames_mosaic "$OUT/fig8_pair.png" 2x1 "$(quick 400x400 64x64)" "$TMP/surfels_grid_build-splat_own.png" \
+  "$TMP/surfels_grid_build-exact_own.png"
 echo "wrote $OUT/fig8.csv, $OUT/fig8_pair.png"

@@ -30,11 +30,11 @@ for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/
       split($2, v, "="); c = v[2]; r = $9; for (i = 10; i <= NF; i++) r = r "," $i;
       print s "," n "," k "," c "," $3 "," $4 "," r }' "$tmp/$name/timings.csv" >> "$csv.new"
   cp "$tmp/$name/metrics.csv" "$R/${name}_metrics.csv"
-  cp "$tmp/$name/surfels_caustics=on_own.png" "$R/${name}_own.png"
-  cp "$tmp/$name/surfels_caustics=on.png" "$R/${name}_shared.png"
+  cp "$tmp/$name/surfels_caustics-on_own.png" "$R/${name}_own.png"
+  cp "$tmp/$name/surfels_caustics-on.png" "$R/${name}_shared.png"
   cp "$tmp/$name/reference.png" "$R/${name}_reference.png"
   cp "$tmp/$name/panel.png" "$R/${name}_panel.png"
-  oiiotool "$tmp/$name/surfels_caustics=on.exr" --ch caustics --ch 0,0,0 -o "$R/${name}_caustics.png"
+  oiiotool "$tmp/$name/surfels_caustics-on.exr" --ch caustics --ch 0,0,0 -o "$R/${name}_caustics.png"
 done
 mv "$csv.new" "$csv"
 stamp_csv "$csv" "$R"/{dam_break,double_dam}_metrics.csv

@@ -12,8 +12,8 @@ SPEED=$(quick 1024 128) BOX=$(quick box_1m box_8k) # table1.sh's speed cells
 for f in fig3_slab_metrics.csv fig3_slab_bands.csv fig3_box_bands.csv fig3_dam_metrics.csv table1.csv; do
   [ -f "$R/$f" ] || { echo "bars.sh: $R/$f missing: run fig3.sh and table1.sh first" >&2; exit 2; }
 done
-# metric FILE VARIANT COLUMN: a column of metrics.csv for one variant.
-metric() { awk -F, -v v="$2" -v c="$3" '!/^#/ && $2 == v {print $c}' "$1"; }
+# metric FILE VARIANT COLUMN: a column of metrics.csv for one variant (by name: lib.sh).
+metric() { csv_awk -v v="$2" 'if (col("variant") == v) print col("'"$3"'")' "$1"; }
 # band FILE NORMALS FILTER REGION: mean_deg of a bands row.
 band() { awk -F, -v n="$2" -v f="filter=$3" -v r="$4" '$1 == n && $2 == f && $3 == r {print $5}' "$1"; }
 # frame LABEL METHOD SIZE [STAGE]
@@ -25,7 +25,7 @@ csv=$R/bars.csv
   echo "# $(csv_commit $R/fig3_slab_metrics.csv $R/fig3_slab_bands.csv $R/fig3_box_bands.csv $R/fig3_dam_metrics.csv $R/table1.csv); issue 4 bars, raycast_pca shipped defaults; from fig3_*.csv and table1.csv (llvmpipe)"
   echo "bar,measured,threshold,verdict,note"
   # 1. slab, harness interior mask (includes the rounded band along the slab's edges)
-  b=$(metric $R/fig3_slab_metrics.csv "$B" 11); a=$(metric $R/fig3_slab_metrics.csv "$Ba" 11)
+  b=$(metric $R/fig3_slab_metrics.csv "$B" interior_normal_mean_deg); a=$(metric $R/fig3_slab_metrics.csv "$Ba" interior_normal_mean_deg)
   echo "slab_interior_blend_deg (harness mask),$b,<= 2 and < basic $a,$(verdict "$b <= 2 && $b < $a"),interior = >= 3 px from silhouettes; keeps the 2r edge band"
   b=$(band $R/fig3_slab_bands.csv blend on face); a=$(band $R/fig3_slab_bands.csv basic on face)
   echo "slab_face_blend_deg (interior minus 2r edge band),$b,<= 2 and < basic $a,$(verdict "$b <= 2 && $b < $a"),the issue reports interior and edge band separately"
@@ -37,7 +37,7 @@ csv=$R/bars.csv
   b=$(band $R/fig3_box_bands.csv blend on edge_band_interior); a=$(band $R/fig3_box_bands.csv basic on edge_band_interior)
   echo "box_edge_band_interior_blend_deg,$b,<= basic $a,$(verdict "$b <= $a"),the same band inside the 3 px interior mask"
   # 3. dam break against reference
-  iou=$(metric $R/fig3_dam_metrics.csv "$B" 5); p95=$(metric $R/fig3_dam_metrics.csv "$B" 8)
+  iou=$(metric $R/fig3_dam_metrics.csv "$B" mask_iou); p95=$(metric $R/fig3_dam_metrics.csv "$B" depth_p95_r)
   echo "dam_break_iou,$iou,>= 0.97,$(verdict "$iou >= 0.97"),$(quick 512x512 128x128) against reference (same kernel and iso)"
   echo "dam_break_depth_p95_r,$p95,<= 0.1,$(verdict "$p95 <= 0.1"),error around the bias in r"
   # 4. speed at 1024^2

@@ -27,18 +27,18 @@ small() { oiiotool "$1" --resize "$2" -o "$3"; } # downscaled copy for the repos
 
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic -W "$SIZE" -H "$SIZE" \
+  "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic -W "$SIZE" -H "$SIZE" \
       --repeat 1 -o "$d" 2> "$TMP/$shape.log"
   cp "$d/metrics.csv" "$OUT/fig3_${shape}_metrics.csv"
   exrs=()
-  for n in basic pca blend; do for f in on off; do exrs+=("$d/raycast_pca_normals=${n}_normal_filter=$f.exr"); done; done
+  for n in basic pca blend; do for f in on off; do exrs+=("$d/raycast_pca_normals-${n}_normal_filter-$f.exr"); done; done
   "$TOOL" --profile "experiments/scenes/$shape.json" "$d/analytic.exr" "${exrs[@]}" |
-      sed "/^#/!{s|$d/raycast_pca_normals=||; s|_normal_filter=|,filter=|; s|\.exr,|,|}; s|^file,region|normals,filter,region|" \
+      sed "/^#/!{s|$d/raycast_pca_normals-||; s|_normal_filter-|,filter=|; s|\.exr,|,|}; s|^file,region|normals,filter,region|" \
       > "$OUT/fig3_${shape}_bands.csv"
   stamp_csv "$OUT/fig3_${shape}_metrics.csv" "$OUT/fig3_${shape}_bands.csv"
   for n in basic blend; do
     "$TOOL" --map "$TMP/${shape}_errmap_$n.png" "experiments/scenes/$shape.json" "$d/analytic.exr" \
-        "$d/raycast_pca_normals=${n}_normal_filter=on.exr" > /dev/null
+        "$d/raycast_pca_normals-${n}_normal_filter-on.exr" > /dev/null
     small "$TMP/${shape}_errmap_$n.png" "$(quick 256x256 128x128)" "$OUT/fig3_${shape}_errmap_$n.png"
   done
   small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig3_${shape}_panel.png"
@@ -46,7 +46,7 @@ for shape in slab box; do
 done
 
 d=$TMP/dam
-"$BIN" compare --no-cache experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
+"$BIN" compare --force --no-cache experiments/scenes/dam_break.json "${SWEEP[@]}" -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" 2> "$TMP/dam.log"
 cp "$d/metrics.csv" "$OUT/fig3_dam_metrics.csv"
 stamp_csv "$OUT/fig3_dam_metrics.csv"
 small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig3_dam_panel.png"

@@ -36,7 +36,7 @@ P_CAMERA=${P_CAMERA/\"fov\": $FOV/\"fov\": $(awk -v f="$FOV" 'BEGIN {print f * 1
 for f in $FRAMES; do
   frame_scene "$pat" "$f" "$SIZE" "$P_CAMERA" > "$TMP/frame_$f.json"
   d=$TMP/frame_$f
-  "$BIN" compare --no-cache "$TMP/frame_$f.json" --methods raycast_pca,spheres --reference reference \
+  "$BIN" compare --force --no-cache "$TMP/frame_$f.json" --methods raycast_pca,spheres --reference reference \
       --repeat "$(quick 3 1)" -o "$d" -q 2> "$d.log"
   [ "$f" = "$first" ] && sed -n '1s/^# *\(.*\)$/# compare: \1/p' "$d/metrics.csv" >> "$TMP/fig4.csv.prov"
   awk -F, -v f="$f" '$1 == "raycast_pca" || $1 == "spheres" {

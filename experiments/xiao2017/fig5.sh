@@ -22,9 +22,9 @@ mkdir -p "$OUT" "$W"
 [ -x "$BIN" ] || { echo "fig5.sh: $BIN missing" >&2; exit 2; }
 # every registered method, as `fluidsurf methods` lists them (first word of each line)
 methods=$("$BIN" methods | awk '/^[^ ]/ && $1 != "reference" { print $1 }' | paste -sd,)
-"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
+"$BIN" compare --force --no-cache experiments/scenes/dam_break.json --methods "$methods" -W "$SIZE" -H "$SIZE" --repeat 1 \
     -o "$TMP" 2> "$W/fig5.log"
-"$BIN" compare --no-cache experiments/scenes/dam_break.json --methods aniso_ssf --set aniso_ssf.anisotropy=off \
+"$BIN" compare --force --no-cache experiments/scenes/dam_break.json --methods aniso_ssf --set aniso_ssf.anisotropy=off \
     --set aniso_ssf.filter=curvature -W "$SIZE" -H "$SIZE" --repeat 1 -o "$TMP"_ssf 2> "$W/fig5_ssf.log"
 { cat "$TMP/metrics.csv"; awk -F, -v OFS=, '!/^#/ && $1 == "aniso_ssf" { $2 = "anisotropy=off;filter=curvature"; print }' "$TMP"_ssf/metrics.csv; } > "$OUT/fig5_metrics.csv"
 stamp_csv "$OUT/fig5_metrics.csv"

@@ -33,7 +33,7 @@ auto_camera "$BIN" "$TMP/frame_first.json" "$TMP"
 for f in $FRAMES; do
   frame_scene "$pat" "$f" "$SIZE" "$P_CAMERA" > "$TMP/frame_$f.json"
   d=$TMP/frame_$f
-  "$BIN" compare --no-cache "$TMP/frame_$f.json" --methods raycast_pca --reference reference \
+  "$BIN" compare --force --no-cache "$TMP/frame_$f.json" --methods raycast_pca --reference reference \
       --repeat "$(quick 3 1)" -o "$d" -q 2> "$d.log"
   [ "$f" = "$first" ] && sed -n '1s/^# *\(.*\)$/# compare: \1/p' "$d/metrics.csv" | cut -c1-600 > "$TMP/prov"
   n=$("$BIN" info "$(printf "$pat" "$f")" 2> /dev/null | sed -n 's/^particles: //p')

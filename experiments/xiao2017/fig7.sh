@@ -39,7 +39,7 @@ auto_camera "$BIN" "$TMP/frame_crown.json" "$TMP"
 for f in $FRAMES; do
   frame_scene "$pat" "$f" "$SIZE" "$P_CAMERA" > "$TMP/frame_$f.json"
   d=$TMP/frame_$f
-  "$BIN" compare --no-cache "$TMP/frame_$f.json" --methods raycast_pca --reference reference \
+  "$BIN" compare --force --no-cache "$TMP/frame_$f.json" --methods raycast_pca --reference reference \
       --repeat "$(quick 3 1)" -o "$d" -q 2> "$d.log"
   awk -F, -v f="$f" '$1 == "raycast_pca" { printf "%s,%.3f,%s,%s,%s,%s,%s,%s,%s\n", f, f / 60, $5, $8, $9, $11, $12, $13, $14 }' \
       "$d/metrics.csv" >> "$TMP/fig7.csv"

@@ -24,15 +24,16 @@ for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "joint_sweep.sh: $x missing" >
 mkdir -p "$OUT" "$TMP"
 csv=$OUT/joint_sweep.csv
 
-# one compare per normals mode; variant files are raycast_pca_<P=V>_<P=V>.exr
+# one compare per normals mode; variant files are raycast_pca_<P-V>_<P-V>.exr
 sweep() { # scene reference normals sets... -> folder
   local scene=$1 ref=$2 normals=$3 d=$TMP/$1_$3_$size; shift 3
-  "$BIN" compare --no-cache "experiments/scenes/$scene.json" --methods raycast_pca --set raycast_pca.normals=$normals \
+  "$BIN" compare --force --no-cache "experiments/scenes/$scene.json" --methods raycast_pca --set raycast_pca.normals=$normals \
       "$@" --reference "$ref" -W $size -H $size --repeat 1 -q -o "$d" 2> "$d.log" || { cat "$d.log" >&2; exit 1; }
   echo "$d"
 }
-# R and min_neighbors of a variant name ("...pca_radius=3_min_neighbors=4" or "...pca_radius=3")
-params_of() { echo "$1" | sed -n 's/.*pca_radius=\([0-9.]*\)\(_min_neighbors=\([0-9]*\)\)\{0,1\}.*/\1,\3/p'; }
+# R and min_neighbors of a variant's file label ("...pca_radius-3_min_neighbors-4" or
+# "...pca_radius-3p5": a '.' in a label is written 'p')
+params_of() { echo "$1" | sed -n 's/.*pca_radius-\([0-9p]*\)\(_min_neighbors-\([0-9]*\)\)\{0,1\}.*/\1,\3/p' | tr p .; }
 
 {
   for scene in slab box; do
@@ -51,11 +52,11 @@ params_of() { echo "$1" | sed -n 's/.*pca_radius=\([0-9.]*\)\(_min_neighbors=\([
   for normals in basic blend; do
     extra=(); [ $normals = blend ] && extra=(--set raycast_pca.min_neighbors=$mins)
     d=$(sweep dam_break reference $normals --set raycast_pca.pca_radius=$radii "${extra[@]}")
-    # metrics.csv: method,variant,reference,frame,...,interior_normal_mean_deg (column 11)
-    awk -F, -v n=$normals '!/^#/ && $1 == "raycast_pca" { v = $2; r = v; m = "-"
+    # metrics.csv's variant ("pca_radius=3;min_neighbors=4") and interior_normal_mean_deg, by name
+    csv_awk -v n=$normals 'if (col("method") == "raycast_pca") { v = col("variant"); r = v; m = "-"
         sub(/.*pca_radius=/, "", r); sub(/[ _;].*/, "", r)
         if (v ~ /min_neighbors=/) { m = v; sub(/.*min_neighbors=/, "", m); sub(/[ _;].*/, "", m) }
-        printf "dam_break,%s,%s,%s,%.2f,,\n", n, r, m, $11 }' "$d/metrics.csv"
+        printf "dam_break,%s,%s,%s,%.2f,,\n", n, r, m, col("interior_normal_mean_deg") }' "$d/metrics.csv"
   done
 } | sort -t, -k1,1 -k2,2 -k3,3n -k4,4n > "$csv.body"
 renderer=$(sed -n '1s/.*gl_renderer=\([^;]*\);.*/\1/p' "$TMP/dam_break_blend_$size/metrics.csv")

@@ -21,12 +21,12 @@ csv=$OUT/radius_sweep.csv
 echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.new"
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare --no-cache "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
+  "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
       --set raycast_pca.pca_radius=$(quick 3,4,5,6 3,4) --reference analytic -W $SIZE -H $SIZE --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/raycast_pca_*.exr |
     awk -F, -v s="$shape" '!/^#/ && $1 != "file" {
-        f = $1; sub(/.*raycast_pca_normals=/, "", f); sub(/\.exr$/, "", f);
-        split(f, a, /_pca_radius=/); key = s "," a[1] "," a[2];
+        f = $1; sub(/.*raycast_pca_normals-/, "", f); sub(/\.exr$/, "", f);
+        split(f, a, /_pca_radius-/); gsub(/p/, ".", a[2]); key = s "," a[1] "," a[2];
         v[key, $2] = $4; keys[key] = 1 }
       END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
     sort >> "$csv.new"

@@ -15,11 +15,11 @@ R=$RESULTS/xu2022
 S=out/$(quick "" quick/)xu2022/fig6/slab
 SIZE=$(quick 512 128) SPEED=$(quick 1024 128) BOX=$(quick box_1m box_8k) # fig6.sh's size, fig9.sh's
 for f in $R/fig6_slab_metrics.csv $R/fig6_box_metrics.csv $R/timings.csv \
-         "$S/aniso_ssf_anisotropy=on_filter=curvature.exr" "$S/aniso_ssf_anisotropy=on_filter=none.exr"; do
+         "$S/aniso_ssf_anisotropy-on_filter-curvature.exr" "$S/aniso_ssf_anisotropy-on_filter-none.exr"; do
   [ -f "$f" ] || { echo "bars.sh: $f missing: run fig6.sh and fig9.sh first" >&2; exit 2; }
 done
-# metric FILE VARIANT COLUMN (11 = interior_normal_mean_deg, 5 = mask_iou)
-metric() { awk -F, -v v="$2" -v c="$3" '!/^#/ && $2 == v {print $c}' "$1"; }
+# metric FILE VARIANT COLUMN: a column of metrics.csv for one variant (by name: lib.sh)
+metric() { csv_awk -v v="$2" 'if (col("variant") == v) print col("'"$3"'")' "$1"; }
 # diffval A B KEY: one metric of `fluidsurf diff A B` (B the reference)
 diffval() { "$BIN" diff "$1" "$2" | awk -v k="$3" '$1 == k {print $2}'; }
 # stage LABEL ANISO FILTER STAGE: median ms from timings.csv
@@ -32,15 +32,15 @@ csv=$R/bars.csv
   echo "bar,measured,threshold,verdict,note"
   # (a) anisotropic vs isotropic sprites, both with the narrow-range filter
   for s in slab box; do
-    on=$(metric $R/fig6_${s}_metrics.csv "anisotropy=on;filter=narrow" 11)
-    off=$(metric $R/fig6_${s}_metrics.csv "anisotropy=off;filter=narrow" 11)
+    on=$(metric $R/fig6_${s}_metrics.csv "anisotropy=on;filter=narrow" interior_normal_mean_deg)
+    off=$(metric $R/fig6_${s}_metrics.csv "anisotropy=off;filter=narrow" interior_normal_mean_deg)
     echo "a_${s}_interior_aniso_narrow_deg,$on,< isotropic+narrow $off,$(verdict "$on < $off"),against analytic; ${SIZE}^2; interior = >= 3 px from silhouettes"
   done
   # (b) curvature flow (80 iterations) vs no filter on the slab
   for a in on off; do
-    cf=$(metric $R/fig6_slab_metrics.csv "anisotropy=$a;filter=curvature" 11)
-    nf=$(metric $R/fig6_slab_metrics.csv "anisotropy=$a;filter=none" 11)
-    iou=$(diffval "$S/aniso_ssf_anisotropy=${a}_filter=curvature.exr" "$S/aniso_ssf_anisotropy=${a}_filter=none.exr" mask_iou)
+    cf=$(metric $R/fig6_slab_metrics.csv "anisotropy=$a;filter=curvature" interior_normal_mean_deg)
+    nf=$(metric $R/fig6_slab_metrics.csv "anisotropy=$a;filter=none" interior_normal_mean_deg)
+    iou=$(diffval "$S/aniso_ssf_anisotropy-${a}_filter-curvature.exr" "$S/aniso_ssf_anisotropy-${a}_filter-none.exr" mask_iou)
     tag=""; [ "$a" = on ] || tag=" (not the shipped default: anisotropy off)"
     echo "b_slab_curvature_aniso_${a}_interior_deg,$cf,< no filter $nf,$(verdict "$cf < $nf"),80 iterations; dt = z/(2 f_px)$tag"
     echo "b_slab_curvature_aniso_${a}_coverage_iou,$iou,>= 0.98,$(verdict "$iou >= 0.98"),fluidsurf diff curvature.exr none.exr$tag"

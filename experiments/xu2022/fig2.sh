@@ -15,19 +15,20 @@ mkdir -p "$OUT"
 imgs=()
 for spec in box:analytic dam:reference; do
   IFS=: read -r scene ref <<< "$spec"
-  for f in "$D/$scene/$ref.png" "$D/$scene/aniso_ssf_anisotropy=off_filter=none.png" \
-           "$D/$scene/aniso_ssf_anisotropy=on_filter=none.png" "$D/$scene/metrics.csv"; do
+  for f in "$D/$scene/$ref.png" "$D/$scene/aniso_ssf_anisotropy-off_filter-none.png" \
+           "$D/$scene/aniso_ssf_anisotropy-on_filter-none.png" "$D/$scene/metrics.csv"; do
     [ -f "$f" ] || { echo "fig2.sh: $f missing: run experiments/xu2022/fig6.sh first" >&2; exit 2; }
   done
-  imgs+=("$D/$scene/$ref.png" "$D/$scene/aniso_ssf_anisotropy=off_filter=none.png" "$D/$scene/aniso_ssf_anisotropy=on_filter=none.png")
+  imgs+=("$D/$scene/$ref.png" "$D/$scene/aniso_ssf_anisotropy-off_filter-none.png" "$D/$scene/aniso_ssf_anisotropy-on_filter-none.png")
 done
 {
   echo "# $(csv_commit "$D/box/metrics.csv" "$D/dam/metrics.csv"); from fig6.sh's metrics ($D/{box,dam}/metrics.csv), filter none"
   echo "scene,reference,anisotropy,mask_iou,normal_mean_deg,interior_normal_mean_deg,depth_rmse_r"
   for spec in box:analytic dam:reference; do
     IFS=: read -r scene ref <<< "$spec"
-    awk -F, -v s="$scene" -v r="$ref" '$1 == "aniso_ssf" && $2 ~ /filter=none$/ && $3 == r {
-      a = $2; sub(/;.*/, "", a); sub(/anisotropy=/, "", a); print s "," r "," a "," $5 "," $9 "," $11 "," $7 }' "$D/$scene/metrics.csv"
+    csv_awk -v s="$scene" -v r="$ref" 'if (col("method") == "aniso_ssf" && col("variant") ~ /filter=none$/ && col("reference") == r) {
+      a = col("variant"); sub(/;.*/, "", a); sub(/anisotropy=/, "", a)
+      print s "," r "," a "," col("mask_iou") "," col("normal_mean_deg") "," col("interior_normal_mean_deg") "," col("depth_rmse_r") }' "$D/$scene/metrics.csv"
   done
 } > "$OUT/fig2.csv.new"
 mv "$OUT/fig2.csv.new" "$OUT/fig2.csv"

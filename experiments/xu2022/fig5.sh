@@ -45,7 +45,7 @@ json.dump(scene, open(out, "w"), indent=1)
 PY
 FILTERS="none gaussian bilateral curvature narrow"
 d=$TMP/compare
-"$BIN" compare --no-cache "$TMP/scene.json" --methods aniso_ssf --set aniso_ssf.anisotropy=off,on \
+"$BIN" compare --force --no-cache "$TMP/scene.json" --methods aniso_ssf --set aniso_ssf.anisotropy=off,on \
     --set "aniso_ssf.filter=${FILTERS// /,}" --reference reference --reference reference:field=anisotropic \
     -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/compare.log"
 cp "$d/metrics.csv" "$OUT/fig5_metrics.csv"
@@ -54,10 +54,12 @@ cp "$d/metrics.csv" "$OUT/fig5_metrics.csv"
   echo "frame,reference,anisotropy,filter,region,pixels,mean_deg,p95_deg,depth_mean_r"
   for f in $(seq "$FIRST" "$LAST"); do
     ff=$(printf _f%04d "$f") exrs=()
-    for a in off on; do for x in $FILTERS; do exrs+=("$d/aniso_ssf_anisotropy=${a}_filter=$x$ff.exr"); done; done
-    for ref in reference reference_field=anisotropic; do
+    for a in off on; do for x in $FILTERS; do exrs+=("$d/aniso_ssf_anisotropy-${a}_filter-$x$ff.exr"); done; done
+    # each reference's file label, and its name in the CSVs (as before labels were file-safe)
+    for pair in "reference reference" "reference_field-anisotropic reference_field=anisotropic"; do
+      read -r ref name <<< "$pair"
       "$TOOL" --band 3 "$TMP/scene.json" "$d/$ref$ff.exr" "${exrs[@]}" | sed '/^#/d; /^file,/d' |
-          sed "s|^$d/aniso_ssf_anisotropy=\([a-z]*\)_filter=\([a-z]*\)${ff}\.exr|$f,$ref,\1,\2|"
+          sed "s|^$d/aniso_ssf_anisotropy-\([a-z]*\)_filter-\([a-z]*\)${ff}\.exr|$f,$name,\1,\2|"
     done
   done
 } > "$TMP/fig5_bands.csv"
@@ -80,11 +82,11 @@ mv "$TMP"/fig5_bands.csv "$TMP"/fig5_bands_summary.csv "$TMP"/fig5_interface.csv
 stamp_csv "$OUT"/fig5_{metrics,bands,bands_summary,interface}.csv
 show=$(printf _f%04d "$SHOW")
 frames_mosaic "$OUT/fig5_row.png" 3x1 "$(quick 400x400 64x64)" "$d/reference$show.png" \
-    "$d/aniso_ssf_anisotropy=off_filter=narrow$show.png" "$d/aniso_ssf_anisotropy=on_filter=narrow$show.png"
+    "$d/aniso_ssf_anisotropy-off_filter-narrow$show.png" "$d/aniso_ssf_anisotropy-on_filter-narrow$show.png"
 crop=$(quick 256x256+185+128 64x64+46+32) grid=()
 for a in off on; do
   grid+=("$d/reference$show.png")
-  for x in $FILTERS; do grid+=("$d/aniso_ssf_anisotropy=${a}_filter=$x$show.png"); done
+  for x in $FILTERS; do grid+=("$d/aniso_ssf_anisotropy-${a}_filter-$x$show.png"); done
 done
 frames_mosaic "$OUT/fig7_grid.png" 6x2 "$(quick 200x200 64x64)" --cut "$crop" "${grid[@]}"
 echo "wrote $OUT/fig5_*.csv, $OUT/fig5_row.png, $OUT/fig7_grid.png"

@@ -40,7 +40,7 @@ grid() {
   fi
   for a in off on; do
     args+=("$d/$ref.png" --cut "$crop" --resize $(quick 150x150 64x64))
-    for f in $FILTERS; do args+=("$d/aniso_ssf_anisotropy=${a}_filter=$f.png" --cut "$crop" --resize $(quick 150x150 64x64)); done
+    for f in $FILTERS; do args+=("$d/aniso_ssf_anisotropy-${a}_filter-$f.png" --cut "$crop" --resize $(quick 150x150 64x64)); done
   done
   oiiotool "${args[@]}" --mosaic 6x2 --ch R,G,B -o "$out"
 }
@@ -48,7 +48,7 @@ grid() {
 for spec in "dam:experiments/scenes/dam_break.json:400x400+50+30" "double_dam:experiments/xu2022/double_dam_break.json:400x400+56+100"; do
   IFS=: read -r label scene crop <<< "$spec"
   d=$TMP/$label
-  "$BIN" compare --no-cache "$scene" "${SWEEP[@]}" --reference reference --reference reference:field=anisotropic \
+  "$BIN" compare --force --no-cache "$scene" "${SWEEP[@]}" --reference reference --reference reference:field=anisotropic \
       -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/$label.log"
   cp "$d/metrics.csv" "$OUT/fig6_${label}_metrics.csv"
   stamp_csv "$OUT/fig6_${label}_metrics.csv"
@@ -60,13 +60,13 @@ done
 for spec in slab:440x300+30+150 box:460x460+26+10; do
   IFS=: read -r shape crop <<< "$spec"
   d=$TMP/$shape
-  "$BIN" compare --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic \
+  "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" "${SWEEP[@]}" --reference analytic \
       -W "$SIZE" -H "$SIZE" --repeat 1 -o "$d" -q 2> "$TMP/$shape.log"
   cp "$d/metrics.csv" "$OUT/fig6_${shape}_metrics.csv"
   exrs=()
-  for a in off on; do for f in $FILTERS; do exrs+=("$d/aniso_ssf_anisotropy=${a}_filter=$f.exr"); done; done
+  for a in off on; do for f in $FILTERS; do exrs+=("$d/aniso_ssf_anisotropy-${a}_filter-$f.exr"); done; done
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "${exrs[@]}" |
-      sed "/^#/!{s|$d/aniso_ssf_anisotropy=||; s|_filter=|,|; s|\.exr,|,|}; s|^file,region|anisotropy,filter,region|" \
+      sed "/^#/!{s|$d/aniso_ssf_anisotropy-||; s|_filter-|,|; s|\.exr,|,|}; s|^file,region|anisotropy,filter,region|" \
       > "$OUT/fig6_${shape}_bands.csv"
   stamp_csv "$OUT/fig6_${shape}_metrics.csv" "$OUT/fig6_${shape}_bands.csv"
   small "$d/panel.png" "$(quick 640x0 320x0)" "$OUT/fig6_${shape}_panel.png"

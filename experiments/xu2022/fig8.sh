@@ -24,7 +24,7 @@ mkdir -p "$OUT"
 D=out/$(quick "" quick/)xu2022/fig6/dam
 FILTERS="gaussian bilateral curvature narrow"
 exrs=("$D/reference.exr")
-for f in $FILTERS; do exrs+=("$D/aniso_ssf_anisotropy=on_filter=$f.exr"); done
+for f in $FILTERS; do exrs+=("$D/aniso_ssf_anisotropy-on_filter-$f.exr"); done
 for e in "${exrs[@]}" "$D/metrics.csv"; do
   [ -f "$e" ] || { echo "fig8.sh: $e missing: run experiments/xu2022/fig6.sh first" >&2; exit 2; }
 done
@@ -32,8 +32,10 @@ done
 {
   sed -n 1p "$D/metrics.csv"
   echo "filter,interior_normal_mean_deg,normal_p95_deg,depth_rmse_r,psnr_db,ssim"
-  awk -F, -v want="$FILTERS" '$1 == "aniso_ssf" && $2 ~ /^anisotropy=on;/ && $3 == "reference" {
-    f = $2; sub(/.*filter=/, "", f); if (index(" " want " ", " " f " ")) print f "," $11 "," $10 "," $7 "," $12 "," $13 }' \
+  csv_awk -v want="$FILTERS" 'if (col("method") == "aniso_ssf" && col("variant") ~ /^anisotropy=on;/ && col("reference") == "reference") {
+    f = col("variant"); sub(/.*filter=/, "", f)
+    if (index(" " want " ", " " f " "))
+      print f "," col("interior_normal_mean_deg") "," col("normal_p95_deg") "," col("depth_rmse_r") "," col("psnr_db") "," col("ssim") }' \
     "$D/metrics.csv"
 } > "$OUT/fig8.csv"
 # fig8_highlights.csv: the highlight layout of every image, the reference's too, over
@@ -43,7 +45,7 @@ done
   echo "image,threshold,highlight_pct,areas,largest_px,share_in_large_pct"
   for t in 0.6 0.7 0.8; do
     "$TOOL" --threshold "$t" --min-area 16 "${exrs[@]}" | awk -F, -v t="$t" -v dir="$D/" 'NR > 1 {
-      f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); sub(/^aniso_ssf_anisotropy=on_filter=/, "", f)
+      f = $1; sub(dir, "", f); sub(/\.exr$/, "", f); sub(/^aniso_ssf_anisotropy-on_filter-/, "", f)
       print f "," t "," $4 "," $5 "," $6 "," $7 }'
   done
 } > "$OUT/fig8_highlights.csv"

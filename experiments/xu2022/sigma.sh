@@ -22,13 +22,13 @@ csv=$OUT/sigma_sweep.csv
 echo "scene,filter,sigma_r,anisotropy,interior_deg,face_deg,edge_band_deg" > "$csv.new"
 for shape in slab box; do
   d=$TMP/$shape
-  "$BIN" compare --no-cache "experiments/scenes/$shape.json" --methods aniso_ssf --set aniso_ssf.filter=gaussian,narrow \
+  "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" --methods aniso_ssf --set aniso_ssf.filter=gaussian,narrow \
       --set aniso_ssf.sigma=$(quick 0.5,1.0,1.5 0.5,1.5) --set aniso_ssf.anisotropy=off,on --reference analytic \
       -W $SIZE -H $SIZE --repeat 1 -q -o "$d" 2> "$TMP/$shape.log"
   "$TOOL" "experiments/scenes/$shape.json" "$d/analytic.exr" "$d"/aniso_ssf_*.exr |
     awk -F, -v s="$shape" '!/^#/ && $1 != "file" {
-        f = $1; sub(/.*aniso_ssf_filter=/, "", f); sub(/\.exr$/, "", f);
-        split(f, a, /_sigma=|_anisotropy=/); key = s "," a[1] "," a[2] "," a[3];
+        f = $1; sub(/.*aniso_ssf_filter-/, "", f); sub(/\.exr$/, "", f);
+        split(f, a, /_sigma-|_anisotropy-/); gsub(/p/, ".", a[2]); key = s "," a[1] "," a[2] "," a[3];
         v[key, $2] = $4; keys[key] = 1 }
       END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
     sort >> "$csv.new"
