@@ -3,10 +3,11 @@
 # spheres + aniso_ssf + the reference, 48x48) and a larger one (12 frames, 256x256),
 # each as 1 process, as 1 shard and as 4 shards on a one-node localhost cluster
 # (local_cluster.sh), from submit.sh to the merge job's end. Medians of REPEATS runs.
-# Writes results/slurm/scaling.csv and the README table between its markers.
+# Writes results/slurm/scaling.csv and the table of results/slurm/README.md (not the root
+# README.md: a tracked file outside results/ would mark every later study dirty=1).
 #   bash experiments/slurm/scaling.sh [BIN] [REPEATS]    (as root, from the repository root)
 # FS_QUICK=1 (run_all.sh --quick): the test study only, one run, into out/quick/results/slurm,
-# and no README change.
+# and no table change.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 src=$(pwd)
@@ -61,5 +62,5 @@ renderer=$(grep -ho 'gl_renderer=[^;]*' "$work"/test-0-*/metrics.csv | head -1)
 mv "$csv.tmp" "$csv"
 cd "$src"
 if [ "$FS_QUICK" = 1 ]; then echo "scaling: wrote $csv"; exit 0; fi
-python3 experiments/tools/csv_table.py "$csv" README.md
-echo "scaling: wrote $csv and the README table"
+python3 experiments/tools/csv_table.py "$csv" results/slurm/README.md
+echo "scaling: wrote $csv and the table of results/slurm/README.md"
