@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Regenerates every committed result of every study from a clean build: the four
-# papers, the benchmarks, the baselines, the work counters and the main job.
+# papers, the benchmarks, the baselines, the work counters and the main job's summary
+# (results/demo/, experiments/demo/run.sh; scripts/demo.sh itself writes only out/demo/).
 #
 #   experiments/run_all.sh            full runs, into results/ (hours on 2 cores; commit first,
 #                                     so every CSV names a clean commit)
 #   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
 #                                     minutes; CI runs it so that no study script can rot), then
 #                                     each study's numbers against bounds that hold by definition
-#                                     (tools/check_quick.py) and the checks below
+#                                     (tools/check_quick.py) and the checks below; it also runs
+#                                     scripts/demo.sh and fails if that changes `git status`
 #   experiments/run_all.sh --check    the checks of the committed results: every generated README
 #                                     table is its CSV's, and every committed CSV under results/
 #                                     names a clean commit (tools/check_results.sh)
@@ -102,7 +104,18 @@ study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --
 study baselines bash experiments/baselines/run.sh
 study counters bash experiments/counters/work.sh
 study slurm_scaling bash experiments/slurm/scaling.sh
-study demo bash scripts/demo.sh
+if [ $mode = quick ]; then
+  # the main job as a user runs it (setup, build, compare): its outputs go to out/, which git
+  # ignores, so it must leave `git status` as it found it (docs/DESIGN.md, "Output folders")
+  clean_before=$(git status --porcelain)
+  study main_job bash scripts/demo.sh
+  if [ "$(git status --porcelain)" != "$clean_before" ]; then
+    echo "run_all: main_job: scripts/demo.sh changed git status:" >&2
+    diff <(echo "$clean_before") <(git status --porcelain) >&2 || true
+    exit 1
+  fi
+fi
+study demo bash experiments/demo/run.sh # the main job's committed summary, results/demo/
 study tables bash experiments/tables.sh # after every study: pivots of their CSVs for the READMEs
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 

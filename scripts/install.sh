@@ -1,15 +1,44 @@
 #!/usr/bin/env bash
-# Sets up, builds and installs fluidsurf into PREFIX (default ~/.local): the
-# command, libfluidsurf.so with its header, pkg-config and CMake files, and the
-# Python module. Prints the variables a shell needs to use them.
+# Sets up, builds and installs fluidsurf into PREFIX (default ~/.local): the command,
+# libfluidsurf.so with its header, pkg-config and CMake files, its OpenImageIO plugin, and
+# the Python module. Prints the variables a shell needs to use them.
+#
+#   scripts/install.sh [PREFIX] [--build DIR] [--dry-run]
+#
+# It builds only what it installs (the targets fluidsurf and fluidsurf_lib; no tests, fuzz
+# replays or experiment tools), in a build folder of its own: DIR, default build-install/,
+# configured with -DFS_TESTS=OFF when new (an existing DIR keeps its options; the checkout's
+# build/ and its tests are never touched unless DIR names it). --dry-run prints the plan and
+# runs nothing. The Python module is for Debian's /usr/bin/python3, whose python3-numpy and
+# python3-cffi scripts/setup.sh installs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-prefix=$(realpath -m "${1:-$HOME/.local}")
+die() { echo "install.sh: $*" >&2; exit 2; }
+prefix="" dir=build-install dry=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --build) [ $# -ge 2 ] && [ -n "$2" ] && [ "${2#-}" = "$2" ] || die "--build needs a folder"; dir=$2; shift 2 ;;
+    --dry-run) dry=1; shift ;;
+    -h|--help) sed -n '2,13s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    -*) die "unknown option $1 (usage: scripts/install.sh [PREFIX] [--build DIR] [--dry-run])" ;;
+    *) [ -z "$prefix" ] || die "two prefixes ($prefix and $1)"; prefix=$1; shift ;;
+  esac
+done
+prefix=$(realpath -m "${prefix:-$HOME/.local}")
+configure=(cmake -S . -B "$dir")
+[ -f "$dir/CMakeCache.txt" ] || configure+=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DFS_TESTS=OFF)
+build=(cmake --build "$dir" -j"$(nproc)" --target fluidsurf fluidsurf_lib)
+install=(cmake --install "$dir" --prefix "$prefix")
+if [ $dry -eq 1 ]; then
+  printf '%s\n' "bash scripts/setup.sh" "${configure[*]}" "${build[*]}" "${install[*]}"
+  exit 0
+fi
 bash scripts/setup.sh
-bash scripts/build.sh build
-cmake --install build --prefix "$prefix" > /dev/null
-site=$(sed -n 's/^FS_PYTHON_SITE:STRING=//p' build/CMakeCache.txt)
-libdir=$(sed -n 's/^CMAKE_INSTALL_LIBDIR:PATH=//p' build/CMakeCache.txt)
-echo "install: fluidsurf in $prefix; to use it:"
+"${configure[@]}" > /dev/null
+"${build[@]}"
+"${install[@]}" > /dev/null
+site=$(sed -n 's/^FS_PYTHON_SITE:STRING=//p' "$dir/CMakeCache.txt")
+libdir=$(sed -n 's/^CMAKE_INSTALL_LIBDIR:PATH=//p' "$dir/CMakeCache.txt")
+echo "install: fluidsurf in $prefix (built in $dir/); to use it:"
 echo "  export PATH=\"$prefix/bin:\$PATH\" LD_LIBRARY_PATH=\"$prefix/$libdir\" PKG_CONFIG_PATH=\"$prefix/$libdir/pkgconfig\""
-echo "  export PYTHONPATH=\"$prefix/$site\"   # then: /usr/bin/python3 -c 'import fluidsurf'"
+echo "  export PYTHONPATH=\"$prefix/$site\"   # then: /usr/bin/python3 -c 'import fluidsurf' (Debian's Python: its numpy and cffi)"
