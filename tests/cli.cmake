@@ -41,7 +41,7 @@ if(NOT FS_SANITIZE)
            ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/gpu_quick)
   set_tests_properties(gpu_quick PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()
-# The OpenImageIO module: loaded only when an image is written or read, found in an installed tree.
+# The OpenImageIO module: loaded only for text and tiled or deep EXRs (never for PNG/EXR renders), found in an installed tree.
 if(FS_WITH_OIIO)
   add_test(NAME cli_plugin COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_plugin.sh $<TARGET_FILE:fluidsurf>
            ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_plugin)

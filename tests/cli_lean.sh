@@ -84,8 +84,8 @@ if off OPENVDB; then
   check '! "$BIN" methods | grep -q "^mesh"' "mesh is not registered"
 fi
 if off OIIO; then
-  printf 'II*\0not really a tiff' > "$T/img.tif"
-  OUTFILE= refused OIIO "TIFF input" diff "$T/img.tif" "$T/spheres.exr"
+  # PNG and EXR are read by every build's own code; OpenImageIO reads tiled or deep EXRs
+  OUTFILE= refused OIIO "a tiled EXR" diff "$SRC/tests/fuzz/corpus_exr_core/tiled.exr" "$SRC/tests/fuzz/corpus_exr_core/tiny.exr"
 fi
 if off GLFW; then
   OUTFILE= refused GLFW "view" view "$T/dam.json"

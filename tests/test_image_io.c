@@ -1,6 +1,6 @@
-/* Image files through OpenImageIO: EXR with AOV channels and attributes, sRGB
- * PNG, safe writes and errors, how a G-buffer EXR marks empty depth; and the
- * golden-image helper itself. */
+/* Image files (PNG through stb, EXR through OpenEXRCore, in every build): EXR
+ * with AOV channels and attributes, sRGB PNG, safe writes and errors, how a
+ * G-buffer EXR marks empty depth; and the golden-image helper itself. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "golden.h"

@@ -1,9 +1,11 @@
-/* EXR files through OpenEXR 3's C core library (OpenEXRCore), for the build
- * without OpenImageIO (FS_WITH_OIIO=OFF). Writes what image_oiio.cpp writes:
- * one scanline part, 32-bit float channels under the caller's names (the file
- * keeps them sorted by name, readers look them up by name), zip compression
+/* EXR files through OpenEXR 3's C core library (OpenEXRCore), in every build:
+ * linking OpenImageIO's module only to write them cost a render about 0.5 s of
+ * start-up (docs/DESIGN.md, "Start-up"). Writes what OpenImageIO's writer wrote
+ * before: one scanline part, 32-bit float channels under the caller's names (the
+ * file keeps them sorted by name, readers look them up by name), zip compression
  * (16 lines a chunk) and the provenance as string attributes. Reads scanline
- * EXRs of either build: every channel as float. */
+ * EXRs: every channel as float; tiled and deep ones go to the OpenImageIO module
+ * (fs_read_image_oiio). */
 #include "image_exr_core.h"
 #include "fs_error.h"
 #include "output_file.h"
@@ -216,6 +218,17 @@ static int read_pixels(exr_context_t f, const char *path, fs_image *img)
     if (started) exr_decoding_destroy(f, &dec);
     if (er) return fs_fail(FS_ERR_INPUT, "%s: %s", path, why(er));
     return FS_OK;
+}
+
+int fs_exr_is_scanline(const char *path)
+{
+    exr_context_t f = NULL;
+    if (open_read(path, &f)) return -1;
+    exr_storage_t st;
+    exr_result_t er = exr_get_storage(f, 0, &st);
+    if (er) fs_fail(FS_ERR_INPUT, "%s: %s", path, why(er));
+    exr_finish(&f);
+    return er ? -1 : st == EXR_STORAGE_SCANLINE;
 }
 
 int fs_exr_read(const char *path, fs_image *img)

@@ -1,12 +1,11 @@
-// Thin OpenImageIO adapter behind image_io.h: EXR writing, and reading EXR and PNG.
-// Every write goes to a temporary file next to the target (output_file.h), so the
-// format is named explicitly: the temporary name has no useful extension. PNGs are
-// written by png_write.c in every build; fs_image_free and the checks before a read
-// are in image_util.c, shared with the build without OIIO.
+// Thin OpenImageIO adapter behind image_io.h: reading EXR and PNG, for the files
+// that image_stb.c hands to the module (tiled and deep EXRs; it reads PNGs and
+// scanline EXRs itself), and for tests/fuzz/fuzz_oiio.c. Both are written without
+// OpenImageIO (png_write.c, image_exr_core.c); fs_image_free and the checks before a
+// read are in image_util.c, shared with them.
 #include "image_io.h"
 #include "alloc_cap.h"
 #include "fs_error.h"
-#include "output_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -68,51 +67,6 @@ std::unique_ptr<ImageInput> open_image(const char *path, const ImageSpec *config
     }
     return in;
 }
-
-bool valid_image(const fs_image *img)
-{
-    return img && img->w > 0 && img->h > 0 && img->nch > 0 && img->pix;
-}
-
-// Opens the temporary file, writes pixels of type fmt, renames on success.
-int write_safely(const char *path, const char *format, const ImageSpec &spec, TypeDesc fmt,
-                 const void *pix)
-{
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
-    if (rc) return rc;
-    auto out = ImageOutput::create(format);
-    bool ok = out && out->open(tmp, spec) && out->write_image(fmt, pix) && out->close();
-    std::string err = ok ? std::string() : out ? out->geterror() : OIIO::geterror();
-    out.reset();
-    if (!ok) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: %s", path, first_line(err).c_str());
-    }
-    return fs_output_end(path, tmp, 1);
-}
-
-} // namespace
-
-extern "C" int fs_write_exr(const char *path, const fs_image *img, const fs_attr *attrs, int nattrs)
-{
-    if (!valid_image(img)) return fs_fail(FS_ERR_INPUT, "%s: no image to write", path);
-    ImageSpec spec(img->w, img->h, img->nch, TypeDesc::FLOAT);
-    spec.channelnames.clear();
-    for (int c = 0; c < img->nch; c++) {
-        const char *n = img->chnames ? img->chnames[c] : nullptr;
-        spec.channelnames.push_back(n && *n ? n : "C" + std::to_string(c));
-    }
-    spec.alpha_channel = -1;
-    for (int c = 0; c < img->nch; c++)
-        if (spec.channelnames[c] == "A") spec.alpha_channel = c;
-    spec.attribute("compression", "zip");
-    for (int i = 0; i < nattrs; i++)
-        if (attrs[i].name && attrs[i].value) spec.attribute(attrs[i].name, attrs[i].value);
-    return write_safely(path, "openexr", spec, TypeDesc::FLOAT, img->pix);
-}
-
-namespace {
 
 int read_image(const char *path, fs_image *img)
 {

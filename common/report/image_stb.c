@@ -1,7 +1,8 @@
 /* PNG reading through header-only stb (libstb-dev), and the image readers'
- * dispatch, for the build without OpenImageIO (FS_WITH_OIIO=OFF). A file is
- * read by its first bytes: EXR goes to image_exr_core.c, PNG to stb_image;
- * any other format is refused with one line naming the option. */
+ * dispatch, in every build: a file is read by its first bytes, a PNG here with
+ * stb_image, a scanline EXR by image_exr_core.c, a tiled or deep EXR by the
+ * OpenImageIO module (fs_read_image_oiio: refused in the build without it); any
+ * other format is refused. Attributes come from OpenEXRCore for every EXR. */
 #include "image_exr_core.h"
 #include "image_io.h"
 #include "fs_error.h"
@@ -47,9 +48,7 @@ static int sniff(const char *path, file_kind *kind)
     if (got == 0) return fs_fail(FS_ERR_INPUT, "%s: empty file", path);
     static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     *kind = got >= 4 && !memcmp(m, exr, 4) ? KIND_EXR : got == 8 && !memcmp(m, png, 8) ? KIND_PNG : KIND_OTHER;
-    if (*kind == KIND_OTHER)
-        return fs_fail(FS_ERR_INPUT, "%s: not a PNG or EXR file (reading other image formats needs a build with FS_WITH_OIIO=ON)",
-                       path);
+    if (*kind == KIND_OTHER) return fs_fail(FS_ERR_INPUT, "%s: not an EXR or PNG image", path);
     return FS_OK;
 }
 
@@ -87,7 +86,10 @@ int fs_read_image(const char *path, fs_image *img)
     int rc = sniff(path, &kind);
     if (!rc) rc = fs_image_structure_check(path);
     if (rc) return rc;
-    return kind == KIND_EXR ? fs_exr_read(path, img) : read_png(path, img);
+    if (kind == KIND_PNG) return read_png(path, img);
+    int scanline = fs_exr_is_scanline(path);
+    if (scanline < 0) return FS_ERR_INPUT;
+    return scanline ? fs_exr_read(path, img) : fs_read_image_oiio(path, img);
 }
 
 int fs_read_image_attr(const char *path, const char *name, char *buf, int size)

@@ -1,15 +1,15 @@
-/* image_io.h's and figure.h's image and text functions in the build with
- * OpenImageIO: forwards to the OpenImageIO module (oiio_plugin.h), loaded once,
- * on the first call. The module is looked for in $FLUIDSURF_PLUGIN_DIR alone when
+/* What the build with OpenImageIO leaves to it: text (figure.h) and reading the
+ * EXRs OpenEXRCore's scanline reader does not (tiled, deep: fs_read_image_oiio).
+ * Forwards to the OpenImageIO module (oiio_plugin.h), loaded once, on the first
+ * call; PNGs and EXRs are written, and read, without it. The module is looked for in $FLUIDSURF_PLUGIN_DIR alone when
  * it is set; else in LIBDIR/fluidsurf of the installed tree the running binary or
  * library sits in (wherever that tree was moved), then in the build tree. */
 #define _GNU_SOURCE
 #include "alloc_cap.h"
 #include "figure.h"
 #include "fs_error.h"
-#include "image_io.h"
+#include "image_exr_core.h"
 #include "oiio_plugin.h"
-#include "output_file.h"
 #include "text_blend.h"
 
 #include <dlfcn.h>
@@ -20,8 +20,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail,           fs_output_begin,   fs_output_end,
-                                  fs_text_blend,      fs_alloc_cap_begin, fs_alloc_cap_end};
+static const fs_oiio_host host = {FS_OIIO_PLUGIN_ABI, fs_vfail, fs_text_blend, fs_alloc_cap_begin, fs_alloc_cap_end};
 static fs_oiio_api api;
 static char load_error[1024];
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -79,26 +78,15 @@ static void load(void)
 static int ready(const char *what)
 {
     pthread_once(&once, load);
-    if (api.write_exr) return 1;
+    if (api.read_image) return 1;
     fs_fail(FS_ERR_RUNTIME, "%s: cannot load the OpenImageIO module: %s (set FLUIDSURF_PLUGIN_DIR)", what, load_error);
     return 0;
 }
 
-int fs_write_exr(const char *path, const fs_image *img, const fs_attr *attrs, int nattrs)
-{
-    return ready(path) ? api.write_exr(path, img, attrs, nattrs) : FS_ERR_RUNTIME;
-}
-
-int fs_read_image(const char *path, fs_image *img)
+int fs_read_image_oiio(const char *path, fs_image *img)
 {
     memset(img, 0, sizeof *img);
     return ready(path) ? api.read_image(path, img) : FS_ERR_RUNTIME;
-}
-
-int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
-{
-    if (size > 0) buf[0] = 0;
-    return ready(path) ? api.read_image_attr(path, name, buf, size) : -1;
 }
 
 int fs_text_size(const char *text, int size, int *w, int *h)

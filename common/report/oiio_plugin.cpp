@@ -5,7 +5,6 @@
 #include "oiio_plugin.h"
 #include "alloc_cap.h"
 #include "fs_error.h"
-#include "output_file.h"
 #include "text_blend.h"
 
 namespace {
@@ -21,8 +20,6 @@ extern "C" int fs_fail(int code, const char *fmt, ...)
     return rc;
 }
 
-extern "C" int fs_output_begin(const char *final, char *tmp, int size) { return host->output_begin(final, tmp, size); }
-extern "C" int fs_output_end(const char *final, const char *tmp, int ok) { return host->output_end(final, tmp, ok); }
 extern "C" void fs_text_blend(fs_rgba_image *im, int x, int y, const float *cover, int cw, int ch, const float rgb[3])
 {
     host->text_blend(im, x, y, cover, cw, ch, rgb);
@@ -35,6 +32,6 @@ extern "C" __attribute__((visibility("default"))) int fs_oiio_plugin_init(const 
 {
     if (!h || h->abi != FS_OIIO_PLUGIN_ABI) return -1;
     host = h;
-    *api = fs_oiio_api{fs_write_exr, fs_read_image, fs_read_image_attr, fs_text_size, fs_draw_text};
+    *api = fs_oiio_api{fs_read_image, fs_text_size, fs_draw_text};
     return 0;
 }
