@@ -18,12 +18,13 @@ int cli_error(int code)
 
 int cli_usage(const char *cmd, const char *fmt, ...)
 {
+    char raw[1024], text[1024]; /* the user's arguments are echoed: as one line of text */
     va_list ap;
     va_start(ap, fmt);
-    fprintf(stderr, "fluidsurf: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try 'fluidsurf %s --help')\n", cmd);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    fs_text_line(text, sizeof text, raw);
+    fprintf(stderr, "fluidsurf: %s (try 'fluidsurf %s --help')\n", text, cmd);
     return FS_ERR_INPUT;
 }
 

@@ -1,6 +1,7 @@
 /* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
 #include "method.h"
 #include "cli.h"
+#include "fs_error.h"
 #include "interrupt.h"
 #include "provenance.h"
 #include <stdio.h>
@@ -37,6 +38,8 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s%s)\n", fs_version, fs_commit, fs_dirty ? "-dirty" : ""); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
-    fprintf(stderr, "fluidsurf: unknown command '%s' (try 'fluidsurf --help')\n", argv[1]);
+    char name[200];
+    fs_text_line(name, sizeof name, argv[1]);
+    fprintf(stderr, "fluidsurf: unknown command '%s' (try 'fluidsurf --help')\n", name);
     return 2;
 }

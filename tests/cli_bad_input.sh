@@ -16,7 +16,9 @@ expect_bad() {
   "$BIN" "$@" > "$T/stdout" 2> "$T/stderr"
   local rc=$? lines
   lines=$(wc -l < "$T/stderr")
-  if [ $rc -ne "${want_rc:-2}" ] || [ "$lines" -ne 1 ] || ! grep -q "^fluidsurf: " "$T/stderr" || ! grep -qF -- "$word" "$T/stderr"; then
+  # one line of valid UTF-8 text, whatever bytes the input held
+  if [ $rc -ne "${want_rc:-2}" ] || [ "$lines" -ne 1 ] || ! grep -q "^fluidsurf: " "$T/stderr" || ! grep -qF -- "$word" "$T/stderr" ||
+     ! iconv -f UTF-8 -t UTF-8 "$T/stderr" > /dev/null 2>&1; then
     echo "FAIL $name: exit $rc, stderr ($lines lines): $(cat "$T/stderr")"; fails=$((fails + 1)); return
   fi
   if ls "$T"/out.* "$T"/.out* >/dev/null 2>&1; then echo "FAIL $name: left an output file"; fails=$((fails + 1)); return; fi
@@ -128,6 +130,11 @@ printf '{"particles": {"synthetic": "box", "size": [3, 3, 3], "seed": 1}, "radiu
 printf '[1, 2, 3]' > "$T/array.json"
 : > "$T/empty.json"
 render duplicate_key "appears twice" "$T/dupkey.json"
+# bytes that are not UTF-8, in a key, a file name, a command: written \xFF, the rest kept (UTF-8 too)
+printf '{"particles": "%s", "ke\377y\303\251": 1}' "$vtk" > "$T/badbyte.json"
+render key_not_utf8 'ke\xFFyé' "$T/badbyte.json"
+render path_not_utf8 'missing\xFE.vtk' "$T/missing"$'\376'".vtk"
+expect_bad command_not_utf8 'frob\xC3' frob$'\303'
 render duplicate_camera_key "appears twice" "$T/dupcam.json"
 render duplicate_method "appears twice" "$T/dupmethods.json"
 render seed_overflow "seed" "$T/seedover.json"

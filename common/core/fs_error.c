@@ -6,14 +6,40 @@
 static _Thread_local char fs_msg[1024];
 static _Thread_local int fs_code;
 
+/* Length of the valid UTF-8 sequence at s (1..4), or 0 when s starts none
+ * (a stray continuation byte, an overlong form, a surrogate, past U+10FFFF). */
+static int utf8_length(const unsigned char *s)
+{
+    int n = s[0] < 0x80 ? 1 : s[0] >= 0xc2 && s[0] <= 0xdf ? 2 : s[0] >= 0xe0 && s[0] <= 0xef ? 3
+          : s[0] >= 0xf0 && s[0] <= 0xf4 ? 4 : 0;
+    for (int i = 1; i < n; i++)
+        if ((s[i] & 0xc0) != 0x80) return 0;
+    if ((s[0] == 0xe0 && s[1] < 0xa0) || (s[0] == 0xed && s[1] > 0x9f) || (s[0] == 0xf0 && s[1] < 0x90) ||
+        (s[0] == 0xf4 && s[1] > 0x8f))
+        return 0;
+    return n;
+}
+
+/* One line of valid UTF-8 whatever the input said: names and keys read from
+ * files are echoed into messages, so control characters (a newline in a BGEO
+ * attribute name) become '?', and bytes that are not UTF-8 are written \xFF. */
+void fs_text_line(char *out, size_t size, const char *in)
+{
+    size_t o = 0;
+    for (const unsigned char *s = (const unsigned char *)in; *s && o + 5 < size;) {
+        int n = utf8_length(s);
+        if (n == 0) o += (size_t)snprintf(out + o, size - o, "\\x%02X", *s++);
+        else if (n == 1) out[o++] = *s < 0x20 || *s == 0x7f ? '?' : (char)*s, s++;
+        else while (n--) out[o++] = (char)*s++;
+    }
+    out[o] = 0;
+}
+
 int fs_vfail(int code, const char *fmt, va_list ap)
 {
-    vsnprintf(fs_msg, sizeof fs_msg, fmt, ap);
-    /* One line whatever the file said: names and keys read from input are echoed
-     * into messages, so control characters (a newline in a BGEO attribute name)
-     * become '?' here, once for every caller. */
-    for (char *c = fs_msg; *c; c++)
-        if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
+    char raw[sizeof fs_msg];
+    vsnprintf(raw, sizeof raw, fmt, ap);
+    fs_text_line(fs_msg, sizeof fs_msg, raw);
     fs_code = code;
     return code;
 }
@@ -46,9 +72,11 @@ void fs_note(const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
-    /* a note of several lines: each its own prefixed line */
+    /* a note of several lines: each its own prefixed line, as text */
     for (char *l = line, *nl; l; l = nl) {
         if ((nl = strchr(l, '\n'))) *nl++ = 0;
-        fprintf(stderr, "fluidsurf: note: %s\n", l);
+        char text[sizeof line];
+        fs_text_line(text, sizeof text, l);
+        fprintf(stderr, "fluidsurf: note: %s\n", text);
     }
 }

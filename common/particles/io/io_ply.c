@@ -134,7 +134,8 @@ static int read_prop(breader *r, int fmt, const ply_prop *pr, double *v)
 {
     if (pr->count_type == T_NONE) return read_value(r, fmt, pr->type, v);
     double cnt, item;
-    if (!read_value(r, fmt, pr->count_type, &cnt) || cnt < 0 || cnt > 1e9) return 0;
+    /* a float count may read as NaN, which passes any comparison test: !(in range) */
+    if (!read_value(r, fmt, pr->count_type, &cnt) || !(cnt >= 0 && cnt <= 1e9)) return 0;
     for (long k = 0; k < (long)cnt; k++)
         if (!read_value(r, fmt, pr->type, &item)) return 0;
     *v = 0;
