@@ -41,6 +41,10 @@ if(NOT FS_SANITIZE)
            ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/test-out/gpu_quick)
   set_tests_properties(gpu_quick PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()
+# Start-up: commands without a GL context or text load neither OpenImageIO nor OSMesa/LLVM.
+add_test(NAME cli_startup COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_startup.sh $<TARGET_FILE:fluidsurf>
+         ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_startup $<BOOL:${FS_WITH_OSMESA}>)
+set_tests_properties(cli_startup PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 # The OpenImageIO module: loaded only for text and tiled or deep EXRs (never for PNG/EXR renders), found in an installed tree.
 if(FS_WITH_OIIO)
   add_test(NAME cli_plugin COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_plugin.sh $<TARGET_FILE:fluidsurf>

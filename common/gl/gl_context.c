@@ -20,6 +20,7 @@ int fs_gl_check_core45(char *renderer, int rsize, char *version, int vsize);
 #endif
 #include <dlfcn.h>
 #include <link.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,17 +55,55 @@ static int create_osmesa(fs_gl_context *c)
     return fs_fail(FS_ERR_INPUT, "OpenGL: an OSMesa context needs a build with FS_WITH_OSMESA=ON (use --gl egl)");
 }
 #else
-static void *osmesa_getproc(const char *name) { return (void *)OSMesaGetProcAddress(name); }
+/* OSMesa is opened with dlopen at the first OSMesa context, not linked: libOSMesa
+ * brings LLVM (some 400,000 relocations and its static constructors), about 60 ms
+ * of start-up that every command paid, GL or not (docs/DESIGN.md, "Start-up").
+ * Opened once and never closed, like the driver libraries below. */
+#define FS_OSMESA_LIB "libOSMesa.so.8"
+typedef OSMesaContext (*osm_create_fn)(const int *attribs, OSMesaContext share);
+typedef GLboolean (*osm_current_fn)(OSMesaContext ctx, void *buf, GLenum type, GLsizei w, GLsizei h);
+typedef void (*osm_destroy_fn)(OSMesaContext ctx);
+typedef OSMESAproc (*osm_getproc_fn)(const char *name);
+static struct {
+    osm_create_fn CreateContextAttribs;
+    osm_current_fn MakeCurrent;
+    osm_destroy_fn DestroyContext;
+    osm_getproc_fn GetProcAddress;
+} osm;
+static char osm_error[512];
+static pthread_once_t osm_once = PTHREAD_ONCE_INIT;
+
+static void osmesa_load(void)
+{
+    void *h = dlopen(FS_OSMESA_LIB, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+    if (!h) {
+        snprintf(osm_error, sizeof osm_error, "%s", dlerror());
+        return;
+    }
+    osm.CreateContextAttribs = (osm_create_fn)dlsym(h, "OSMesaCreateContextAttribs");
+    osm.MakeCurrent = (osm_current_fn)dlsym(h, "OSMesaMakeCurrent");
+    osm.DestroyContext = (osm_destroy_fn)dlsym(h, "OSMesaDestroyContext");
+    osm.GetProcAddress = (osm_getproc_fn)dlsym(h, "OSMesaGetProcAddress");
+    if (!osm.CreateContextAttribs || !osm.MakeCurrent || !osm.DestroyContext || !osm.GetProcAddress) {
+        snprintf(osm_error, sizeof osm_error, "%s lacks an OSMesa entry point (OSMesaCreateContextAttribs, ...)",
+                 FS_OSMESA_LIB);
+        memset(&osm, 0, sizeof osm);
+    }
+}
+
+static void *osmesa_getproc(const char *name) { return (void *)osm.GetProcAddress(name); }
 
 static int create_osmesa(fs_gl_context *c)
 {
+    pthread_once(&osm_once, osmesa_load);
+    if (!osm.CreateContextAttribs) return fs_fail(FS_ERR_RUNTIME, "OpenGL: OSMesa: %s", osm_error);
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                            OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
-    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, NULL);
+    OSMesaContext ctx = osm.CreateContextAttribs(attribs, NULL);
     if (!ctx) return fs_fail(FS_ERR_RUNTIME, "OpenGL: OSMesa cannot create a 4.5 core context (Mesa too old?)");
     c->extra = calloc((size_t)c->width * c->height, 4);
-    if (!c->extra) { OSMesaDestroyContext(ctx); return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory"); }
+    if (!c->extra) { osm.DestroyContext(ctx); return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory"); }
     c->handle = ctx;
     return FS_OK;
 }
@@ -310,7 +349,7 @@ static void release_bound(void)
     if (!bound.handle) return;
     switch (bound.kind) {
 #if FS_WITH_OSMESA
-    case FS_CTX_OSMESA: OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0); break;
+    case FS_CTX_OSMESA: osm.MakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0); break;
 #endif
     case FS_CTX_EGL: {
         egl_fns *e = bound.extra;
@@ -333,7 +372,7 @@ int fs_gl_context_make_current(fs_gl_context *c)
     switch (c->kind) {
 #if FS_WITH_OSMESA
     case FS_CTX_OSMESA:
-        ok = OSMesaMakeCurrent(c->handle, c->extra, GL_UNSIGNED_BYTE, c->width, c->height);
+        ok = osm.MakeCurrent(c->handle, c->extra, GL_UNSIGNED_BYTE, c->width, c->height);
         gp = osmesa_getproc;
         break;
 #endif
@@ -410,7 +449,7 @@ void fs_gl_context_destroy(fs_gl_context *c)
     switch (c->kind) {
 #if FS_WITH_OSMESA
     case FS_CTX_OSMESA:
-        OSMesaDestroyContext(c->handle);
+        osm.DestroyContext(c->handle);
         free(c->extra);
         break;
 #endif
