@@ -90,6 +90,44 @@ static void check_spheres(const fs_stages *c, const fs_gbuffer *g)
           "spheres: the thickness pass draws the same sprites");
 }
 
+/* The reference's walk counts of stage s: each near cell walked is marched, crossed on
+ * proven bounds, or passed (no particle within reach), once. */
+static void check_reference_cells(const fs_stages *c, const char *s, const char *what)
+{
+    uint64_t walked = cnt(c, s, FS_CNT_CELLS_WALKED), marched = cnt(c, s, FS_CNT_CELLS_MARCHED);
+    uint64_t in = cnt(c, s, FS_CNT_CELLS_PROVEN_INSIDE), out = cnt(c, s, FS_CNT_CELLS_PROVEN_OUTSIDE);
+    printf("%s, %s: %llu cells walked, %llu marched (%llu inside all along), %llu proven inside, %llu outside, "
+           "%llu crossings, %llu field evaluations\n",
+           what, s, (unsigned long long)walked, (unsigned long long)marched,
+           (unsigned long long)cnt(c, s, FS_CNT_CELLS_MARCHED_INSIDE), (unsigned long long)in, (unsigned long long)out,
+           (unsigned long long)cnt(c, s, FS_CNT_CROSSINGS), (unsigned long long)cnt(c, s, FS_CNT_FIELD_EVALS));
+    CHECK(walked >= marched + in + out && cnt(c, s, FS_CNT_CELLS_MARCHED_INSIDE) <= marched,
+          "%s, %s: %llu cells walked, fewer than marched and proven", what, s, (unsigned long long)walked);
+    uint64_t fe = cnt(c, s, FS_CNT_FIELD_EVALS), inside = cnt(c, s, FS_CNT_INSIDE_EVALS);
+    CHECK(inside + cnt(c, s, FS_CNT_REFINE_EVALS) <= fe && !inside == !cnt(c, s, FS_CNT_CELLS_MARCHED_INSIDE),
+          "%s, %s: %llu evaluations, %llu inside, %llu refining", what, s, (unsigned long long)fe,
+          (unsigned long long)inside, (unsigned long long)cnt(c, s, FS_CNT_REFINE_EVALS));
+}
+
+/* thickness on: the first-hit march ("march") finds one crossing per covered pixel, and
+ * the thickness march after it ("thickness") at least the exit of each; off: no
+ * "thickness" counts. */
+static void check_reference_phases(const fs_stages *c, const fs_gbuffer *g, int thickness, const char *what)
+{
+    uint64_t hits = covered(g), first = cnt(c, "march", FS_CNT_CROSSINGS), after = cnt(c, "thickness", FS_CNT_CROSSINGS);
+    CHECK(hits > 0 && first == hits, "%s: %llu first-hit crossings for %llu covered pixels", what,
+          (unsigned long long)first, (unsigned long long)hits);
+    if (thickness)
+        CHECK(after >= hits && cnt(c, "thickness", FS_CNT_FIELD_EVALS) > 0,
+              "%s: %llu crossings after %llu first hits (at least an exit each)", what, (unsigned long long)after,
+              (unsigned long long)hits);
+    else
+        for (int k = 0; k < FS_NCOUNTERS; k++)
+            CHECK(!cnt(c, "thickness", k), "%s: %s counted after the first hit", what, fs_counter_name(k));
+    check_reference_cells(c, "march", what);
+    if (thickness) check_reference_cells(c, "thickness", what);
+}
+
 static void check_reference(const fs_stages *c, const fs_gbuffer *g)
 {
     uint64_t ms = cnt(c, "march", FS_CNT_MARCH_SAMPLES), fe = cnt(c, "march", FS_CNT_FIELD_EVALS);
@@ -97,6 +135,22 @@ static void check_reference(const fs_stages *c, const fs_gbuffer *g)
           covered(g));
     CHECK(fe >= ms && cnt(c, "march", FS_CNT_NEIGHBOURS) > fe, "reference: evaluations %llu, samples %llu",
           (unsigned long long)fe, (unsigned long long)ms);
+    check_reference_phases(c, g, 1, "reference");
+    CHECK(cnt(c, "thickness", FS_CNT_CELLS_PROVEN_INSIDE) > 0 && cnt(c, "march", FS_CNT_CELLS_PROVEN_OUTSIDE) > 0,
+          "reference: the interior bits prove no cell inside after the first hit, or the bounds none outside before");
+}
+
+static void check_reference_thickness_off(const fs_stages *c, const fs_gbuffer *g)
+{
+    check_reference_phases(c, g, 0, "reference, thickness=off");
+}
+
+/* accel=off has no bounds: every near cell is marched or passed, never proven. */
+static void check_reference_plain(const fs_stages *c, const fs_gbuffer *g)
+{
+    check_reference_phases(c, g, 1, "reference, accel=off");
+    CHECK(!cnt(c, NULL, FS_CNT_CELLS_PROVEN_INSIDE) && !cnt(c, NULL, FS_CNT_CELLS_PROVEN_OUTSIDE),
+          "reference, accel=off: cells proven without bounds");
 }
 
 static void check_raycast_pca(const fs_stages *c, const fs_gbuffer *g)
@@ -143,14 +197,27 @@ static void check_levelset(const fs_stages *c, const fs_gbuffer *g)
           (unsigned long long)ms, (unsigned long long)px, covered(g));
 }
 
-/* The timed render, then the counting render, of method name. */
-static void test_method(const char *name, void (*check)(const fs_stages *, const fs_gbuffer *))
+/* The timed render, then the counting render, of method name with its parameter
+ * set (NAME=VALUE, a bool as 0 or 1) changed from the default (NULL: none). */
+static void test_method_set(const char *name, const char *set, void (*check)(const fs_stages *, const fs_gbuffer *))
 {
     const fs_method *m = fs_method_find(name);
     fs_run *run = NULL;
     fs_run_image timed = {0}, counted = {0};
     fs_stages st = {0}, cst;
+    double values[64];
     int rc = fs_run_open(&run, m, &S, NULL, m->needs_gl ? &CTX : NULL);
+    if (set && !rc) { /* reopened with the one value changed */
+        char key[64];
+        snprintf(key, sizeof key, "%.*s", (int)strcspn(set, "="), set);
+        int k = fs_method_param_index(m, key);
+        CHECK(k >= 0 && m->nparams <= 64, "%s: no parameter %s", name, key);
+        memcpy(values, fs_run_values(run), (size_t)m->nparams * sizeof *values);
+        values[k] = atof(strchr(set, '=') + 1);
+        fs_run_close(run);
+        run = NULL;
+        rc = fs_run_open(&run, m, &S, values, m->needs_gl ? &CTX : NULL);
+    }
     if (!rc) rc = fs_run_upload(run, &P, NULL, &st);
     if (!rc) rc = fs_run_render(run, &S.camera, &timed, &st);
     if (!rc) rc = fs_run_count(m, &S, fs_run_values(run), &CTX, &P, NULL, &S.camera, &counted, &cst);
@@ -168,6 +235,11 @@ static void test_method(const char *name, void (*check)(const fs_stages *, const
     fs_run_close(run);
     fs_run_image_free(&timed);
     fs_run_image_free(&counted);
+}
+
+static void test_method(const char *name, void (*check)(const fs_stages *, const fs_gbuffer *))
+{
+    test_method_set(name, NULL, check);
 }
 
 /* The carry into the high word is exact, and a wrap of the high word is an
@@ -282,6 +354,8 @@ int main(void)
     }
     test_method("spheres", check_spheres);
     test_method("reference", check_reference);
+    test_method_set("reference", "thickness=0", check_reference_thickness_off);
+    test_method_set("reference", "accel=0", check_reference_plain);
     test_method("raycast_pca", check_raycast_pca);
     test_method("aniso_ssf", check_aniso_ssf);
     test_method("surfels", check_surfels);

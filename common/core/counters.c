@@ -4,8 +4,11 @@
 #include <stdio.h>
 #include <string.h>
 
-static const char *const names[FS_NCOUNTERS] = {"field_evals",     "neighbours_visited", "march_samples",
-                                                "fragments_shaded", "filter_taps",        "texels_written"};
+static const char *const names[FS_NCOUNTERS] = {"field_evals",         "neighbours_visited",   "march_samples",
+                                                "fragments_shaded",    "filter_taps",          "texels_written",
+                                                "crossings",           "cells_walked",         "cells_marched",
+                                                "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
+                                                "refine_evals",        "inside_evals"};
 
 const char *fs_counter_name(int c) { return c >= 0 && c < FS_NCOUNTERS ? names[c] : NULL; }
 

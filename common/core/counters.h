@@ -24,6 +24,15 @@ typedef enum fs_counter {
     FS_CNT_FRAGMENTS,
     FS_CNT_FILTER_TAPS,
     FS_CNT_TEXELS,
+    /* a ray caster's walk: what its rays cross and how (issue 33; the reference) */
+    FS_CNT_CROSSINGS,
+    FS_CNT_CELLS_WALKED,
+    FS_CNT_CELLS_MARCHED,
+    FS_CNT_CELLS_MARCHED_INSIDE,
+    FS_CNT_CELLS_PROVEN_INSIDE,
+    FS_CNT_CELLS_PROVEN_OUTSIDE,
+    FS_CNT_REFINE_EVALS,
+    FS_CNT_INSIDE_EVALS,
     FS_NCOUNTERS
 } fs_counter;
 #define FS_CNT_BIT(c) (1u << (c))

@@ -180,18 +180,18 @@ typedef struct ray_sample {
     float depth, n[3], thick;
 } ray_sample;
 
-/* The ray through pixel position (fx, fy); its work added to w. */
+/* The ray through pixel position (fx, fy); its work added to w (w[0] before and
+ * with the first hit, w[1] after it). */
 static void cast(const reference *R, const fs_camera *cam, const float fwd[3], float fx, float fy, void *buf,
-                 ray_work *w, ray_sample *out)
+                 ray_work w[2], ray_sample *out)
 {
     float d[3];
     ray_result res;
     fs_camera_ray(cam, fx, fy, d);
     if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
-    w->evals += res.w.evals;
-    w->samples += res.w.samples;
-    w->nbrs += res.w.nbrs;
+    fs_ref_work_add(&w[FS_REF_FIRST], &res.w[FS_REF_FIRST]);
+    fs_ref_work_add(&w[FS_REF_AFTER], &res.w[FS_REF_AFTER]);
     out->hit = res.hit;
     out->thick = res.thick;
     if (!res.hit) return;
@@ -207,7 +207,7 @@ static void cast(const reference *R, const fs_camera *cam, const float fwd[3], f
  * pixel. Coverage is the share that hit, thickness the mean over all, depth the
  * mean over the hits and the normal their sum, renormalised. */
 static void shade_supersampled(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                               fs_gbuffer *out, ray_work *w)
+                               fs_gbuffer *out, ray_work w[2])
 {
     int n = R->supersample, hits = 0;
     double depth = 0, thick = 0, sum[3] = {0, 0, 0};
@@ -234,7 +234,7 @@ static void shade_supersampled(const reference *R, const fs_camera *cam, const f
 /* One pixel into the G-buffer; its work added to w. supersample = 1 casts the
  * pixel centre alone and writes its answer as it is. */
 static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                        fs_gbuffer *out, ray_work *w)
+                        fs_gbuffer *out, ray_work w[2])
 {
     if (R->supersample > 1) {
         shade_supersampled(R, cam, fwd, px, py, buf, out, w);
@@ -328,6 +328,22 @@ static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
     return FS_OK;
 }
 
+/* A phase's work into the pending counts (a no-op unless counting). */
+static void count_work(const ray_work *w)
+{
+    fs_count_add(FS_CNT_FIELD_EVALS, w->evals);
+    fs_count_add(FS_CNT_NEIGHBOURS, w->nbrs);
+    fs_count_add(FS_CNT_MARCH_SAMPLES, w->samples);
+    fs_count_add(FS_CNT_CROSSINGS, w->crossings);
+    fs_count_add(FS_CNT_CELLS_WALKED, w->cells);
+    fs_count_add(FS_CNT_CELLS_MARCHED, w->marched);
+    fs_count_add(FS_CNT_CELLS_MARCHED_INSIDE, w->marched_in);
+    fs_count_add(FS_CNT_CELLS_PROVEN_INSIDE, w->proven_in);
+    fs_count_add(FS_CNT_CELLS_PROVEN_OUTSIDE, w->proven_out);
+    fs_count_add(FS_CNT_REFINE_EVALS, w->refine_evals);
+    fs_count_add(FS_CNT_INSIDE_EVALS, w->inside_evals);
+}
+
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
 {
     reference *R = self;
@@ -349,24 +365,33 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_gbuffer_clear(out);
     int tw = (cam->width + FS_REF_TILE - 1) / FS_REF_TILE, th = (cam->height + FS_REF_TILE - 1) / FS_REF_TILE;
     fs_progress_sub_total((long)tw * th);
+    ray_work total[2] = {{0}}; /* both phases, over the threads */
 #pragma omp parallel num_threads(nth)
     {
         void *buf = bufs + (size_t)omp_get_thread_num() * per;
-        ray_work w = {0}; /* this thread's rays */
+        ray_work w[2] = {{0}}; /* this thread's rays */
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < tw * th; tile++) {
             int x0 = tile % tw * FS_REF_TILE, y0 = tile / tw * FS_REF_TILE;
             for (int py = y0; py < y0 + FS_REF_TILE && py < cam->height; py++)
                 for (int px = x0; px < x0 + FS_REF_TILE && px < cam->width; px++)
-                    shade_pixel(R, cam, fwd, px, py, buf, out, &w);
+                    shade_pixel(R, cam, fwd, px, py, buf, out, w);
             fs_progress_sub(1);
         }
-        fs_count_add(FS_CNT_FIELD_EVALS, w.evals);
-        fs_count_add(FS_CNT_NEIGHBOURS, w.nbrs);
-        fs_count_add(FS_CNT_MARCH_SAMPLES, w.samples);
+#pragma omp critical(fs_reference_work)
+        {
+            fs_ref_work_add(&total[FS_REF_FIRST], &w[FS_REF_FIRST]);
+            fs_ref_work_add(&total[FS_REF_AFTER], &w[FS_REF_AFTER]);
+        }
     }
     free(bufs);
+    /* The march is one timed stage; a counting render splits its counts into the
+     * first-hit march ("march") and the thickness march after the first hit
+     * ("thickness", a stage of counts only: README.md, "Work counters"). */
+    count_work(&total[FS_REF_FIRST]);
     if (st) fs_stages_add(st, "march", fs_now_ms() - t0); /* the bounds are built in upload */
+    count_work(&total[FS_REF_AFTER]);
+    if (st && fs_counting && R->thickness) fs_stages_add(st, "thickness", 0);
     return FS_OK;
 }
 
@@ -375,7 +400,11 @@ const fs_method fs_method_reference = {
     .description = "exact CPU ray caster of the SPH iso-surface (safe steps, bisection, analytic normals)",
     .paper = "",
     .needs_gl = 0,
-    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES),
+    .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
+                FS_CNT_BIT(FS_CNT_CROSSINGS) | FS_CNT_BIT(FS_CNT_CELLS_WALKED) | FS_CNT_BIT(FS_CNT_CELLS_MARCHED) |
+                FS_CNT_BIT(FS_CNT_CELLS_MARCHED_INSIDE) | FS_CNT_BIT(FS_CNT_CELLS_PROVEN_INSIDE) |
+                FS_CNT_BIT(FS_CNT_CELLS_PROVEN_OUTSIDE) | FS_CNT_BIT(FS_CNT_REFINE_EVALS) |
+                FS_CNT_BIT(FS_CNT_INSIDE_EVALS),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(reference_params),

@@ -60,13 +60,26 @@ typedef struct reference {
 #define FS_REF_Q 64
 
 /* One ray's work (docs/DESIGN.md, "Work counters"), counted in the ray's
- * result and added up per thread; the sums over particles are not touched. */
+ * result and added up per thread; the sums over particles are not touched.
+ * evals, samples and nbrs are counted on every render; the walk's counts
+ * (crossings, cells ...) only in a counting render (fs_counting, read once a ray). */
 typedef struct ray_work {
     uint64_t evals, samples, nbrs;
+    uint64_t crossings;              /* sign changes of phi - iso located */
+    uint64_t cells, marched;         /* near cells walked; those where phi was summed */
+    uint64_t marched_in;             /* ... with the ray inside all along (no crossing) */
+    uint64_t proven_in, proven_out;  /* near cells crossed whole on proven bounds, by class */
+    uint64_t refine_evals;           /* evals that refine a bracketed crossing */
+    uint64_t inside_evals;           /* evals in the marched_in cells */
 } ray_work;
 
+/* The work of one ray's two phases: before and with its first hit (the first-hit
+ * march), and after it (the thickness march). The counting render reports them as
+ * the stages "march" and "thickness" (README.md, "Work counters"). */
+enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1 };
+
 typedef struct ray_result {
-    ray_work w;
+    ray_work w[2];  /* [hit]: the phase the ray is in */
     int hit;
     float t;        /* ray distance of the first hit */
     float n[3];     /* world normal, -grad phi normalised */
@@ -97,6 +110,22 @@ void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_
 
 /* The march's state changes shared by both paths. */
 void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R);
+
+/* dst += src, counter by counter. */
+void fs_ref_work_add(ray_work *dst, const ray_work *src);
+
+/* Counting only: one near cell a ray walks, counted into the phase the ray was in
+ * when it entered (fs_ref_cell_begin before the visit, fs_ref_cell_end after it):
+ * marched when phi was summed in it (marched_in when also no crossing and the ray
+ * inside on entry), else proven in or out when the whole stretch was crossed on
+ * proven bounds. */
+typedef struct cell_mark {
+    ray_work *w;
+    uint64_t evals, crossings;
+    int inside;
+} cell_mark;
+void fs_ref_cell_begin(ray_result *res, const march *m, cell_mark *c);
+void fs_ref_cell_end(const cell_mark *c, const ray_result *res, const march *m, int proven);
 
 /* accel=off: one ray, per-cell march of the original implementation. buf holds max27 entries. */
 void fs_ref_cast_plain(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);

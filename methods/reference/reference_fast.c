@@ -9,6 +9,7 @@
  *  - a sub-cell is skipped only when that agrees with the march's state, so a
  *    crossing is always found by sampling, never assumed at a sub-cell face. */
 #include "reference.h"
+#include "counters.h"
 #include <math.h>
 #include <string.h>
 
@@ -28,7 +29,12 @@ typedef struct fast_ray {
     near_soa N;
     march m;
     ray_result *res;
+    int count; /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
+    int ran;   /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
 } fast_ray;
+
+/* The work counts of the phase the ray is in: before its first hit, or after. */
+static inline ray_work *work(const fast_ray *F) { return &F->res->w[F->res->hit]; }
 
 size_t fs_ref_fast_buf_size(const reference *R)
 {
@@ -237,12 +243,13 @@ static int crossing(fast_ray *F, float t0, float tc)
     const reference *R = F->R;
     march *m = &F->m;
     ray_result *res = F->res;
+    work(F)->crossings++;
     if (!m->inside) {
         if (!res->hit) {
             float gr[3];
             grad_at(R, &F->N, F->d, tc, gr);
-            res->w.evals++;
-            res->w.nbrs += (uint64_t)F->N.n;
+            work(F)->evals++; /* the first hit's normal: still its phase */
+            work(F)->nbrs += (uint64_t)F->N.n;
             float l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
             for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -F->d[a];
             res->hit = 1;
@@ -283,8 +290,9 @@ static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, fl
         t = t < a + q ? a + q : (t > b - q ? b - q : t);
         if (t <= a || t >= b) t = 0.5f * (a + b); /* a + q rounded to a: tol is below the floats' spacing here */
         if (t <= a || t >= b) break;             /* the bracket is two adjacent floats: as tight as it gets */
-        float g = field_counted(R, &F->N, t, 0, 0, &F->res->w) - R->f.iso;
-        F->res->w.samples++;
+        float g = field_counted(R, &F->N, t, 0, 0, work(F)) - R->f.iso;
+        work(F)->samples++;
+        work(F)->refine_evals++;
         if ((g >= 0) == inside) {
             a = t; g_lo = g;
             if (keep == 1) g_hi *= 0.5f;
@@ -305,16 +313,16 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
     const reference *R = F->R;
     march *m = &F->m;
     float iso = R->f.iso, tol = 1e-5f * R->f.r; /* finer than the plain path: halves the gap between them */
-    ray_work *w = &F->res->w;
     if (!m->started) {
-        m->g = field_counted(R, &F->N, u0, 0, 0, w) - iso;
-        w->samples++;
+        m->g = field_counted(R, &F->N, u0, 0, 0, work(F)) - iso;
+        work(F)->samples++;
         m->inside = m->g >= 0;
         m->counting = 0;
         m->started = 1;
     }
     for (float t = u0; t < u1;) {
         float rem = u1 - t, s, gn;
+        ray_work *w = work(F); /* a crossing below may change the phase */
         int proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn, w);
         float tn = s >= rem ? u1 : t + s;
         if (!proven) gn = field_counted(R, &F->N, tn, 0, 0, w) - iso;
@@ -411,7 +419,8 @@ static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, f
             if (edge0 < 0) edge0 = ts;
             if (last || next_cls != FS_REF_EDGE) { /* the run of marched sub-cells ends here */
                 float end = last ? t_out : te;
-                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N, &F->res->w); gathered = 1; }
+                F->ran = 1;
+                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N, work(F)); gathered = 1; }
                 if (F->N.n) {
                     if (march_range(F, t, edge0 - t, end - t, lip)) return 1;
                 } else {
@@ -428,14 +437,10 @@ static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, f
     }
 }
 
-static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t_out)
+/* One near cell's stretch [t, t_out]: 1 when the ray is finished. */
+static int visit_cell(fast_ray *F, const int c[3], uint32_t slot, float t, float t_out)
 {
-    fast_ray *F = ctx;
     const reference *R = F->R;
-    if (slot == FS_GRID_NONE) {
-        fs_ref_leave_fluid(&F->m, F->res, t, R);
-        return 0;
-    }
     uint32_t cnt = R->count27[slot];
     float lip = R->lip_unit * (float)cnt;
     if (cnt && R->sub) {
@@ -443,20 +448,37 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
         if (cls != FS_REF_EDGE && skip_proven(&F->m, cls, 0)) return 0; /* the whole cell is proven */
         return visit_subcells(F, c, slot, t, t_out, lip);
     }
+    F->ran = 1;
     if (cnt) {
         const float *o = F->o, *d = F->d;
         float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-        gather(R, c, o_loc, d, t_out - t, &F->N, &F->res->w);
+        gather(R, c, o_loc, d, t_out - t, &F->N, work(F));
         if (F->N.n) return march_range(F, t, 0, t_out - t, lip);
     }
     fs_ref_leave_fluid(&F->m, F->res, t, R);
     return 0;
 }
 
+static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t_out)
+{
+    fast_ray *F = ctx;
+    if (slot == FS_GRID_NONE) {
+        fs_ref_leave_fluid(&F->m, F->res, t, F->R);
+        return 0;
+    }
+    if (!F->count) return visit_cell(F, c, slot, t, t_out);
+    cell_mark mark;
+    fs_ref_cell_begin(F->res, &F->m, &mark);
+    F->ran = 0;
+    int done = visit_cell(F, c, slot, t, t_out);
+    fs_ref_cell_end(&mark, F->res, &F->m, !F->ran);
+    return done;
+}
+
 void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res)
 {
     memset(res, 0, sizeof *res);
-    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res};
+    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0};
     soa_bind(&F.N, buf, R);
     float t_last;
     fs_ref_walk(R, o, d, fast_visit, &F, &t_last);

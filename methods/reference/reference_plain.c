@@ -17,15 +17,19 @@ typedef struct stretch {
     const near_particle *np;
     int n;
     float d[3];
-    ray_work *w;   /* the ray's work counts; NULL when not counting (read once per stretch) */
+    ray_result *cnt; /* the ray's result, whose work counts it keeps; NULL when not counting (read once per stretch) */
 } stretch;
+
+/* The counts of the phase the ray is in (before its first hit, or after); NULL when not counting. */
+static inline ray_work *work(const stretch *S) { return S->cnt ? &S->cnt->w[S->cnt->hit] : NULL; }
 
 /* One field evaluation (value, bound or gradient) over the stretch's particles. */
 static inline void counted(const stretch *S)
 {
-    if (!S->w) return; /* a timed render: no read-modify-write of the ray's counts */
-    S->w->evals++;
-    S->w->nbrs += (uint64_t)S->n;
+    ray_work *w = work(S);
+    if (!w) return; /* a timed render: no read-modify-write of the ray's counts */
+    w->evals++;
+    w->nbrs += (uint64_t)S->n;
 }
 
 /* phi at local ray parameter t. */
@@ -174,7 +178,7 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
     float iso = R->f.iso, tol = 1e-4f * R->f.r;
     if (!m->started) {
         m->g = phi_at(S, 0) - iso;
-        if (S->w) S->w->samples++;
+        if (S->cnt) work(S)->samples++;
         m->inside = m->g >= 0; /* the ray starts in the fluid: not a visible crossing */
         m->counting = 0;
         m->started = 1;
@@ -185,17 +189,21 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
         int proven = safe_step(S, m, t, rem, lip, &s, &gn);
         float tn = s >= rem ? len : t + s;
         if (!proven) gn = phi_at(S, tn) - iso;
-        if (S->w) S->w->samples++; /* the step's end, sampled or proven */
+        if (S->cnt) work(S)->samples++; /* the step's end, sampled or proven */
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
         /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
         float lo = t, hi = tn;
         while (hi - lo > tol) {
             float mid = 0.5f * (lo + hi);
             if (mid <= lo || mid >= hi) break; /* floats cannot split it further (far along a huge cell) */
-            if (S->w) S->w->samples++;
+            if (S->cnt) {
+                work(S)->samples++;
+                work(S)->refine_evals++;
+            }
             if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
         }
         float tc = 0.5f * (lo + hi);
+        if (S->cnt) work(S)->crossings++;
         if (!m->inside) {
             if (!res->hit) {
                 float gr[3], l;
@@ -230,22 +238,33 @@ typedef struct plain_ray {
     ray_result *res;
 } plain_ray;
 
-static int plain_visit(void *ctx, const int c[3], uint32_t slot, float t, float t_out)
+/* One near cell's stretch [t, t_out]: 1 when the ray is finished. */
+static int visit_cell(plain_ray *P, const int c[3], uint32_t slot, float t, float t_out)
 {
-    plain_ray *P = ctx;
     const reference *R = P->R;
-    if (slot == FS_GRID_NONE) { /* phi = 0 here: it cannot be inside (phi is continuous) */
-        fs_ref_leave_fluid(&P->m, P->res, t, R);
-        return 0;
-    }
     uint32_t cnt = R->count27[slot];
     const float *o = P->o, *d = P->d;
-    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}, fs_counting ? &P->res->w : NULL};
+    stretch S = {R, P->buf, 0, {d[0], d[1], d[2]}, fs_counting ? P->res : NULL};
     float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf, S.w);
+    if (cnt) S.n = gather(R, c, o_loc, d, t_out - t, P->buf, work(&S));
     if (S.n) return march_stretch(&S, &P->m, t, t_out - t, R->lip_unit * cnt, P->res);
     fs_ref_leave_fluid(&P->m, P->res, t, R);
     return 0;
+}
+
+static int plain_visit(void *ctx, const int c[3], uint32_t slot, float t, float t_out)
+{
+    plain_ray *P = ctx;
+    if (slot == FS_GRID_NONE) { /* phi = 0 here: it cannot be inside (phi is continuous) */
+        fs_ref_leave_fluid(&P->m, P->res, t, P->R);
+        return 0;
+    }
+    if (!fs_counting) return visit_cell(P, c, slot, t, t_out);
+    cell_mark mark; /* no bounds on this path: a cell is marched or passed, never proven */
+    fs_ref_cell_begin(P->res, &P->m, &mark);
+    int done = visit_cell(P, c, slot, t, t_out);
+    fs_ref_cell_end(&mark, P->res, &P->m, 0);
+    return done;
 }
 
 size_t fs_ref_plain_buf_size(const reference *R) { return (R->max27 ? R->max27 : 1) * sizeof(near_particle); }

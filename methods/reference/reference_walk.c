@@ -152,3 +152,41 @@ void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R)
     m->started = 1;
 }
 
+
+void fs_ref_work_add(ray_work *dst, const ray_work *src)
+{
+    dst->evals += src->evals;
+    dst->samples += src->samples;
+    dst->nbrs += src->nbrs;
+    dst->crossings += src->crossings;
+    dst->cells += src->cells;
+    dst->marched += src->marched;
+    dst->marched_in += src->marched_in;
+    dst->proven_in += src->proven_in;
+    dst->proven_out += src->proven_out;
+    dst->refine_evals += src->refine_evals;
+    dst->inside_evals += src->inside_evals;
+}
+
+void fs_ref_cell_begin(ray_result *res, const march *m, cell_mark *c)
+{
+    c->w = &res->w[res->hit];
+    c->evals = res->w[0].evals + res->w[1].evals;
+    c->crossings = res->w[0].crossings + res->w[1].crossings;
+    c->inside = m->started && m->inside;
+}
+
+void fs_ref_cell_end(const cell_mark *c, const ray_result *res, const march *m, int proven)
+{
+    c->w->cells++;
+    uint64_t evals = res->w[0].evals + res->w[1].evals - c->evals;
+    if (evals) {
+        int in = c->inside && res->w[0].crossings + res->w[1].crossings == c->crossings;
+        c->w->marched++;
+        c->w->marched_in += in;
+        c->w->inside_evals += in ? evals : 0;
+    } else if (proven) {
+        if (m->inside) c->w->proven_in++;
+        else c->w->proven_out++;
+    }
+}
