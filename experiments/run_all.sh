@@ -101,6 +101,7 @@ study bench_foundation bash experiments/bench_foundation.sh
 study bench_info bash experiments/bench/info.sh
 study bench_memory bash experiments/bench/memory.sh
 study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --quick)
+study bench_thickness_counts bash experiments/bench/thickness_counts.sh
 study baselines bash experiments/baselines/run.sh
 study counters bash experiments/counters/work.sh
 study slurm_scaling bash experiments/slurm/scaling.sh

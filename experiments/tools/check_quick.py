@@ -159,6 +159,10 @@ CHECKS = [
      "the thickness switch does not move the surface, and the old commit's reference is the "
      "same ground truth (the speed-up must not change the image); the image-size runs, not the 8x8 ones"),
     ("bench_speed", "bench/speed.csv", "*", "coverage", ("in", 0, 1), "a share of the image's pixels"),
+    ("bench_thickness_counts", "bench/thickness_counts.csv", "stage=march", "crossings - hits", ("in", 0, 0),
+     "the first-hit march ends at its ray's first crossing, and a pixel is a hit when it has one"),
+    ("bench_thickness_counts", "bench/thickness_counts.csv", "variant=thickness_on&stage=thickness", "crossings - hits",
+     ("in", 0, math.inf), "with thickness on every hit's ray also crosses out of the fluid after its first crossing"),
     ("baselines", "baselines/quality.csv", "method=reference", "mask_iou", ("in", 1, 1),
      "the reference against itself: IoU 1"),
     ("baselines", "baselines/quality.csv", "method=reference",
