@@ -2,6 +2,7 @@
 #include "method.h"
 #include "fs_error.h"
 #include "gl_context.h"
+#include "hash.h"
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -38,12 +39,6 @@ int cli_unknown_method(const char *cmd, const char *option, const char *name)
     return cli_usage(cmd, "unknown method '%s' (see 'fluidsurf methods')", name);
 }
 
-static unsigned long long fnv1a(unsigned long long h, const void *data, size_t n)
-{
-    for (size_t i = 0; i < n; i++) h = (h ^ ((const unsigned char *)data)[i]) * 1099511628211ull;
-    return h;
-}
-
 int cli_scene_from_arg(fs_scene *s, const char *arg)
 {
     size_t n = strlen(arg);
@@ -52,7 +47,7 @@ int cli_scene_from_arg(fs_scene *s, const char *arg)
     if (n >= sizeof s->source) return fs_fail(FS_ERR_INPUT, "%s: path too long", arg);
     strcpy(s->source, arg);
     s->up_source = FS_UP_AUTO;
-    s->hash = fnv1a(1469598103934665603ull, arg, n);
+    s->hash = fs_fnv1a(FS_FNV1A_START, arg, n);
     return FS_OK;
 }
 
@@ -65,7 +60,7 @@ void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o)
     if (o->iso > 0) s->iso = o->iso;
     if (o->support > 0) s->support_r = o->support;
     if (o->up >= 0 || o->kernel >= 0 || o->volume_scale > 0 || o->iso > 0 || o->support > 0)
-        s->hash = fnv1a(s->hash, o, sizeof *o);
+        s->hash = fs_fnv1a(s->hash, o, sizeof *o);
 }
 
 int cli_int(const char *cmd, const char *opt, const char *text, int lo, int hi, int *out)

@@ -93,3 +93,9 @@ void fs_digest_hex(fs_digest d, char hex[FS_DIGEST_HEX])
 }
 
 int fs_digest_equal(fs_digest a, fs_digest b) { return a.w[0] == b.w[0] && a.w[1] == b.w[1]; }
+
+uint64_t fs_fnv1a(uint64_t h, const void *data, size_t n)
+{
+    for (size_t i = 0; i < n; i++) h = (h ^ ((const unsigned char *)data)[i]) * 1099511628211ull;
+    return h;
+}

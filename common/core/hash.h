@@ -32,6 +32,11 @@ fs_digest fs_hash_digest(const fs_hash *h);
 void fs_digest_hex(fs_digest d, char hex[FS_DIGEST_HEX]);
 int fs_digest_equal(fs_digest a, fs_digest b);
 
+/* FNV-1a over n bytes, continuing from h (FS_FNV1A_START to begin): the scene hash
+ * of provenance (a scene file's bytes, or the flags that built a scene). */
+#define FS_FNV1A_START 1469598103934665603ull
+uint64_t fs_fnv1a(uint64_t h, const void *data, size_t n);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "fs_error.h"
+#include "hash.h"
 #include "params.h"
 #include "path_beside.h"
 #include "grid.h"
@@ -345,9 +346,7 @@ int fs_scene_load(fs_scene *s, const char *path)
     size_t len = 0;
     char *text = read_all(path, &len);
     if (!text) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
-    unsigned long long h = 1469598103934665603ull;
-    for (size_t i = 0; i < len; i++) h = (h ^ (unsigned char)text[i]) * 1099511628211ull;
-    s->hash = h;
+    s->hash = fs_fnv1a(FS_FNV1A_START, text, len);
     if (!len) { free(text); return fs_fail(FS_ERR_INPUT, "%s: empty scene file", path); }
     const char *err = NULL;
     cJSON *root = cJSON_ParseWithOpts(text, &err, 1);
