@@ -9,3 +9,4 @@ if(FS_WITH_VTK) # its golden is of the bundled .vtk cube
 endif()
 fs_add_test(test_reference_accel fs_test_methods test_reference_accel.c test_render.c)
 fs_add_test(test_reference_supersample fs_test_methods test_reference_supersample.c)
+fs_add_test(test_reference_taylor fs_methods test_reference_taylor.c)

@@ -86,6 +86,30 @@ typedef struct ray_result {
     float thick;
 } ray_result;
 
+/* The near particles of one cell stretch, relative to its start point o
+ * (reference_fast.c gathers them): foot a and squared distance b from the ray
+ * line (and, anisotropic only, the metric's k and the weight ws), and the
+ * sorted slot. */
+typedef struct near_soa {
+    float *a, *b, *k, *ws, *keep;
+    uint32_t *slot;
+    float o[3];
+    int n;
+} near_soa;
+
+/* The second-order inside step (reference_taylor.c, README.md step 6): only
+ * for the isotropic cubic spline, whose curvature bound it uses. */
+int fs_ref_taylor_applies(const reference *R);
+/* phi at local t, and its derivative along the ray in *slope. */
+float fs_ref_slope_sum(const reference *R, const near_soa *N, float t, float *slope);
+/* An upper bound of |phi''| along the ray on local [u0, u1]. */
+float fs_ref_curv_bound(const reference *R, const near_soa *N, float u0, float u1);
+/* With g = phi - iso >= 0 and g1 its slope at local t, and M a curvature
+ * bound ahead: *lo is the longest step on which phi >= iso is proven, *hi the
+ * shortest after which phi < iso is (INFINITY when none); phi falls all along
+ * [0, *hi], so at most one crossing lies before *hi. */
+void fs_ref_taylor_steps(const reference *R, float g, float g1, float M, float *lo, float *hi);
+
 /* The march state carried from cell to cell along one ray. */
 typedef struct march {
     int started;       /* phi has been sampled once */

@@ -13,16 +13,6 @@
 #include <math.h>
 #include <string.h>
 
-/* The near particles of one cell stretch, relative to its start point o:
- * foot a and squared distance b from the ray line (and, anisotropic only,
- * the metric's k and the weight ws), and the sorted slot. */
-typedef struct near_soa {
-    float *a, *b, *k, *ws, *keep;
-    uint32_t *slot;
-    float o[3];
-    int n;
-} near_soa;
-
 typedef struct fast_ray {
     const reference *R;
     const float *o, *d;
@@ -31,6 +21,7 @@ typedef struct fast_ray {
     ray_result *res;
     int count; /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
     int ran;   /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
+    int taylor; /* the second-order inside step applies (fs_ref_taylor_applies) */
 } fast_ray;
 
 /* The work counts of the phase the ray is in: before its first hit, or after. */
@@ -307,12 +298,47 @@ static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, fl
     *hi = b;
 }
 
+/* One step from t on the second-order bound (reference_taylor.c), with M a
+ * curvature bound over the range, on either side of the surface (h = g inside,
+ * -g outside): 1 when the rest of the range, *s = rem, is proven on the march's
+ * side (*gn a bound of g at its end), else 0 with *gn sampled at t + *s: the
+ * longest proven step, or where g must have changed sign (one crossing at most
+ * before it), or step_min when neither is longer. *slope is phi' at t on entry
+ * (NAN: not known) and at t + *s on return; when *gn crossed, its bracket starts
+ * at *lo, with about *g_lo there. */
+static int taylor_step(fast_ray *F, float t, float rem, float M, float *slope, float *s, float *gn, float *lo,
+                       float *g_lo)
+{
+    const reference *R = F->R;
+    ray_work *w = work(F);
+    float iso = R->f.iso, sg = F->m.inside ? 1.0f : -1.0f, l, h;
+    if (isnan(*slope)) { /* the slope at t: sample it (rounding may put a crossing's end on the other side) */
+        F->m.g = sg * fs_maxf(sg * (fs_ref_slope_sum(R, &F->N, t, slope) - iso), 0.0f);
+        w->evals++, w->samples++, w->nbrs += (uint64_t)F->N.n;
+    }
+    float g = F->m.g, g1 = *slope;
+    fs_ref_taylor_steps(R, sg * g, sg * g1, M, &l, &h);
+    if (l >= rem) {
+        *s = rem;
+        *gn = sg * fs_maxf(sg * g + sg * g1 * rem - 0.5f * M * rem * rem, 0.0f);
+        *slope = NAN;
+        return 1;
+    }
+    *s = h <= rem ? h : fs_minf(fs_maxf(l, R->step_min), rem);
+    *lo = t + l;
+    *g_lo = sg * fs_maxf(sg * (g + g1 * l), 1e-7f * iso); /* between the bounds: only where regula falsi starts */
+    *gn = fs_ref_slope_sum(R, &F->N, t + *s, slope) - iso;
+    w->evals++, w->nbrs += (uint64_t)F->N.n;
+    return 0;
+}
+
 /* Marches local [u0, u1] of the cell stretch that starts at ray distance t0. */
 static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
 {
     const reference *R = F->R;
     march *m = &F->m;
     float iso = R->f.iso, tol = 1e-5f * R->f.r; /* finer than the plain path: halves the gap between them */
+    float M = F->taylor ? fs_ref_curv_bound(R, &F->N, u0, u1) : 0.0f, slope = NAN;
     if (!m->started) {
         m->g = field_counted(R, &F->N, u0, 0, 0, work(F)) - iso;
         work(F)->samples++;
@@ -321,18 +347,25 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
         m->started = 1;
     }
     for (float t = u0; t < u1;) {
-        float rem = u1 - t, s, gn;
+        float rem = u1 - t, s, gn, lo = t, g_lo = m->g;
         ray_work *w = work(F); /* a crossing below may change the phase */
-        int proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn, w);
+        int proven;
+        if (M > 0) {
+            proven = taylor_step(F, t, rem, M, &slope, &s, &gn, &lo, &g_lo);
+        } else {
+            slope = NAN;
+            proven = safe_step(R, &F->N, m, t, rem, lip, &s, &gn, w);
+            if (!proven) gn = field_counted(R, &F->N, s >= rem ? u1 : t + s, 0, 0, w) - iso;
+        }
         float tn = s >= rem ? u1 : t + s;
-        if (!proven) gn = field_counted(R, &F->N, tn, 0, 0, w) - iso;
         w->samples++; /* the step's end, sampled or proven */
         if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
-        float lo = t, hi = tn;
-        locate(F, &lo, &hi, m->g, gn, tol);
+        float hi = tn;
+        locate(F, &lo, &hi, g_lo, gn, tol);
         if (crossing(F, t0, 0.5f * (lo + hi))) return 1;
         t = tn;
         m->g = gn;
+        slope = NAN;
     }
     return 0;
 }
@@ -478,7 +511,8 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
 void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res)
 {
     memset(res, 0, sizeof *res);
-    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0};
+    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0,
+                  fs_ref_taylor_applies(R)};
     soa_bind(&F.N, buf, R);
     float t_last;
     fs_ref_walk(R, o, d, fast_visit, &F, &t_last);
