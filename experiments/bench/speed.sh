@@ -19,7 +19,15 @@
 # (default a548d02), BASE_SETS (sets the baseline runs on; default "splash
 # dam_break_24k"), SETS (restrict to these set names), RUNS_10M (runs on the 10M
 # box; default RUNS), SKIP_10M=1 (full mode
-# without the 10M box). Progress goes to stderr.
+# without the 10M box), SHARED (the shared data folder with the DualSPHysics frame;
+# default ../shared/data), LEVELSET_SETS (sets that also time fluidsurf's levelset;
+# default "dualsphysics splash dam_break_24k"). Progress goes to stderr.
+#
+# Sets: synthetic boxes, the bundled SPlisHSPlasH frames, fluidsurf's splash frame and
+# (full mode) the third-party DualSPHysics dam break just after impact (205k particles,
+# z up, r = 0.00365 as its README gives; SHARED/dualsphysics/dambreak200k_t0.300.vtk).
+# The fixed cost is timed at 8x8 pixels on the splash frame (EXR) and on the 6,859-particle
+# dam break (EXR and PNG: \`reference\` and \`reference to PNG\`).
 #
 # What is timed: the whole process, by /usr/bin/time (%e wall s, %M peak RSS KiB).
 # fluidsurf writes an EXR (G-buffer + shaded image); vdb_tool reads a PLY of the
@@ -51,6 +59,8 @@ CACHE=${FS_BENCH_CACHE:-$(quick "${XDG_CACHE_HOME:-$HOME/.cache}/fluidsurf-bench
 WORK=$(quick out/bench/speed out/quick/bench/speed) # images and scene files (not committed)
 VDB_TOOL=${VDB_TOOL:-vdb_tool}
 SPLASH=experiments/data/splash/dam_break_splash_100k.ply
+SHARED=${SHARED:-../shared/data}
+DSPH=$SHARED/dualsphysics/dambreak200k_t0.300.vtk
 mkdir -p "$OUT" "$WORK" "$CACHE/sets"
 T0=$(date +%s)
 log() { printf '[speed %4ds] %s\n' $(($(date +%s) - T0)) "$*" >&2; }
@@ -82,8 +92,9 @@ elif [ ! -x "$BASE_BIN" ]; then
 fi
 
 # ---- the particle sets: NAME KIND SOURCE (KIND synthetic: SOURCE is "nx ny nz")
-declare -a SET_NAMES=() SET_KIND=() SET_SRC=()
-add_set() { SET_NAMES+=("$1"); SET_KIND+=("$2"); SET_SRC+=("$3"); }
+# EXTRA: scene keys the set needs beyond its file (its up axis, its radius)
+declare -a SET_NAMES=() SET_KIND=() SET_SRC=() SET_EXTRA=()
+add_set() { SET_NAMES+=("$1"); SET_KIND+=("$2"); SET_SRC+=("$3"); SET_EXTRA+=("${4:-}"); }
 D=experiments/data/splashsurf
 if [ $QUICK = 1 ]; then
   add_set splash file "$SPLASH"
@@ -91,10 +102,13 @@ if [ $QUICK = 1 ]; then
   add_set box_10k synthetic "22 22 22"
   add_set box_27k synthetic "30 30 30"
   add_set cube_2k file "$D/cube_2366_particles.vtk"
+  add_set dam_break_7k file "$D/dam_break_frame_9_6859_particles.bgeo"
   GROWTH="box_1k box_10k box_27k"
+  LEVELSET_SETS=${LEVELSET_SETS:-splash}
 else
   # the targets' sets first, so a run cut short still has them. (fluid_250_particles.vtu is left
   # out: it gives no r, and at the default r = 0.025 its 250 sparse particles make no surface.)
+  add_set dualsphysics file "$DSPH" '"up": "z", "radius": 0.00365'
   add_set splash file "$SPLASH"
   add_set dam_break_24k file "$D/dam_break_frame_23_24389_particles.vtk"
   add_set box_100k synthetic "46 46 46"
@@ -104,22 +118,23 @@ else
   add_set double_dam_break_5k file "$D/double_dam_break_frame_26_4732_particles.vtk"
   add_set dam_break_7k file "$D/dam_break_frame_9_6859_particles.bgeo"
   GROWTH="box_100k box_1m box_10m"
+  LEVELSET_SETS=${LEVELSET_SETS:-dualsphysics splash dam_break_24k}
 fi
 
 # prepare_set I: writes $WORK/NAME.json (particles + r + the camera written out)
 # and $CACHE/sets/NAME.ply (the points for vdb_tool); sets P_N, P_R, P_EYE, P_TGT, P_UP
 prepare_set() {
-  local i=$1 name=${SET_NAMES[$1]} kind=${SET_KIND[$1]} src=${SET_SRC[$1]} part
+  local i=$1 name=${SET_NAMES[$1]} kind=${SET_KIND[$1]} src=${SET_SRC[$1]} extra=${SET_EXTRA[$1]:+, ${SET_EXTRA[$1]}} part
   if [ "$kind" = synthetic ]; then
     read -r nx ny nz <<<"$src"
     part="{\"synthetic\": \"box\", \"size\": [$nx, $ny, $nz], \"jitter\": 0.1, \"seed\": 1}, \"radius\": 0.025"
   else
-    part="\"$ROOT/$src\""
+    part="\"$(realpath "$src")\""
   fi
   # today's auto-framed camera at this aspect (framing depends on the aspect, not the size)
-  printf '{"description": "speed benchmark set %s", "particles": %s}\n' "$name" "$part" > "$WORK/$name.auto.json"
+  printf '{"description": "speed benchmark set %s", "particles": %s%s}\n' "$name" "$part" "$extra" > "$WORK/$name.auto.json"
   auto_camera "$BIN" "$WORK/$name.auto.json" "$WORK"
-  [ "$kind" = synthetic ] || part="$part, \"radius\": $P_R"
+  if [ -n "$extra" ]; then part="$part$extra"; elif [ "$kind" != synthetic ]; then part="$part, \"radius\": $P_R"; fi
   printf '{"description": "speed benchmark set %s, camera as fluidsurf %s frames it",\n "particles": %s,\n "camera": {%s, "width": %d, "height": %d}}\n' \
     "$name" "$(git rev-parse --short HEAD)" "$part" "$P_CAMERA" "$SIZE" "$SIZE" > "$WORK/$name.json"
   local ply=$CACHE/sets/$name.ply key
@@ -173,7 +188,8 @@ bench() {
     rmed=$(printf '%s\n' "${rss[@]}" | median | awk '{printf "%.1f", $1 / 1024}')
     rmax=$(printf '%s\n' "${rss[@]}" | sort -g | tail -1 | awk '{printf "%.1f", $1 / 1024}')
     [ ${#stage[@]} -gt 0 ] && smed=$(printf '%s\n' "${stage[@]}" | median)
-    [ -s "$img" ] && cov=$(coverage "$img")
+    # (a PNG of fluidsurf's has its background drawn: no coverage read from it)
+    [ -s "$img" ] && { [[ $img == *.exr ]] || [ "$method" = vdb_tool ]; } && cov=$(coverage "$img")
     if [ -z "$RENDERER" ] && [[ $img == *.exr ]]; then
       local r; r=$(exr_attr "$img" gl_renderer); [ "$r" = CPU ] || RENDERER=$r
     fi
@@ -205,7 +221,7 @@ for i in "${!SET_NAMES[@]}"; do
   [ -z "${SETS:-}" ] || in_list "$name" $SETS || continue
   log "set $name: preparing (camera, PLY for vdb_tool)"
   [ "${SET_KIND[$i]}" != file ] || [ -f "${SET_SRC[$i]}" ] ||
-    { echo "speed.sh: ${SET_SRC[$i]} missing (the splash frame: experiments/bench/make_splash.sh)" >&2; exit 1; }
+    { echo "speed.sh: ${SET_SRC[$i]} missing (the splash frame: experiments/bench/make_splash.sh; the DualSPHysics frame: set SHARED)" >&2; exit 1; }
   prepare_set "$i"
   scene=$WORK/$name.json
   NRUNS=$RUNS; [ "$name" != box_10m ] || NRUNS=${RUNS_10M:-$RUNS}
@@ -216,6 +232,8 @@ for i in "${!SET_NAMES[@]}"; do
     $(fs) --method reference --set reference.thickness=off -o "$im.reference_nothick.exr"
   bench "$name" "$P_N" spheres "$SIZE" "$SIZE" "$im.spheres.exr" $(fs) --method spheres -o "$im.spheres.exr"
   bench "$name" "$P_N" raycast_pca "$SIZE" "$SIZE" "$im.raycast_pca.exr" $(fs) --method raycast_pca -o "$im.raycast_pca.exr"
+  in_list "$name" $LEVELSET_SETS &&
+    bench "$name" "$P_N" levelset "$SIZE" "$SIZE" "$im.levelset.exr" $(fs) --method levelset -o "$im.levelset.exr"
   voxel=$(awk -v r="$P_R" 'BEGIN {printf "%.9g", r / 2}')
   aperture=$(vdb_aperture "$FOV")
   bench "$name" "$P_N" vdb_tool "$SIZE" "$SIZE" "$im.vdb_tool.png" "$VDB_TOOL" -read "$CACHE/sets/$name.ply" \
@@ -224,6 +242,12 @@ for i in "${!SET_NAMES[@]}"; do
   if in_list "$name" $BASE_SETS; then
     bench "$name" "$P_N" "reference@$BASE_COMMIT" "$SIZE" "$SIZE" "$im.reference_base.exr" \
       "$BASE_BIN" render "$scene" -q --timings -W "$SIZE" -H "$SIZE" --method reference -o "$im.reference_base.exr"
+  fi
+  if [ "$name" = dam_break_7k ]; then # the fixed cost on a small frame, to an EXR and to a PNG
+    bench "$name" "$P_N" reference 8 8 "$im.reference_8.exr" "$BIN" render "$scene" -q --timings -W 8 -H 8 \
+      --method reference -o "$im.reference_8.exr"
+    bench "$name" "$P_N" "reference to PNG" 8 8 "$im.reference_8.png" "$BIN" render "$scene" -q --timings -W 8 -H 8 \
+      --method reference -o "$im.reference_8.png"
   fi
   if [ "$name" = splash ]; then # the fixed cost: start-up, load, grid, at 8x8 pixels
     bench "$name" "$P_N" reference 8 8 "$im.reference_8.exr" "$BIN" render "$scene" -q --timings -W 8 -H 8 \

@@ -24,6 +24,7 @@ awk -F, -v base="reference@$BASE" -v size="$SIZE" -v g1="$G1" -v g2="$G2" -v g3=
   /^#/ || $1 == "set" { next }
   $15 == "ok" && $4 == size { t[$1, $3] = $8; m[$1, $3] = $11; s[$1, $3] = $13; n[$1] = $2; sets[$1] = 1; meth[$3] = 1; c[$1, $3] = $14 }
   $15 == "ok" && $4 == 8 && $3 == "reference" { fixed[$1] = $8 }
+  $15 == "ok" && $4 == 8 && $3 == "reference to PNG" { fixedp[$1] = $8 }
   $15 == "ok" && $4 == 8 && $3 == base { fixedb[$1] = $8 }
   function row(q, set, method, v, target, ok) {
     printf "%s,%s,%s,%s,%s,%s\n", q, set, method, v == "" ? "" : sprintf("%.3g", v), target,
@@ -33,16 +34,23 @@ awk -F, -v base="reference@$BASE" -v size="$SIZE" -v g1="$G1" -v g2="$G2" -v g3=
   END {
     print "quantity,sets,method,value,target,met"
     v = ratio(t["splash", base], t["splash", "reference"]); row("speed-up vs " base " (whole process)", "splash", "reference", v, ">= 15", v >= 15)
-    v = ratio(t["splash", "vdb_tool"], t["splash", "reference"]); row("speed-up vs vdb_tool (whole process)", "splash", "reference", v, ">= 1.5", v >= 1.5)
+    split("dualsphysics splash", vs, " ")
+    for (i = 1; i <= 2; i++) if (t[vs[i], "reference"] != "") {
+      v = ratio(t[vs[i], "vdb_tool"], t[vs[i], "reference"]); row("speed-up vs vdb_tool (whole process)", vs[i], "reference", v, ">= 1.5", v >= 1.5)
+      v = ratio(t[vs[i], "vdb_tool"], t[vs[i], "reference thickness=off"]); row("speed-up vs vdb_tool (whole process)", vs[i], "reference thickness=off", v, "", 0)
+    }
+    for (k in sets) if (t[k, "levelset"] != "") { v = ratio(t[k, "vdb_tool"], t[k, "levelset"]); row("speed-up vs vdb_tool (whole process)", k, "levelset", v, ">= 1", v >= 1) }
     row("fixed cost at 8x8 pixels (s)", "splash", "reference", fixed["splash"], "", 0)
     row("fixed cost at 8x8 pixels (s)", "splash", base, fixedb["splash"], "", 0)
+    if (fixed["dam_break_7k"] != "") row("fixed cost at 8x8 pixels, EXR (s)", "dam_break_7k", "reference", fixed["dam_break_7k"], "<= 0.15", fixed["dam_break_7k"] <= 0.15)
+    if (fixedp["dam_break_7k"] != "") row("fixed cost at 8x8 pixels, PNG (s)", "dam_break_7k", "reference", fixedp["dam_break_7k"], "<= 0.15", fixedp["dam_break_7k"] <= 0.15)
     for (k in sets) order[++ns] = k
     for (i = 1; i <= ns; i++) for (j = i + 1; j <= ns; j++) if (n[order[j]] + 0 < n[order[i]] + 0) { x = order[i]; order[i] = order[j]; order[j] = x }
     for (i = 1; i <= ns; i++) {
       k = order[i]
       if (c[k, "reference"] != "" && c[k, "reference"] + 0 == 0) continue # nothing covered: no ratio to speak of
-      v = ratio(s[k, "reference"], s[k, "reference thickness=off"]); row("thickness cost on/off (march stage)", k, "reference", v, "<= 2", v <= 2)
-      v = ratio(t[k, "reference"], t[k, "reference thickness=off"]); row("thickness cost on/off (whole process)", k, "reference", v, "", 0)
+      v = ratio(s[k, "reference"], s[k, "reference thickness=off"]); row("thickness cost on/off (march and bounds stages)", k, "reference", v, "", 0)
+      v = ratio(t[k, "reference"], t[k, "reference thickness=off"]); row("thickness cost on/off (whole process)", k, "reference", v, "<= 1.5", v <= 1.5)
     }
     nm = split("reference|reference thickness=off|spheres|raycast_pca|vdb_tool", ms, "|")
     for (i = 1; i <= nm; i++) {
@@ -62,7 +70,7 @@ rm -f "$RAT.body"
 
 # ---- plot: time and peak RSS against particles, log-log; lines join the synthetic boxes
 tmpd=$(mktemp -d); trap 'rm -rf "$tmpd"' EXIT
-methods=("reference" "reference thickness=off" "spheres" "raycast_pca" "vdb_tool" "reference@$BASE")
+methods=("reference" "reference thickness=off" "spheres" "raycast_pca" "levelset" "vdb_tool" "reference@$BASE")
 for i in "${!methods[@]}"; do
   awk -F, -v q="${methods[$i]}" -v size="$SIZE" '!/^#/ && $3 == q && $4 == size && $15 == "ok" {
       print $2, $8, $11, ($1 ~ /^box_/) ? 1 : 0, $1 }' "$CSV" | sort -g > "$tmpd/m$i.all"
@@ -111,7 +119,7 @@ fi
   echo
   echo "## The machine"
   echo
-  echo "2 shared CPU cores (other jobs ran at the same time: timings are noisy), no GPU. The GL methods"
+  echo "2 CPU cores (the load average in the provenance says how quiet they were), no GPU. The GL methods"
   echo "(\`spheres\`, \`raycast_pca\`) run on OSMesa's llvmpipe, i.e. on the same CPU cores as the C code,"
   echo "so nothing here says anything about GPU speed. \`reference\` and vdb_tool are CPU code."
   echo
@@ -129,7 +137,10 @@ fi
   echo "  (square images: horizontal = vertical field of view). Writing its PLY is not timed; reading it is."
   echo "- Sets: synthetic boxes (lattice 2r, jitter 0.1 r, seed 1, r = 0.025, generated in-process by"
   echo "  fluidsurf as part of its load), the bundled SPlisHSPlasH frames (\`experiments/data/splashsurf\`, read as bare"
-  echo "  files: volume_scale 1, r = 0.025) and the simulated splash frame (\`experiments/data/splash\`)."
+  echo "  files: volume_scale 1, r = 0.025), the simulated splash frame (\`experiments/data/splash\`) and the third-party"
+  echo "  DualSPHysics dam break just after impact (\`dualsphysics\`: \`../shared/data/dualsphysics/dambreak200k_t0.300.vtk\`,"
+  echo "  z up, r = 0.00365 as its README gives; the camera looks through the full water depth)."
+  echo "- \`levelset\` is fluidsurf's OpenVDB level set method on the same view; \`reference to PNG\` writes a PNG instead of an EXR."
   echo
   echo "| column | meaning |"
   echo "|---|---|"
@@ -139,7 +150,7 @@ fi
   echo "| runs, ok_runs | runs asked for, runs that succeeded (a failure stops the row; \`status\` failed, \`error\` its first line) |"
   echo "| wall_s_median, wall_s_min, wall_s_max | whole-process wall time over the runs, seconds |"
   echo "| peak_rss_mib_median, peak_rss_mib_max | whole-process peak resident memory, MiB (median and largest over the runs) |"
-  echo "| stage_ms_median | fluidsurf's own \`--timings\` of the method's render stages (all but load, grid, upload, shade; the reference: its march), median, ms |"
+  echo "| stage_ms_median | fluidsurf's own \`--timings\` of the method's render stages (all but load, grid, upload, shade; the reference: bounds, interior and march), median, ms |"
   echo "| coverage | fraction of pixels covered: fluidsurf's coverage layer; vdb_tool's PNG: pixels that are not black (its background) |"
   echo
   echo "## Targets of the issue next to the measured ratios (\`speed_ratios.csv\`)"
