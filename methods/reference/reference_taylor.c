@@ -1,20 +1,20 @@
-/* The second-order step of the accelerated march inside the fluid (README.md,
- * step 6). Inside a liquid the monotone-kernel lower bound proves almost
- * nothing (reference_interior.c says why) and the Lipschitz step |g| / L is
- * about step_min, so a ray crossing unproven interior sampled phi every 0.02 r.
- * Along the ray, phi(t) = V sum_j W(sqrt(b_j + (t - a_j)^2)) has
+/* The second-order step of the accelerated march (README.md, step 11), on
+ * either side of the surface. Inside a liquid the monotone-kernel lower bound
+ * proves almost nothing (reference_interior.c says why) and the Lipschitz step
+ * |g| / L is about step_min; near a crossing the doubling trials start again
+ * from step_min. Along the ray, phi(t) = V sum_j W(sqrt(b_j + (t - a_j)^2)) has
  *   |phi''(t)| <= M = V sum_j max(|W''(d_j)|, |W'(d_j)/d_j|)
  * (the second derivative of each term is a convex combination of the two),
  * with d_j the particle's nearest distance to the stretch: for the cubic
  * spline the max is at most 12 C (1 - d/H) / H^2 (reference_interior.c). So
- * from a sample g = phi - iso >= 0 with slope g1,
- *   g + g1 s - M s^2 / 2 <= phi(t + s) - iso <= g + g1 s + M s^2 / 2:
- * the lower bound proves the inside up to its root, and the upper one's first
- * root is a point where phi must be below iso; phi' <= g1 + M s < 0 before
- * that root (it lies before the vertex -g1 / M), so exactly one crossing lies
- * between. Deep inside the steps are about sqrt(2 g / M) (~r / 2 in a lattice
- * liquid); near an exit they close in on it like Newton's steps and the
- * upper root brackets it. */
+ * from a sample h = g or -g >= 0 (the march's side) with slope h1,
+ *   h + h1 s - M s^2 / 2 <= (side) <= h + h1 s + M s^2 / 2:
+ * the lower bound proves the side up to its root, and the upper one's first
+ * root is a point where phi must be across iso; the side's slope stays
+ * below h1 + M s < 0 before that root (it lies before the vertex -h1 / M),
+ * so exactly one crossing lies between. Deep inside the steps are about
+ * sqrt(2 h / M) (~r / 2 in a lattice liquid); near a crossing they close in
+ * on it like Newton's steps and the upper root brackets it. */
 #include "reference.h"
 #include <math.h>
 
