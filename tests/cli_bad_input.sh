@@ -183,6 +183,9 @@ for d in "$(dirname "$0")"/fuzz/regress_*/; do
   done
 done
 
+# VTK looped over a forged NumberOfComponents (as INT_MAX) for minutes: refused before it reads
+expect_bad vtu_components_forged "NumberOfComponents '4294967295' (at most 1024)" info "$(dirname "$0")/fuzz/regress_vtu/components_4294967295.vtu"
+
 # A failed render must not clobber an existing output.
 n=$((n + 1))
 echo precious > "$T/keep.png"

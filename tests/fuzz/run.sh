@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every libFuzzer target of tests/fuzz for SECONDS each (CI: 30, the smoke test).
-# Builds them first into BUILD (default build-fuzz: clang -O1, -DFS_FUZZ=ON, ASan + UBSan).
+# Builds them first into BUILD (tests/fuzz/build.sh; default build-fuzz: clang -O1, -DFS_FUZZ=ON,
+# ASan + UBSan).
 # Each target starts from its committed seeds (corpus_NAME/) plus what earlier runs
 # found (out/fuzz/NAME/corpus, not committed); a crash, leak, hang (-timeout) or
 # over-large allocation (-rss_limit_mb, -malloc_limit_mb) stops the target, keeps
@@ -15,21 +16,14 @@ set -uo pipefail
 cd "$(dirname "$0")/../.."
 SECONDS_EACH=${1:?usage: tests/fuzz/run.sh SECONDS [BUILD]}
 BUILD=${2:-build-fuzz}
-if [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  launcher=()
-  command -v ccache > /dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  # -O1, as libFuzzer's documentation advises: OpenVDB's headers under the sanitizers
-  # take minutes a file at -O2
-  cmake -S . -B "$BUILD" -DFS_FUZZ=ON -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
-    "${launcher[@]}" > /dev/null || exit 1
-fi
-cmake --build "$BUILD" --target fuzz_all -j"$(nproc)" > "$BUILD/fuzz_build.log" 2>&1 ||
-  { tail -20 "$BUILD/fuzz_build.log"; echo "fuzz: the build failed ($BUILD/fuzz_build.log)" >&2; exit 1; }
+bash tests/fuzz/build.sh "$BUILD" || exit 1
 failed=()
 for exe in "$BUILD"/tests/fuzz/fuzz_*; do
   [ -x "$exe" ] || continue
   name=${exe##*/fuzz_}
+  # NAME_mut: the same harness with a custom mutator, for campaign.sh alone (the smoke
+  # run's search stays the one smoke_runs.txt was checked with)
+  case $name in *_mut) continue ;; esac
   out=out/fuzz/$name
   corpus=$out/corpus
   mkdir -p "$corpus"

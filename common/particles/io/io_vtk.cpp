@@ -205,6 +205,27 @@ std::string attr_in_tag(const std::string &s, size_t at, const char *name)
     return e == std::string::npos ? "" : tag.substr(v, e - v);
 }
 
+// VTK's reader loops over an array's NumberOfComponents (vtkXMLReader::CreateArray looks
+// up a ComponentName attribute for each) before it allocates anything, so a forged count
+// such as 4294967295 (read as INT_MAX) hangs it for minutes without touching memory
+// (tests/fuzz/regress_vtu/components_4294967295.vtu). Every DataArray's count must be a
+// number up to 1024, as in the legacy reader. f: the file or its start; tags only (the
+// appended data is not XML).
+int check_vtu_components(const char *path, const std::string &f)
+{
+    static const char key[] = "NumberOfComponents=\"";
+    size_t stop = f.find("<AppendedData");
+    for (size_t at = f.find(key); at < stop && at != std::string::npos; at = f.find(key, at + 1)) {
+        size_t v = at + sizeof key - 1, e = f.find('"', v);
+        std::string value = f.substr(v, e == std::string::npos ? 32 : e - v);
+        if (strtod(value.c_str(), nullptr) <= 1024) continue;
+        std::string name = attr_in_tag(f, at, "Name").substr(0, 32);
+        name = name.empty() ? "a VTU DataArray" : "VTU DataArray '" + name + "'";
+        return fs_fail(FS_ERR_INPUT, "%s: %s has NumberOfComponents '%.32s' (at most 1024)", path, name.c_str(), value.c_str());
+    }
+    return FS_OK;
+}
+
 // How a VTU file's binary arrays are laid out, from its root element.
 struct Layout {
     int hs = 4;          // header word size
@@ -323,6 +344,7 @@ int check_vtu(const char *path)
     f.resize(fread(&f[0], 1, f.size(), fp));
     fclose(fp);
     if (!rc) rc = check_vtu_counts(path, f.substr(0, 65536), static_cast<double>(st.st_size));
+    if (!rc) rc = check_vtu_components(path, f);
     if (!rc && whole) rc = check_vtu_headers(path, f);
     return rc;
 }
