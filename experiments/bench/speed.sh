@@ -233,7 +233,8 @@ for i in "${!SET_NAMES[@]}"; do
   bench "$name" "$P_N" spheres "$SIZE" "$SIZE" "$im.spheres.exr" $(fs) --method spheres -o "$im.spheres.exr"
   bench "$name" "$P_N" raycast_pca "$SIZE" "$SIZE" "$im.raycast_pca.exr" $(fs) --method raycast_pca -o "$im.raycast_pca.exr"
   in_list "$name" $LEVELSET_SETS &&
-    bench "$name" "$P_N" levelset "$SIZE" "$SIZE" "$im.levelset.exr" $(fs) --method levelset -o "$im.levelset.exr"
+    bench "$name" "$P_N" "levelset thickness=off" "$SIZE" "$SIZE" "$im.levelset.exr" $(fs) --method levelset \
+      --set levelset.thickness=off -o "$im.levelset.exr"
   voxel=$(awk -v r="$P_R" 'BEGIN {printf "%.9g", r / 2}')
   aperture=$(vdb_aperture "$FOV")
   bench "$name" "$P_N" vdb_tool "$SIZE" "$SIZE" "$im.vdb_tool.png" "$VDB_TOOL" -read "$CACHE/sets/$name.ply" \
