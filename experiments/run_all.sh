@@ -102,6 +102,7 @@ study bench_info bash experiments/bench/info.sh
 study bench_memory bash experiments/bench/memory.sh
 study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --quick)
 study bench_thickness_counts bash experiments/bench/thickness_counts.sh
+study bench_interior_auto bash experiments/bench/interior_auto.sh
 study baselines bash experiments/baselines/run.sh
 study counters bash experiments/counters/work.sh
 study slurm_scaling bash experiments/slurm/scaling.sh
