@@ -2,6 +2,7 @@
 #include "api_internal.h"
 #include "fs_error.h"
 #include "method.h"
+#include "registry.h"
 #include "provenance.h"
 
 #include <pthread.h>

@@ -1,5 +1,6 @@
 #include "cli.h"
 #include "method.h"
+#include "registry.h"
 #include "fs_error.h"
 #include "gl_context.h"
 #include "hash.h"

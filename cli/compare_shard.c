@@ -27,19 +27,15 @@ int cmp_shard_parse(const char *text, int *k, int *n)
     return FS_OK;
 }
 
-double cmp_method_weight(const char *name)
+/* One view's estimated cost relative to spheres: the method's declared cost
+ * (fs_method.cost); the analytic reference (m NULL), an exact shape, half a
+ * spheres view. Only the balance of the shards depends on it. */
+static int view_cost(const fs_method *m, double *cost)
 {
-    /* One view's cost relative to spheres: the frame totals of results/demo/timings.csv
-     * (the dam break at 512x512, llvmpipe on 2 cores), rounded. Only the balance
-     * of the shards depends on them; a method not listed counts as the reference. */
-    static const struct { const char *name; double w; } weights[] = {
-        {"spheres", 1}, {"mesh", 1.5}, {"aniso_ssf", 7}, {"reference", 10}, {"levelset", 11},
-        {"surfels", 19}, {"raycast_pca", 40}, {"volume_raycast", 67},
-    };
-    if (!name) return 0.5;
-    for (size_t i = 0; i < sizeof weights / sizeof *weights; i++)
-        if (!strcmp(weights[i].name, name)) return weights[i].w;
-    return 10;
+    *cost = m ? m->cost : 0.5;
+    if (!(*cost > 0))
+        return fs_fail(FS_ERR_RUNTIME, "method '%s' declares no cost (fs_method.cost): --shard cannot split it", m->name);
+    return FS_OK;
 }
 
 /* A frame's particle count, estimated by its file's size (the same format and
@@ -63,20 +59,23 @@ static int by_cost(const void *a, const void *b)
     return x->id - y->id;
 }
 
-/* The cost of every work item; imports get none (they are no work items). */
-static int item_costs(const cmp_run *r, item_cost *c)
+/* The cost of every work item into c, their number into *n; imports get none
+ * (they are no work items). */
+static int item_costs(const cmp_run *r, item_cost *c, int *n)
 {
-    double pixels = (double)r->scene.camera.width * r->scene.camera.height;
-    int n = 0;
-    for (int f = 0; f < r->nframes; f++) {
+    double pixels = (double)r->scene.camera.width * r->scene.camera.height, w;
+    int rc = FS_OK;
+    *n = 0;
+    for (int f = 0; f < r->nframes && !rc; f++) {
         double base = pixels * frame_particles(r, f);
-        for (int k = 0; k < r->nrefs; k++)
-            c[n++] = (item_cost){cmp_item_id(r, 1, k, f), base * cmp_method_weight(r->refs[k].analytic ? NULL : "reference")};
-        for (int i = 0; i < r->nentries; i++)
-            if (!r->entries[i].imported)
-                c[n++] = (item_cost){cmp_item_id(r, 0, i, f), base * cmp_method_weight(r->entries[i].name)};
+        for (int k = 0; k < r->nrefs && !rc; k++)
+            if (!(rc = view_cost(r->refs[k].analytic ? NULL : r->refs[k].v.m, &w)))
+                c[(*n)++] = (item_cost){cmp_item_id(r, 1, k, f), base * w};
+        for (int i = 0; i < r->nentries && !rc; i++)
+            if (!r->entries[i].imported && !(rc = view_cost(r->entries[i].v.m, &w)))
+                c[(*n)++] = (item_cost){cmp_item_id(r, 0, i, f), base * w};
     }
-    return n;
+    return rc;
 }
 
 int cmp_shard_plan(cmp_run *r)
@@ -89,7 +88,11 @@ int cmp_shard_plan(cmp_run *r)
         free(c), free(load);
         return fs_fail(FS_ERR_RUNTIME, "out of memory");
     }
-    int n = item_costs(r, c);
+    int n, rc = item_costs(r, c, &n);
+    if (rc) {
+        free(c), free(load);
+        return rc;
+    }
     qsort(c, n, sizeof *c, by_cost);
     for (int j = 0; j < n; j++) {
         int best = 0;

@@ -23,15 +23,15 @@
 
 /* "K/N" with 1 <= K <= N <= CMP_MAX_SHARDS, else FS_ERR_INPUT naming the text. */
 int cmp_shard_parse(const char *text, int *k, int *n);
-/* r->owner for every work item: the longest estimated first, each to the
- * shard with the least estimated work so far (ties: the lower id, the lower K). */
+/* r->owner for every work item: the longest estimated first (pixels x frame
+ * file size x the method's declared cost, fs_method.cost), each to the shard
+ * with the least estimated work so far (ties: the lower id, the lower K).
+ * FS_ERR_RUNTIME for a method that declares no cost. */
 int cmp_shard_plan(cmp_run *r);
 /* Before any work: removes DIR/DONE; refuses arguments the manifest cannot hold. */
 int cmp_shard_start(const cmp_run *r);
 /* The manifest: its header once the provenance is known; finished, after the
  * shard's last item, with every item's record, then DONE. */
 int cmp_shard_write(const cmp_run *r, int finished);
-/* The estimated relative cost of one view of method name (NULL: the analytic reference). */
-double cmp_method_weight(const char *name);
 
 #endif

@@ -1,5 +1,6 @@
 /* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
 #include "method.h"
+#include "registry.h"
 #include "cli.h"
 #include "fs_error.h"
 #include "interrupt.h"

@@ -2,7 +2,7 @@
  * viewer's keys 1-9 pick them). Adding a method: its folder methods/NAME/ with
  * `const fs_method fs_method_NAME`, one line here, its shaders under
  * shaders/NAME/ (docs/DESIGN.md, "Adding a method"). */
-#include "method.h"
+#include "registry.h"
 #include <string.h>
 
 #define BUILTIN_METHODS(X) \

@@ -11,6 +11,7 @@
 #include "gl.h"
 #include "gl_context.h"
 #include "gl_counters.h"
+#include "registry.h"
 #include "run.h"
 #include "scene.h"
 #include "shader.h"

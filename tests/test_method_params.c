@@ -1,13 +1,16 @@
 /* Typed parameters: the one "METHOD.PARAM=VALUE" splitter and its messages
  * (scene, --set, sweeps), the fill of a method's parameter struct by table
  * offsets, parameters set by name reaching create() as named fields, and the
- * tables of every built-in method fitting their structs. */
+ * tables of every built-in method fitting their structs, and every built-in
+ * declaring its cost. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
+#include "registry.h"
 #include "method_params.h"
 #include "run.h"
 #include "sweep.h"
+#include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,6 +140,19 @@ static void builtin_tables(void)
     }
 }
 
+/* Every listed method declares its cost for compare --shard's split (a method
+ * without one would be refused there), in units of spheres' view. */
+static void declared_costs(void)
+{
+    CHECK(fs_method_count() >= 6, "%d built-in methods registered", fs_method_count());
+    for (int i = 0; i < fs_method_count(); i++) {
+        const fs_method *m = fs_method_at(i);
+        CHECK(m->cost > 0 && isfinite(m->cost), "%s: cost %g, must be > 0 (fs_method.cost)", m->name, m->cost);
+    }
+    const fs_method *unit = fs_method_find("spheres");
+    CHECK(unit && unit->cost == 1, "spheres is the unit of cost");
+}
+
 int main(void)
 {
     fs_methods_register_builtin();
@@ -146,5 +162,6 @@ int main(void)
     fill();
     by_name();
     builtin_tables();
+    declared_costs();
     TEST_DONE();
 }

@@ -9,6 +9,7 @@
 #include "gl.h"
 #include "gl_context.h"
 #include "method.h"
+#include "registry.h"
 #include "run.h"
 #include "metrics.h"
 #include "particle_io.h"

@@ -1,6 +1,6 @@
 /* The method interface (docs/DESIGN.md, "Adding a method"): a struct of function
- * pointers, registered in one registry (registry.c; the built-in table is
- * methods/registry.c). A method turns particles + camera into a G-buffer; only the
+ * pointers, registered in one registry (registry.c; the built-in table is in the
+ * layer above, methods/registry.h). A method turns particles + camera into a G-buffer; only the
  * run layer (common/run/run.h) calls its functions. */
 #ifndef FS_METHOD_H
 #define FS_METHOD_H
@@ -43,6 +43,11 @@ typedef struct fs_method {
     const char *exports;     /* what export_file writes, for `methods` (NULL: nothing) */
     int needs_gl;            /* 1: an OpenGL 4.5 context must be current */
     int grid_use;            /* FS_GRID_KEPT (0), FS_GRID_AT_UPLOAD or FS_GRID_UNUSED, below */
+    /* One view's render cost relative to spheres (1), for compare --shard's
+     * split (only the shards' balance depends on it). Every method declares one,
+     * > 0 (test_method_params); the built-ins' are their frame totals in one
+     * llvmpipe run (docs/DESIGN.md, "Sharded studies"). */
+    double cost;
     /* The work counters it reports (FS_CNT_BIT of counters.h, or-ed); 0: none
      * yet, and --counters refuses it. */
     unsigned counters;
@@ -78,12 +83,6 @@ enum { FS_GRID_KEPT = 0, FS_GRID_AT_UPLOAD = 1, FS_GRID_UNUSED = 2 };
 enum { FS_METHOD_HIDDEN = 1 }; /* registered, found by name, not listed */
 /* Adds m to the registry (again: no-op). FS_ERR_INPUT when another method has its name. */
 int fs_method_register(const fs_method *m, int flags);
-/* The built-in table of methods/registry.c (idempotent). */
-void fs_methods_register_builtin(void);
-/* For a built-in method this build leaves out (it needs an optional library):
- * the CMake option that builds it ("FS_WITH_OPENVDB"); NULL otherwise
- * (methods/registry.c). */
-const char *fs_method_needs_option(const char *name);
 /* By name, hidden ones included; NULL when none. */
 const fs_method *fs_method_find(const char *name);
 /* The listed (not hidden) methods, in registration order. */

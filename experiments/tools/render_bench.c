@@ -27,6 +27,7 @@
 #include "gl_limits.h"
 #include "image_io.h"
 #include "method.h"
+#include "registry.h"
 #include "run.h"
 #include "scene.h"
 #include "timing.h"

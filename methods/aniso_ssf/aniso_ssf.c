@@ -273,6 +273,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 
 const fs_method fs_method_aniso_ssf = {
     .name = "aniso_ssf",
+    .cost = 7, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "screen-space fluid: WPCA ellipsoid (or sphere) sprites, Gaussian/bilateral/curvature/narrow-range "
                    "depth filter, normals from depth",
     .paper = "xu2022",

@@ -143,6 +143,7 @@ static int export_file(void *self, const char *path)
 
 const fs_method fs_method_levelset = {
     .name = "levelset",
+    .cost = 11, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "OpenVDB union-of-spheres narrow-band level set, ray traced on the CPU (baseline)",
     .paper = "museth2013 (OpenVDB, vdb_tool -points2ls; baseline)",
     .exports = ".vdb: the narrow-band level set (float grid 'surface', class level set)",

@@ -106,6 +106,7 @@ static int export_file(void *self, const char *path)
 
 const fs_method fs_method_mesh = {
     .name = "mesh",
+    .cost = 1.5, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "marching-cubes mesh of the scene's field (OpenVDB volumeToMesh), rasterised (baseline)",
     .paper = "splashsurf-style meshing (baseline)",
     .exports = FS_MESH_EXPORTS ": the mesh with vertex normals",

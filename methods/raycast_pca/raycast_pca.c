@@ -280,6 +280,7 @@ static const fs_aov_def aovs[] = {{FS_AOV_COLOR, 4, 1}};
 
 const fs_method fs_method_raycast_pca = {
     .name = "raycast_pca",
+    .cost = 40, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "splatted entry, narrow-band ray casting of the SPH iso-surface, PCA/SPH-gradient blended normals",
     .paper = "xiao2017",
     .needs_gl = 1,

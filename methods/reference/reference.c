@@ -397,6 +397,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 
 const fs_method fs_method_reference = {
     .name = "reference",
+    .cost = 10, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "exact CPU ray caster of the SPH iso-surface (safe steps, bisection, analytic normals)",
     .paper = "",
     .needs_gl = 0,

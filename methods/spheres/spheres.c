@@ -114,6 +114,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 
 const fs_method fs_method_spheres = {
     .name = "spheres",
+    .cost = 1, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "particles as opaque spheres of radius r (sprites with exact depth replacement)",
     .paper = "inacio2010 (Table II baseline)",
     .needs_gl = 1,

@@ -302,6 +302,7 @@ static const fs_aov_def aovs[] = {{FS_AOV_OWN, 4, 0}, {FS_AOV_CAUSTICS, 1, 0}};
 
 const fs_method fs_method_surfels = {
     .name = "surfels",
+    .cost = 19, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
     .paper = "iwasaki2006",
     .appearance = "environment reflection, refraction of the floor and a sunken box, caustics (iwasaki2006)",

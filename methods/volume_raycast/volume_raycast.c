@@ -358,6 +358,7 @@ static const fs_aov_def aovs[] = {{FS_AOV_OWN, 4, 0}, {FS_AOV_CAUSTICS, 1, 0}};
 
 const fs_method fs_method_volume_raycast = {
     .name = "volume_raycast",
+    .cost = 67, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
     .description = "single-pass layered density volume (geometry shader), bounding-box ray casting, transfer functions",
     .paper = "inacio2010",
     .appearance = "its transfer function: the opaque iso-surface, or translucent with mode=translucent (inacio2010)",
