@@ -3,6 +3,7 @@
 #include "api_internal.h"
 #include "fs_error.h"
 #include "metrics.h"
+#include "obstacle_mask.h"
 #include "render_output.h"
 
 #include <stdlib.h>
@@ -127,8 +128,10 @@ int fluidsurf_metrics_compute2(const fluidsurf_image *a, const fluidsurf_image *
         return rc;
     double r = radius > 0 ? radius : b->radius;
     if (!(r > 0)) return fs_fail(FS_ERR_INPUT, "metrics: no radius (the reference image has none; pass one)");
-    fs_metrics m;
-    if ((rc = fs_metrics_compute(&a->im.g, a->im.rgba, &b->im.g, b->im.rgba, (float)r, &m))) return rc;
+    fs_metrics m; /* masked as compare masks, where either image carries the solids' depth (the reference's first) */
+    const float *solids = fs_gbuffer_aov(&b->im.g, FS_AOV_SOLID_DEPTH);
+    if (!solids) solids = fs_gbuffer_aov(&a->im.g, FS_AOV_SOLID_DEPTH);
+    if ((rc = fs_metrics_compute_masked(solids, &a->im.g, a->im.rgba, &b->im.g, b->im.rgba, (float)r, &m, NULL))) return rc;
     *out = (fluidsurf_metrics){m.mask_iou, m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.normal_mean_deg,
                                m.normal_p95_deg, m.interior_normal_mean_deg, m.psnr_db, m.ssim,
                                m.n_both, m.n_union, m.n_interior};

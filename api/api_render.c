@@ -7,6 +7,7 @@
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
+#include "obstacle_mask.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -71,6 +72,21 @@ static int run_method(const fs_method *m, const fs_scene *sc, const double *valu
     return rc;
 }
 
+/* The solids' depth as the image's layer solid_depth (a scene with solids), so
+ * that its metrics leave out what compare leaves out. */
+static int keep_solids(const fs_scene *sc, fluidsurf_image *im)
+{
+    fs_gbuffer view;
+    float *buf;
+    int rc = fs_solids_layer(sc, &sc->camera, &im->im.g, &view, &buf);
+    if (!rc && buf) {
+        rc = fs_gbuffer_add_aov(&im->im.g, FS_AOV_SOLID_DEPTH, 1);
+        if (!rc) memcpy(fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH), buf, (size_t)im->im.g.w * im->im.g.h * sizeof *buf);
+    }
+    free(buf);
+    return rc;
+}
+
 void fs_api_lock(int on)
 {
     if (on) pthread_mutex_lock(&render_lock);
@@ -119,6 +135,7 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, co
         fs_api_lock(0);
     }
     if (!rc) im->radius = sc->radius, im->camera = sc->camera, im->has_camera = 1;
+    if (!rc) rc = keep_solids(sc, im);
     free(sc);
     if (rc) {
         fluidsurf_image_free(im);

@@ -217,7 +217,7 @@ static int write_view(const cmp_run *r, const char *label, int frame, const cmp_
     }
     cmp_view_path(r, NULL, label, frame, "", "exr", path, sizeof path);
     if (!rc) rc = cmp_outdir_record(path);
-    return rc ? rc : fs_write_render(path, &v->g, v->rgba, prov);
+    return rc ? rc : fs_write_render_in_scene(path, &r->scene, &r->scene.camera, &v->g, v->rgba, prov);
 }
 
 /* The metrics of a variant's view of frame f against every reference. */

@@ -5,6 +5,7 @@
 #include "diff.h"
 #include "diff_panel.h"
 #include "fs_error.h"
+#include "obstacle_mask.h"
 #include "options.h"
 #include "output_file.h"
 #include "render_output.h"
@@ -22,7 +23,9 @@ static const char epilogue[] =
     "size or camera (fluidsurf:camera) is refused (exit 2); a different scene\n"
     "(fluidsurf:scene_hash) or r (fluidsurf:r), or provenance that cannot tell, gives\n"
     "a warning, or with --strict a refusal. Exits 3 when a --fail-* threshold is\n"
-    "crossed, 0 otherwise.\n";
+    "crossed, 0 otherwise. Where the EXRs carry the solids' depth (the solid_depth\n"
+    "layer fluidsurf writes for a scene with solids; B's, else A's), the pixels a\n"
+    "solid hides are left out as compare leaves them out, and a line says how many.\n";
 
 typedef struct diff_opts {
     float fail_iou, fail_normal, fail_depth, radius, nscale, dscale;
@@ -63,13 +66,19 @@ static int run_diff(const diff_opts *o, const char *const files[2], fs_gbuffer g
     float rr = o->radius > 0 ? o->radius : r[0] > 0 ? r[0] : r[1];
     if (!rc && !(rr > 0)) rc = fs_fail(FS_ERR_INPUT, "%s: no fluidsurf:r attribute; give --radius", files[0]);
     fs_metrics m;
-    if (!rc) rc = fs_metrics_compute(&g[0], rgba[0], &g[1], rgba[1], rr, &m);
+    long masked = -1; /* -1: neither file carries the solids' depth */
+    if (!rc) {
+        const float *solids = fs_gbuffer_aov(&g[1], FS_AOV_SOLID_DEPTH);
+        if (!solids) solids = fs_gbuffer_aov(&g[0], FS_AOV_SOLID_DEPTH);
+        rc = fs_metrics_compute_masked(solids, &g[0], rgba[0], &g[1], rgba[1], rr, &m, &masked);
+        if (!solids) masked = -1;
+    }
     if (!rc && o->out) rc = write_heatmaps(o, files, g, rr, &m);
     if (rc) return rc;
     diff_fail fails[3];
     int nfails = thresholds(o, &m, fails);
-    if (o->json) diff_print_json(stdout, files, rr, &m, fails, nfails);
-    else diff_print_text(stdout, files, rr, &m, fails, nfails);
+    if (o->json) diff_print_json(stdout, files, rr, masked, &m, fails, nfails);
+    else diff_print_text(stdout, files, rr, masked, &m, fails, nfails);
     return nfails ? FS_ERR_DIFF : FS_OK;
 }
 

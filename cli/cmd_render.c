@@ -65,7 +65,7 @@ static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p,
     int rc = cli_cache_render(job->cache, run, scene, p, NULL, NULL, job->frame, &im, st, &made);
     if (!rc && job->counters) *counts = made.counts;
     fs_run_provenance(run, NULL, job->frame, &prov);
-    if (!rc) rc = fs_write_render(job->out, &im.g, im.rgba, &prov);
+    if (!rc) rc = fs_write_render_in_scene(job->out, scene, &scene->camera, &im.g, im.rgba, &prov);
     if (!rc && made.hit && !job->cache->quiet) fprintf(stderr, "fluidsurf: note: %s from the cache, %s\n", job->m->name, made.entry);
     fs_run_image_free(&im);
     return rc;
@@ -84,7 +84,7 @@ static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, co
     rc = fs_run_render(run, &scene->camera, &im, st);
     if (!rc) rc = fs_run_shade(run, &scene->camera, &im, job->look, st);
     fs_run_provenance(run, NULL, job->frame, &prov);
-    if (!rc) rc = fs_write_render(job->out, &im.g, im.rgba, &prov);
+    if (!rc) rc = fs_write_render_in_scene(job->out, scene, &scene->camera, &im.g, im.rgba, &prov);
     fs_run_image_free(&im);
     return rc;
 }

@@ -30,12 +30,13 @@ static void metric_list(const fs_metrics *m, named out[NMETRICS])
     for (int i = 0; i < NMETRICS; i++) out[i] = l[i];
 }
 
-void diff_print_text(FILE *f, const char *const files[2], float r, const fs_metrics *m, const diff_fail *fails,
+void diff_print_text(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
                      int nfails)
 {
     named l[NMETRICS];
     metric_list(m, l);
     fprintf(f, "a: %s\nb: %s (reference)\nr: %g\n", files[0], files[1], r);
+    if (masked >= 0) fprintf(f, "solids_masked_px %ld (hidden by solids, left out as compare leaves them out)\n", masked);
     for (int i = 0; i < NMETRICS; i++) fprintf(f, "%s %.6g\n", l[i].name, l[i].v);
     for (int i = 0; i < nfails; i++) fprintf(f, "FAIL %s\n", fails[i].text);
 }
@@ -61,7 +62,7 @@ static void json_number(FILE *f, double v, const char *fmt)
     else fprintf(f, fmt, v);
 }
 
-void diff_print_json(FILE *f, const char *const files[2], float r, const fs_metrics *m, const diff_fail *fails,
+void diff_print_json(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
                      int nfails)
 {
     named l[NMETRICS];
@@ -72,6 +73,7 @@ void diff_print_json(FILE *f, const char *const files[2], float r, const fs_metr
     json_string(f, files[1]);
     fputs(", \"r\": ", f);
     json_number(f, r, "%.9g");
+    if (masked >= 0) fprintf(f, ", \"solids_masked_px\": %ld", masked);
     for (int i = 0; i < NMETRICS; i++) {
         fprintf(f, ", \"%s\": ", l[i].name);
         json_number(f, l[i].v, "%.17g");

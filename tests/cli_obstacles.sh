@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Static obstacles end to end: simulate a scene file with a box and a ball (boundary
 # particles, no fluid inside them), render its frame with the same solids through
-# compare (the solids drawn, the hidden pixels out of the metrics), and bad obstacles
+# compare (the solids drawn, the hidden pixels out of the metrics; diff of its EXRs
+# gives the same metrics, through their solid_depth layer), and bad obstacles
 # refused with one line naming the file and no output left.
 set -u
 BIN=$1 T=$2
@@ -35,6 +36,30 @@ check '[ "$(both "$T/with")" -lt "$(both "$T/without")" ]' "hidden pixels leave 
 diffpx=$(oiiotool "$T/with/reference.png" "$T/without/reference.png" --absdiff --rangecompress --ch R --printstats 2>/dev/null |
   sed -n 's/.*Max: *\([0-9.]*\).*/\1/p' | head -1)
 check 'awk -v d="${diffpx:-0}" "BEGIN {exit !(d > 0.2)}"' "the solids are drawn (largest pixel change ${diffpx:-none})"
+
+# diff agrees with compare: compare's EXRs carry the solids' depth (solid_depth), so
+# diff leaves out the same pixels and prints compare's numbers; the same EXRs without
+# that layer (as written before it) give the old, unmasked numbers, and no line about solids.
+csv_row() { awk -F, '/^method,/ { for (i = 1; i <= NF; i++) h[i] = $i } !/^#/ && $1 == "spheres" { for (i = 5; i <= NF; i++) if (h[i] != "frame_ms") print h[i], $i }' "$1"; }
+csv_row "$T/with/metrics.csv" | sort > "$T/compare.txt"
+"$BIN" diff "$T/with/spheres.exr" "$T/with/reference.exr" > "$T/diff.out" 2> "$T/diff.err"
+check '[ $? -eq 0 ] && grep -q "^solids_masked_px [1-9]" "$T/diff.out"' "diff says it masked the solids: $(grep solids_masked "$T/diff.out")"
+grep -v ':\|^solids' "$T/diff.out" | awk '$1 != "n_union"' | sort > "$T/diff.txt"
+check '[ -s "$T/compare.txt" ] && cmp -s "$T/compare.txt" "$T/diff.txt"' \
+  "diff gives compare's metrics ($(wc -l < "$T/compare.txt") columns; $(diff "$T/compare.txt" "$T/diff.txt" | tr '\n' ' '))"
+layers=R,G,B,A,depth,normal.X,normal.Y,normal.Z,thickness,coverage
+oiiotool "$T/with/spheres.exr" --ch $layers -o "$T/old_a.exr" && oiiotool "$T/with/reference.exr" --ch $layers -o "$T/old_b.exr"
+"$BIN" diff "$T/old_a.exr" "$T/old_b.exr" > "$T/old.out" 2> /dev/null
+nb_of() { awk '$1 == "n_both" {print $2}' "$1"; }
+psnr_of() { awk '$1 == "psnr_db" {print $2}' "$1"; }
+echo "     n_both, psnr_db: compare $(awk '$1 == "n_both" {print $2}' "$T/compare.txt"), $(awk '$1 == "psnr_db" {print $2}' "$T/compare.txt");" \
+  "diff now $(nb_of "$T/diff.out"), $(psnr_of "$T/diff.out"); diff of EXRs without solid_depth (old) $(nb_of "$T/old.out"), $(psnr_of "$T/old.out")"
+check '[ -n "$(nb_of "$T/old.out")" ] && [ "$(nb_of "$T/old.out")" -gt "$(nb_of "$T/diff.out")" ] && ! grep -q solids "$T/old.out"' \
+  "EXRs without the solids' layer read as before: unmasked, no line about solids"
+"$BIN" diff "$T/with/spheres.exr" "$T/with/reference.exr" --json > "$T/diff.json"
+check 'grep -q "\"solids_masked_px\": $(awk "\$1 == \"solids_masked_px\" {print \$2}" "$T/diff.out")," "$T/diff.json"' "diff --json says the same count"
+"$BIN" diff "$T/without/spheres.exr" "$T/without/reference.exr" > "$T/plain.out" 2> /dev/null
+check '! grep -q solids "$T/plain.out"' "a scene without solids: no layer, no line"
 
 # a sequence: the temporal measures run with solids in the view
 printf '{"particles": {"file": "f_%%04d.bgeo", "first": 1, "last": 3}, "radius": 0.04, "up": "y", "obstacles": %s, "camera": {"eye": [1.7, 0.9, 1.6], "target": [0.5, 0.15, 0.3], "width": 64, "height": 64}}\n' \

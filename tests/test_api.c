@@ -1,11 +1,13 @@
 /* The C API as a program links it (libfluidsurf.so, include/fluidsurf/fluidsurf.h):
  * fluidsurf_mesh_build on a ball of particles is a closed mesh around the ball's
  * surface with unit outward normals; its parameters and the library's messages
- * (settings named as written, the valid names listed, no command-line flags).
+ * (settings named as written, the valid names listed, no command-line flags);
+ * in a scene with solids, metrics that leave out what the solids hide.
  * In a build without OpenVDB the mesh is refused in one line. */
 #include "fluidsurf/fluidsurf.h"
 #include "fs_test.h"
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #define R 0.025f
@@ -115,6 +117,51 @@ static void messages(fluidsurf_scene *s, fluidsurf_particles *p)
           !strstr(msg, "--"), "a scene's unknown setting: %s", msg);
 }
 
+/* An image made from im's core layers alone: what the metrics saw before images
+ * carried the solids' depth. */
+static fluidsurf_image *without_solids(const fluidsurf_image *im)
+{
+    fluidsurf_image *out = NULL;
+    int w = fluidsurf_image_width(im), h = fluidsurf_image_height(im);
+    fluidsurf_image_from_arrays(w, h, fluidsurf_image_layer(im, "depth", NULL), fluidsurf_image_layer(im, "normal", NULL),
+                                fluidsurf_image_layer(im, "thickness", NULL), fluidsurf_image_layer(im, "coverage", NULL),
+                                fluidsurf_image_layer(im, "rgba", NULL), fluidsurf_image_radius(im), &out);
+    return out;
+}
+
+/* A scene with solids: its images carry the layer solid_depth, and the metrics
+ * leave out the pixels a solid hides, as compare does (old and new numbers printed). */
+static void metrics_mask_solids(fluidsurf_particles *p)
+{
+    const char *path = "test_api_solids.json"; /* a rod through the ball along each axis, out of it on both sides;
+                                                   * the particles are the caller's, never read from the file */
+    FILE *f = fopen(path, "w");
+    if (f) fprintf(f, "{\"particles\": \"unused.bgeo\", \"obstacles\": [{\"min\": [-0.04, -0.04, -0.5], \"max\": [0.04, 0.04, 0.5]},"
+                      " {\"min\": [-0.5, -0.04, -0.04], \"max\": [0.5, 0.04, 0.04]},"
+                      " {\"min\": [-0.04, -0.5, -0.04], \"max\": [0.04, 0.5, 0.04]}]}\n"), fclose(f);
+    fluidsurf_scene *s = NULL;
+    fluidsurf_image *a = NULL, *b = NULL;
+    int rc = fluidsurf_scene_load(path, &s);
+    if (!rc) rc = fluidsurf_scene_set_radius(s, R);
+    if (!rc) rc = fluidsurf_scene_set_size(s, 96, 96);
+    if (!rc) rc = fluidsurf_render(s, p, "reference", (const char *[]){"supersample=2"}, 1, &a);
+    if (!rc) rc = fluidsurf_render(s, p, "reference", NULL, 0, &b);
+    CHECK(rc == FLUIDSURF_OK, "renders in a scene with solids: %s", rc ? fluidsurf_last_error() : "");
+    remove(path);
+    if (rc) return;
+    int nc = 0;
+    CHECK(fluidsurf_image_layer(b, "solid_depth", &nc) && nc == 1, "the image carries the solids' depth");
+    fluidsurf_image *a0 = without_solids(a), *b0 = without_solids(b);
+    fluidsurf_metrics now, old;
+    CHECK(fluidsurf_metrics_compute(a, b, 0, &now) == FLUIDSURF_OK && fluidsurf_metrics_compute(a0, b0, 0, &old) == FLUIDSURF_OK,
+          "metrics: %s", fluidsurf_last_error());
+    printf("     n_union, n_both, normal_mean_deg: masked %zu, %zu, %g; unmasked (before) %zu, %zu, %g\n", now.n_union,
+           now.n_both, now.normal_mean_deg, old.n_union, old.n_both, old.normal_mean_deg);
+    CHECK(now.n_both > 0 && now.n_both < old.n_both && now.n_union < old.n_union, "the solids' pixels are left out");
+    fluidsurf_image_free(a0), fluidsurf_image_free(b0), fluidsurf_image_free(a), fluidsurf_image_free(b);
+    fluidsurf_scene_free(s);
+}
+
 int main(void)
 {
     CHECK(fluidsurf_api_version() == 3 && FLUIDSURF_API_VERSION == 3, "API version 3: %d", fluidsurf_api_version());
@@ -135,6 +182,7 @@ int main(void)
           !strchr(fluidsurf_last_error(), '\n'), "refused in one line naming the option: %s", fluidsurf_last_error());
 #endif
     messages(s, p);
+    metrics_mask_solids(p);
     fluidsurf_scene_free(s);
     fluidsurf_particles_free(p);
     TEST_DONE();

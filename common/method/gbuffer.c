@@ -35,7 +35,7 @@ static const fs_aov *find_aov(const fs_gbuffer *g, const char *name)
 static int known_components(const char *name)
 {
     if (!strcmp(name, FS_AOV_COLOR) || !strcmp(name, FS_AOV_OWN)) return 4;
-    return strcmp(name, FS_AOV_CAUSTICS) ? 0 : 1;
+    return !strcmp(name, FS_AOV_CAUSTICS) || !strcmp(name, FS_AOV_SOLID_DEPTH) ? 1 : 0;
 }
 
 static int check_aov(const char *name, int ncomp)

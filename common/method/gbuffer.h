@@ -9,6 +9,9 @@
  *   own       RGBA (linear): the whole image in the method's own appearance,
  *             for methods whose paper defines one (surfels' refraction and caustics)
  *   caustics  1: caustic irradiance on what each pixel sees (floor or object)
+ *   solid_depth 1: the depth of the scene's solids (0 where none); no method
+ *             writes it: EXRs of a scene with solids carry it so that diff and the
+ *             C API mask what compare masks (obstacle_mask.h, fs_solids_layer)
  * In an EXR a 4-component AOV NAME is the channels NAME.R NAME.G NAME.B NAME.A,
  * a 1-component one the channel NAME. */
 #ifndef FS_GBUFFER_H
@@ -20,6 +23,7 @@ extern "C" {
 #define FS_AOV_COLOR "color"
 #define FS_AOV_OWN "own"
 #define FS_AOV_CAUSTICS "caustics"
+#define FS_AOV_SOLID_DEPTH "solid_depth"
 
 enum { FS_GBUFFER_MAX_AOVS = 8, FS_AOV_NAME_MAX = 32 };
 

@@ -1,5 +1,6 @@
 #include "render_output.h"
 #include "image_io.h"
+#include "obstacle_mask.h"
 #include "output_file.h"
 #include "fs_error.h"
 #include <math.h>
@@ -79,6 +80,18 @@ int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, co
     const char *names[4] = {"R", "G", "B", "A"};
     fs_image img = {g->w, g->h, 4, names, (float *)rgba};
     return fs_write_png(path, &img);
+}
+
+int fs_write_render_in_scene(const char *path, const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g,
+                             const float *rgba, const fs_provenance *prov)
+{
+    if (!fs_path_ends_with(path, ".exr")) return fs_write_render(path, g, rgba, prov);
+    fs_gbuffer view;
+    float *buf;
+    int rc = fs_solids_layer(s, cam, g, &view, &buf);
+    if (!rc) rc = fs_write_render(path, &view, rgba, prov);
+    free(buf);
+    return rc;
 }
 
 static int is_core_channel(const char *name)

@@ -4,6 +4,7 @@
 #define FS_RENDER_OUTPUT_H
 #include "gbuffer.h"
 #include "provenance.h"
+#include "scene.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -20,6 +21,11 @@ extern "C" {
  * then every AOV of g by name, in g's order: NAME for a 1-component AOV, NAME.R
  * NAME.G NAME.B NAME.A for a 4-component one (color.R.., own.R.., caustics). */
 int fs_write_render(const char *path, const fs_gbuffer *g, const float *rgba, const fs_provenance *prov);
+/* fs_write_render of a view of scene s through cam: an EXR also gets the layer
+ * solid_depth when s has solids (fs_solids_layer), so that diff and the C API
+ * leave out the pixels compare leaves out. */
+int fs_write_render_in_scene(const char *path, const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g,
+                             const float *rgba, const fs_provenance *prov);
 /* Reads an EXR written by fs_write_render (or any EXR with the same channel
  * names: R G B A depth normal.X normal.Y normal.Z coverage; thickness optional)
  * into g (allocated here) and rgba (malloc'd, 4 per pixel). Every other channel
