@@ -196,7 +196,10 @@ typedef struct fluidsurf_metrics {
 } fluidsurf_metrics;
 
 /* A method's image against a reference's (the same size); radius: r for the
- * depth errors (<= 0: the reference image's). NAN where no pixel counts. */
+ * depth errors (<= 0: the reference image's). NAN where no pixel counts. Where
+ * an image carries the layer "solid_depth" (rendered in a scene with solids, or
+ * read from such an EXR; the reference's first), the pixels a solid hides are
+ * left out, as fluidsurf compare leaves them out. */
 int fluidsurf_metrics_compute(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
                               fluidsurf_metrics *out);
 
