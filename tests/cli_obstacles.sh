@@ -58,6 +58,10 @@ check '[ -n "$(nb_of "$T/old.out")" ] && [ "$(nb_of "$T/old.out")" -gt "$(nb_of 
   "EXRs without the solids' layer read as before: unmasked, no line about solids"
 "$BIN" diff "$T/with/spheres.exr" "$T/with/reference.exr" --json > "$T/diff.json"
 check 'grep -q "\"solids_masked_px\": $(awk "\$1 == \"solids_masked_px\" {print \$2}" "$T/diff.out")," "$T/diff.json"' "diff --json says the same count"
+"$BIN" render "$T/with.json" --method reference -q -o "$T/render.exr" 2> /dev/null
+"$BIN" diff "$T/render.exr" "$T/old_b.exr" > "$T/render.out" 2> /dev/null
+check '[ "$(awk "\$1 == \"solids_masked_px\" {print \$2}" "$T/render.out")" = "$(awk "\$1 == \"solids_masked_px\" {print \$2}" "$T/diff.out")" ]' \
+  "render's EXR carries the solids' layer too (diff masks $(awk '$1 == "solids_masked_px" {print $2}' "$T/render.out") px)"
 "$BIN" diff "$T/without/spheres.exr" "$T/without/reference.exr" > "$T/plain.out" 2> /dev/null
 check '! grep -q solids "$T/plain.out"' "a scene without solids: no layer, no line"
 
