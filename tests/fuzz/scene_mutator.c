@@ -84,7 +84,7 @@ size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsi
     token t = tok[mu_below(&s, (unsigned)n)];
     int confuse = mu_below(&s, 10) < 3;
     if (t.kind == TOK_KEY)
-        snprintf(rep, sizeof rep, "%s", confuse ? "\"\"" : keys[mu_below(&s, (unsigned)n_keys)]);
+        snprintf(rep, sizeof rep, "%.*s", (int)sizeof rep - 1, confuse ? "\"\"" : keys[mu_below(&s, (unsigned)n_keys)]); /* a long key: cut */
     else if (confuse)
         snprintf(rep, sizeof rep, "%s", MU_PICK(&s, other_type));
     else if (t.kind == TOK_STR) {
