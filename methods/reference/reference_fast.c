@@ -350,7 +350,10 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
         float rem = u1 - t, s, gn, lo = t, g_lo = m->g;
         ray_work *w = work(F); /* a crossing below may change the phase */
         int proven;
-        if (M > 0) {
+        /* inside, the second-order step pays where the interior bits leave short unproven
+         * stretches; through long unproven interior (no bits built) the doubling trials of
+         * the monotone bound prove longer steps per sum (README.md, step 11) */
+        if (M > 0 && (!m->inside || R->fine_off)) {
             proven = taylor_step(F, t, rem, M, &slope, &s, &gn, &lo, &g_lo);
         } else {
             slope = NAN;
