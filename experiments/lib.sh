@@ -111,3 +111,25 @@ frames_mosaic() {
   for f in "$@"; do args+=("$f" "${cut[@]}" --resize "$tile"); done
   oiiotool "${args[@]}" --mosaic "$grid" --ch R,G,B -o "$out"
 }
+
+# replace_block MD NAME FILE: the lines of MD between "<!-- NAME -->" and "<!-- end NAME -->"
+# become FILE's lines (a generated table inside a README whose other text is kept)
+replace_block() {
+  awk -v t="$3" -v b="<!-- $2 -->" -v e="<!-- end $2 -->" '
+    $0 == b {print; while ((getline l < t) > 0) print l; skip = 1; next}
+    $0 == e {skip = 0}
+    !skip' "$1" > "$1.new" && mv "$1.new" "$1"
+}
+
+# reference_frames: sets the array frames to "NAME|PARTICLE FILE|RENDER INPUT AND OPTIONS" of
+# the reference studies (thickness_counts.sh, interior_auto.sh): fluidsurf's splash frame and
+# the bundled dam break, and in full mode first the DualSPHysics frame ($SHARED, z up,
+# r = 0.00365 as its README gives); exits 2 when that frame is missing
+reference_frames() {
+  frames=("splash|experiments/data/splash/dam_break_splash_100k.ply|experiments/data/splash/dam_break_splash_100k.ply"
+          "dam_break|experiments/data/splashsurf/dam_break_frame_23_24389_particles.vtk|experiments/scenes/dam_break.json")
+  [ "$FS_QUICK" = 1 ] && return 0
+  local dsph=${SHARED:-../shared/data}/dualsphysics/dambreak200k_t0.300.vtk
+  [ -f "$dsph" ] || { echo "$(basename "$0"): $dsph missing (set SHARED to the shared data folder)" >&2; exit 2; }
+  frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}")
+}

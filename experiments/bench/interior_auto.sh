@@ -27,13 +27,7 @@ OUT=$RESULTS/bench
 T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mkdir -p "$OUT"
 
-frames=("splash|experiments/data/splash/dam_break_splash_100k.ply|experiments/data/splash/dam_break_splash_100k.ply"
-        "dam_break|experiments/data/splashsurf/dam_break_frame_23_24389_particles.vtk|experiments/scenes/dam_break.json")
-if [ "$FS_QUICK" != 1 ]; then
-  dsph=$SHARED/dualsphysics/dambreak200k_t0.300.vtk
-  [ -f "$dsph" ] || { echo "interior_auto: $dsph missing (set SHARED to the shared data folder)" >&2; exit 2; }
-  frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}")
-fi
+reference_frames
 
 # stages INPUT SIZE VARIANT: "interior_ms march_ms" of one render
 stages() {

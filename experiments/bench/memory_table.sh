@@ -70,10 +70,6 @@ table() {
 
 tmp=$(mktemp)
 table > "$tmp"
-awk -v t="$tmp" '
-  /^<!-- memory table -->$/ {print; while ((getline l < t) > 0) print l; skip = 1; next}
-  /^<!-- end memory table -->$/ {skip = 0}
-  !skip' "$md" > "$md.new"
-mv "$md.new" "$md"
+replace_block "$md" "memory table" "$tmp"
 rm -f "$tmp"
 echo "updated $md"

@@ -32,13 +32,7 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mkdir -p "$OUT"
 
 # NAME|PARTICLE FILE|RENDER INPUT AND OPTIONS
-frames=("splash|experiments/data/splash/dam_break_splash_100k.ply|experiments/data/splash/dam_break_splash_100k.ply"
-        "dam_break|experiments/data/splashsurf/dam_break_frame_23_24389_particles.vtk|experiments/scenes/dam_break.json")
-if [ "$FS_QUICK" != 1 ]; then
-  dsph=$SHARED/dualsphysics/dambreak200k_t0.300.vtk
-  [ -f "$dsph" ] || { echo "thickness_counts: $dsph missing (set SHARED to the shared data folder)" >&2; exit 2; }
-  frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}")
-fi
+reference_frames
 # NAME|OPTIONS
 variants=("thickness_off|--set reference.thickness=off" "thickness_on|" "thickness_on_no_interior|--set reference.interior=off")
 counters="field_evals neighbours_visited march_samples crossings cells_walked cells_marched cells_marched_inside"

@@ -52,10 +52,6 @@ table() {
 
 tmp=$(mktemp)
 table > "$tmp"
-awk -v t="$tmp" '
-  /^<!-- campaign table -->$/ {print; while ((getline l < t) > 0) print l; skip = 1; next}
-  /^<!-- end campaign table -->$/ {skip = 0}
-  !skip' "$md" > "$md.new"
-mv "$md.new" "$md"
+replace_block "$md" "campaign table" "$tmp"
 rm -f "$tmp"
 echo "updated $md"
