@@ -35,11 +35,12 @@ int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *n
                                 const float *coverage, const float *rgba, double radius, fluidsurf_image **out)
 {
     int rc;
-    if ((rc = fs_api_check(out, "out")) || (rc = fs_api_check(depth, "depth")) || (rc = fs_api_check(normal, "normal")) ||
-        (rc = fs_api_check(coverage, "coverage")))
+    if ((rc = fs_api_check(out, "out")) || (rc = fs_api_check(depth, "depth")) ||
+        (rc = fs_api_check(normal, "normal")) || (rc = fs_api_check(coverage, "coverage")))
         return rc;
     *out = NULL;
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) return fs_fail(FS_ERR_INPUT, "image size %dx%d: each side 1 to 16384", w, h);
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+        return fs_fail(FS_ERR_INPUT, "image size %dx%d: each side 1 to 16384", w, h);
     if (!(radius >= 0)) return fs_fail(FS_ERR_INPUT, "radius %g: must be 0 or positive", radius);
     fluidsurf_image *im = calloc(1, sizeof *im);
     size_t n = (size_t)w * h;
@@ -52,6 +53,16 @@ int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *n
     copy_layer(im->im.rgba, rgba, 4 * n);
     im->radius = (float)radius;
     *out = im;
+    return FLUIDSURF_OK;
+}
+
+int fluidsurf_image_set_solid_depth(fluidsurf_image *im, const float *solid_depth)
+{
+    int rc;
+    if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(solid_depth, "solid_depth"))) return rc;
+    float *have = fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH);
+    if (!have && (rc = fs_gbuffer_add_aov(&im->im.g, FS_AOV_SOLID_DEPTH, 1))) return rc;
+    copy_layer(fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH), solid_depth, (size_t)im->im.g.w * im->im.g.h);
     return FLUIDSURF_OK;
 }
 
@@ -80,8 +91,12 @@ const float *fluidsurf_image_layer(const fluidsurf_image *im, const char *name, 
     if (ncomp) *ncomp = 0;
     if (!im || !name) return NULL;
     const fs_gbuffer *g = &im->im.g;
-    const struct { const char *name; const float *data; int ncomp; } core[] = {
-        {"depth", g->depth, 1}, {"normal", g->normal, 3}, {"thickness", g->thickness, 1},
+    const struct {
+        const char *name;
+        const float *data;
+        int ncomp;
+    } core[] = {
+        {"depth", g->depth, 1},       {"normal", g->normal, 3}, {"thickness", g->thickness, 1},
         {"coverage", g->coverage, 1}, {"rgba", im->im.rgba, 4},
     };
     for (size_t i = 0; i < sizeof core / sizeof *core; i++)
@@ -105,7 +120,10 @@ const char *fluidsurf_image_aov_name(const fluidsurf_image *im, int i)
 
 static int stage_ok(const fluidsurf_image *im, int i) { return im && i >= 0 && i < im->st.n; }
 int fluidsurf_image_stage_count(const fluidsurf_image *im) { return im ? im->st.n : 0; }
-const char *fluidsurf_image_stage_name(const fluidsurf_image *im, int i) { return stage_ok(im, i) ? im->st.name[i] : NULL; }
+const char *fluidsurf_image_stage_name(const fluidsurf_image *im, int i)
+{
+    return stage_ok(im, i) ? im->st.name[i] : NULL;
+}
 double fluidsurf_image_stage_ms(const fluidsurf_image *im, int i) { return stage_ok(im, i) ? im->st.ms[i] : 0; }
 const char *fluidsurf_image_stage_renderer(const fluidsurf_image *im, int i)
 {
@@ -114,27 +132,41 @@ const char *fluidsurf_image_stage_renderer(const fluidsurf_image *im, int i)
 
 static int prov_ok(const fluidsurf_image *im, int i) { return im && i >= 0 && i < im->prov.n; }
 int fluidsurf_image_provenance_count(const fluidsurf_image *im) { return im ? im->prov.n : 0; }
-const char *fluidsurf_image_provenance_name(const fluidsurf_image *im, int i) { return prov_ok(im, i) ? im->prov.name[i] : NULL; }
+const char *fluidsurf_image_provenance_name(const fluidsurf_image *im, int i)
+{
+    return prov_ok(im, i) ? im->prov.name[i] : NULL;
+}
 const char *fluidsurf_image_provenance_value(const fluidsurf_image *im, int i)
 {
     return prov_ok(im, i) ? im->prov.value[i] : NULL;
 }
 
-int fluidsurf_metrics_compute2(const fluidsurf_image *a, const fluidsurf_image *b, double radius, fluidsurf_metrics *out,
-                               fluidsurf_depth_metrics *depth)
+int fluidsurf_metrics_compute2(const fluidsurf_image *a, const fluidsurf_image *b, double radius,
+                               fluidsurf_metrics *out, fluidsurf_depth_metrics *depth)
 {
     int rc;
-    if ((rc = fs_api_check(a, "method image")) || (rc = fs_api_check(b, "reference image")) || (rc = fs_api_check(out, "out")))
+    if ((rc = fs_api_check(a, "method image")) || (rc = fs_api_check(b, "reference image")) ||
+        (rc = fs_api_check(out, "out")))
         return rc;
     double r = radius > 0 ? radius : b->radius;
     if (!(r > 0)) return fs_fail(FS_ERR_INPUT, "metrics: no radius (the reference image has none; pass one)");
     fs_metrics m; /* masked as compare masks, where either image carries the solids' depth (the reference's first) */
     const float *solids = fs_gbuffer_aov(&b->im.g, FS_AOV_SOLID_DEPTH);
     if (!solids) solids = fs_gbuffer_aov(&a->im.g, FS_AOV_SOLID_DEPTH);
-    if ((rc = fs_metrics_compute_masked(solids, &a->im.g, a->im.rgba, &b->im.g, b->im.rgba, (float)r, &m, NULL))) return rc;
-    *out = (fluidsurf_metrics){m.mask_iou, m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.normal_mean_deg,
-                               m.normal_p95_deg, m.interior_normal_mean_deg, m.psnr_db, m.ssim,
-                               m.n_both, m.n_union, m.n_interior};
+    if ((rc = fs_metrics_compute_masked(solids, &a->im.g, a->im.rgba, &b->im.g, b->im.rgba, (float)r, &m, NULL)))
+        return rc;
+    *out = (fluidsurf_metrics){m.mask_iou,
+                               m.depth_bias_r,
+                               m.depth_rmse_r,
+                               m.depth_p95_r,
+                               m.normal_mean_deg,
+                               m.normal_p95_deg,
+                               m.interior_normal_mean_deg,
+                               m.psnr_db,
+                               m.ssim,
+                               m.n_both,
+                               m.n_union,
+                               m.n_interior};
     if (depth)
         *depth = (fluidsurf_depth_metrics){m.depth_median_r, m.depth_abs_p50_r, m.depth_abs_p95_r, m.depth_abs_p99_r,
                                            m.depth_over_1r_frac};

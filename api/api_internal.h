@@ -42,6 +42,10 @@ int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, cons
 /* Takes (on = 1) or releases the lock that runs renders and meshes one at a time:
  * each uses every core, and the methods' process-wide state needs no more care. */
 void fs_api_lock(int on);
+/* With the lock held: the shared GL context made (on first use) and current;
+ * fs_api_gl gives it (NULL before). */
+int fs_api_gl_acquire(void);
+const struct fs_gl_context *fs_api_gl(void);
 /* code with the message of fs_fail kept (the library never prints). */
 int fs_api_check(const void *ptr, const char *what);
 

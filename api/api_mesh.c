@@ -36,8 +36,8 @@ static int build(const fs_scene *sc, const fs_particles *p, const double *values
 }
 #endif
 
-int fluidsurf_mesh_build(const fluidsurf_scene *s, const fluidsurf_particles *fp, const char *const *params, int nparams,
-                         fluidsurf_mesh **out)
+int fluidsurf_mesh_build(const fluidsurf_scene *s, const fluidsurf_particles *fp, const char *const *params,
+                         int nparams, fluidsurf_mesh **out)
 {
     int rc;
     if ((rc = fs_api_check(out, "out"))) return rc;
@@ -46,7 +46,8 @@ int fluidsurf_mesh_build(const fluidsurf_scene *s, const fluidsurf_particles *fp
     fs_api_init();
 #if !FS_WITH_OPENVDB
     (void)params, (void)nparams;
-    return fs_fail(FS_ERR_INPUT, "mesh: needs a library built with FS_WITH_OPENVDB=ON (its marching cubes are OpenVDB's)");
+    return fs_fail(FS_ERR_INPUT,
+                   "mesh: needs a library built with FS_WITH_OPENVDB=ON (its marching cubes are OpenVDB's)");
 #else
     const fs_method *m = fs_method_find("mesh");
     if (!m) return fs_fail(FS_ERR_RUNTIME, "mesh: the method is not registered");

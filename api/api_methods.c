@@ -54,7 +54,8 @@ int fluidsurf_param_info(const char *method, int j, fluidsurf_param *out)
     int rc = fs_api_check(out, "out");
     if (rc) return rc;
     if (!m) return fs_fail(FS_ERR_INPUT, "unknown method '%s'", method ? method : "(null)");
-    if (j < 0 || j >= m->nparams) return fs_fail(FS_ERR_INPUT, "%s has %d parameters, not %d", m->name, m->nparams, j + 1);
+    if (j < 0 || j >= m->nparams)
+        return fs_fail(FS_ERR_INPUT, "%s has %d parameters, not %d", m->name, m->nparams, j + 1);
     const fs_param_def *d = &m->params[j];
     *out = (fluidsurf_param){d->name, types[d->type], d->def, d->min, d->max, d->choices ? d->choices : "", d->help};
     return FLUIDSURF_OK;

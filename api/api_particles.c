@@ -63,7 +63,11 @@ const void *fluidsurf_particles_column(const fluidsurf_particles *p, const char 
 {
     if (ncomp) *ncomp = 0;
     if (!p || !name) return NULL;
-    const struct { const char *name; const void *data; int ncomp; } cols[] = {
+    const struct {
+        const char *name;
+        const void *data;
+        int ncomp;
+    } cols[] = {
         {"x", p->p.x, 1},   {"y", p->p.y, 1},   {"z", p->p.z, 1},         {"vx", p->p.vx, 1},
         {"vy", p->p.vy, 1}, {"vz", p->p.vz, 1}, {"color", p->p.color, 3}, {"phase", p->p.phase, 1},
     };

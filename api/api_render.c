@@ -8,6 +8,7 @@
 #include "gl_context.h"
 #include "method_params.h"
 #include "obstacle_mask.h"
+#include "study.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -21,7 +22,7 @@ static fs_gl_context gl_ctx;
 static int gl_ready;
 
 /* With render_lock held: the shared context, current on this thread. */
-static int gl_acquire(void)
+int fs_api_gl_acquire(void)
 {
     if (!gl_ready) {
         int rc = fs_gl_context_create(&gl_ctx, fs_gl_context_default_kind(), 16, 16);
@@ -33,14 +34,17 @@ static int gl_acquire(void)
 }
 
 /* The scene of this render: the caller's, the method's settings added. */
-static int render_scene(const fluidsurf_scene *s, const fs_method *m, const char *const *params, int nparams, fs_scene *out)
+static int render_scene(const fluidsurf_scene *s, const fs_method *m, const char *const *params, int nparams,
+                        fs_scene *out)
 {
     *out = s->s;
-    if (nparams < 0 || (nparams > 0 && !params)) return fs_fail(FS_ERR_INPUT, "params: %d settings but no list", nparams);
+    if (nparams < 0 || (nparams > 0 && !params))
+        return fs_fail(FS_ERR_INPUT, "params: %d settings but no list", nparams);
     for (int i = 0; i < nparams; i++) {
         char set[200];
         if (!params[i]) return fs_fail(FS_ERR_INPUT, "params[%d] is NULL", i);
-        if (!strchr(params[i], '=')) return fs_fail(FS_ERR_INPUT, "params[%d] '%.60s': expected param=value", i, params[i]);
+        if (!strchr(params[i], '='))
+            return fs_fail(FS_ERR_INPUT, "params[%d] '%.60s': expected param=value", i, params[i]);
         if (snprintf(set, sizeof set, "%s.%s", m->name, params[i]) >= (int)sizeof set)
             return fs_fail(FS_ERR_INPUT, "params[%d]: too long", i);
         int rc = fs_scene_add_set(out, set);
@@ -64,9 +68,7 @@ static int run_method(const fs_method *m, const fs_scene *sc, const double *valu
     fs_run *run = NULL;
     fs_stages st = {0};
     int rc = fs_run_open(&run, m, sc, values, m->needs_gl ? &gl_ctx : NULL);
-    if (!rc) rc = fs_run_upload(run, p, NULL, &st);
-    if (!rc) rc = fs_run_render(run, &sc->camera, &im->im, &st);
-    if (!rc) rc = fs_run_shade(run, &sc->camera, &im->im, FS_APPEARANCE_SHARED, &st);
+    if (!rc) rc = fs_study_render_once(run, sc, p, NULL, &im->im, &st); /* as compare renders a reference */
     if (!rc) keep_run_facts(im, run, &st);
     fs_run_close(run);
     return rc;
@@ -81,11 +83,14 @@ static int keep_solids(const fs_scene *sc, fluidsurf_image *im)
     int rc = fs_solids_layer(sc, &sc->camera, &im->im.g, &view, &buf);
     if (!rc && buf) {
         rc = fs_gbuffer_add_aov(&im->im.g, FS_AOV_SOLID_DEPTH, 1);
-        if (!rc) memcpy(fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH), buf, (size_t)im->im.g.w * im->im.g.h * sizeof *buf);
+        if (!rc)
+            memcpy(fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH), buf, (size_t)im->im.g.w * im->im.g.h * sizeof *buf);
     }
     free(buf);
     return rc;
 }
+
+const fs_gl_context *fs_api_gl(void) { return gl_ready ? &gl_ctx : NULL; }
 
 void fs_api_lock(int on)
 {
@@ -94,8 +99,8 @@ void fs_api_lock(int on)
 }
 
 /* The frame settles r and the camera as the command line's first frame does. */
-int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, const fs_method *m, const char *const *params,
-                   int nparams, fs_scene *sc, fs_particles *p, double *values)
+int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, const fs_method *m,
+                   const char *const *params, int nparams, fs_scene *sc, fs_particles *p, double *values)
 {
     int rc = render_scene(s, m, params, nparams, sc);
     if (rc || (rc = fs_method_params_resolve(m, sc, values))) return rc;
@@ -107,13 +112,14 @@ int fs_api_prepare(const fluidsurf_scene *s, const fluidsurf_particles *fp, cons
     return FLUIDSURF_OK;
 }
 
-int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, const char *method, const char *const *params,
-                     int nparams, fluidsurf_image **out)
+int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, const char *method,
+                     const char *const *params, int nparams, fluidsurf_image **out)
 {
     int rc;
     if ((rc = fs_api_check(out, "out"))) return rc;
     *out = NULL;
-    if ((rc = fs_api_check(s, "scene")) || (rc = fs_api_check(fp, "particles")) || (rc = fs_api_check(method, "method")))
+    if ((rc = fs_api_check(s, "scene")) || (rc = fs_api_check(fp, "particles")) ||
+        (rc = fs_api_check(method, "method")))
         return rc;
     fs_api_init();
     const fs_method *m = fs_method_find(method);
@@ -130,7 +136,7 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, co
     if (!rc) rc = fs_api_prepare(s, fp, m, params, nparams, sc, &p, values);
     if (!rc) {
         fs_api_lock(1);
-        rc = m->needs_gl ? gl_acquire() : FLUIDSURF_OK;
+        rc = m->needs_gl ? fs_api_gl_acquire() : FLUIDSURF_OK;
         if (!rc) rc = run_method(m, sc, values, &p, im);
         fs_api_lock(0);
     }

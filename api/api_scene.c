@@ -60,7 +60,8 @@ int fluidsurf_scene_get_field(const fluidsurf_scene *s, fluidsurf_field *f)
 /* v finite and in (0, 1e9]: else FS_ERR_INPUT naming it. */
 static int positive(const char *what, double v)
 {
-    return isfinite(v) && v > 0 && v <= 1e9 ? FLUIDSURF_OK : fs_fail(FS_ERR_INPUT, "%s %g: must be positive and finite", what, v);
+    return isfinite(v) && v > 0 && v <= 1e9 ? FLUIDSURF_OK
+                                            : fs_fail(FS_ERR_INPUT, "%s %g: must be positive and finite", what, v);
 }
 
 int fluidsurf_scene_set_field(fluidsurf_scene *s, const fluidsurf_field *f)
@@ -131,9 +132,11 @@ int fluidsurf_scene_set_camera(fluidsurf_scene *s, const fluidsurf_camera *c)
         d2 += (c->target[i] - c->eye[i]) * (c->target[i] - c->eye[i]), u2 += c->up[i] * c->up[i];
     }
     if (!(d2 > 0) || !(u2 > 0)) return fs_fail(FS_ERR_INPUT, "camera: eye equals target, or up is zero");
-    if (!(c->fov_deg > 0 && c->fov_deg < 180)) return fs_fail(FS_ERR_INPUT, "camera: fov %g: expected (0, 180) degrees", c->fov_deg);
+    if (!(c->fov_deg > 0 && c->fov_deg < 180))
+        return fs_fail(FS_ERR_INPUT, "camera: fov %g: expected (0, 180) degrees", c->fov_deg);
     fs_camera *k = &s->s.camera;
-    for (int i = 0; i < 3; i++) k->eye[i] = (float)c->eye[i], k->target[i] = (float)c->target[i], k->up[i] = (float)c->up[i];
+    for (int i = 0; i < 3; i++)
+        k->eye[i] = (float)c->eye[i], k->target[i] = (float)c->target[i], k->up[i] = (float)c->up[i];
     k->fovy_deg = (float)c->fov_deg, k->width = c->width, k->height = c->height;
     s->s.has_camera = 1;
     return FLUIDSURF_OK;
@@ -158,7 +161,8 @@ int fluidsurf_scene_frames(const fluidsurf_scene *s, int *first, int *last)
 {
     int rc, a, b;
     if ((rc = fs_api_check(s, "scene"))) return rc;
-    if (!s->s.source[0] && !s->s.synth.shape) return fs_fail(FS_ERR_INPUT, "scene: no particle source (a scene file names one)");
+    if (!s->s.source[0] && !s->s.synth.shape)
+        return fs_fail(FS_ERR_INPUT, "scene: no particle source (a scene file names one)");
     fs_scene_frames(&s->s, &a, &b);
     if (first) *first = a;
     if (last) *last = b;
@@ -170,7 +174,8 @@ int fluidsurf_scene_read_frame(const fluidsurf_scene *s, int frame, fluidsurf_pa
     int rc, first, last;
     if ((rc = fs_api_check(out, "out")) || (rc = fluidsurf_scene_frames(s, &first, &last))) return rc;
     *out = NULL;
-    if (frame < first || frame > last) return fs_fail(FS_ERR_INPUT, "frame %d: the scene has frames %d..%d", frame, first, last);
+    if (frame < first || frame > last)
+        return fs_fail(FS_ERR_INPUT, "frame %d: the scene has frames %d..%d", frame, first, last);
     fluidsurf_particles *p = calloc(1, sizeof *p);
     if (!p) return fs_fail(FS_ERR_RUNTIME, "out of memory");
     if ((rc = fs_scene_load_frame(&s->s, frame, &p->p))) {

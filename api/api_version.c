@@ -27,7 +27,10 @@ int fluidsurf_api_version(void) { return FLUIDSURF_API_VERSION; }
 
 static char version_text[160];
 static pthread_once_t version_once = PTHREAD_ONCE_INIT;
-static void fill_version(void) { snprintf(version_text, sizeof version_text, "%s (commit %s%s)", fs_version, fs_commit, fs_dirty ? "-dirty" : ""); }
+static void fill_version(void)
+{
+    snprintf(version_text, sizeof version_text, "%s (commit %s%s)", fs_version, fs_commit, fs_dirty ? "-dirty" : "");
+}
 
 const char *fluidsurf_version(void)
 {

@@ -14,6 +14,7 @@ int cmd_simulate(int argc, char **argv);
 int cmd_view(int argc, char **argv);
 int cmd_mesh(int argc, char **argv);
 int cmd_merge(int argc, char **argv);
+int cmd_report(int argc, char **argv);
 
 /* Prints "fluidsurf: MESSAGE" and returns code. */
 int cli_error(int code);
@@ -33,7 +34,10 @@ typedef struct cli_scene_opts {
     int up, kernel;
     float volume_scale, iso, support;
 } cli_scene_opts;
-#define CLI_SCENE_OPTS_UNSET {.up = -1, .kernel = -1}
+#define CLI_SCENE_OPTS_UNSET                                                                                           \
+    {                                                                                                                  \
+        .up = -1, .kernel = -1                                                                                         \
+    }
 /* Applies the set options to s, and folds them into its hash (a different
  * field is a different scene to diff and the caches). */
 void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o);

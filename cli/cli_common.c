@@ -48,7 +48,7 @@ int cli_scene_from_arg(fs_scene *s, const char *arg)
     if (n >= sizeof s->source) return fs_fail(FS_ERR_INPUT, "%s: path too long", arg);
     strcpy(s->source, arg);
     s->up_source = FS_UP_AUTO;
-    s->hash = fs_fnv1a(FS_FNV1A_START, arg, n);
+    s->hash = fs_fnv1a(FS_SCENE_HASH_START, arg, n);
     return FS_OK;
 }
 

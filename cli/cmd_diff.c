@@ -15,17 +15,16 @@
 #include <stdlib.h>
 
 /* what --help says after the options */
-static const char epilogue[] =
-    "Prints the metrics of A against B (B is the reference), named as metrics.csv's\n"
-    "columns: depth_bias_r, depth_rmse_r and depth_p95_r measure around the mean error;\n"
-    "depth_median_r, depth_abs_p50/p95/p99_r and depth_over_1r_frac the error itself,\n"
-    "which a few far outliers barely move. The EXRs must be comparable: a different\n"
-    "size or camera (fluidsurf:camera) is refused (exit 2); a different scene\n"
-    "(fluidsurf:scene_hash) or r (fluidsurf:r), or provenance that cannot tell, gives\n"
-    "a warning, or with --strict a refusal. Exits 3 when a --fail-* threshold is\n"
-    "crossed, 0 otherwise. Where the EXRs carry the solids' depth (the solid_depth\n"
-    "layer fluidsurf writes for a scene with solids; B's, else A's), the pixels a\n"
-    "solid hides are left out as compare leaves them out, and a line says how many.\n";
+static const char epilogue[] = "Prints the metrics of A against B (B is the reference), named as metrics.csv's\n"
+                               "columns: depth_bias_r, depth_rmse_r and depth_p95_r measure around the mean error;\n"
+                               "depth_median_r, depth_abs_p50/p95/p99_r and depth_over_1r_frac the error itself,\n"
+                               "which a few far outliers barely move. The EXRs must be comparable: a different\n"
+                               "size or camera (fluidsurf:camera) is refused (exit 2); a different scene\n"
+                               "(fluidsurf:scene_hash) or r (fluidsurf:r), or provenance that cannot tell, gives\n"
+                               "a warning, or with --strict a refusal. Exits 3 when a --fail-* threshold is\n"
+                               "crossed, 0 otherwise. Where the EXRs carry the solids' depth (the solid_depth\n"
+                               "layer fluidsurf writes for a scene with solids; B's, else A's), the pixels a\n"
+                               "solid hides are left out as compare leaves them out, and a line says how many.\n";
 
 typedef struct diff_opts {
     float fail_iou, fail_normal, fail_depth, radius, nscale, dscale;
@@ -37,7 +36,8 @@ typedef struct diff_opts {
 static int thresholds(const diff_opts *o, const fs_metrics *m, diff_fail *fails)
 {
     int n = 0;
-    if (o->fail_iou >= 0 && !(m->mask_iou >= o->fail_iou)) snprintf(fails[n++].text, sizeof fails->text, "mask_iou < %g", o->fail_iou);
+    if (o->fail_iou >= 0 && !(m->mask_iou >= o->fail_iou))
+        snprintf(fails[n++].text, sizeof fails->text, "mask_iou < %g", o->fail_iou);
     if (o->fail_normal >= 0 && !(m->normal_mean_deg <= o->fail_normal))
         snprintf(fails[n++].text, sizeof fails->text, "normal_mean_deg > %g", o->fail_normal);
     if (o->fail_depth >= 0 && !(fabs(m->depth_bias_r) <= o->fail_depth && m->depth_rmse_r <= o->fail_depth))
@@ -89,24 +89,33 @@ int cmd_diff(int argc, char **argv)
     int nfiles = 0, rc;
     const cli_opt opts[] = {
         CLI_FLOAT_OPT("--fail-iou", o.fail_iou, 0, 1, "X", "exit 3 when the mask IoU is below X"),
-        CLI_FLOAT_OPT("--fail-normal-deg", o.fail_normal, 0, 180, "Y", "exit 3 when the mean normal angle exceeds Y degrees"),
-        CLI_FLOAT_OPT("--fail-depth-r", o.fail_depth, 0, 1e9, "Z", "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
+        CLI_FLOAT_OPT("--fail-normal-deg", o.fail_normal, 0, 180, "Y",
+                      "exit 3 when the mean normal angle exceeds Y degrees"),
+        CLI_FLOAT_OPT("--fail-depth-r", o.fail_depth, 0, 1e9, "Z",
+                      "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
         CLI_OPT_RADIUS(o.radius, "A's provenance, fluidsurf:r"),
-        CLI_FLAG_OPT("--strict", o.strict, "refuse (exit 2) a different scene or r, or provenance that\ncannot tell, instead of warning"),
+        CLI_FLAG_OPT("--strict", o.strict,
+                     "refuse (exit 2) a different scene or r, or provenance that\ncannot tell, instead of warning"),
         CLI_FLAG_OPT("--json", o.json, "print the metrics as one JSON object (NaN as null,\ninfinity as 1e999)"),
         CLI_OPT_OUT(o.out, "FILE.png", "write the normal and depth error heatmaps (as compare's\ndiff_<label>.png)"),
-        CLI_FLOAT_OPT("--normal-scale", o.nscale, 1e-6, 180, "DEG", "heatmap scale of the normal error (default: from the data)"),
-        CLI_FLOAT_OPT("--depth-scale", o.dscale, 1e-9, 1e9, "R", "heatmap scale of the depth error, in r (default: from the data)"),
+        CLI_FLOAT_OPT("--normal-scale", o.nscale, 1e-6, 180, "DEG",
+                      "heatmap scale of the normal error (default: from the data)"),
+        CLI_FLOAT_OPT("--depth-scale", o.dscale, 1e-9, 1e9, "R",
+                      "heatmap scale of the depth error, in r (default: from the data)"),
         CLI_END,
     };
-    const cli_command cmd = {"diff", "A.exr B.exr [options]", opts, {files, &nfiles, 2, "more than two files"}, epilogue};
+    const cli_command cmd = {
+        "diff", "A.exr B.exr [options]", opts, {files, &nfiles, 2, "more than two files"}, epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     if (nfiles != 2) return cli_usage("diff", "needs two EXR files");
     if (o.out && !fs_path_ends_with(o.out, ".png")) return cli_usage("diff", "-o %s: the heatmaps are a .png", o.out);
     fs_gbuffer g[2] = {{0}};
     float *rgba[2] = {NULL, NULL};
     rc = run_diff(&o, files, g, rgba);
-    for (int k = 0; k < 2; k++) { fs_gbuffer_free(&g[k]); free(rgba[k]); }
+    for (int k = 0; k < 2; k++) {
+        fs_gbuffer_free(&g[k]);
+        free(rgba[k]);
+    }
     if (rc && rc != FS_ERR_DIFF) return cli_error(rc);
     return rc;
 }

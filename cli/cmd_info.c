@@ -6,12 +6,11 @@
 #include <stdio.h>
 
 /* what --help says after the options */
-static const char epilogue[] =
-    "Prints the particle count, bounding box, attributes, the radius the spacing implies\n"
-    "(used when neither the file nor --radius gives one), the median nearest-neighbour\n"
-    "distance and the median normalised density phi at particle centres (cubic spline,\n"
-    "support 4r), so you can choose r and volume_scale (phi should read ~1 inside).\n"
-    "The spacing and density are measured on a fixed sample of 4096 particles.\n";
+static const char epilogue[] = "Prints the particle count, bounding box, attributes, the radius the spacing implies\n"
+                               "(used when neither the file nor --radius gives one), the median nearest-neighbour\n"
+                               "distance and the median normalised density phi at particle centres (cubic spline,\n"
+                               "support 4r), so you can choose r and volume_scale (phi should read ~1 inside).\n"
+                               "The spacing and density are measured on a fixed sample of 4096 particles.\n";
 
 int cmd_info(int argc, char **argv)
 {
@@ -47,15 +46,20 @@ int cmd_info(int argc, char **argv)
     if (!rc) {
         unsigned fields = fs_particles_fields(&p);
         printf("file: %s\nparticles: %zu\n", file, p.n);
-        printf("bbox min: %.6g %.6g %.6g\nbbox max: %.6g %.6g %.6g\n", p.bmin[0], p.bmin[1], p.bmin[2], p.bmax[0], p.bmax[1], p.bmax[2]);
-        printf("attributes: position%s%s%s\n", fields & FS_HAS_VELOCITY ? " velocity" : "", fields & FS_HAS_COLOR ? " color" : "",
-               fields & FS_HAS_PHASE ? " phase" : "");
+        printf("bbox min: %.6g %.6g %.6g\nbbox max: %.6g %.6g %.6g\n", p.bmin[0], p.bmin[1], p.bmin[2], p.bmax[0],
+               p.bmax[1], p.bmax[2]);
+        printf("attributes: position%s%s%s\n", fields & FS_HAS_VELOCITY ? " velocity" : "",
+               fields & FS_HAS_COLOR ? " color" : "", fields & FS_HAS_PHASE ? " phase" : "");
         printf("radius r: %g (%s)\n", s.radius,
-               radius > 0 ? "--radius" : p.radius > 0 ? "from the file" : est > 0 ? "estimated from the spacing; set --radius" : "default; set --radius");
+               radius > 0         ? "--radius"
+                   : p.radius > 0 ? "from the file"
+                   : est > 0      ? "estimated from the spacing; set --radius"
+                                  : "default; set --radius");
         if (est > 0) printf("radius the spacing implies: %.6g (%.3g r)\n", est, est / s.radius);
         printf("nearest-neighbour distance, median: %.6g (%.3g r)\n", st.nn_median, st.nn_median / s.radius);
-        printf("density phi at centres, median: %.4g (volume_scale %g, cubic, H = 4r); volume_scale %.3g would make it 1\n",
-               st.density_median, vscale, st.density_median > 0 ? vscale / st.density_median : 0.0);
+        printf(
+            "density phi at centres, median: %.4g (volume_scale %g, cubic, H = 4r); volume_scale %.3g would make it 1\n",
+            st.density_median, vscale, st.density_median > 0 ? vscale / st.density_median : 0.0);
     }
     fs_particles_free(&p);
     return rc ? cli_error(rc) : 0;

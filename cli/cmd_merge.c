@@ -41,7 +41,8 @@ static int check_out(const cmp_merge *m, int force)
         if (!S_ISDIR(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: exists and is not a folder", m->out_arg);
         if (access(m->out, W_OK) != 0) return fs_fail(FS_ERR_INPUT, "%s: output folder is not writable", m->out_arg);
         for (int s = 0; realpath(m->out, real) && s < m->n; s++)
-            if (!strcmp(real, m->shards[s].dir)) return fs_fail(FS_ERR_INPUT, "%s: is shard %d's folder; merge into another", m->out_arg, s + 1);
+            if (!strcmp(real, m->shards[s].dir))
+                return fs_fail(FS_ERR_INPUT, "%s: is shard %d's folder; merge into another", m->out_arg, s + 1);
         return cmp_outdir_claim(m->out_arg, "merge", 0, force);
     }
     return FS_OK; /* made once the staging folder beside it could be */
@@ -54,7 +55,10 @@ static char **merged_argv(const cmp_merge *m, int *argc)
     char **v = calloc(d->argc + 1, sizeof *v);
     int n = 0;
     for (int i = 0; v && i < d->argc; i++) {
-        if (!strcmp(d->argv[i], "--shard") && i + 1 < d->argc) { i++; continue; }
+        if (!strcmp(d->argv[i], "--shard") && i + 1 < d->argc) {
+            i++;
+            continue;
+        }
         if (!strcmp(d->argv[i], "--resume") || !strcmp(d->argv[i], "--force")) continue; /* the merge renders nothing */
         v[n++] = d->argv[i];
         if (!strcmp(d->argv[i], "-o") && i + 1 < d->argc) v[n++] = (char *)m->out_arg, i++;
@@ -69,12 +73,17 @@ int cmd_merge(int argc, char **argv)
     int ndirs = 0, quiet = 0, force = 0, rc;
     const cli_opt opts[] = {
         CLI_OPT_OUT(out, "DIR", "the merged output folder (made if missing)"),
-        CLI_FLAG_OPT("--force", force, "DIR holds another run's outputs: remove them first\n"
+        CLI_FLAG_OPT("--force", force,
+                     "DIR holds another run's outputs: remove them first\n"
                      "(fluidsurf's own files only; without it merge refuses)"),
         CLI_OPT_QUIET(quiet),
         CLI_END,
     };
-    const cli_command cmd = {"merge", "DIR_1 ... DIR_N -o DIR", opts, {dirs, &ndirs, CMP_MAX_SHARDS, "more than 1024 shard folders"}, epilogue};
+    const cli_command cmd = {"merge",
+                             "DIR_1 ... DIR_N -o DIR",
+                             opts,
+                             {dirs, &ndirs, CMP_MAX_SHARDS, "more than 1024 shard folders"},
+                             epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     fs_note_quiet(quiet);
     if (!ndirs) return cli_usage("merge", "no shard folders given");

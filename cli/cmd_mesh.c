@@ -19,6 +19,8 @@ static const char epilogue[] =
     "IN is a scene .json (all its frames), a particle file, or a frame pattern with {} or %d\n"
     "(then --frames A:B). OUT is a .ply, .obj, .vtk or .vtp path; for several frames it needs\n"
     "{} or %d, replaced by the frame number. Parameters: fluidsurf methods mesh.\n"
+    "splashsurf's recipe (weighted smoothing, Loeschner et al. 2023): --set mesh.smooth=weighted\n"
+    "--set mesh.smooth_iters=25; --set mesh.attributes=on adds velocity and colour to .ply/.vtk/.vtp.\n"
     "--timings prints CSV: frame,stage,ms,vertices,triangles (counts on the total row).\n";
 
 /* "a_{}.ply" -> "a_%d.ply" (and %% for a literal %), into out. */
@@ -44,7 +46,7 @@ typedef struct mesh_job {
     fs_scene *scene;
     const double *params; /* the method's, in table order */
     fs_mesh_opts opts;    /* from params once the first frame has settled r */
-    const char *out; /* a pattern when there are several frames */
+    const char *out;      /* a pattern when there are several frames */
     int first, last, timings, quiet;
     float radius;
 } mesh_job;
@@ -86,8 +88,9 @@ static int mesh_frame(mesh_job *j, int frame)
     if (!rc) rc = fs_mesh_build(&p, &g, &f, &j->opts, &m, &st);
     fs_grid_free(&g);
     fs_particles_free(&p);
-    if (!rc) rc = is_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
-                                     : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
+    if (!rc)
+        rc = is_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
+                                : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
     t = fs_now_ms();
     if (!rc) rc = fs_mesh_export(&m, path);
     fs_stages_add(&st, "write", fs_now_ms() - t);
@@ -111,7 +114,8 @@ static int scene_of(const char *in, const char *frames, const cli_scene_opts *so
         strcpy(s->source, pat);
         char *end;
         long a = strtol(frames, &end, 10), b = *end == ':' ? strtol(end + 1, &end, 10) : -1;
-        if (*end || a < 0 || b < a || b > 100000000) return cli_usage("mesh", "--frames %s: expected FIRST:LAST", frames);
+        if (*end || a < 0 || b < a || b > 100000000)
+            return cli_usage("mesh", "--frames %s: expected FIRST:LAST", frames);
         s->frame_first = (int)a, s->frame_last = (int)b;
     } else if (frames) return cli_usage("mesh", "--frames: %s is not a frame pattern", in);
     fs_scene_frames(s, first, last);
@@ -129,7 +133,8 @@ int cmd_mesh(int argc, char **argv)
     const cli_opt opts[] = {
         CLI_OPT_OUT(out, "OUT.ply|.obj|.vtk|.vtp", "the mesh file (a {} pattern for several frames)"),
         CLI_OPT_SET(sets, nsets),
-        CLI_OPT_RADIUS(j.radius, "the scene's, else the file's, else estimated from\n"
+        CLI_OPT_RADIUS(j.radius,
+                       "the scene's, else the file's, else estimated from\n"
                        "the particle spacing (a note says so; fluidsurf info shows it)"),
         CLI_OPT_FIELD(sopts),
         CLI_STRING_OPT("--frames", frames, "A:B", "frames of a pattern input"),
@@ -149,7 +154,8 @@ int cmd_mesh(int argc, char **argv)
         return cli_usage("mesh", "%s: unknown mesh format (the mesh exports %s)", out, FS_MESH_EXPORTS);
     if ((rc = scene_of(in, frames, &sopts, &scene, &j.first, &j.last))) return rc;
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
-    if (j.last > j.first && !is_pattern(out)) return cli_usage("mesh", "%s: %d frames need {} in -o", out, j.last - j.first + 1);
+    if (j.last > j.first && !is_pattern(out))
+        return cli_usage("mesh", "%s: %d frames need {} in -o", out, j.last - j.first + 1);
     if (cli_same_file(in, out)) return cli_usage("mesh", "%s: output would overwrite the input", out);
     for (int i = 0; i < nsets; i++)
         if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);

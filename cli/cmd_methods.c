@@ -21,7 +21,10 @@ int cmd_methods(int argc, char **argv)
 {
     const char *name = NULL;
     const cli_opt opts[] = {CLI_END};
-    const cli_command cmd = {"methods", "[NAME]", opts, {&name, NULL, 1, "more than one method ('%s' and '%s')"},
+    const cli_command cmd = {"methods",
+                             "[NAME]",
+                             opts,
+                             {&name, NULL, 1, "more than one method ('%s' and '%s')"},
                              "Lists every method (or one) with its paper and parameters;\n"
                              "set a parameter with --set NAME.PARAM=VALUE in any command that renders.\n"};
     int rc = cli_parse(&cmd, argc, argv);

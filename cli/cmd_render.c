@@ -15,23 +15,22 @@
 #include <string.h>
 
 /* what --help says after the options */
-static const char epilogue[] =
-    "EXR output holds R G B A depth normal.X/Y/Z thickness coverage, the AOVs the method\n"
-    "writes (fluidsurf methods lists them) and the provenance. Depth is 0 where coverage\n"
-    "is 0 (fluidsurf:empty_depth), so OpenImageIO's idiff reports finite numbers.\n";
+static const char epilogue[] = "EXR output holds R G B A depth normal.X/Y/Z thickness coverage, the AOVs the method\n"
+                               "writes (fluidsurf methods lists them) and the provenance. Depth is 0 where coverage\n"
+                               "is 0 (fluidsurf:empty_depth), so OpenImageIO's idiff reports finite numbers.\n";
 
 /* What to do with the loaded frame. */
 typedef struct render_job {
     const fs_method *m;
     const double *params;
     int frame;
-    const char *out;            /* NULL: exports only */
+    const char *out; /* NULL: exports only */
     const char *const *exports;
     int nexports;
     fs_appearance look;
-    int timings;                /* print the stage times */
-    int counters;               /* print the work counts of a counting render */
-    cli_cache *cache;           /* --cache: the reference's view from it; NULL: none */
+    int timings;      /* print the stage times */
+    int counters;     /* print the work counts of a counting render */
+    cli_cache *cache; /* --cache: the reference's view from it; NULL: none */
 } render_job;
 
 static void print_timings(const fs_run *run, const fs_stages *st)
@@ -51,8 +50,8 @@ static void print_counters(const fs_run *run, const render_job *job, const fs_st
     char line[8192];
     fs_run_provenance(run, NULL, job->frame, &prov);
     fs_provenance_line(&prov, line, sizeof line);
-    printf("%s\n" CLI_COUNTERS_HEADER, line);
-    cli_counters_rows(stdout, job->m->name, "", job->frame, counts, job->m->counters);
+    printf("%s\n" FS_COUNTERS_HEADER, line);
+    fs_counters_rows(stdout, job->m->name, "", job->frame, counts, job->m->counters);
 }
 
 /* The reference's view from the cache, or rendered and stored; the output file. */
@@ -66,7 +65,8 @@ static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p,
     if (!rc && job->counters) *counts = made.counts;
     fs_run_provenance(run, NULL, job->frame, &prov);
     if (!rc) rc = fs_write_render_in_scene(job->out, scene, &scene->camera, &im.g, im.rgba, &prov);
-    if (!rc && made.hit && !job->cache->quiet) fprintf(stderr, "fluidsurf: note: %s from the cache, %s\n", job->m->name, made.entry);
+    if (!rc && made.hit && !job->cache->quiet)
+        fprintf(stderr, "fluidsurf: note: %s from the cache, %s\n", job->m->name, made.entry);
     fs_run_image_free(&im);
     return rc;
 }
@@ -121,9 +121,11 @@ static int check_outputs(const fs_method *m, const char *input, const char *out,
     if (out && (rc = fs_check_render_path(out))) return cli_error(rc);
     if (nexports && !m->export_file) return cli_usage("render", "--export: method '%s' exports nothing", m->name);
     for (int i = 0; i < nexports; i++)
-        if (cli_same_file(input, exports[i])) return cli_usage("render", "%s: export would overwrite the input", exports[i]);
+        if (cli_same_file(input, exports[i]))
+            return cli_usage("render", "%s: export would overwrite the input", exports[i]);
     if (own_look && !fs_method_aov(m, FS_AOV_OWN))
-        return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)", m->name);
+        return cli_usage("render", "--appearance own: method '%s' has no own appearance (only the shared shading)",
+                         m->name);
     if (out && cli_same_file(input, out)) return cli_usage("render", "%s: output would overwrite the input", out);
     return FS_OK;
 }
@@ -134,9 +136,11 @@ static int frame_to_render(const fs_scene *scene, int frame, int *first)
     int last;
     fs_scene_frames(scene, first, &last);
     if (frame < 0) return FS_OK;
-    if (scene->frame_first < 0 && !scene->synth.shape) return cli_usage("render", "--frame: the scene is not a sequence");
+    if (scene->frame_first < 0 && !scene->synth.shape)
+        return cli_usage("render", "--frame: the scene is not a sequence");
     if (scene->frame_first >= 0 && (frame < scene->frame_first || frame > scene->frame_last))
-        return cli_usage("render", "--frame %d: the scene has frames %d..%d", frame, scene->frame_first, scene->frame_last);
+        return cli_usage("render", "--frame %d: the scene has frames %d..%d", frame, scene->frame_first,
+                         scene->frame_last);
     *first = frame;
     return FS_OK;
 }
@@ -168,7 +172,8 @@ static int load_and_render(fs_scene *scene, const render_job *job, float radius,
 static int check_cache(const fs_method *m, const char *dir, const char *out)
 {
     if (!dir) return FS_OK;
-    if (m != fs_method_find("reference")) return cli_usage("render", "--cache: only the reference method is cached, not '%s'", m->name);
+    if (m != fs_method_find("reference"))
+        return cli_usage("render", "--cache: only the reference method is cached, not '%s'", m->name);
     if (!out) return cli_usage("render", "--cache needs an output (-o OUT.png|OUT.exr)");
     return FS_OK;
 }
@@ -188,7 +193,8 @@ int cmd_render(int argc, char **argv)
         CLI_OPT_OUT(out, "OUT.png|OUT.exr", "the image: PNG, or EXR with the G-buffer and provenance"),
         CLI_OPT_SET(sets, nsets),
         CLI_OPT_SIZE(w, h, 1, 16384, "image", "the scene's, else 512"),
-        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else estimated from\n"
+        CLI_OPT_RADIUS(radius,
+                       "the scene's, else the file's, else estimated from\n"
                        "the particle spacing (a note says so; fluidsurf info shows it)"),
         CLI_OPT_SCENE(sopts),
         CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
@@ -196,7 +202,8 @@ int cmd_render(int argc, char **argv)
         CLI_OPT_GL(ctx_kind),
         CLI_OPT_REQUIRE_GPU(require_gpu),
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the renderer they ran on"),
-        CLI_FLAG_OPT("--counters", counters, "print per-stage work counts (CSV) of a separate counting\n"
+        CLI_FLAG_OPT("--counters", counters,
+                     "print per-stage work counts (CSV) of a separate counting\n"
                      "render after the timed one"),
         CLI_LIST_OPT("--export", exports, nexports, 4, "FILE",
                      "write the method's intermediate surface too (repeatable;\n"
@@ -206,13 +213,17 @@ int cmd_render(int argc, char **argv)
                        "shared (default): the harness's shading, the same for\n"
                        "every method; own: the method's own, where its paper\n"
                        "defines one (fluidsurf methods NAME says)"),
-        CLI_OPT_CACHE(cache_dir, "read and write the reference's G-buffer in this cache\n"
+        CLI_OPT_CACHE(cache_dir,
+                      "read and write the reference's G-buffer in this cache\n"
                       "folder, as compare does (default: no cache)"),
         CLI_OPT_QUIET(quiet),
         CLI_END,
     };
-    const cli_command cmd = {"render", "SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]", opts,
-                             {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
+    const cli_command cmd = {"render",
+                             "SCENE.json|PARTICLES --method NAME -o OUT.png|OUT.exr [options]",
+                             opts,
+                             {&input, NULL, 1, "more than one input ('%s' and '%s')"},
+                             epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     fs_note_quiet(quiet);
     fs_gl_context_require_gpu(require_gpu);
@@ -239,7 +250,15 @@ int cmd_render(int argc, char **argv)
     static cli_cache cache;
     if (cache_dir) cli_cache_open(&cache, cache_dir, 0, quiet);
     cache.counters = counters;
-    const render_job job = {m, params, first, out, exports, nexports, own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED,
-                            timings, counters, cache_dir ? &cache : NULL};
+    const render_job job = {m,
+                            params,
+                            first,
+                            out,
+                            exports,
+                            nexports,
+                            own_look ? FS_APPEARANCE_OWN : FS_APPEARANCE_SHARED,
+                            timings,
+                            counters,
+                            cache_dir ? &cache : NULL};
     return load_and_render(&scene, &job, radius, ctx_kind);
 }

@@ -8,6 +8,7 @@
 #include "provenance.h"
 #include "sph.h"
 #include "timing.h"
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,12 +24,14 @@ static const char epilogue[] =
     "ids 0..4); obstacles are static solids lined with two layers of boundary particles\n"
     "(without --particles: at the file's coordinates exactly).\n"
     "Writes frames 0..N, frame f being the state at t = f / fps (frame 0: the start).\n"
+    "With --shake the container (walls and obstacles) moves along x, at rest at t = 0 and\n"
+    "starting at speed 2 pi A / T; frames hold the fluid in world coordinates.\n"
     "-o may be left out when --stats is given. A run that diverges (NaN) stops with exit 1.\n";
 
 typedef struct opts {
     const char *scene, *out, *stats;
     int frames, particles, gpu, substeps, quiet, require_gpu;
-    float fps, dt;
+    float fps, dt, shake, shake_period; /* --shake: the container's x offset is shake sin(2 pi t / shake_period) */
     fs_ctx_kind ctx;
     fs_sph_params prm;
 } opts;
@@ -52,20 +55,30 @@ static int parse(int argc, char **argv, opts *o)
                        "equation of state (default tait; ideal: p = k (rho - rho0))"),
         CLI_FLOAT_OPT("--fps", o->fps, 0.01, 100000, "F",
                       "frames per second (default 60); steps adapt to the CFL and\nviscosity bounds within each frame"),
-        CLI_FLOAT_OPT("--dt", o->dt, 1e-7, 10, "DT",
-                      "fixed steps instead: each frame is K (--substeps) steps of DT\nwhatever the bound; steps beyond it are counted"),
+        CLI_FLOAT_OPT(
+            "--dt", o->dt, 1e-7, 10, "DT",
+            "fixed steps instead: each frame is K (--substeps) steps of DT\nwhatever the bound; steps beyond it are counted"),
         CLI_INT_OPT("--substeps", o->substeps, 1, 100000, "K", "steps of DT per frame with --dt (default 1)"),
         CLI_OPT_RADIUS_IN(o->prm.r, 1e-5, 100, "0.025"),
         CLI_FLOAT_OPT("--nu", o->prm.nu, 0, 1000, "NU", "kinematic viscosity, m^2/s (default 0.05)"),
-        CLI_FLOAT_OPT("--sound-speed", o->prm.c, 1e-3, 1e6, "C", "speed of sound (default 10x the scene's expected peak speed)"),
+        CLI_FLOAT_OPT("--sound-speed", o->prm.c, 1e-3, 1e6, "C",
+                      "speed of sound (default 10x the scene's expected peak speed)"),
         CLI_FLOAT_OPT("--k", o->prm.k, 1e-6, 1e12, "K", "ideal-gas constant (default C^2)"),
         CLI_FLOAT_OPT("--cfl", o->prm.cfl, 1e-4, 1, "L", "dt <= L H / (C + v_max) (default 0.2)"),
-        CLI_STRING_OPT("--stats", o->stats, "FILE.csv", "per-frame record: steps, dt, bound, clamps, density error, depth"),
+        CLI_FLOAT_OPT(
+            "--shake", o->shake, 1e-6, 100, "A",
+            "shake the container along x: its offset is A sin(2 pi t / T)\n(metres; a sloshing tank, its walls as wave makers)"),
+        CLI_FLOAT_OPT("--shake-period", o->shake_period, 1e-3, 1e6, "T", "the shaking's period in seconds (default 1)"),
+        CLI_STRING_OPT("--stats", o->stats, "FILE.csv",
+                       "per-frame record: steps, dt, bound, clamps, density error, depth"),
         CLI_OPT_QUIET(o->quiet),
         CLI_END,
     };
-    const cli_command cmd = {"simulate", "SCENE --frames N -o OUT_%04d.bgeo|.vtk|.ply|.vdb [options]", table,
-                             {&o->scene, NULL, 1, "more than one scene ('%s' and '%s')"}, epilogue};
+    const cli_command cmd = {"simulate",
+                             "SCENE --frames N -o OUT_%04d.bgeo|.vtk|.ply|.vdb [options]",
+                             table,
+                             {&o->scene, NULL, 1, "more than one scene ('%s' and '%s')"},
+                             epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc ? rc : -1; /* -1: --help shown */
     /* both 0 unless given: their ranges exclude 0 */
     int have_fps = o->fps > 0, have_k = o->prm.k > 0;
@@ -73,8 +86,11 @@ static int parse(int argc, char **argv, opts *o)
     if (!o->scene) return cli_usage("simulate", "no scene given (dam_break, double_dam_break, drop, spouts, pool)");
     if (!o->out && !o->stats) return cli_usage("simulate", "no output given (-o OUT_%%04d.bgeo or --stats FILE.csv)");
     if (o->substeps && !(o->dt > 0)) return cli_usage("simulate", "--substeps needs --dt");
-    if (o->dt > 0 && have_fps) return cli_usage("simulate", "--fps and --dt exclude each other (a frame is K steps of DT)");
+    if (o->dt > 0 && have_fps)
+        return cli_usage("simulate", "--fps and --dt exclude each other (a frame is K steps of DT)");
     if (have_k && o->prm.eos != FS_SPH_IDEAL) return cli_usage("simulate", "--k needs --eos ideal");
+    if (o->shake_period > 0 && !(o->shake > 0)) return cli_usage("simulate", "--shake-period needs --shake");
+    if (!(o->shake_period > 0)) o->shake_period = 1;
     if (o->dt > 0) {
         if (!o->substeps) o->substeps = 1;
         o->prm.fixed_dt = o->dt;
@@ -86,11 +102,53 @@ static int parse(int argc, char **argv, opts *o)
         const char *fmt = fs_format_from_path(path);
         if (!fmt || (strcmp(fmt, "vtk") && strcmp(fmt, "bgeo") && strcmp(fmt, "ply") && strcmp(fmt, "vdb")))
             return cli_usage("simulate", "%s: output format must be .vtk, .bgeo, .ply or .vdb", o->out);
-        if ((rc = fs_particles_writable(path, NULL))) return cli_error(rc); /* before --stats is opened */
+        if ((rc = fs_particles_writable(path, NULL))) return cli_error(rc);      /* before --stats is opened */
         if ((rc = fs_output_begin(path, tmp, sizeof tmp))) return cli_error(rc); /* folder exists and is writable */
         fs_output_end(path, tmp, 0);
     }
     return FS_OK;
+}
+
+/* Frame f-1 to f: the walls move by the change of the --shake offset over the
+ * frame, spread over its steps (fs_sph_move_box), or stand still. */
+static int advance(fs_sph *s, const opts *o, int f)
+{
+    double dt = 1.0 / o->fps;
+    if (!(o->shake > 0)) return fs_sph_advance(s, dt);
+    double w = 2 * M_PI / o->shake_period;
+    float d[3] = {(float)(o->shake * (sin(w * f * dt) - sin(w * (f - 1) * dt))), 0, 0};
+    return fs_sph_move_box(s, d, dt);
+}
+
+/* --stats' first line: the provenance line every CSV starts with (fs_provenance_line), with
+ * the run's scene, counts and SPH parameters as further keys. */
+static void write_stats_header(FILE *csv, const opts *o, const fs_sph *s, const fs_gl_context *ctx)
+{
+    const fs_sph_params *P = fs_sph_get_params(s);
+    fs_provenance prov;
+    char v[640], line[8192];
+    fs_provenance_init_base(&prov, ctx ? ctx->renderer : "CPU (C + OpenMP)", ctx ? ctx->version : NULL);
+    fs_provenance_set(&prov, "command", "simulate");
+    fs_provenance_set(&prov, "scene", o->scene);
+#define SET(key, fmt, val) (snprintf(v, sizeof v, fmt, val), fs_provenance_set(&prov, key, v))
+    SET("fluid_particles", "%zu", fs_sph_count(s));
+    SET("boundary_particles", "%zu", fs_sph_boundary_count(s));
+    fs_provenance_set(&prov, "path", o->gpu ? "gpu" : "cpu");
+    fs_provenance_set(&prov, "eos", P->eos == FS_SPH_TAIT ? "tait" : "ideal");
+    SET("r", "%g", P->r);
+    SET("H", "%g", P->support * P->r);
+    SET("rho0", "%g", P->rho0);
+    SET("mass", "%g", fs_sph_mass(s));
+    SET("c", "%g", P->c);
+    SET("nu", "%g", P->nu);
+    SET("cfl", "%g", P->cfl);
+    SET("fixed_dt", "%g", P->fixed_dt);
+    SET("fps", "%g", o->fps);
+    SET("shake", "%g", o->shake);
+    SET("shake_period", "%g", o->shake_period);
+#undef SET
+    fs_provenance_line(&prov, line, sizeof line);
+    fprintf(csv, "%s\n", line);
 }
 
 int cmd_simulate(int argc, char **argv)
@@ -117,17 +175,17 @@ int cmd_simulate(int argc, char **argv)
     char stats_tmp[4200] = "";
     if (o.stats) {
         if ((rc = fs_output_begin(o.stats, stats_tmp, sizeof stats_tmp)) || !(csv = fopen(stats_tmp, "w"))) {
-            if (!rc) { fs_output_end(o.stats, stats_tmp, 0); rc = fs_fail(FS_ERR_INPUT, "%s: cannot write", o.stats); }
+            if (!rc) {
+                fs_output_end(o.stats, stats_tmp, 0);
+                rc = fs_fail(FS_ERR_INPUT, "%s: cannot write", o.stats);
+            }
             fs_sph_destroy(s);
             if (o.gpu) fs_gl_context_destroy(&ctx);
             return cli_error(rc);
         }
-        fprintf(csv, "# commit=%s; dirty=%d; fluidsurf %s simulate %s: %zu fluid + %zu boundary particles; path %s; renderer %s; "
-                "threads %d; eos %s; r %g; H %g; rho0 %g; mass %g; c %g; nu %g; cfl %g; fixed_dt %g; fps %g\n",
-                fs_commit, fs_dirty, fs_version, o.scene, fs_sph_count(s), fs_sph_boundary_count(s), o.gpu ? "gpu" : "cpu",
-                renderer, omp_get_max_threads(), P->eos == FS_SPH_TAIT ? "tait" : "ideal", P->r, P->support * P->r,
-                P->rho0, fs_sph_mass(s), P->c, P->nu, P->cfl, P->fixed_dt, o.fps);
-        fprintf(csv, "frame,t,particles,steps,dt_min,dt_max,bound_min,violations,v_max,clamps,outside,density_err,"
+        write_stats_header(csv, &o, s, o.gpu ? &ctx : NULL);
+        fprintf(csv,
+                "frame,t,particles,steps,dt_min,dt_max,bound_min,violations,v_max,clamps,outside,density_err,"
                 "density_abs_err,depth,depth_expected,kinetic,step_ms,frame_ms\n");
     }
     if (!o.quiet)
@@ -140,7 +198,7 @@ int cmd_simulate(int argc, char **argv)
     fs_progress_begin("simulate", "frames", o.frames + 1L);
     for (int f = 0; f <= o.frames && !rc; f++) {
         double t0 = fs_now_ms();
-        if (f > 0) rc = fs_sph_advance(s, 1.0 / o.fps);
+        if (f > 0) rc = advance(s, &o, f);
         double frame_ms = fs_now_ms() - t0;
         const fs_sph_stats *st = fs_sph_get_stats(s);
         if (o.out && !rc) {
@@ -156,9 +214,9 @@ int cmd_simulate(int argc, char **argv)
             int mrc = fs_sph_measure_state(s, &m);
             if (mrc && !rc) rc = mrc;
             fprintf(csv, "%d,%.6f,%zu,%ld,%.4g,%.4g,%.4g,%ld,%.4g,%ld,%zu,%.5f,%.5f,%.5f,%.5f,%.5g,%.3f,%.3f\n", f,
-                    st->t, fs_sph_count(s), st->steps - steps0, st->dt_min, st->dt_max, st->bound_min,
-                    st->violations, st->v_max, st->clamps, m.outside, m.density_err, m.density_abs_err, m.depth,
-                    m.depth_expected, m.kinetic, st->step_ms - step_ms0, frame_ms);
+                    st->t, fs_sph_count(s), st->steps - steps0, st->dt_min, st->dt_max, st->bound_min, st->violations,
+                    st->v_max, st->clamps, m.outside, m.density_err, m.density_abs_err, m.depth, m.depth_expected,
+                    m.kinetic, st->step_ms - step_ms0, frame_ms);
             fflush(csv); /* long runs can be watched (in the hidden temporary file) */
         }
         if (st->violations && !warned) { /* the fixed step broke the bound: say so once */
@@ -170,8 +228,9 @@ int cmd_simulate(int argc, char **argv)
         step_ms0 = st->step_ms;
         if (!rc) {
             char what[160];
-            snprintf(what, sizeof what, "frame %d, t = %.3f s, %ld steps (%ld beyond the bound), v_max %.2f m/s, clamps %ld", f,
-                     st->t, st->steps, st->violations, st->v_max, st->clamps);
+            snprintf(what, sizeof what,
+                     "frame %d, t = %.3f s, %ld steps (%ld beyond the bound), v_max %.2f m/s, clamps %ld", f, st->t,
+                     st->steps, st->violations, st->v_max, st->clamps);
             fs_progress_item(what);
         }
     }

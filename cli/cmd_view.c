@@ -26,29 +26,28 @@
 #include <unistd.h>
 
 /* what --help says after the options */
-static const char epilogue[] =
-    "--script lines are 'frame N ACTION ARGS', an ACTION one of\n"
-    "  key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
-    "  scroll DY   screenshot PATH   quit\n"
-    "keys: 1-9 method (registry order), space play/pause, N or . one frame, S screenshot,\n"
-    "      +/- resolution scale, O own/shared appearance, R reset camera, Esc/Q quit;\n"
-    "      simulator: arrows, or shift (ctrl) + left drag, move the container\n"
-    "mouse: left drag orbit, right/middle drag pan, wheel zoom\n";
+static const char epilogue[] = "--script lines are 'frame N ACTION ARGS', an ACTION one of\n"
+                               "  key NAME [shift|ctrl|alt]   drag X0 Y0 X1 Y1 [left|right|middle] [shift|ctrl]\n"
+                               "  scroll DY   screenshot PATH   quit\n"
+                               "keys: 1-9 method (registry order), space play/pause, N or . one frame, S screenshot,\n"
+                               "      +/- resolution scale, O own/shared appearance, R reset camera, Esc/Q quit;\n"
+                               "      simulator: arrows, or shift (ctrl) + left drag, move the container\n"
+                               "mouse: left drag orbit, right/middle drag pan, wheel zoom\n";
 
 typedef struct viewer {
     fs_scene scene;
     fs_view v;
     view_script script;
     fs_sph *sim;
-    double dt;               /* simulated time per frame */
-    float box_speed;         /* of the container now (m/s) */
-    int first, last, cur;    /* frames of a sequence scene */
-    fs_particles p;          /* current particles: the run holds them until the next upload */
-    fs_run *run;             /* the current method's run (NULL: none could be made) */
-    int mi;                  /* index of the method the run is for (-1 none) */
-    fs_run_image im;         /* its G-buffer and shaded image */
-    char why[512];           /* why the method cannot render this frame ("" when it can) */
-    char said[512];          /* the reason last printed on stderr, so it is said once */
+    double dt;            /* simulated time per frame */
+    float box_speed;      /* of the container now (m/s) */
+    int first, last, cur; /* frames of a sequence scene */
+    fs_particles p;       /* current particles: the run holds them until the next upload */
+    fs_run *run;          /* the current method's run (NULL: none could be made) */
+    int mi;               /* index of the method the run is for (-1 none) */
+    fs_run_image im;      /* its G-buffer and shaded image */
+    char why[512];        /* why the method cannot render this frame ("" when it can) */
+    char said[512];       /* the reason last printed on stderr, so it is said once */
     fs_gl_context ctx;
     unsigned prog, vao, tex;
     int tw, th;
@@ -123,8 +122,7 @@ static void use_method(viewer *w)
     w->run = NULL;
     w->mi = w->v.method;
     w->why[0] = 0;
-    if (fs_run_open(&w->run, fs_method_at(w->mi), &w->scene, NULL, &w->ctx) ||
-        fs_run_upload(w->run, &w->p, NULL, NULL))
+    if (fs_run_open(&w->run, fs_method_at(w->mi), &w->scene, NULL, &w->ctx) || fs_run_upload(w->run, &w->p, NULL, NULL))
         method_failed(w);
 }
 
@@ -261,8 +259,8 @@ static int screenshot(viewer *w, int fw, int fh)
 {
     char name[1100];
     if (w->v.shot_path[0]) snprintf(name, sizeof name, "%s", w->v.shot_path);
-    else /* a numbered name that does not overwrite an earlier one */
-        do snprintf(name, sizeof name, "fluidsurf_view_%03d.png", ++w->shots);
+    else /* a numbered name that does not overwrite an earlier one */ do
+            snprintf(name, sizeof name, "fluidsurf_view_%03d.png", ++w->shots);
         while (access(name, F_OK) == 0);
     unsigned char *pix = malloc((size_t)fw * fh * 3), *row = malloc((size_t)fw * 3);
     if (!pix || !row) {
@@ -338,7 +336,12 @@ static int run(viewer *w, int max_frames, int scripted)
     glfwSetWindowRefreshCallback(win, on_refresh);
     glfwSwapInterval(scripted ? 0 : 1);
     int rc = present_init(w);
-    struct { fs_orbit orbit; int method, own, fw, fh, redraw; float scale; unsigned gen; } drawn, now;
+    struct {
+        fs_orbit orbit;
+        int method, own, fw, fh, redraw;
+        float scale;
+        unsigned gen;
+    } drawn, now;
     memset(&drawn, 0, sizeof drawn); /* memset: the struct is compared bytewise */
     for (int frame = 0; !rc; frame++) {
         glfwPollEvents();
@@ -391,7 +394,11 @@ static int read_text(const char *path, char **out)
     do {
         if (n + 4096 + 1 > cap) {
             char *nb = realloc(buf, cap = 2 * cap + 8192);
-            if (!nb) { free(buf); fclose(f); return fs_fail(FS_ERR_RUNTIME, "out of memory"); }
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                return fs_fail(FS_ERR_RUNTIME, "out of memory");
+            }
             buf = nb;
         }
         got = fread(buf + n, 1, 4096, f);
@@ -539,14 +546,16 @@ int cmd_view(int argc, char **argv)
         CLI_STRING_OPT("--simulate", simulate, "NAME",
                        "run the SPH simulator live, one --dt per displayed frame\n"
                        "(dam_break, double_dam_break, drop, spouts, pool)"),
-        CLI_INT_OPT("--particles", particles, 1, 100000000, "N", "simulator: about N fluid particles (default: the scene's)"),
+        CLI_INT_OPT("--particles", particles, 1, 100000000, "N",
+                    "simulator: about N fluid particles (default: the scene's)"),
         CLI_FLAG_OPT("--gpu", gpu, "simulator: the GPU path (compute shaders) instead of C + OpenMP"),
         CLI_FLOAT_OPT("--dt", dt, 1e-6, 1, "S", "simulated seconds per displayed frame (default 1/60)"),
         CLI_STRING_OPT("--method", mname, "NAME", "method shown first (default: the first registered)"),
         CLI_OPT_SET(sets, nsets),
         CLI_OPT_SIZE(W, H, 16, 8192, "window", "the scene's image size, else 800x600"),
         CLI_FLOAT_OPT("--scale", scale, 1.0 / 16, 2, "S", "G-buffer size / window size, 1/16..2 (default 1)"),
-        CLI_OPT_RADIUS(radius, "the scene's, else the file's, else estimated from\n"
+        CLI_OPT_RADIUS(radius,
+                       "the scene's, else the file's, else estimated from\n"
                        "the particle spacing (a note says so; fluidsurf info shows it)"),
         CLI_OPT_SCENE(field),
         CLI_OPT_REQUIRE_GPU(require_gpu),
@@ -557,20 +566,24 @@ int cmd_view(int argc, char **argv)
         CLI_STRING_OPT("--events", events, "TEXT", "the same inline, actions separated by ';'"),
         CLI_END,
     };
-    const cli_command cmd = {"view", "SCENE.json|PARTICLES [options]\n--simulate NAME [options]", opts,
-                             {&input, NULL, 1, "more than one input ('%s' and '%s')"}, epilogue};
+    const cli_command cmd = {"view",
+                             "SCENE.json|PARTICLES [options]\n--simulate NAME [options]",
+                             opts,
+                             {&input, NULL, 1, "more than one input ('%s' and '%s')"},
+                             epilogue};
     if ((rc = cli_parse(&cmd, argc, argv)) != CLI_GO_ON) return rc;
     fs_gl_context_require_gpu(require_gpu);
     if (!input == !simulate) return cli_usage("view", "give a scene or particle file, or --simulate NAME (not both)");
     if (script && events) return cli_usage("view", "--script and --events: give one");
     if (!simulate && (gpu || particles)) return cli_usage("view", "--gpu and --particles apply to --simulate only");
-    if (simulate && field.up >= 0) return cli_usage("view", "--up applies to a scene or particle file (the simulator's is y)");
+    if (simulate && field.up >= 0)
+        return cli_usage("view", "--up applies to a scene or particle file (the simulator's is y)");
     int mi = 0;
     if (mname) {
         for (mi = 0; mi < fs_method_count() && strcmp(fs_method_at(mi)->name, mname); mi++) {}
         if (mi == fs_method_count()) return cli_unknown_method("view", "--method", mname);
     }
-    const view_options o = {input, simulate, script, events, sets, nsets, W, H, gpu, paused, verbose, max_frames,
-                            particles, mi, scale, radius, dt, field};
+    const view_options o = {input,  simulate, script,     events,    sets, nsets, W,      H,  gpu,
+                            paused, verbose,  max_frames, particles, mi,   scale, radius, dt, field};
     return view_main(&o);
 }

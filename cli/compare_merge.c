@@ -18,13 +18,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#define MAX_FIELDS 9
-
-/* Splits line at tabs in place into at most MAX_FIELDS fields; their count. */
-static int split(char *line, char **field)
+/* Splits line at tabs in place into at most CMP_MERGE_MAX_FIELDS fields; their count. */
+int cmp_merge_split(char *line, char **field)
 {
     int n = 0;
-    for (char *s = line; n < MAX_FIELDS;) {
+    for (char *s = line; n < CMP_MERGE_MAX_FIELDS;) {
         field[n++] = s;
         char *tab = strchr(s, '\t');
         if (!tab) break;
@@ -75,9 +73,9 @@ static int read_manifest(const char *dir, cmp_shard_dir *d)
     ssize_t len;
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
         if (line[len - 1] == '\n') line[--len] = 0;
-        char *fd[MAX_FIELDS];
+        char *fd[CMP_MERGE_MAX_FIELDS];
         snprintf(raw, sizeof raw, "%s", line);
-        int nf = split(line, fd), ok = 1;
+        int nf = cmp_merge_split(line, fd), ok = 1;
         if (complete) ok = -1; /* nothing follows "end" */
         else if (nline++ == 0) ok = !strcmp(fd[0], "fluidsurf-shard") && nf == 2 && !strcmp(fd[1], "1") ? 1 : -1;
         else if (!strcmp(fd[0], "end") && nf == 1) complete = 1;
@@ -96,7 +94,8 @@ static int read_manifest(const char *dir, cmp_shard_dir *d)
 static int same(const cmp_shard_dir *a, const cmp_shard_dir *b, const char *what, const char *va, const char *vb)
 {
     if (!strcmp(va, vb)) return FS_OK;
-    return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: %s %s, not %s", b->dir, a->dir, what, vb, va);
+    return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: %s %s, not %s", b->dir, a->dir, what, vb,
+                   va);
 }
 
 /* How many of argv[i..] only steer the run (output, shard, resume, force, cache, quiet), not
@@ -128,8 +127,9 @@ static int same_command(const cmp_shard_dir *a, const cmp_shard_dir *b)
         y = next_study_arg(b->argv, b->argc, &j);
     } while (x && y && !strcmp(x, y));
     if (!x && !y) return FS_OK;
-    return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: another compare command (%s where it has %s)",
-                   b->dir, a->dir, y ? y : "(end)", x ? x : "(end)");
+    return fs_fail(FS_ERR_INPUT,
+                   "%s: not a shard of the same study as %s: another compare command (%s where it has %s)", b->dir,
+                   a->dir, y ? y : "(end)", x ? x : "(end)");
 }
 
 /* Belonging together: one shard count, commit, scene and command. */
@@ -140,7 +140,10 @@ static int check_peer(const cmp_shard_dir *a, const cmp_shard_dir *b)
                        b->k, b->n, a->n);
     int rc = same(a, b, "commit", a->commit, b->commit);
     if (!rc) rc = same(a, b, "scene hash", a->scene_hash, b->scene_hash);
-    if (!rc) rc = strcmp(a->cwd, b->cwd) ? fs_fail(FS_ERR_INPUT, "%s: run in %s, but %s in %s", b->dir, b->cwd, a->dir, a->cwd) : FS_OK;
+    if (!rc)
+        rc = strcmp(a->cwd, b->cwd)
+            ? fs_fail(FS_ERR_INPUT, "%s: run in %s, but %s in %s", b->dir, b->cwd, a->dir, a->cwd)
+            : FS_OK;
     return rc ? rc : same_command(a, b);
 }
 
@@ -154,17 +157,20 @@ static int check_set(cmp_merge *m, cmp_shard_dir *got, const int *complete, int 
     for (int i = 0; i < ndirs; i++) {
         cmp_shard_dir *slot = &m->shards[got[i].k - 1];
         if (slot->k) return fs_fail(FS_ERR_INPUT, "%s and %s are both shard %d/%d", slot->dir, got[i].dir, got[i].k, n);
-        if (!complete[i]) return fs_fail(FS_ERR_INPUT, "%s: shard %d/%d did not finish (no %s marker)", got[i].dir, got[i].k, n, CMP_SHARD_DONE);
+        if (!complete[i])
+            return fs_fail(FS_ERR_INPUT, "%s: shard %d/%d did not finish (no %s marker)", got[i].dir, got[i].k, n,
+                           CMP_SHARD_DONE);
         *slot = got[i];
         memset(&got[i], 0, sizeof got[i]); /* owned by the slot now */
     }
     char missing[1024] = "";
     int nmiss = 0, at = 0;
     for (int k = 0; k < n; k++)
-        if (!m->shards[k].k && nmiss++ < 20) at += snprintf(missing + at, sizeof missing - at, "%s%d", at ? ", " : "", k + 1);
+        if (!m->shards[k].k && nmiss++ < 20)
+            at += snprintf(missing + at, sizeof missing - at, "%s%d", at ? ", " : "", k + 1);
     if (nmiss)
-        return fs_fail(FS_ERR_INPUT, "shard%s %s%s of %d %s missing: merge needs all %d shard folders", nmiss > 1 ? "s" : "",
-                       missing, nmiss > 20 ? ", ..." : "", n, nmiss > 1 ? "are" : "is", n);
+        return fs_fail(FS_ERR_INPUT, "shard%s %s%s of %d %s missing: merge needs all %d shard folders",
+                       nmiss > 1 ? "s" : "", missing, nmiss > 20 ? ", ..." : "", n, nmiss > 1 ? "are" : "is", n);
     if (strcmp(m->shards[0].commit, fs_commit))
         return fs_fail(FS_ERR_INPUT, "%s: made by fluidsurf %s; this merge is %s: merge with the same build",
                        m->shards[0].dir, m->shards[0].commit, fs_commit);
@@ -182,7 +188,8 @@ static void free_dir(cmp_shard_dir *d)
 static int read_dir(const char *dir, cmp_shard_dir *d, int *complete)
 {
     char done[1200];
-    if (!realpath(dir, d->dir)) return fs_fail(FS_ERR_INPUT, "%s: cannot open the shard folder: %s", dir, strerror(errno));
+    if (!realpath(dir, d->dir))
+        return fs_fail(FS_ERR_INPUT, "%s: cannot open the shard folder: %s", dir, strerror(errno));
     int c = read_manifest(d->dir, d);
     if (c < 0) return -c;
     snprintf(done, sizeof done, "%s/%s", d->dir, CMP_SHARD_DONE);
@@ -194,7 +201,8 @@ int cmp_merge_read(cmp_merge *m, int ndirs, const char *const *dirs, const char 
 {
     memset(m, 0, sizeof *m);
     cmp_shard_dir *got = calloc(ndirs, sizeof *got);
-    int *complete = calloc(ndirs, sizeof *complete), rc = got && complete ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
+    int *complete = calloc(ndirs, sizeof *complete),
+        rc = got && complete ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
     for (int i = 0; i < ndirs && !rc; i++) rc = read_dir(dirs[i], &got[i], &complete[i]);
     for (int i = 1; i < ndirs && !rc; i++) rc = check_peer(&got[0], &got[i]);
     if (!rc) rc = check_set(m, got, complete, ndirs);
@@ -207,10 +215,11 @@ int cmp_merge_read(cmp_merge *m, int ndirs, const char *const *dirs, const char 
 /* The record's view: its kind, label and frame must be item id's in this plan. */
 static int record_matches(const cmp_run *r, int id, char **fd)
 {
-    int per = r->nframes, is_ref = id / per < r->nrefs, index = is_ref ? id / per : id / per - r->nrefs, f = id % per;
-    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != r->first_frame + f) return 0;
-    if (is_ref) return !strcmp(fd[2], r->refs[index].spec);
-    return !r->entries[index].imported && !strcmp(fd[2], r->entries[index].label);
+    int per = r->s.nframes, is_ref = id / per < r->s.nrefs, index = is_ref ? id / per : id / per - r->s.nrefs,
+        f = id % per;
+    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != r->s.first_frame + f) return 0;
+    if (is_ref) return !strcmp(fd[2], r->s.refs[index].spec);
+    return !r->s.entries[index].imported && !strcmp(fd[2], r->s.entries[index].label);
 }
 
 static int map_shard(cmp_merge *m, const cmp_run *r, int s)
@@ -218,13 +227,14 @@ static int map_shard(cmp_merge *m, const cmp_run *r, int s)
     const cmp_shard_dir *d = &m->shards[s];
     int total = cmp_item_count(r);
     for (int j = 0; j < d->nlines; j++) {
-        char copy[8192], *fd[MAX_FIELDS];
+        char copy[8192], *fd[CMP_MERGE_MAX_FIELDS];
         snprintf(copy, sizeof copy, "%s", d->lines[j]);
-        split(copy, fd);
+        cmp_merge_split(copy, fd);
         char *end;
         long id = strtol(fd[1], &end, 10);
         if (*end || id < 0 || id >= total || !record_matches(r, (int)id, fd))
-            return fs_fail(FS_ERR_INPUT, "%s: item %s (%s, frame %s) is not one of this study's", d->dir, fd[1], fd[2], fd[3]);
+            return fs_fail(FS_ERR_INPUT, "%s: item %s (%s, frame %s) is not one of this study's", d->dir, fd[1], fd[2],
+                           fd[3]);
         if (m->record[id])
             return fs_fail(FS_ERR_INPUT, "%s: item %s (%s, frame %s) was also made by %s", d->dir, fd[1], fd[2], fd[3],
                            m->shards[m->from[id]].dir);
@@ -237,10 +247,10 @@ static int map_shard(cmp_merge *m, const cmp_run *r, int s)
 int cmp_merge_map(cmp_merge *m, const cmp_run *r)
 {
     char hash[40];
-    snprintf(hash, sizeof hash, "%016llx", r->scene.hash);
+    snprintf(hash, sizeof hash, "%016llx", r->s.scene.hash);
     if (strcmp(hash, m->shards[0].scene_hash))
         return fs_fail(FS_ERR_INPUT, "%s: the scene has changed since the shards ran (hash %s, shards %s)",
-                       r->scene.path[0] ? r->scene.path : r->scene.source, hash, m->shards[0].scene_hash);
+                       r->s.scene.path[0] ? r->s.scene.path : r->s.scene.source, hash, m->shards[0].scene_hash);
     int total = cmp_item_count(r);
     m->record = calloc(total, sizeof *m->record);
     m->from = calloc(total, sizeof *m->from);
@@ -249,13 +259,13 @@ int cmp_merge_map(cmp_merge *m, const cmp_run *r)
         int rc = map_shard(m, r, s);
         if (rc) return rc;
     }
-    for (int f = 0; f < r->nframes; f++)
-        for (int i = -r->nrefs; i < r->nentries; i++) {
-            int is_ref = i < 0, index = is_ref ? i + r->nrefs : i;
-            if (!is_ref && r->entries[index].imported) continue;
+    for (int f = 0; f < r->s.nframes; f++)
+        for (int i = -r->s.nrefs; i < r->s.nentries; i++) {
+            int is_ref = i < 0, index = is_ref ? i + r->s.nrefs : i;
+            if (!is_ref && r->s.entries[index].imported) continue;
             if (!m->record[cmp_item_id(r, is_ref, index, f)])
                 return fs_fail(FS_ERR_INPUT, "no shard made %s, frame %d: the shards were planned differently",
-                               is_ref ? r->refs[index].spec : r->entries[index].label, r->first_frame + f);
+                               is_ref ? r->s.refs[index].spec : r->s.entries[index].label, r->s.first_frame + f);
         }
     return FS_OK;
 }
@@ -284,120 +294,6 @@ void cmp_merge_provenance(const cmp_merge *m, fs_provenance *p)
     fs_provenance_set(p, "threads", v);
     snprintf(v, sizeof v, "%d", m->n);
     fs_provenance_set(p, "shards", v);
-}
-
-/* src to dst by a hard link, else a copy through a temporary file. */
-static int link_or_copy(const char *src, const char *dst)
-{
-    if (link(src, dst) == 0) return FS_OK;
-    char tmp[1500], buf[1 << 16];
-    int rc = fs_output_begin(dst, tmp, sizeof tmp);
-    if (rc) return rc;
-    int in = open(src, O_RDONLY), out = open(tmp, O_WRONLY | O_TRUNC), ok = in >= 0 && out >= 0;
-    ssize_t n;
-    while (ok && (n = read(in, buf, sizeof buf)) != 0) ok = n > 0 && write(out, buf, n) == n;
-    if (in >= 0) close(in);
-    if (out >= 0) ok &= close(out) == 0;
-    rc = fs_output_end(dst, tmp, ok);
-    return rc ? rc : ok ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: cannot copy to %s", src, dst);
-}
-
-/* An item's files from its shard's folder into the output: the PNG, the
- * method's own appearance where there is one, the EXR; the view from the EXR. */
-static int take_view(cmp_run *r, const char *dir, const char *label, int frame, cmp_view *v)
-{
-    static const char *const files[][2] = {{"", "png"}, {"_own", "png"}, {"", "exr"}};
-    for (int j = 0; j < 3; j++) {
-        char src[1400], dst[1400];
-        cmp_view_path(r, dir, label, frame, files[j][0], files[j][1], src, sizeof src);
-        cmp_view_path(r, NULL, label, frame, files[j][0], files[j][1], dst, sizeof dst);
-        if (j == 1 && access(src, F_OK) != 0) continue;
-        int rc = cmp_outdir_record(dst);
-        if (!rc) rc = link_or_copy(src, dst);
-        if (rc) return rc;
-    }
-    char exr[1400];
-    float radius;
-    cmp_view_path(r, dir, label, frame, "", "exr", exr, sizeof exr);
-    memset(v, 0, sizeof *v);
-    return fs_read_render(exr, &v->g, &v->rgba, &radius);
-}
-
-/* The record of item id, split into fd (a copy in buf). */
-static const cmp_shard_dir *record(const cmp_run *r, int id, char *buf, int size, char **fd)
-{
-    snprintf(buf, size, "%s", r->merge->record[id]);
-    split(buf, fd);
-    return &r->merge->shards[r->merge->from[id]];
-}
-
-static int bad_record(const cmp_shard_dir *d, char **fd, const char *what)
-{
-    return fs_fail(FS_ERR_INPUT, "%s/%s: %s, frame %s: %s", d->dir, CMP_SHARD_MANIFEST, fd[2], fd[3], what);
-}
-
-/* Counts text ("-": none) into st when the run counts. */
-static int take_counts(const cmp_run *r, const char *text, fs_stages *st)
-{
-    if (!r->counters) return FS_OK;
-    return !strcmp(text, "-") ? FS_ERR_INPUT : fs_stage_counts_parse(text, st);
-}
-
-int cmp_merge_ref(cmp_run *r, int k, int f, cmp_view *v)
-{
-    char buf[8192], *fd[MAX_FIELDS];
-    cmp_ref *ref = &r->refs[k];
-    const cmp_shard_dir *d = record(r, cmp_item_id(r, 1, k, f), buf, sizeof buf, fd);
-    /* ref ID SPEC FRAME HIT ENTRY STAGES COUNTS */
-    cli_cache_view *made = &ref->made[f];
-    made->hit = !strcmp(fd[4], "1");
-    snprintf(made->entry, sizeof made->entry, "%s", strcmp(fd[5], "-") ? fd[5] : "");
-    ref->hits += made->hit;
-    if (f == 0 && cmp_runs_parse(fd[6], &ref->stages, 1) != 1) return bad_record(d, fd, "unreadable timings");
-    if (!ref->analytic && take_counts(r, fd[7], &made->counts)) return bad_record(d, fd, "unreadable work counts");
-    return take_view(r, d->dir, ref->label, r->first_frame + f, v);
-}
-
-int cmp_merge_entry(cmp_run *r, int i, int f, cmp_view *v)
-{
-    char buf[8192], *fd[MAX_FIELDS], *end;
-    cmp_entry *e = &r->entries[i];
-    const cmp_shard_dir *d = record(r, cmp_item_id(r, 0, i, f), buf, sizeof buf, fd);
-    /* entry ID LABEL FRAME FRAME_MS RUNS RENDERER COUNTS */
-    e->frame_ms[f] = strtod(fd[4], &end);
-    if (*end) return bad_record(d, fd, "unreadable frame time");
-    if (f == 0 && (e->nruns = cmp_runs_parse(fd[5], e->runs, r->repeat)) <= 0) return bad_record(d, fd, "unreadable timings");
-    if (f == 0) snprintf(e->renderer, sizeof e->renderer, "%s", fd[6]);
-    if (take_counts(r, fd[7], &e->counts[f])) return bad_record(d, fd, "unreadable work counts");
-    return take_view(r, d->dir, e->label, r->first_frame + f, v);
-}
-
-/* Each file of the staging folder renamed into out (ok), or removed. */
-static int empty_staging(cmp_merge *m, int ok)
-{
-    DIR *dir = opendir(m->staging);
-    if (!dir) return ok ? fs_fail(FS_ERR_RUNTIME, "%s: cannot read: %s", m->staging, strerror(errno)) : FS_OK;
-    int rc = FS_OK;
-    for (struct dirent *de; (de = readdir(dir));) {
-        if (!strcmp(de->d_name, ".") || !strcmp(de->d_name, "..")) continue;
-        char from[1500], to[1500];
-        snprintf(from, sizeof from, "%s/%s", m->staging, de->d_name);
-        snprintf(to, sizeof to, "%s/%s", m->out, de->d_name);
-        if (!ok) unlink(from);
-        else if (!rc && rename(from, to) != 0) rc = fs_fail(FS_ERR_RUNTIME, "%s: cannot move into %s: %s", from, m->out, strerror(errno));
-    }
-    closedir(dir);
-    return rc;
-}
-
-int cmp_merge_publish(cmp_merge *m, int ok)
-{
-    if (ok && mkdir(m->out, 0755) != 0 && errno != EEXIST)
-        return fs_fail(FS_ERR_INPUT, "%s: cannot create the output folder: %s", m->out_arg, strerror(errno));
-    int rc = empty_staging(m, ok);
-    if (rc) empty_staging(m, 0);
-    rmdir(m->staging);
-    return rc;
 }
 
 void cmp_merge_free(cmp_merge *m)

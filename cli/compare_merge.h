@@ -10,24 +10,24 @@
 #include "compare.h"
 
 typedef struct cmp_shard_dir {
-    char dir[1100];          /* absolute */
+    char dir[1100]; /* absolute */
     int k, n;
     char commit[128], scene_hash[40], cwd[4096];
     char renderer[256], gl_version[256], threads[32];
     int argc;
-    char **argv;             /* the compare command line, without --shard K/N */
+    char **argv; /* the compare command line, without --shard K/N */
     int nlines;
-    char **lines;            /* the item records */
+    char **lines; /* the item records */
 } cmp_shard_dir;
 
 typedef struct cmp_merge {
-    int n;                   /* shards, indexed K-1 once checked */
+    int n; /* shards, indexed K-1 once checked */
     cmp_shard_dir *shards;
-    char out[990];           /* the output folder, absolute */
-    char out_arg[1100];      /* as given, for report.md's command line */
-    char staging[1024];      /* out.merging-PID */
-    char **record;           /* per work item: its record (into a shard's lines) */
-    int *from;               /* per work item: its shard, 0-based */
+    char out[990];      /* the output folder, absolute */
+    char out_arg[1100]; /* as given, for report.md's command line */
+    char staging[1024]; /* out.merging-PID */
+    char **record;      /* per work item: its record (into a shard's lines) */
+    int *from;          /* per work item: its shard, 0-based */
 } cmp_merge;
 
 /* Reads DIRS' manifests and checks that they are the N complete shards of one
@@ -45,6 +45,9 @@ void cmp_merge_provenance(const cmp_merge *m, fs_provenance *p);
  * into the output. */
 int cmp_merge_ref(cmp_run *r, int k, int f, cmp_view *v);
 int cmp_merge_entry(cmp_run *r, int i, int f, cmp_view *v);
+/* A manifest line's tab-separated fields into field (at most CMP_MERGE_MAX_FIELDS); their count. */
+#define CMP_MERGE_MAX_FIELDS 9
+int cmp_merge_split(char *line, char **field);
 /* ok: moves the staging folder's files into the output folder; else removes them. */
 int cmp_merge_publish(cmp_merge *m, int ok);
 void cmp_merge_free(cmp_merge *m);

@@ -14,7 +14,10 @@
 #define HEADER "fluidsurf-outputs 1"
 
 /* The names found in a folder: what refuses it, and what --force removes. */
-typedef struct found { char **name; int n, cap; } found;
+typedef struct found {
+    char **name;
+    int n, cap;
+} found;
 
 static int add(found *f, const char *name)
 {
@@ -43,7 +46,10 @@ static int is_file(const char *dir, const char *name)
 }
 
 /* A plain name in the folder itself: no '/', not "." or "..". */
-static int plain_name(const char *name) { return *name && !strchr(name, '/') && strcmp(name, ".") && strcmp(name, ".."); }
+static int plain_name(const char *name)
+{
+    return *name && !strchr(name, '/') && strcmp(name, ".") && strcmp(name, "..");
+}
 
 /* The manifest's names that are still files: 1 when dir has a manifest, 0 when not. */
 static int read_manifest(const char *dir, found *out, int *rc)
@@ -58,7 +64,11 @@ static int read_manifest(const char *dir, found *out, int *rc)
     while (!*rc && (len = getline(&line, &cap, f)) > 0) {
         if (line[len - 1] != '\n') break; /* a line cut short by a kill: not a name */
         line[--len] = 0;
-        if (nline++ == 0) { ours = !strcmp(line, HEADER); if (!ours) break; continue; }
+        if (nline++ == 0) {
+            ours = !strcmp(line, HEADER);
+            if (!ours) break;
+            continue;
+        }
         if (plain_name(line) && strcmp(line, CMP_OUTPUTS_MANIFEST) && is_file(dir, line)) *rc = add(out, line);
     }
     free(line);
@@ -96,7 +106,8 @@ static int legacy_images(const char *dir, found *out)
         char path[4200], commit[128], stem[1024], name[1100];
         if (!ends_with(de->d_name, ".exr") || strlen(de->d_name) >= sizeof stem) continue;
         snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
-        if (!is_file(dir, de->d_name) || fs_read_image_attr(path, "fluidsurf:commit", commit, sizeof commit) != 1) continue;
+        if (!is_file(dir, de->d_name) || fs_read_image_attr(path, "fluidsurf:commit", commit, sizeof commit) != 1)
+            continue;
         snprintf(stem, sizeof stem, "%.*s", (int)(strlen(de->d_name) - 4), de->d_name);
         rc = add(out, de->d_name);
         const char *png[] = {"%s.png", "%s_own.png", "diff_%s.png"};
@@ -121,7 +132,8 @@ static int read_legacy(const char *dir, found *out)
     int rc = FS_OK, compare_run = 0;
     for (int i = 0; i < 4 && !rc; i++)
         if (first_line_is(dir, csvs[i], "# ", "commit=")) rc = add(out, csvs[i]), compare_run = 1;
-    if (!rc && first_line_is(dir, "report.md", "# fluidsurf compare", NULL)) rc = add(out, "report.md"), compare_run = 1;
+    if (!rc && first_line_is(dir, "report.md", "# fluidsurf compare", NULL))
+        rc = add(out, "report.md"), compare_run = 1;
     if (!rc && first_line_is(dir, "shard.txt", "fluidsurf-shard\t", NULL)) {
         rc = add(out, "shard.txt"), compare_run = 1;
         if (!rc && first_line_is(dir, "DONE", "shard ", "finished")) rc = add(out, "DONE");
@@ -136,10 +148,12 @@ static int remove_found(const char *dir, const found *f, int manifest)
     char path[4200];
     for (int i = 0; i < f->n; i++) {
         snprintf(path, sizeof path, "%s/%s", dir, f->name[i]);
-        if (unlink(path) != 0 && errno != ENOENT) return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
+        if (unlink(path) != 0 && errno != ENOENT)
+            return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
     }
     snprintf(path, sizeof path, "%s/%s", dir, CMP_OUTPUTS_MANIFEST);
-    if (manifest && unlink(path) != 0 && errno != ENOENT) return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
+    if (manifest && unlink(path) != 0 && errno != ENOENT)
+        return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
     return FS_OK;
 }
 
@@ -150,8 +164,10 @@ int cmp_outdir_claim(const char *dir, const char *what, int resume, int force)
     if (!rc && !manifest) rc = read_legacy(dir, &f);
     if (!rc && f.n && !resume) {
         if (!force)
-            rc = fs_fail(FS_ERR_INPUT, "%s: holds another run's outputs (%s%s): --force removes fluidsurf's files there "
-                         "first, --resume keeps what matches", dir, f.name[0], f.n > 1 ? " and more" : "");
+            rc = fs_fail(FS_ERR_INPUT,
+                         "%s: holds another run's outputs (%s%s): --force removes fluidsurf's files there "
+                         "first, --resume keeps what matches",
+                         dir, f.name[0], f.n > 1 ? " and more" : "");
         else if (!(rc = remove_found(dir, &f, manifest)))
             fs_note("%s: --force: removed %d file(s) of an earlier %s run", dir, f.n, what);
     }

@@ -26,7 +26,10 @@ int cmp_runs_format(const fs_stages *runs, int nruns, char *buf, int size)
     buf[0] = 0;
     for (int k = 0; k < nruns; k++)
         for (int s = 0; s < runs[k].n; s++) {
-            at += snprintf(buf + at, at < size ? size - at : 0, "%s%s=%.17g/%.17g", s ? "," : k ? ";" : "",
+            at += snprintf(buf + at, at < size ? size - at : 0, "%s%s=%.17g/%.17g",
+                           s       ? ","
+                               : k ? ";"
+                                   : "",
                            runs[k].name[s], runs[k].ms[s], runs[k].gpu_ms[s]);
             if (at >= size) return 0;
         }
@@ -76,14 +79,17 @@ int cmp_runs_parse(const char *s, fs_stages *runs, int max)
     return *s ? 0 : nruns;
 }
 
-int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v)
+int cmp_resume_load(cmp_entry *e, int f, int repeat, const fs_provenance *prov, const char *exr, cmp_view *v)
 {
     char want[FS_DIGEST_HEX], have[FS_DIGEST_HEX], ms[64], runs[640];
     item_key(prov, want);
     if (fs_read_image_attr(exr, "fluidsurf:item", have, sizeof have) != 1 || strcmp(want, have)) return 0;
     if (fs_read_image_attr(exr, "fluidsurf:frame_ms", ms, sizeof ms) != 1) return 0;
-    if (f == 0 && (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 ||
-                   (e->nruns = cmp_runs_parse(runs, e->runs, CMP_MAX_RUNS)) <= 0))
+    fs_stages got[CMP_MAX_RUNS];
+    int n = 0; /* an item timed with another --repeat is rendered again: e->runs holds `repeat` */
+    if (f == 0 &&
+        (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 ||
+         (n = cmp_runs_parse(runs, got, CMP_MAX_RUNS)) != repeat))
         return 0;
     float r;
     memset(v, 0, sizeof *v);
@@ -92,5 +98,6 @@ int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *
         return 0;
     }
     e->frame_ms[f] = strtod(ms, NULL);
+    if (f == 0) memcpy(e->runs, got, (size_t)(e->nruns = n) * sizeof *got);
     return 1;
 }

@@ -12,9 +12,10 @@
  * runs' stages. */
 void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f);
 /* 1 when exr holds this item (prov: as before cmp_resume_stamp): v is loaded and
- * e's frame time (and on f == 0 its runs) restored; 0 when it must be rendered
- * (missing, another run's, unreadable); never an error. */
-int cmp_resume_load(cmp_entry *e, int f, const fs_provenance *prov, const char *exr, cmp_view *v);
+ * e's frame time (and on f == 0 its `repeat` runs) restored; 0 when it must be
+ * rendered (missing, another run's, timed with another --repeat, unreadable);
+ * never an error. */
+int cmp_resume_load(cmp_entry *e, int f, int repeat, const fs_provenance *prov, const char *exr, cmp_view *v);
 
 /* Timed runs as one line, "stage=ms/gpu_ms,...;..." (a ';' between runs): 0 when
  * it does not fit in size. Parsed back into at most max runs: their count, 0 when

@@ -21,7 +21,8 @@ int cmp_shard_parse(const char *text, int *k, int *n)
     long b = ok ? strtol(slash + 1, &end, 10) : 0;
     ok = ok && !*end;
     if (!ok) return fs_fail(FS_ERR_INPUT, "--shard %s: expected K/N, two whole numbers", text);
-    if (b < 1 || b > CMP_MAX_SHARDS) return fs_fail(FS_ERR_INPUT, "--shard %s: N must be 1 to %d", text, CMP_MAX_SHARDS);
+    if (b < 1 || b > CMP_MAX_SHARDS)
+        return fs_fail(FS_ERR_INPUT, "--shard %s: N must be 1 to %d", text, CMP_MAX_SHARDS);
     if (a < 1 || a > b) return fs_fail(FS_ERR_INPUT, "--shard %s: K must be 1 to N = %ld", text, b);
     *k = (int)a, *n = (int)b;
     return FS_OK;
@@ -34,7 +35,8 @@ static int view_cost(const fs_method *m, double *cost)
 {
     *cost = m ? m->cost : 0.5;
     if (!(*cost > 0))
-        return fs_fail(FS_ERR_RUNTIME, "method '%s' declares no cost (fs_method.cost): --shard cannot split it", m->name);
+        return fs_fail(FS_ERR_RUNTIME, "method '%s' declares no cost (fs_method.cost): --shard cannot split it",
+                       m->name);
     return FS_OK;
 }
 
@@ -45,12 +47,15 @@ static double frame_particles(const cmp_run *r, int f)
 {
     char path[FS_PATH_MAX];
     struct stat st;
-    if (!r->sequence || r->scene.synth.shape) return 1;
-    if (fs_frame_path(path, sizeof path, r->scene.source, r->first_frame + f) || stat(path, &st)) return 1;
+    if (!r->s.sequence || r->s.scene.synth.shape) return 1;
+    if (fs_frame_path(path, sizeof path, r->s.scene.source, r->s.first_frame + f) || stat(path, &st)) return 1;
     return st.st_size > 0 ? (double)st.st_size : 1;
 }
 
-typedef struct { int id; double cost; } item_cost;
+typedef struct {
+    int id;
+    double cost;
+} item_cost;
 
 static int by_cost(const void *a, const void *b)
 {
@@ -63,16 +68,16 @@ static int by_cost(const void *a, const void *b)
  * (they are no work items). */
 static int item_costs(const cmp_run *r, item_cost *c, int *n)
 {
-    double pixels = (double)r->scene.camera.width * r->scene.camera.height, w;
+    double pixels = (double)r->s.scene.camera.width * r->s.scene.camera.height, w;
     int rc = FS_OK;
     *n = 0;
-    for (int f = 0; f < r->nframes && !rc; f++) {
+    for (int f = 0; f < r->s.nframes && !rc; f++) {
         double base = pixels * frame_particles(r, f);
-        for (int k = 0; k < r->nrefs && !rc; k++)
-            if (!(rc = view_cost(r->refs[k].analytic ? NULL : r->refs[k].v.m, &w)))
+        for (int k = 0; k < r->s.nrefs && !rc; k++)
+            if (!(rc = view_cost(r->s.refs[k].analytic ? NULL : r->s.refs[k].v.m, &w)))
                 c[(*n)++] = (item_cost){cmp_item_id(r, 1, k, f), base * w};
-        for (int i = 0; i < r->nentries && !rc; i++)
-            if (!r->entries[i].imported && !(rc = view_cost(r->entries[i].v.m, &w)))
+        for (int i = 0; i < r->s.nentries && !rc; i++)
+            if (!r->s.entries[i].imported && !(rc = view_cost(r->s.entries[i].v.m, &w)))
                 c[(*n)++] = (item_cost){cmp_item_id(r, 0, i, f), base * w};
     }
     return rc;
@@ -111,9 +116,9 @@ static void write_header(const cmp_run *r, FILE *f)
     char cwd[4096];
     if (!getcwd(cwd, sizeof cwd)) snprintf(cwd, sizeof cwd, ".");
     fprintf(f, "fluidsurf-shard\t1\nshard\t%d\t%d\ncommit\t%s\nscene_hash\t%016llx\ncwd\t%s\n", r->shard_k, r->shard_n,
-            fs_commit, r->scene.hash, cwd);
+            fs_commit, r->s.scene.hash, cwd);
     for (int i = 0; i < r->argc; i++) fprintf(f, "arg\t%s\n", r->argv[i]);
-    for (int i = 0; i < r->prov.n; i++) fprintf(f, "prov\t%s\t%s\n", r->prov.name[i], r->prov.value[i]);
+    for (int i = 0; i < r->s.prov.n; i++) fprintf(f, "prov\t%s\t%s\n", r->s.prov.name[i], r->s.prov.value[i]);
 }
 
 static const char *or_dash(const char *s) { return s && s[0] ? s : "-"; }
@@ -121,30 +126,30 @@ static const char *or_dash(const char *s) { return s && s[0] ? s : "-"; }
 /* The work counts of st as text, "-" without --counters. */
 static const char *counts_text(const cmp_run *r, const fs_stages *st, char *buf, int size)
 {
-    if (!r->counters || fs_stage_counts_format(st, buf, size)) return "-";
+    if (!r->s.counters || fs_stage_counts_format(st, buf, size)) return "-";
     return buf;
 }
 
 static void write_ref_record(const cmp_run *r, FILE *f, int k, int fr)
 {
-    const cmp_ref *ref = &r->refs[k];
+    const cmp_ref *ref = &r->s.refs[k];
     static char counts[FS_STAGE_COUNTS_MAX];
     char stages[640] = "";
     if (fr == 0) cmp_runs_format(&ref->stages, 1, stages, sizeof stages);
-    fprintf(f, "ref\t%d\t%s\t%d\t%d\t%s\t%s\t%s\n", cmp_item_id(r, 1, k, fr), ref->spec, r->first_frame + fr,
+    fprintf(f, "ref\t%d\t%s\t%d\t%d\t%s\t%s\t%s\n", cmp_item_id(r, 1, k, fr), ref->spec, r->s.first_frame + fr,
             ref->made[fr].hit, or_dash(ref->made[fr].entry), or_dash(stages),
             ref->analytic ? "-" : counts_text(r, &ref->made[fr].counts, counts, sizeof counts));
 }
 
 static void write_entry_record(const cmp_run *r, FILE *f, int i, int fr)
 {
-    const cmp_entry *e = &r->entries[i];
+    const cmp_entry *e = &r->s.entries[i];
     static char counts[FS_STAGE_COUNTS_MAX];
     char runs[640] = "";
     if (fr == 0) cmp_runs_format(e->runs, e->nruns, runs, sizeof runs);
-    fprintf(f, "entry\t%d\t%s\t%d\t%.17g\t%s\t%s\t%s\n", cmp_item_id(r, 0, i, fr), e->label, r->first_frame + fr,
+    fprintf(f, "entry\t%d\t%s\t%d\t%.17g\t%s\t%s\t%s\n", cmp_item_id(r, 0, i, fr), e->label, r->s.first_frame + fr,
             e->frame_ms[fr], or_dash(runs), or_dash(e->renderer),
-            r->counters ? counts_text(r, &e->counts[fr], counts, sizeof counts) : "-");
+            r->s.counters ? counts_text(r, &e->counts[fr], counts, sizeof counts) : "-");
 }
 
 static int write_manifest(const cmp_run *r, int with_items)
@@ -153,11 +158,12 @@ static int write_manifest(const cmp_run *r, int with_items)
     int rc = cmp_open(r, CMP_SHARD_MANIFEST, &cf);
     if (rc) return rc;
     write_header(r, cf.f);
-    for (int fr = 0; with_items && fr < r->nframes; fr++) {
-        for (int k = 0; k < r->nrefs; k++)
+    for (int fr = 0; with_items && fr < r->s.nframes; fr++) {
+        for (int k = 0; k < r->s.nrefs; k++)
             if (cmp_renders(r, cmp_item_id(r, 1, k, fr))) write_ref_record(r, cf.f, k, fr);
-        for (int i = 0; i < r->nentries; i++)
-            if (!r->entries[i].imported && cmp_renders(r, cmp_item_id(r, 0, i, fr))) write_entry_record(r, cf.f, i, fr);
+        for (int i = 0; i < r->s.nentries; i++)
+            if (!r->s.entries[i].imported && cmp_renders(r, cmp_item_id(r, 0, i, fr)))
+                write_entry_record(r, cf.f, i, fr);
     }
     if (with_items) fputs("end\n", cf.f);
     return cmp_close(&cf);
@@ -167,10 +173,12 @@ int cmp_shard_start(const cmp_run *r)
 {
     char done[1400];
     cmp_path(r, CMP_SHARD_DONE, done, sizeof done);
-    if (unlink(done) != 0 && errno != ENOENT) return fs_fail(FS_ERR_INPUT, "%s: cannot remove: %s", done, strerror(errno));
+    if (unlink(done) != 0 && errno != ENOENT)
+        return fs_fail(FS_ERR_INPUT, "%s: cannot remove: %s", done, strerror(errno));
     for (int i = 0; i < r->argc; i++)
         if (strpbrk(r->argv[i], "\t\n"))
-            return fs_fail(FS_ERR_INPUT, "--shard: argument %d holds a tab or newline, which the manifest cannot record", i);
+            return fs_fail(FS_ERR_INPUT,
+                           "--shard: argument %d holds a tab or newline, which the manifest cannot record", i);
     return FS_OK;
 }
 

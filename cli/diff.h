@@ -16,18 +16,20 @@ int diff_check_comparable(const char *const files[2], const fs_gbuffer g[2], con
                           int radius_given);
 
 /* One threshold that was crossed, as the "FAIL ..." text says it. */
-typedef struct diff_fail { char text[80]; } diff_fail;
+typedef struct diff_fail {
+    char text[80];
+} diff_fail;
 
 /* "name value" lines (the metrics named as metrics.csv's columns), then a
  * "FAIL ..." line per crossed threshold. masked: the pixels left out as hidden by
  * solids (a "solids_masked_px N" line after r), -1 when the files carry no
  * solids' depth (no line). */
-void diff_print_text(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
-                     int nfails);
+void diff_print_text(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m,
+                     const diff_fail *fails, int nfails);
 /* One JSON object: a, b, r, "solids_masked_px" (only when masked >= 0), every
  * metric, "failed": [the FAIL texts]. NaN is null, an infinity 1e999 / -1e999
  * (JSON parsers read infinity or the largest double). */
-void diff_print_json(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
-                     int nfails);
+void diff_print_json(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m,
+                     const diff_fail *fails, int nfails);
 
 #endif

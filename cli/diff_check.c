@@ -79,8 +79,8 @@ static void missing(char *out, const char *const files[2], int first_has, int ha
 static int hard_checks(const char *const files[2], const fs_gbuffer g[2], char soft[][SOFT_LEN], int *nsoft)
 {
     if (g[0].w != g[1].w || g[0].h != g[1].h)
-        return fs_fail(FS_ERR_INPUT, "%s is %dx%d but %s is %dx%d: images of different sizes cannot be compared", files[0],
-                       g[0].w, g[0].h, files[1], g[1].w, g[1].h);
+        return fs_fail(FS_ERR_INPUT, "%s is %dx%d but %s is %dx%d: images of different sizes cannot be compared",
+                       files[0], g[0].w, g[0].h, files[1], g[1].w, g[1].h);
     char cam[2][ATTR_MAX], why[2 * ATTR_MAX];
     int have = both_attrs(files, "fluidsurf:camera", cam);
     if (have < 0) return FS_ERR_INPUT;
@@ -92,8 +92,8 @@ static int hard_checks(const char *const files[2], const fs_gbuffer g[2], char s
 }
 
 /* What may differ on purpose: the scene and r (warnings, or refusals under --strict). */
-static int soft_checks(const char *const files[2], const float r[2], int radius_given, int strict, char soft[][SOFT_LEN],
-                       int *nsoft)
+static int soft_checks(const char *const files[2], const float r[2], int radius_given, int strict,
+                       char soft[][SOFT_LEN], int *nsoft)
 {
     char hash[2][ATTR_MAX];
     int have = both_attrs(files, "fluidsurf:scene_hash", hash);
@@ -105,7 +105,9 @@ static int soft_checks(const char *const files[2], const float r[2], int radius_
     int rhave = (r[0] > 0) + (r[1] > 0);
     if (rhave == 2 && !close_enough(r[0], r[1]))
         snprintf(soft[(*nsoft)++], SOFT_LEN, "%s has r = %g but %s has r = %g%s", files[0], r[0], files[1], r[1],
-                 strict ? "" : radius_given ? "; depth errors are in the --radius given" : "; depth errors are in the first file's r");
+                 strict             ? ""
+                     : radius_given ? "; depth errors are in the --radius given"
+                                    : "; depth errors are in the first file's r");
     else if (rhave < 2 && !radius_given) missing(soft[(*nsoft)++], files, r[0] > 0, rhave, "fluidsurf:r", "the radius");
     return FS_OK;
 }

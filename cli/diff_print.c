@@ -3,7 +3,10 @@
 #include <math.h>
 
 /* The metrics in the order diff prints them, named as metrics.csv's columns. */
-typedef struct named { const char *name; double v; } named;
+typedef struct named {
+    const char *name;
+    double v;
+} named;
 enum { NMETRICS = 17 };
 
 static void metric_list(const fs_metrics *m, named out[NMETRICS])
@@ -30,13 +33,14 @@ static void metric_list(const fs_metrics *m, named out[NMETRICS])
     for (int i = 0; i < NMETRICS; i++) out[i] = l[i];
 }
 
-void diff_print_text(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
-                     int nfails)
+void diff_print_text(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m,
+                     const diff_fail *fails, int nfails)
 {
     named l[NMETRICS];
     metric_list(m, l);
     fprintf(f, "a: %s\nb: %s (reference)\nr: %g\n", files[0], files[1], r);
-    if (masked >= 0) fprintf(f, "solids_masked_px %ld (hidden by solids, left out as compare leaves them out)\n", masked);
+    if (masked >= 0)
+        fprintf(f, "solids_masked_px %ld (hidden by solids, left out as compare leaves them out)\n", masked);
     for (int i = 0; i < NMETRICS; i++) fprintf(f, "%s %.6g\n", l[i].name, l[i].v);
     for (int i = 0; i < nfails; i++) fprintf(f, "FAIL %s\n", fails[i].text);
 }
@@ -62,8 +66,8 @@ static void json_number(FILE *f, double v, const char *fmt)
     else fprintf(f, fmt, v);
 }
 
-void diff_print_json(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m, const diff_fail *fails,
-                     int nfails)
+void diff_print_json(FILE *f, const char *const files[2], float r, long masked, const fs_metrics *m,
+                     const diff_fail *fails, int nfails)
 {
     named l[NMETRICS];
     metric_list(m, l);

@@ -1,4 +1,5 @@
 /* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
+#include "caller_words.h"
 #include "method.h"
 #include "registry.h"
 #include "cli.h"
@@ -8,10 +9,15 @@
 #include <stdio.h>
 #include <string.h>
 
-static const struct { const char *name; int (*run)(int, char **); const char *what; } commands[] = {
+static const struct {
+    const char *name;
+    int (*run)(int, char **);
+    const char *what;
+} commands[] = {
     {"render", cmd_render, "render one view of a scene or particle file with one method"},
     {"compare", cmd_compare, "render several methods on the same scene; metrics, timings, figures"},
     {"merge", cmd_merge, "join the shard folders of compare --shard K/N into one compare output"},
+    {"report", cmd_report, "(re)write a study folder's report.html, the interactive comparison page"},
     {"diff", cmd_diff, "metrics between two EXR outputs, with thresholds for regression checks"},
     {"info", cmd_info, "print a particle file's count, bounds, spacing and density"},
     {"convert", cmd_convert, "convert a particle file to another format"},
@@ -30,13 +36,30 @@ static int usage(FILE *f)
     return f == stdout ? 0 : 2;
 }
 
+/* The command line's words for the settings that messages of common/ name (caller_words.h). */
+static const fs_caller_word cli_words[] = {
+    {"radius", "--radius"},
+    {"up", "--up"},
+    {"set", "--set"},
+    {"counters", "--counters"},
+    {"reference", "--reference"},
+    {"import", "--import"},
+    {"gl_egl", "--gl egl"},
+    {"require_gpu", "--require-gpu"},
+    {NULL, NULL},
+};
+
 int main(int argc, char **argv)
 {
+    fs_caller_words(cli_words);
     fs_methods_register_builtin();
     fs_interrupt_install();
     if (argc < 2) return usage(stderr);
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) return usage(stdout);
-    if (!strcmp(argv[1], "--version")) { printf("fluidsurf %s (%s%s)\n", fs_version, fs_commit, fs_dirty ? "-dirty" : ""); return 0; }
+    if (!strcmp(argv[1], "--version")) {
+        printf("fluidsurf %s (%s%s)\n", fs_version, fs_commit, fs_dirty ? "-dirty" : "");
+        return 0;
+    }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].run(argc - 1, argv + 1);
     char name[200];

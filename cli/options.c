@@ -49,7 +49,10 @@ static int take(const char *cmd, const cli_opt *o, const char *a, const char *v)
     /* numbers name a missing value themselves ("-W (missing): ...") */
     if (o->kind == CLI_INT) return cli_int(cmd, a, v, (int)o->lo, (int)o->hi, o->i);
     if (o->kind == CLI_FLOAT) return cli_float(cmd, a, v, o->lo, o->hi, o->f);
-    if (o->kind == CLI_FLAG) { *o->i = o->value; return 0; }
+    if (o->kind == CLI_FLAG) {
+        *o->i = o->value;
+        return 0;
+    }
     if (!v) return cli_usage(cmd, "unknown or incomplete option '%s'", a);
     if (o->kind == CLI_STRING) *o->s = v;
     else if (o->kind == CLI_CHOICE) return choose(cmd, o, a, v);
@@ -71,12 +74,14 @@ int cli_parse(const cli_command *c, int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         const cli_opt *o = find(c->opts, a);
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) { cli_help(c, stdout); return 0; }
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            cli_help(c, stdout);
+            return 0;
+        }
         if (o) {
             if ((rc = take(c->name, o, a, v))) return rc;
             i += o->kind != CLI_FLAG;
-        }
-        else if (a[0] == '-' && a[1]) return cli_usage(c->name, "unknown or incomplete option '%s'", a);
+        } else if (a[0] == '-' && a[1]) return cli_usage(c->name, "unknown or incomplete option '%s'", a);
         else if ((rc = positional(c, n, a))) return rc;
     }
     return CLI_GO_ON;

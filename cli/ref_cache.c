@@ -38,16 +38,6 @@ void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet)
     if (rc) turn_off(c);
 }
 
-/* Upload, render, shade: the run's own stages. */
-static int render_view(fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g, fs_run_image *im,
-                       fs_stages *st)
-{
-    int rc = fs_run_upload(run, p, g, st);
-    if (!rc) rc = fs_run_render(run, &s->camera, im, st);
-    if (!rc) rc = fs_run_shade(run, &s->camera, im, FS_APPEARANCE_SHARED, st);
-    return rc;
-}
-
 /* The entry of key into im->g (and its counts): 1 on a hit; a bad entry is
  * named on stderr; one without the counts wanted is a miss. */
 static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im, fs_stages *counts)
@@ -107,7 +97,7 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     if (!st) st = &local;
     memset(out, 0, sizeof *out);
     if (!c->on) {
-        int rc = render_view(run, s, p, g, im, st);
+        int rc = fs_study_render_once(run, s, p, g, im, st);
         return !rc && c->counters ? count_view(run, s, p, g, &out->counts) : rc;
     }
     double t0 = fs_now_ms();
@@ -121,7 +111,7 @@ int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_part
     }
     double lookup = fs_now_ms() - t0;
     fs_run_set_floor(run, floor_y(s, p, g)); /* a hit before may have set another frame's */
-    int rc = render_view(run, s, p, g, im, st);
+    int rc = fs_study_render_once(run, s, p, g, im, st);
     if (!rc && c->counters) rc = count_view(run, s, p, g, &out->counts); /* between the timed spans */
     if (rc) return rc;
     double t1 = fs_now_ms(); /* cache_store: the lookup and this write, not the counting */

@@ -5,13 +5,14 @@
 #define FS_REF_CACHE_H
 #include "gbuffer_cache.h"
 #include "run.h"
+#include "study.h"
 
 typedef struct cli_cache {
     fs_gcache gc;
-    int on;          /* 0: no cache (turned off, or its folder is unusable) */
-    int quiet;       /* no note about a bad entry */
-    int counters;    /* views come with the work counts of a counting render */
-    char why[1200];  /* why it is off, for the report */
+    int on;         /* 0: no cache (turned off, or its folder is unusable) */
+    int quiet;      /* no note about a bad entry */
+    int counters;   /* views come with the work counts of a counting render */
+    char why[1200]; /* why it is off, for the report */
 } cli_cache;
 
 /* dir: the --cache folder, or NULL for the default ($XDG_CACHE_HOME/fluidsurf,
@@ -19,12 +20,8 @@ typedef struct cli_cache {
  * made or written gives one warning line naming it, and the cache stays off. */
 void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet);
 
-/* One view and how it was made. */
-typedef struct cli_cache_view {
-    int hit;                     /* loaded from the cache */
-    char entry[FS_GCACHE_PATH];  /* the entry file; "" without a cache */
-    fs_stages counts;            /* with c->counters: the counts (from the entry on a hit) */
-} cli_cache_view;
+/* One view and how it was made: hit, entry, counts (study.h). */
+typedef fs_study_made cli_cache_view;
 
 /* Frame p's view of run into im: from the cache (stage "cache", the time to
  * hash the key and load and check the entry, then "shade"), or uploaded

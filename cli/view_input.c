@@ -31,10 +31,7 @@ static void move_box(fs_view *v, float along_right, float along_fwd)
     for (int k = 0; k < 3; k++) v->box_move[k] += along_right * right[k] + along_fwd * fwd[k];
 }
 
-static void set_scale(fs_view *v, float s)
-{
-    v->scale = fmaxf(1.0f / 16, fminf(2.0f, s));
-}
+static void set_scale(fs_view *v, float s) { v->scale = fmaxf(1.0f / 16, fminf(2.0f, s)); }
 
 void view_key(fs_view *v, int key, int mods)
 {
@@ -49,8 +46,14 @@ void view_key(fs_view *v, int key, int mods)
     case GLFW_KEY_Q: v->quit = 1; break;
     case GLFW_KEY_SPACE: v->playing = !v->playing; break;
     case GLFW_KEY_N:
-    case GLFW_KEY_PERIOD: v->step = 1; v->playing = 0; break;
-    case GLFW_KEY_S: v->shot = 1; v->shot_path[0] = 0; break;
+    case GLFW_KEY_PERIOD:
+        v->step = 1;
+        v->playing = 0;
+        break;
+    case GLFW_KEY_S:
+        v->shot = 1;
+        v->shot_path[0] = 0;
+        break;
     case GLFW_KEY_O: v->own = !v->own; break;
     case GLFW_KEY_R: v->orbit = v->home; break;
     case GLFW_KEY_EQUAL: /* '+' shares the key with '=' on US layouts */
@@ -69,11 +72,13 @@ void view_button(fs_view *v, int button, int press, int mods, double x, double y
 {
     v->mx = x;
     v->my = y;
-    if (!press) { v->drag = VIEW_DRAG_NONE; return; }
+    if (!press) {
+        v->drag = VIEW_DRAG_NONE;
+        return;
+    }
     if (button == GLFW_MOUSE_BUTTON_LEFT)
         v->drag = (mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL)) && v->can_move_box ? VIEW_DRAG_BOX : VIEW_DRAG_ORBIT;
-    else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE)
-        v->drag = VIEW_DRAG_PAN;
+    else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) v->drag = VIEW_DRAG_PAN;
 }
 
 void view_cursor(fs_view *v, double x, double y)
@@ -94,7 +99,4 @@ void view_cursor(fs_view *v, double x, double y)
     }
 }
 
-void view_scroll(fs_view *v, double dy)
-{
-    fs_orbit_zoom(&v->orbit, (float)dy);
-}
+void view_scroll(fs_view *v, double dy) { fs_orbit_zoom(&v->orbit, (float)dy); }

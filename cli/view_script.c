@@ -12,10 +12,13 @@ enum { A_KEY, A_DRAG, A_SCROLL, A_SHOT, A_QUIT };
 
 static int key_code(const char *name)
 {
-    static const struct { const char *name; int key; } named[] = {
+    static const struct {
+        const char *name;
+        int key;
+    } named[] = {
         {"space", GLFW_KEY_SPACE}, {"escape", GLFW_KEY_ESCAPE}, {"plus", GLFW_KEY_EQUAL},
-        {"minus", GLFW_KEY_MINUS}, {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT},
-        {"up", GLFW_KEY_UP}, {"down", GLFW_KEY_DOWN}, {"period", GLFW_KEY_PERIOD},
+        {"minus", GLFW_KEY_MINUS}, {"left", GLFW_KEY_LEFT},     {"right", GLFW_KEY_RIGHT},
+        {"up", GLFW_KEY_UP},       {"down", GLFW_KEY_DOWN},     {"period", GLFW_KEY_PERIOD},
     };
     if (name[0] && !name[1]) {
         if (name[0] >= 'a' && name[0] <= 'z') return GLFW_KEY_A + (name[0] - 'a');
@@ -58,7 +61,8 @@ static int parse_action(view_action *a, char **w, int n, const char *what, int l
     int extra = 3; /* first word after the action's fixed arguments */
     if (!strcmp(act, "key")) {
         a->kind = A_KEY;
-        if (n < 4 || (a->key = key_code(w[3])) < 0) return fs_fail(FS_ERR_INPUT, "%s:%d: key: unknown key name", what, line);
+        if (n < 4 || (a->key = key_code(w[3])) < 0)
+            return fs_fail(FS_ERR_INPUT, "%s:%d: key: unknown key name", what, line);
         extra = 4;
     } else if (!strcmp(act, "drag")) {
         a->kind = A_DRAG;
@@ -69,7 +73,8 @@ static int parse_action(view_action *a, char **w, int n, const char *what, int l
         extra = 7;
     } else if (!strcmp(act, "scroll")) {
         a->kind = A_SCROLL;
-        if (!number(n > 3 ? w[3] : NULL, &a->a[0])) return fs_fail(FS_ERR_INPUT, "%s:%d: scroll: expected DY", what, line);
+        if (!number(n > 3 ? w[3] : NULL, &a->a[0]))
+            return fs_fail(FS_ERR_INPUT, "%s:%d: scroll: expected DY", what, line);
         extra = 4;
     } else if (!strcmp(act, "screenshot")) {
         a->kind = A_SHOT;
@@ -80,11 +85,12 @@ static int parse_action(view_action *a, char **w, int n, const char *what, int l
     } else if (!strcmp(act, "quit")) {
         a->kind = A_QUIT;
     } else {
-        return fs_fail(FS_ERR_INPUT, "%s:%d: unknown action '%s' (key, drag, scroll, screenshot, quit)", what, line, act);
+        return fs_fail(FS_ERR_INPUT, "%s:%d: unknown action '%s' (key, drag, scroll, screenshot, quit)", what, line,
+                       act);
     }
     for (int k = extra; k < n; k++) {
-        int ok = (a->kind == A_KEY || a->kind == A_DRAG) &&
-                 modifier(w[k], &a->mods, a->kind == A_DRAG ? &a->button : NULL);
+        int ok =
+            (a->kind == A_KEY || a->kind == A_DRAG) && modifier(w[k], &a->mods, a->kind == A_DRAG ? &a->button : NULL);
         if (!ok) return fs_fail(FS_ERR_INPUT, "%s:%d: unexpected '%s'", what, line, w[k]);
     }
     return FS_OK;
@@ -106,14 +112,20 @@ int view_script_parse(view_script *s, const char *text, const char *what)
         char *w[16];
         int n = 0;
         for (char *tok = strtok(p, " \t\r"); tok; tok = strtok(NULL, " \t\r")) {
-            if (n == 16) { rc = fs_fail(FS_ERR_INPUT, "%s:%d: too many words", what, line); break; }
+            if (n == 16) {
+                rc = fs_fail(FS_ERR_INPUT, "%s:%d: too many words", what, line);
+                break;
+            }
             w[n++] = tok;
         }
         if (!rc && n) {
             if (s->n == cap) {
                 cap = cap ? 2 * cap : 16;
                 view_action *na = realloc(s->act, cap * sizeof *na);
-                if (!na) { rc = fs_fail(FS_ERR_RUNTIME, "out of memory"); break; }
+                if (!na) {
+                    rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
+                    break;
+                }
                 s->act = na;
             }
             if (!(rc = parse_action(&s->act[s->n], w, n, what, line))) s->n++;
@@ -122,7 +134,10 @@ int view_script_parse(view_script *s, const char *text, const char *what)
         p += len + !end;
     }
     free(buf);
-    if (rc) { view_script_free(s); return rc; }
+    if (rc) {
+        view_script_free(s);
+        return rc;
+    }
     /* insertion sort by frame: stable, so one frame's actions keep their written order */
     for (int i = 1; i < s->n; i++)
         for (int j = i; j > 0 && s->act[j].frame < s->act[j - 1].frame; j--) {

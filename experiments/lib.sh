@@ -14,6 +14,8 @@ csv_awk() {
     /^#/ { next } !H { for (i = 1; i <= NF; i++) C[$i] = i; H = 1; next } { '"$prog"' }' "$file"
 }
 
+# prov FILE KEY: KEY's value in the provenance line a CSV starts with ("# k=v; k=v;", fs_provenance_line)
+prov() { head -1 "$1" | tr ';' '\n' | sed -n "s/^ *$2=//p" | head -1; }
 # exr_attr FILE NAME: a fluidsurf provenance attribute of an EXR (iinfo: openimageio-tools)
 exr_attr() { iinfo -v "$1" | sed -n "s/^ *fluidsurf:$2: \"\(.*\)\"$/\1/p" | head -1; }
 # kv "eye=a,b,c;target=..." KEY
@@ -133,3 +135,6 @@ reference_frames() {
   [ -f "$dsph" ] || { echo "$(basename "$0"): $dsph missing (set SHARED to the shared data folder)" >&2; exit 2; }
   frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}")
 }
+# zb_sweep BIN: the demo's mesh twice, on the SPH field and on Zhu & Bridson's (issue 38),
+# where BIN has mesh (a build with OpenVDB); nothing otherwise.
+zb_sweep() { if "$1" methods 2> /dev/null | grep '^mesh ' > /dev/null; then echo "--set mesh.field=isotropic,zhu_bridson"; fi; }

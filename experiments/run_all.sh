@@ -68,10 +68,12 @@ study xiao2017_fig7 bash experiments/xiao2017/fig7.sh
 study xiao2017_fig10 bash experiments/xiao2017/fig10.sh
 study xiao2017_radius bash experiments/xiao2017/radius.sh
 study xiao2017_joint bash experiments/xiao2017/joint_sweep.sh
+study xiao2017_thickness bash experiments/xiao2017/thickness.sh
 study xiao2017_table1 bash experiments/xiao2017/table1.sh
 study xiao2017_bars bash experiments/xiao2017/bars.sh
 study xu2022_fig5 bash experiments/xu2022/fig5.sh
 study xu2022_fig6 bash experiments/xu2022/fig6.sh
+study xu2022_fig4_collision bash experiments/xu2022/fig4_collision.sh
 study xu2022_fig2 bash experiments/xu2022/fig2.sh # after fig6.sh: its images
 study xu2022_fig8 bash experiments/xu2022/fig8.sh
 study xu2022_fig9 bash experiments/xu2022/fig9.sh
@@ -84,6 +86,7 @@ study iwasaki2006_tables bash experiments/iwasaki2006/tables.sh # after density_
 study iwasaki2006_caustics bash experiments/iwasaki2006/caustics.sh
 study iwasaki2006_fig7 bash experiments/iwasaki2006/fig7.sh
 study iwasaki2006_fig8 bash experiments/iwasaki2006/fig8.sh
+study iwasaki2006_fig9_wavemaker bash experiments/iwasaki2006/fig9_wavemaker.sh
 study inacio2010_tables bash experiments/inacio2010/tables.sh
 study inacio2010_fig6 bash experiments/inacio2010/fig6_timestep.sh
 study inacio2010_fig2 bash experiments/inacio2010/fig2.sh

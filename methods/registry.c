@@ -5,13 +5,13 @@
 #include "registry.h"
 #include <string.h>
 
-#define BUILTIN_METHODS(X) \
-    X(spheres)             \
-    X(reference)           \
-    X(raycast_pca)         \
-    X(aniso_ssf)           \
-    X(surfels)             \
-    X(volume_raycast)      \
+#define BUILTIN_METHODS(X)                                                                                             \
+    X(spheres)                                                                                                         \
+    X(reference)                                                                                                       \
+    X(raycast_pca)                                                                                                     \
+    X(aniso_ssf)                                                                                                       \
+    X(surfels)                                                                                                         \
+    X(volume_raycast)                                                                                                  \
     OPENVDB_METHODS(X)
 
 /* Methods that need an optional library: registered only in a build with it
@@ -34,7 +34,10 @@ void fs_methods_register_builtin(void)
 
 const char *fs_method_needs_option(const char *name)
 {
-    static const struct { const char *method, *option; int built; } optional[] = {
+    static const struct {
+        const char *method, *option;
+        int built;
+    } optional[] = {
         {"levelset", "FS_WITH_OPENVDB", FS_WITH_OPENVDB},
         {"mesh", "FS_WITH_OPENVDB", FS_WITH_OPENVDB},
     };

@@ -7,10 +7,11 @@ PKGS=(build-essential cmake pkg-config git
       libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
       libopenimageio-dev openimageio-tools libvtk9-dev libcjson-dev zlib1g-dev
       libopenexr-dev libstb-dev glslang-tools
-      clang libclang-rt-14-dev
+      clang libclang-rt-14-dev clang-format # the fuzz targets; the C style check (scripts/check_format.sh)
       xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9
       slurm-wlm munge
-      python3-numpy python3-cffi python3-pytest python3-matplotlib)
+      python3-numpy python3-cffi python3-pytest python3-matplotlib
+      chromium chromium-driver python3-selenium) # the report page's browser test (tests/report.cmake)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -4,4 +4,8 @@
 if(TARGET fluidsurf_lib)
   fs_add_test(test_api fluidsurf_lib test_api.c)
   target_link_libraries(test_api PRIVATE m)
+  fs_add_test(test_api_compare fluidsurf_lib test_api_compare.c)
+  target_link_libraries(test_api_compare PRIVATE m)
+  fs_add_test(test_api_scene fluidsurf_lib test_api_scene.c)
+  target_link_libraries(test_api_scene PRIVATE m)
 endif()

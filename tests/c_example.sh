@@ -21,6 +21,9 @@ for exe in "$T/by_pkgconfig" "$T/cmake/render_compare"; do
   check 'grep -Eq "^raycast_pca against reference: IoU 0\.9[0-9]+, depth RMSE [0-9.]+ r, normal error [0-9.]+ deg" "$exe.out"' \
     "$(basename "$exe") prints plausible metrics: $(sed -n 3p "$exe.out")"
   check 'grep -Eq "^  (march|splat).* ms  llvmpipe" "$exe.out"' "$(basename "$exe") names the renderer of its GL stages"
+  iou=$(sed -n 's/^raycast_pca against reference: IoU \([0-9.]*\),.*/\1/p' "$exe.out")
+  check 'grep -q "^method,variant,reference,frame,mask_iou," "$exe.out" && awk -F, -v want="$iou" '"'"'$1 == "raycast_pca" && $3 == "reference" {found = 1; if (sprintf("%.4f", $5) != want) exit 1} END {exit !found}'"'"' "$exe.out"' \
+    "$(basename "$exe") runs the study (fluidsurf_compare): metrics.csv's columns, the same IoU as its render ($iou)"
 done
 check 'cmp -s <(sed -n 3p "$T/by_pkgconfig.out") <(sed -n 3p "$T/cmake/render_compare.out")' "both builds give the same metrics"
 # a bad file: the library's one-line message, no crash

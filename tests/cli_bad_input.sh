@@ -185,6 +185,9 @@ done
 
 # VTK looped over a forged NumberOfComponents (as INT_MAX) for minutes: refused before it reads
 expect_bad vtu_components_forged "NumberOfComponents '4294967295' (at most 1024)" info "$(dirname "$0")/fuzz/regress_vtu/components_4294967295.vtu"
+# VTK allocated 4 GB for a forged NumberOfCells, and memset SIZE_MAX bytes for -1e309 (read as -1): refused before it reads
+expect_bad vtu_cells_forged "VTU file declares 4294967296 cells, more than its 735 bytes can hold" info "$(dirname "$0")/fuzz/regress_vtu/cells_4294967296.vtu"
+expect_bad vtu_cells_negative "bad NumberOfCells in the VTU file" info "$(dirname "$0")/fuzz/regress_vtu/cells_minus_1e309.vtu"
 
 # A failed render must not clobber an existing output.
 n=$((n + 1))

@@ -61,6 +61,12 @@ check '[ $rc -eq 0 ]' "sequence runs"
 check '[ "$(grep -vc "^#" "$T/seq/metrics.csv")" -eq 4 ] && grep -q "^spheres,,reference,2," "$T/seq/metrics.csv"' "per-frame rows"
 check 'grep -v "^#" "$T/seq/temporal.csv" | head -1 | grep -qx "method,variant,frames,normal_change_deg,reference_normal_change_deg,normal_temporal_error_deg,depth_temporal_error_r" && grep -q "^spheres,,3,[0-9.]*,[0-9.]*,[0-9.]*,[0-9.]*$" "$T/seq/temporal.csv"' "temporal.csv with the reference's own change and the error against it"
 
+# 4a. frames stream: a sequence past the old cap of 256 frames runs, one row a frame
+printf '{"particles": {"synthetic": "slab", "size": [4, 2, 4], "first": 0, "last": 299}, "radius": 0.025}' > "$T/long.json"
+"$BIN" compare "$T/long.json" --methods spheres --reference analytic -W 8 -H 8 --repeat 1 -q --no-cache -o "$T/long" 2> "$T/long.err"; rc=$?
+check '[ $rc -eq 0 ] && [ "$(grep -vc "^#" "$T/long/metrics.csv")" -eq 301 ] && grep -q "^spheres,,analytic,299," "$T/long/metrics.csv" && [ -s "$T/long/spheres_f0299.exr" ]' \
+  "300 frames (past the old cap of 256) stream through compare: $(head -c 200 "$T/long.err")"
+
 # 4b. temporal error where the answer is known: a static slab re-jittered every frame.
 # Against analytic (its change is exactly 0) a method's error is its own change (the
 # pixel sets differ by the few the analytic slab does not cover: 0.5% slack); against

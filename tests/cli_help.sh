@@ -13,11 +13,12 @@ declare -A want=(
   [render]="--method -o --set -W --width -H --height --radius --up --volume-scale --iso --support --kernel --format --frame --gl --require-gpu --timings --counters --export --appearance --cache -q"
   [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --force --shard --counters -W --width -H --height --radius --up --volume-scale --iso --support --kernel --gl --require-gpu -q"
   [merge]="-o --force -q"
+  [report]=""
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius --strict --json -o --normal-scale --depth-scale"
   [info]="--radius --volume-scale --format"
   [convert]="-o --from --to"
   [methods]=""
-  [simulate]="--frames -o --particles --cpu --gpu --gl --require-gpu --eos --fps --dt --substeps --radius --nu --sound-speed --k --cfl --stats -q"
+  [simulate]="--frames -o --particles --cpu --gpu --gl --require-gpu --eos --fps --dt --substeps --radius --nu --sound-speed --k --cfl --shake --shake-period --stats -q"
   [view]="--simulate --particles --gpu --dt --method --set -W --width -H --height --scale --radius --up --volume-scale --iso --support --kernel --require-gpu --paused --frames -v --script --events"
 )
 
@@ -31,7 +32,7 @@ one_line_exit2() {
 }
 
 # FS_NO_VIEW=1: a build without GLFW, whose view only refuses (tests/cli_lean.sh checks that).
-cmds="render compare merge diff info convert methods simulate"
+cmds="render compare merge report diff info convert methods simulate"
 [ "${FS_NO_VIEW:-0}" = 1 ] || cmds="$cmds view"
 for cmd in $cmds; do
   bad=$fails

@@ -2,7 +2,8 @@
 # The levelset method from the CLI (a build with OpenVDB): the bundled dam break
 # (experiments/scenes/dam_break.json) through compare at 128x128, against the exact
 # union of its spheres through diff, the .vdb export (temp + rename; vdb_print reads it when
-# libopenvdb-tools is installed), refused exports and parameters (exit 2, one line).
+# libopenvdb-tools is installed), refused exports and parameters (exit 2, one line), an
+# unknown levelset.rasterizer refused, the two point rasterisers render.
 # usage: tests/cli_levelset.sh BIN SRC OUT
 set -u
 BIN=$1 SRC=$2 T=$3
@@ -55,11 +56,18 @@ refused() { # exit 2, one line on stderr, no output
   check '[ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && [ ! -e "$out" ]' "$what refused (rc $rc: $(head -c 200 "$T/err"))"
 }
 refused "--export .ply" "$T/x.ply" render "$scene" --method levelset -W 16 -H 16 -q --export "$T/x.ply" -o "$T/x.png"
-for bad in radius=0 voxel=0 voxel=-0.5 half_width=0 smooth=median radius=0.5; do
+for bad in radius=0 voxel=0 voxel=-0.5 half_width=0 smooth=median radius=0.5 rasterizer=blobs; do
   refused "levelset.$bad" "$T/bad.png" render "$scene" --method levelset -W 16 -H 16 -q --set "levelset.$bad" -o "$T/bad.png"
 done
 "$BIN" render "$scene" --method levelset -W 16 -H 16 -q --set levelset.radius=0 -o "$T/bad.png" 2> "$T/err"
 check 'grep -q "radius" "$T/err" && grep -q "0.01" "$T/err"' "the refusal names the parameter and its range ($(cat "$T/err"))"
+"$BIN" render "$scene" --method levelset -W 16 -H 16 -q --set levelset.rasterizer=blobs -o "$T/bad.png" 2> "$T/err"
+check 'grep -q "rasterizer" "$T/err" && grep -q "particles|spheres|smooth" "$T/err"' "an unknown rasterizer names the three ($(cat "$T/err"))"
+# the point rasterisers render (their bounds against an analytic sphere: test_levelset_raster)
+for ras in spheres smooth; do
+  "$BIN" render "$scene" --method levelset --set levelset.rasterizer=$ras -W 32 -H 32 -q -o "$T/$ras.exr" 2> "$T/err"; rc=$?
+  check '[ $rc -eq 0 ] && [ -s "$T/$ras.exr" ]' "render levelset.rasterizer=$ras ($(head -c 200 "$T/err"))"
+done
 check '[ -z "$(find "$T" -name ".*.tmp*")" ]' "no temporary files left"
 [ $fails -eq 0 ] && echo "all checks passed" || echo "$fails check(s) failed"
 [ $fails -gt 0 ] && exit 1

@@ -3,7 +3,7 @@
 # bundled dam break against the reference through compare and diff at 128x128;
 # `fluidsurf mesh` to .ply, .obj, .vtk and .vtp, each read back by VTK's own
 # readers (python3-vtk9) with the vertex and triangle counts --timings printed;
-# a {} sequence in and out; render --export; refused parameters, formats and
+# a {} sequence in and out; smooth=weighted; attributes in the PLY and VTP; render --export; refused parameters, formats and
 # paths (exit 2, one line, nothing left behind).
 # usage: tests/cli_mesh.sh BIN SRC OUT
 set -u
@@ -47,6 +47,44 @@ cp "$dam" "$T/f_3.ply"
 "$BIN" convert "$SRC/experiments/data/splashsurf/cube_2366_particles.vtk" -o "$T/f_4.ply" 2> "$T/err"
 "$BIN" mesh "$T/f_{}.ply" --frames 3:4 --radius 0.025 -o "$T/seq_{}.obj" 2> "$T/progress"; rc=$?
 check '[ $rc -eq 0 ] && [ -s "$T/seq_3.obj" ] && [ -s "$T/seq_4.obj" ] && grep -q "2/2 frames" "$T/progress"' "a {} sequence: seq_3.obj, seq_4.obj and a progress bar ($(tail -c 200 "$T/progress"))"
+# splashsurf's recipe: weighted smoothing (25 steps as its README) writes a mesh of the same size
+"$BIN" mesh "$dam" --radius 0.025 --set mesh.smooth=weighted --set mesh.smooth_iters=25 -o "$T/w.ply" --timings -q > "$T/t_w.csv" 2> "$T/err"; rc=$?
+check '[ $rc -eq 0 ] && [ -s "$T/w.ply" ] && [ "$(cut -d, -f4,5 "$T/t_w.csv" | sort -u)" = "$(cut -d, -f4,5 "$T/t_ply.csv" | sort -u)" ] && grep -q ",smooth," "$T/t_w.csv"' "fluidsurf mesh --set mesh.smooth=weighted: the same vertices and triangles, a smooth stage ($(head -c 200 "$T/err"))"
+check '! cmp -s "$T/w.ply" "$T/dam.ply"' "weighted smoothing moves the vertices"
+# mesh.attributes=on: the particles' velocity and colour at the vertices, in the PLY and the VTP
+/usr/bin/python3 - "$T/attr_in.ply" <<'PY'
+import struct, sys
+pts = [(0.05 * i, 0.05 * j, 0.05 * k) for i in range(8) for j in range(8) for k in range(3)]
+with open(sys.argv[1], "wb") as f:
+    f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\n" % len(pts)).encode())
+    for n in ("x", "y", "z", "vx", "vy", "vz", "red", "green", "blue"):
+        f.write(("property float %s\n" % n).encode())
+    f.write(b"end_header\n")
+    for p in pts:
+        f.write(struct.pack("<9f", *p, 1.0, -2.0, 0.5, 0.2, 0.4, 0.6))
+PY
+for ext in ply vtp; do
+  "$BIN" mesh "$T/attr_in.ply" --radius 0.025 --set mesh.attributes=on -o "$T/attr.$ext" -q 2> "$T/err"; rc=$?
+  got=$(/usr/bin/python3 - "$T/attr.$ext" <<'PY' 2>&1
+import sys, vtk
+p = sys.argv[1]
+r = vtk.vtkPLYReader() if p.endswith(".ply") else vtk.vtkXMLPolyDataReader()
+r.SetFileName(p)
+r.Update()
+d = r.GetOutput()
+pd = d.GetPointData()
+if p.endswith(".ply"):  # VTK's PLY reader keeps no vx or float colours: read the header
+    head = open(p, "rb").read(600).split(b"end_header")[0].decode()
+    print(d.GetNumberOfPoints() > 0, "property float vx" in head, "property float red" in head)
+else:
+    v, c = pd.GetArray("velocity"), pd.GetArray("color")
+    ok = v is not None and c is not None and v.GetNumberOfTuples() == d.GetNumberOfPoints() > 0
+    ok = ok and all(abs(v.GetComponent(i, 1) + 2) < 1e-5 and abs(c.GetComponent(i, 2) - 0.6) < 1e-5 for i in range(0, d.GetNumberOfPoints(), 7))
+    print(ok, ok, ok)
+PY
+)
+  check '[ $rc -eq 0 ] && [ "$got" = "True True True" ]' "mesh.attributes=on writes velocity and colour to attr.$ext ($got; $(head -c 200 "$T/err"))"
+done
 # render --export
 "$BIN" render "$scene" --method mesh -W 32 -H 32 -q --export "$T/r.vtp" -o "$T/r.png" 2> "$T/err"; rc=$?
 check '[ $rc -eq 0 ] && [ -s "$T/r.vtp" ] && [ -s "$T/r.png" ]' "render --method mesh --export r.vtp ($(head -c 200 "$T/err"))"
@@ -55,7 +93,7 @@ refused() { # exit 2, one line on stderr, no output
   "$BIN" "$@" > /dev/null 2> "$T/err"; local rc=$?
   check '[ $rc -eq 2 ] && [ "$(wc -l < "$T/err")" -eq 1 ] && [ ! -e "$out" ]' "$what refused (rc $rc: $(head -c 200 "$T/err"))"
 }
-for bad in cube=0 cube=-1 smooth=median smooth_iters=-1; do
+for bad in cube=0 cube=-1 smooth=median smooth_iters=-1 smooth=weigthed weights_norm=0 normal_iters=-1 attributes=maybe; do
   refused "mesh.$bad" "$T/bad.ply" mesh "$dam" -q --set "mesh.$bad" -o "$T/bad.ply"
   refused "render mesh.$bad" "$T/bad.png" render "$scene" --method mesh -W 16 -H 16 -q --set "mesh.$bad" -o "$T/bad.png"
 done

@@ -16,8 +16,9 @@ echo "{\"box\": [1.2, 0.8, 0.64], \"fluid\": [{\"min\": [0, 0, 0], \"max\": [0.4
 "$BIN" simulate "$T/sim.json" --radius 0.04 --frames 3 --fps 30 -q -o "$T/f_%04d.bgeo" --stats "$T/s.csv" 2> "$T/sim.err"
 check '[ $? -eq 0 ] && [ -s "$T/f_0003.bgeo" ]' "simulate runs with obstacles"
 "$BIN" simulate "$T/sim_plain.json" --radius 0.04 --frames 1 -q --stats "$T/plain.csv" 2> /dev/null
-nb() { sed -n 's/.* fluid + \([0-9]*\) boundary particles.*/\1/p' "$1" | head -1; }
-nf() { sed -n 's/.*: \([0-9]*\) fluid + .*/\1/p' "$1" | head -1; }
+# the stats' provenance line (fs_provenance_line): "# ...; fluid_particles=N; boundary_particles=M; ..."
+nb() { head -1 "$1" | sed -n 's/.* boundary_particles=\([0-9]*\);.*/\1/p'; }
+nf() { head -1 "$1" | sed -n 's/.* fluid_particles=\([0-9]*\);.*/\1/p'; }
 check '[ "$(nb "$T/s.csv")" -gt "$(nb "$T/plain.csv")" ] && [ "$(nf "$T/s.csv")" -lt "$(nf "$T/plain.csv")" ]' \
   "the solids add boundary particles ($(nb "$T/plain.csv") -> $(nb "$T/s.csv")) and take lattice sites from the fluid ($(nf "$T/plain.csv") -> $(nf "$T/s.csv"))"
 

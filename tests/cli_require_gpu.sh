@@ -53,7 +53,8 @@ if [ "$WITH_OSMESA" = 1 ]; then
   check 'refused "$T/ro.err" --require-gpu "$T/ro.png"' "render --gl osmesa --require-gpu refused (rc $rc: $(head -c 200 "$T/ro.err"))"
 fi
 if [ "$WITH_GLFW" = 1 ] && command -v xvfb-run > /dev/null; then
-  xvfb-run -a -s "-screen 0 320x240x24" "$BIN" view "$scene" --require-gpu --frames 1 -W 64 -H 64 > /dev/null 2> "$T/rv.err"; rc=$?
+  # tests/xvfb.sh: the viewer's own stderr and status, not xvfb-run's
+  bash "$SRC/tests/xvfb.sh" 320x240x24 "$BIN" view "$scene" --require-gpu --frames 1 -W 64 -H 64 > /dev/null 2> "$T/rv.err"; rc=$?
   check 'refused "$T/rv.err" --require-gpu "$T/none"' "view --require-gpu refuses its GLFW window's llvmpipe (rc $rc: $(head -c 200 "$T/rv.err"))"
 elif [ "$WITH_GLFW" = 1 ]; then
   echo "skip view --require-gpu: xvfb-run not installed"

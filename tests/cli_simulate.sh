@@ -35,6 +35,8 @@ expect_bad no_pattern "%d" dam_break --frames 2 -o "$T/o_.bgeo"
 expect_bad bad_format "format" dam_break -o "$T/o_%04d.xyz"
 expect_bad missing_dir "$T/nodir" dam_break -o "$T/nodir/o_%04d.vtk"
 expect_bad unknown_option "--bogus" dam_break --bogus $o
+expect_bad period_without_shake "--shake-period needs --shake" pool --shake-period 0.5 $o
+expect_bad zero_shake "--shake" pool --shake 0 $o
 echo '{"box": [1, 1, 0.5], "fluid": [{"min": [0, 0, 0]}]}' > "$T/bad_region.json"
 echo '{"box": [1, 1, 0.5], "fluids": []}' > "$T/bad_key.json"
 echo '{"box": [1, 1, 0.5], "fluid": [{"min": [2, 2, 2], "max": [3, 3, 3]}]}' > "$T/outside.json"
@@ -64,6 +66,17 @@ if "$BIN" simulate "$T/ok.json" --frames 1 -q -o "$T/j_%d.bgeo" && "$BIN" info "
   echo "ok   json_scene"
 else
   echo "FAIL json_scene"; fails=$((fails + 1))
+fi
+# --shake: the walls move the water. A pool at rest keeps almost no kinetic energy over 3
+# frames; shaken by 5 cm with a 0.2 s period it gains over 20 times as much (measured: 143x).
+ke() { awk -F, '$1 == "3" {print $16}' "$1"; }
+if "$BIN" simulate pool --particles 1000 --frames 3 -q --stats "$T/still.csv" &&
+   "$BIN" simulate pool --particles 1000 --frames 3 -q --shake 0.05 --shake-period 0.2 --stats "$T/shaken.csv" &&
+   grep -q " shake=0.05; shake_period=0.2;" "$T/shaken.csv" &&
+   awk -v a="$(ke "$T/still.csv")" -v b="$(ke "$T/shaken.csv")" 'BEGIN {exit !(a != "" && b > 20 * a)}'; then
+  echo "ok   shake: kinetic energy at frame 3 $(ke "$T/still.csv") still, $(ke "$T/shaken.csv") shaken"
+else
+  echo "FAIL shake: kinetic energy at frame 3 '$(ke "$T/still.csv")' still, '$(ke "$T/shaken.csv")' shaken"; fails=$((fails + 1))
 fi
 "$BIN" simulate --help | grep -q "usage: fluidsurf simulate" || { echo "FAIL help"; fails=$((fails + 1)); }
 echo "$fails failure(s)"

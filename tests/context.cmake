@@ -15,7 +15,7 @@ target_compile_definitions(test_context_glfw PRIVATE FS_TEST_DATA="${CMAKE_SOURC
 set(_ctx_lsan "${FS_TEST_ENV}")
 # OSMesa, a GLFW window (GLX on Xvfb) and EGL render the same block; OSMesa survives the switches.
 add_test(NAME test_context_glfw
-  COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" $<TARGET_FILE:test_context_glfw>)
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/xvfb.sh 1024x768x24 $<TARGET_FILE:test_context_glfw>)
 set_tests_properties(test_context_glfw PROPERTIES TIMEOUT 60 ENVIRONMENT "${_ctx_lsan}")
 # No display and no EGL vendor: GLFW and EGL fail with one line each, OSMesa keeps working.
 add_test(NAME test_context_failures COMMAND test_context_glfw --expect-failures)

@@ -22,7 +22,7 @@ run compare "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache -o "$T/compare"
 run counters "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache --counters -o "$T/counters"
 run simulate "$BIN" simulate dam_break --gpu --particles 500 --frames 1 -q -o "$T/sim_%04d.ply"
 if [ "$VIEW" = view ]; then
-  run view xvfb-run -a -s "-screen 0 320x240x24" "$BIN" view --simulate dam_break --gpu --particles 500 \
+  run view bash "$SRC/tests/xvfb.sh" 320x240x24 "$BIN" view --simulate dam_break --gpu --particles 500 \
     -W 64 -H 64 --frames 2
 fi
 python3 "$SRC/tests/glsl_validate.py" "$SRC" "$T/dump" || fails=$((fails + 1))

@@ -42,8 +42,15 @@ static unsigned char *load_reference(const char *path, int *w, int *h)
     for (size_t i = 0; out && i < n; i++) {
         const float *p = ref.pix + i * ref.nch;
         float v[4];
-        if (ref.nch >= 3) { v[0] = p[0]; v[1] = p[1]; v[2] = p[2]; v[3] = ref.nch >= 4 ? p[3] : 1.0f; }
-        else { v[0] = v[1] = v[2] = p[0]; v[3] = ref.nch == 2 ? p[1] : 1.0f; }
+        if (ref.nch >= 3) {
+            v[0] = p[0];
+            v[1] = p[1];
+            v[2] = p[2];
+            v[3] = ref.nch >= 4 ? p[3] : 1.0f;
+        } else {
+            v[0] = v[1] = v[2] = p[0];
+            v[3] = ref.nch == 2 ? p[1] : 1.0f;
+        }
         for (int c = 0; c < 4; c++) out[4 * i + c] = (unsigned char)lrintf(fminf(fmaxf(v[c], 0.0f), 1.0f) * 255.0f);
     }
     *w = ref.w;
@@ -65,8 +72,7 @@ static int write_reference(const char *path, const unsigned char *px, int w, int
     return 0;
 }
 
-static void write_failure_images(const char *name, const unsigned char *out, const unsigned char *ref,
-                                 int w, int h)
+static void write_failure_images(const char *name, const unsigned char *out, const unsigned char *ref, int w, int h)
 {
     char out_path[1024], diff_path[1024];
     snprintf(out_path, sizeof out_path, "%s/%s.out.png", FS_TEST_OUT, name);
@@ -89,15 +95,18 @@ static void write_failure_images(const char *name, const unsigned char *out, con
     free(diff);
 }
 
-int fs_golden_check(const char *name, const float *rgba_linear, int w, int h,
-                    double max_mean_abs, double max_pixel_frac)
+int fs_golden_check(const char *name, const float *rgba_linear, int w, int h, double max_mean_abs,
+                    double max_pixel_frac)
 {
     char ref_path[1024];
     snprintf(ref_path, sizeof ref_path, "%s/%s.png", golden_dir(), name);
     const char *upd = getenv("FS_UPDATE_GOLDEN");
     int update = upd && strcmp(upd, "1") == 0;
     unsigned char *out = encode(rgba_linear, w, h);
-    if (!out) { fprintf(stderr, "golden: %s: out of memory\n", name); return 1; }
+    if (!out) {
+        fprintf(stderr, "golden: %s: out of memory\n", name);
+        return 1;
+    }
 
     struct stat st;
     if (update || stat(ref_path, &st) != 0) {

@@ -11,7 +11,7 @@
 #ifndef FS_GOLDEN_H
 #define FS_GOLDEN_H
 
-int fs_golden_check(const char *name, const float *rgba_linear, int w, int h,
-                    double max_mean_abs, double max_pixel_frac);
+int fs_golden_check(const char *name, const float *rgba_linear, int w, int h, double max_mean_abs,
+                    double max_pixel_frac);
 
 #endif

@@ -64,8 +64,8 @@ static void c_vs_glsl(void)
         for (int k = 0; k < 9; k++) emax = fmax(emax, fabs(Ag[k] - Ac[k]));
         for (int k = 0; k < 3; k++) cmax = fmax(cmax, fabs(cg[k] - cc[k]) / R_);
     }
-    printf("(a) C vs GLSL on %zu particles: max |A| diff %.2e, max centre diff %.2e r, count mismatches %d\n", p.n, emax,
-           cmax, nbad);
+    printf("(a) C vs GLSL on %zu particles: max |A| diff %.2e, max centre diff %.2e r, count mismatches %d\n", p.n,
+           emax, cmax, nbad);
     CHECK(emax < 2e-3, "stretch matrices differ by %g", emax);
     CHECK(cmax < 1e-4, "centres differ by %g r", cmax);
     CHECK(nbad <= (int)p.n / 100, "%d neighbour counts differ", nbad);
@@ -89,7 +89,10 @@ static double ray_ellipsoid(const float o[3], const float d[3], const float c[3]
     double q[3], pp[3];
     for (int i = 0; i < 3; i++) {
         q[i] = pp[i] = 0;
-        for (int j = 0; j < 3; j++) { q[i] += inv[3 * i + j] * d[j]; pp[i] += inv[3 * i + j] * (o[j] - c[j]); }
+        for (int j = 0; j < 3; j++) {
+            q[i] += inv[3 * i + j] * d[j];
+            pp[i] += inv[3 * i + j] * (o[j] - c[j]);
+        }
     }
     double qq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2], qp = q[0] * pp[0] + q[1] * pp[1] + q[2] * pp[2];
     double h = qp * qp - qq * (pp[0] * pp[0] + pp[1] * pp[1] + pp[2] * pp[2] - 1);
@@ -125,13 +128,17 @@ static void sprite_depth(void)
             for (size_t i = 0; i < p.n; i++) t = fmin(t, ray_ellipsoid(cam.eye, d, c + 3 * i, A + 9 * i));
             size_t id = (size_t)y * 96 + x;
             int cpu = isfinite(t), gpu = gb.coverage[id] > 0;
-            if (cpu != gpu) { only++; continue; }
+            if (cpu != gpu) {
+                only++;
+                continue;
+            }
             if (!cpu) continue;
             both++;
             emax = fmax(emax, fabs(t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]) - gb.depth[id]) / R_);
         }
     printf("(b) ellipsoid sprites vs CPU ray-ellipsoid: %d px both, %d px one only, max depth diff %.2e r, "
-           "mean z-stretch %.3f\n", both, only, emax, s0 / p.n);
+           "mean z-stretch %.3f\n",
+           both, only, emax, s0 / p.n);
     CHECK(s0 / p.n < 0.7, "the patch's particles are not flattened (mean z stretch %g)", s0 / p.n);
     CHECK(both > 1000, "only %d pixels", both);
     CHECK(only <= both / 100, "%d pixels covered by one side only", only);
@@ -161,7 +168,8 @@ static void filters(void)
         const char *sets[] = {set, NULL};
         fs_stages st = {0};
         fs_gbuffer_alloc(&gb[k], 128, 128);
-        CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k], fs_error_message());
+        CHECK(fs_test_render("aniso_ssf", sets, &p, field(), &cam, &gb[k], &st) == FS_OK, "%s: %s", names[k],
+              fs_error_message());
         const char *want[] = {"anisotropy", "splat", "filter", "normals", "thickness", "readback", NULL};
         const char *missing = fs_test_missing_stage(&st, want);
         CHECK(!missing, "%s: stage %s not reported", names[k], missing);
@@ -173,11 +181,14 @@ static void filters(void)
             cov_diff += gb[k].coverage[i] != gb[0].coverage[i];
             if (!gb[k].coverage[i]) continue;
             bad += !(isfinite(gb[k].depth[i]) && gb[k].depth[i] > 0);
-            if (gb[0].coverage[i]) { change += fabs(gb[k].depth[i] - gb[0].depth[i]); n++; }
+            if (gb[0].coverage[i]) {
+                change += fabs(gb[k].depth[i] - gb[0].depth[i]);
+                n++;
+            }
         }
         change = n ? change / n / R_ : 0;
-        printf("(c) %s: mean |depth change| %.3f r, coverage changed at %d px, bad depths %d\n", names[k], change, cov_diff,
-               bad);
+        printf("(c) %s: mean |depth change| %.3f r, coverage changed at %d px, bad depths %d\n", names[k], change,
+               cov_diff, bad);
         CHECK(change > 0.01, "%s does not change the depth (%g r)", names[k], change);
         CHECK(cov_diff == 0, "%s changes the coverage at %d px (holes)", names[k], cov_diff);
         CHECK(bad == 0, "%s leaves %d non-finite or non-positive depths", names[k], bad);
@@ -201,7 +212,8 @@ static void filters(void)
     printf("(c) sloped slab, %d px >= 12 px from a silhouette: mean depth change gaussian %+.3f r, narrow %+.3f r\n", m,
            dg, dn);
     CHECK(m > 1000, "only %d pixels away from the silhouettes", m);
-    CHECK(dn - dg > -0.3 && dn - dg < 0.4, "narrow-range moves a sloped surface by %+.3f r against the Gaussian", dn - dg);
+    CHECK(dn - dg > -0.3 && dn - dg < 0.4, "narrow-range moves a sloped surface by %+.3f r against the Gaussian",
+          dn - dg);
     free(in);
     for (int k = 0; k < 5; k++) fs_gbuffer_free(&gb[k]);
     fs_particles_free(&p);
@@ -222,7 +234,10 @@ static double edge_change(const fs_gbuffer *a, const fs_gbuffer *b, float split,
             for (int dy = -4; dy <= 4 && !other; dy++)
                 for (int dx = -4; dx <= 4; dx++) {
                     int j = i + dy * 128 + dx;
-                    if (a->coverage[j] && (a->depth[j] < split) != near) { other = 1; break; }
+                    if (a->coverage[j] && (a->depth[j] < split) != near) {
+                        other = 1;
+                        break;
+                    }
                 }
             if (!other) continue;
             sum += b->depth[i] - a->depth[i];
@@ -269,10 +284,11 @@ static void narrow_discontinuity(void)
     double g_far = edge_change(&gb[0], &gb[1], split, 0, &nf), g_near = edge_change(&gb[0], &gb[1], split, 1, &nn);
     double n_far = edge_change(&gb[0], &gb[2], split, 0, &nf), n_near = edge_change(&gb[0], &gb[2], split, 1, &nn);
     printf("(f) depth step of 20 r: mean depth change beside the step, far side (%d px) gaussian %+.2f r, narrow "
-           "%+.2f r; near side (%d px) gaussian %+.2f r, narrow %+.2f r\n", nf, g_far, n_far, nn, g_near, n_near);
+           "%+.2f r; near side (%d px) gaussian %+.2f r, narrow %+.2f r\n",
+           nf, g_far, n_far, nn, g_near, n_near);
     CHECK(nf > 100 && nn > 100, "too few pixels beside the step (%d far, %d near)", nf, nn);
-    CHECK(g_far < -2.0 && g_near > 2.0, "the Gaussian does not smear the step (%+.2f r, %+.2f r): the scene tests nothing",
-          g_far, g_near);
+    CHECK(g_far < -2.0 && g_near > 2.0,
+          "the Gaussian does not smear the step (%+.2f r, %+.2f r): the scene tests nothing", g_far, g_near);
     CHECK(n_far > -0.25, "narrow-range pulls the far surface towards the near one by %.2f r", -n_far);
     CHECK(n_near > -0.25 && n_near < 1.5, "narrow-range moves the near rim by %+.2f r (mu = r)", n_near);
     for (int k = 0; k < 3; k++) fs_gbuffer_free(&gb[k]);
@@ -341,7 +357,10 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     c_vs_glsl();
     sprite_depth();
     filters();

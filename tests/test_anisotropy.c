@@ -24,7 +24,10 @@ static size_t nearest(const fs_particles *p, float x, float y, float z)
     float bd = INFINITY;
     for (size_t i = 0; i < p->n; i++) {
         float d = (p->x[i] - x) * (p->x[i] - x) + (p->y[i] - y) * (p->y[i] - y) + (p->z[i] - z) * (p->z[i] - z);
-        if (d < bd) { bd = d; best = i; }
+        if (d < bd) {
+            bd = d;
+            best = i;
+        }
     }
     return best;
 }
@@ -73,7 +76,9 @@ int main(void)
     CHECK(fs_synthetic_generate(&s, 0, &q) == FS_OK && fs_grid_build(&gq, &q, 4 * r) == FS_OK, "lattice");
     float cen[3], B[9], x[3];
     size_t m2 = nearest(&q, cx, cy, cz);
-    x[0] = q.x[m2]; x[1] = q.y[m2]; x[2] = q.z[m2];
+    x[0] = q.x[m2];
+    x[1] = q.y[m2];
+    x[2] = q.z[m2];
     int nn = fs_aniso_point(&gq, x, &gl, cen, B);
     printf("lattice bulk: %d neighbours, diag %.4f %.4f %.4f\n", nn, B[0], B[4], B[8]);
     for (int k = 0; k < 3; k++) CHECK_NEAR(B[4 * k], 1.0, 1e-3, "bulk lattice stretch");
@@ -81,7 +86,11 @@ int main(void)
     /* A small cluster (7 particles): at or below n_eps, so A = I and the centre stays. */
     fs_particles few;
     fs_particles_alloc(&few, 7, 0);
-    for (int i = 0; i < 7; i++) { few.x[i] = (i % 3) * 2 * r; few.y[i] = (i / 3) * 2 * r; few.z[i] = 0; }
+    for (int i = 0; i < 7; i++) {
+        few.x[i] = (i % 3) * 2 * r;
+        few.y[i] = (i / 3) * 2 * r;
+        few.z[i] = 0;
+    }
     fs_particles_bounds(&few);
     fs_grid gf;
     CHECK(fs_grid_build(&gf, &few, 4 * r) == FS_OK, "few grid");

@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct toy_params { double a, b; } toy_params;
+typedef struct toy_params {
+    double a;
+    int b;
+} toy_params;
 #define FIELD(f) FS_PARAM_FIELD(toy_params, f)
 static const fs_param_def toy_defs[] = {
     {FIELD(a), FS_PARAM_FLOAT, 1.0, 0, 10, NULL, "a"},
@@ -15,8 +18,8 @@ static const fs_param_def toy_defs[] = {
 };
 static const fs_aov_def toy_color[] = {{"color", 4, 1}};
 static const fs_method toy = {.name = "toy", .params = toy_defs, .nparams = 2, .params_size = sizeof(toy_params)};
-static const fs_method toy_c = {.name = "toy", .params = toy_defs, .nparams = 2, .params_size = sizeof(toy_params),
-                                .aovs = toy_color, .naovs = 1};
+static const fs_method toy_c = {
+    .name = "toy", .params = toy_defs, .nparams = 2, .params_size = sizeof(toy_params), .aovs = toy_color, .naovs = 1};
 
 static fs_digest digest_in_pieces(const unsigned char *d, size_t n, size_t piece)
 {
@@ -33,7 +36,8 @@ static void test_hash(void)
     fs_digest whole = digest_in_pieces(d, sizeof d, sizeof d);
     const size_t pieces[] = {1, 3, 7, 31, 32, 33, 64, 999};
     for (size_t k = 0; k < sizeof pieces / sizeof *pieces; k++)
-        CHECK(fs_digest_equal(whole, digest_in_pieces(d, sizeof d, pieces[k])), "pieces of %zu give another digest", pieces[k]);
+        CHECK(fs_digest_equal(whole, digest_in_pieces(d, sizeof d, pieces[k])), "pieces of %zu give another digest",
+              pieces[k]);
     /* every length and every single-bit change gives another digest */
     fs_digest prev = digest_in_pieces(d, 0, 1);
     for (size_t n = 1; n <= 70; n++) {
@@ -43,14 +47,20 @@ static void test_hash(void)
     }
     for (int bit = 0; bit < 8 * 40; bit++) {
         d[bit / 8] ^= (unsigned char)(1u << (bit % 8));
-        CHECK(!fs_digest_equal(whole, digest_in_pieces(d, sizeof d, sizeof d)), "flipping bit %d keeps the digest", bit);
+        CHECK(!fs_digest_equal(whole, digest_in_pieces(d, sizeof d, sizeof d)), "flipping bit %d keeps the digest",
+              bit);
         d[bit / 8] ^= (unsigned char)(1u << (bit % 8));
     }
     unsigned char zeros[33] = {0};
-    CHECK(!fs_digest_equal(digest_in_pieces(zeros, 32, 32), digest_in_pieces(zeros, 33, 33)), "trailing zero byte ignored");
+    CHECK(!fs_digest_equal(digest_in_pieces(zeros, 32, 32), digest_in_pieces(zeros, 33, 33)),
+          "trailing zero byte ignored");
     fs_hash a, b;
-    fs_hash_init(&a); fs_hash_str(&a, "ab"); fs_hash_str(&a, "c");
-    fs_hash_init(&b); fs_hash_str(&b, "a"); fs_hash_str(&b, "bc");
+    fs_hash_init(&a);
+    fs_hash_str(&a, "ab");
+    fs_hash_str(&a, "c");
+    fs_hash_init(&b);
+    fs_hash_str(&b, "a");
+    fs_hash_str(&b, "bc");
     CHECK(!fs_digest_equal(fs_hash_digest(&a), fs_hash_digest(&b)), "strings are not delimited");
     char hex[FS_DIGEST_HEX];
     fs_digest_hex(whole, hex);
@@ -71,15 +81,27 @@ static fs_digest key_of(const fs_method *m, const key_input *in)
 
 static void test_key(void)
 {
-    key_input in = {{1.0, 2}, {0.025f, 1e-4f, FS_KERNEL_CUBIC, 0.1f, 0.6f}, {{1, 2, 3}, {0, 0, 0}, {0, 1, 0}, 40, 128, 128, 0.1f, 10}, {0}};
+    key_input in = {{1.0, 2},
+                    {0.025f, 1e-4f, FS_KERNEL_CUBIC, 0.1f, 0.6f},
+                    {{1, 2, 3}, {0, 0, 0}, {0, 1, 0}, 40, 128, 128, 0.1f, 10},
+                    {0}};
     CHECK(fs_particles_alloc(&in.p, 5, FS_HAS_COLOR) == 0, "alloc");
-    for (int i = 0; i < 5; i++) { in.p.x[i] = 0.05f * i; in.p.y[i] = 0.01f; in.p.z[i] = -0.02f * i; }
+    for (int i = 0; i < 5; i++) {
+        in.p.x[i] = 0.05f * i;
+        in.p.y[i] = 0.01f;
+        in.p.z[i] = -0.02f * i;
+    }
     fs_digest k0 = key_of(&toy, &in);
     CHECK(fs_digest_equal(k0, key_of(&toy, &in)), "the key is not reproducible");
     /* change one thing at a time, check the key changes, put it back */
-#define CHANGES(field, v) do { __typeof__(in.field) keep = in.field; in.field = v; \
-        CHECK(!fs_digest_equal(k0, key_of(&toy, &in)), "changing " #field " keeps the key"); in.field = keep; \
-        CHECK(fs_digest_equal(k0, key_of(&toy, &in)), "restoring " #field " changes the key"); } while (0)
+#define CHANGES(field, v)                                                                                              \
+    do {                                                                                                               \
+        __typeof__(in.field) keep = in.field;                                                                          \
+        in.field = v;                                                                                                  \
+        CHECK(!fs_digest_equal(k0, key_of(&toy, &in)), "changing " #field " keeps the key");                           \
+        in.field = keep;                                                                                               \
+        CHECK(fs_digest_equal(k0, key_of(&toy, &in)), "restoring " #field " changes the key");                         \
+    } while (0)
     CHANGES(values[0], 1.5);
     CHANGES(values[1], 3);
     CHANGES(f.r, 0.026f);

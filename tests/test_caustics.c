@@ -76,7 +76,8 @@ static void test_surfel_set(void)
     }
     CHECK(set.n == 5000 && set.cap >= 5000, "n %zu cap %zu", set.n, set.cap);
     CHECK(set.s[4321].pos[0] == 4321.0f && set.s[4321].normal[1] == 1.0f && set.s[4321].radius == 0.5f &&
-          set.s[4321].pad == 0.0f, "stored surfel");
+              set.s[4321].pad == 0.0f,
+          "stored surfel");
     CHECK(sizeof(fs_surfel) == 32, "layout: two vec4");
     fs_surfel_set_free(&set);
     CHECK(set.n == 0 && set.s == NULL, "freed");
@@ -99,8 +100,8 @@ static void test_flat(fs_caustics *c)
     clock_gettime(CLOCK_MONOTONIC, &t0);
     CHECK(fs_caustics_run(c, &s, buf, set.n) == FS_OK, "run: %s", fs_error_message());
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    printf("flat slab, %zu surfels, screen %d^2, %d planes of %d^2: first run %.1f ms (%s)\n", set.n, s.screen_res, s.nplanes,
-           s.plane_res, (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6,
+    printf("flat slab, %zu surfels, screen %d^2, %d planes of %d^2: first run %.1f ms (%s)\n", set.n, s.screen_res,
+           s.nplanes, s.plane_res, (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6,
            (const char *)glGetString(GL_RENDERER));
     double T0 = fs_caustics_transmittance(1.0, IOR);
     CHECK_NEAR(T0, 1.0 - pow((IOR - 1) / (IOR + 1), 2), 1e-9, "T(0)");
@@ -127,8 +128,9 @@ static void test_flat(fs_caustics *c)
         }
     const float *mid = map_at(c, &s, 0, s.plane_res / 2, s.plane_res / 2);
     printf("(a) flat slab: floor centre %.5f %.5f %.5f, want %.5f %.5f %.5f; worst interior error floor %.3f%%, "
-           "plane y=0.5 %.3f%% (%d texels)\n", mid[0], mid[1], mid[2], T0 * exp(-cext[0]), T0 * exp(-cext[1]),
-           T0 * exp(-cext[2]), 100 * worst[0], 100 * worst[1], nint);
+           "plane y=0.5 %.3f%% (%d texels)\n",
+           mid[0], mid[1], mid[2], T0 * exp(-cext[0]), T0 * exp(-cext[1]), T0 * exp(-cext[2]), 100 * worst[0],
+           100 * worst[1], nint);
     CHECK(worst[0] < 0.05 && worst[1] < 0.05, "interior irradiance off by %g / %g", worst[0], worst[1]);
     printf("(c) outside the water's shadow: %d of %d texels per plane not exactly 0\n", dark_bad, nout);
     CHECK(dark_bad == 0, "%d texels lit outside the shadow", dark_bad);
@@ -137,11 +139,13 @@ static void test_flat(fs_caustics *c)
     clock_gettime(CLOCK_MONOTONIC, &t0);
     CHECK(fs_caustics_run(c, &s, buf, set.n) == FS_OK, "run: %s", fs_error_message());
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    printf("    second run (shaders compiled): %.1f ms\n", (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6);
+    printf("    second run (shaders compiled): %.1f ms\n",
+           (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6);
     double fin = fs_caustics_flux_in(c), f0 = fs_caustics_flux_plane(c, 0), f1 = fs_caustics_flux_plane(c, 1);
     double side = 2.0 + 2 * 1.2 * 0.04; /* the water's shadow: the lattice plus the disks' rims */
     printf("(d) flat, no extinction: %zu volumes, flux in %.6f, floor %.6f (ratio %.6f), plane y=0.5 %.6f (%.6f); "
-           "T(0) x area %.6f\n", fs_caustics_triangles(c), fin, f0, f0 / fin, f1, f1 / fin, T0 * side * side);
+           "T(0) x area %.6f\n",
+           fs_caustics_triangles(c), fin, f0, f0 / fin, f1, f1 / fin, T0 * side * side);
     CHECK(fabs(f0 / fin - 1) < 0.01 && fabs(f1 / fin - 1) < 0.01, "flux balance %g %g", f0 / fin, f1 / fin);
     CHECK(fabs(fin / (T0 * side * side) - 1) < 0.03, "flux in %g vs the water's area x T(0) %g", fin, T0 * side * side);
     /* screen 64^2, planes 128^2: every triangle edge lies on texel edges (counted once?) */
@@ -155,7 +159,8 @@ static void test_flat(fs_caustics *c)
             if (fmaxf(fabsf(z), fabsf(x)) < 0.85f) worst2 = fmax(worst2, fabs(map_at(c, &s, 0, u, v)[1] / T0 - 1));
         }
     double r2 = fs_caustics_flux_plane(c, 0) / fs_caustics_flux_in(c);
-    printf("    screen 64^2 on planes 128^2 (edges on texel edges): worst interior error %.2e, flux ratio %.6f\n", worst2, r2);
+    printf("    screen 64^2 on planes 128^2 (edges on texel edges): worst interior error %.2e, flux ratio %.6f\n",
+           worst2, r2);
     CHECK(worst2 < 1e-4 && fabs(r2 - 1) < 1e-4, "edges on texel edges: %g, ratio %g", worst2, r2);
     glDeleteBuffers(1, &buf);
     fs_surfel_set_free(&set);
@@ -221,7 +226,8 @@ static double exact_centre(double h, double half)
 /* The whole map against the exact one (texel means from 4x4 samples of a
  * radial table) over texels within radius rmax of the axis: max and RMS of the
  * relative error. Stripes or speckle would show here. */
-static void map_error(const fs_caustics *c, const fs_caustics_setup *s, int plane, double rmax, double *emax, double *erms)
+static void map_error(const fs_caustics *c, const fs_caustics_setup *s, int plane, double rmax, double *emax,
+                      double *erms)
 {
     enum { NT = 2048 };
     static double tab[NT + 1];
@@ -294,16 +300,18 @@ static void test_bump(fs_caustics *c)
         float flat_v = map_at(c, &s, k, n / 2, n / 2 + (int)(1.1f / 3.0f * n))[1]; /* x = 1.1: flat water */
         double want = exact_centre(s.plane_height[k], 3.0 / n);
         printf("(b) bump, plane y=%.1f: flat %.4f (T(0) %.4f), centre %.4f = %.3f x flat (exact %.4f: %+.2f%%), max "
-               "%.4f = %.3f x flat; flux in %.5f, on plane %.5f (ratio %.6f)\n", s.plane_height[k], flat_v, T0, centre,
-               centre / flat_v, want, 100 * (centre / want - 1), kmax, kmax / flat_v, fs_caustics_flux_in(c),
-               fs_caustics_flux_plane(c, k), fs_caustics_flux_plane(c, k) / fs_caustics_flux_in(c));
+               "%.4f = %.3f x flat; flux in %.5f, on plane %.5f (ratio %.6f)\n",
+               s.plane_height[k], flat_v, T0, centre, centre / flat_v, want, 100 * (centre / want - 1), kmax,
+               kmax / flat_v, fs_caustics_flux_in(c), fs_caustics_flux_plane(c, k),
+               fs_caustics_flux_plane(c, k) / fs_caustics_flux_in(c));
         CHECK(fabs(flat_v / T0 - 1) < 1e-3, "flat part %g", flat_v);
         CHECK(kmax > 1.5 * flat_v, "no focusing: max %g flat %g", kmax, flat_v);
         CHECK(fabs(centre / want - 1) < 0.06, "centre %g, exact %g", centre, want);
         CHECK(fabs(fs_caustics_flux_plane(c, k) / fs_caustics_flux_in(c) - 1) < 0.01, "flux balance");
         double emax, erms;
         map_error(c, &s, k, 1.2, &emax, &erms);
-        printf("    whole map within r < 1.2 against the exact one: max error %.2f%%, rms %.3f%%\n", 100 * emax, 100 * erms);
+        printf("    whole map within r < 1.2 against the exact one: max error %.2f%%, rms %.3f%%\n", 100 * emax,
+               100 * erms);
         CHECK(emax < 0.08 && erms < 0.01, "map error max %g rms %g", emax, erms);
     }
     /* tone: linear, the maximum white */
@@ -388,7 +396,8 @@ static void test_oblique(fs_caustics *c)
     int u0 = (int)((z0 + 2.0f) / 4.0f * n), v0 = (int)((x0 + 2.0f) / 4.0f * n);
     double centre = map_at(c, &s, 0, u0, v0)[1];
     printf("(e) oblique 30 deg: lit patch centroid z %.4f x %.4f, want %.4f 0; irradiance %.4f, want cos T = %.4f; "
-           "flux ratio %.5f\n", cz, cx, -tt, centre, want, fs_caustics_flux_plane(c, 0) / fs_caustics_flux_in(c));
+           "flux ratio %.5f\n",
+           cz, cx, -tt, centre, want, fs_caustics_flux_plane(c, 0) / fs_caustics_flux_in(c));
     CHECK(fabs(cz + tt) < 0.01 && fabs(cx) < 0.01, "patch centroid (%g, %g)", cz, cx);
     CHECK(fabs(centre / want - 1) < 0.02, "oblique irradiance %g vs %g", centre, want);
     CHECK(fabs(fs_caustics_flux_plane(c, 0) / fs_caustics_flux_in(c) - 1) < 0.01, "oblique flux balance");
@@ -454,7 +463,10 @@ static void test_bad(fs_caustics *c)
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     test_surfel_set();
     fs_caustics *c = fs_caustics_create();
     CHECK(c != NULL, "create: %s", fs_error_message());

@@ -104,10 +104,11 @@ static void compare(const char *what, const fs_gbuffer *a, const fs_gbuffer *b)
             if (!(t <= thick_rel)) thick_rel = t;
         }
     printf("%s: %d pixels both cover, %d flipped (%d off the silhouette), depth %.2g rel, normal %.2g, "
-           "thickness %.2g rel\n", what, both, flipped, inner_flips, depth_rel, normal, thick_rel);
+           "thickness %.2g rel\n",
+           what, both, flipped, inner_flips, depth_rel, normal, thick_rel);
     CHECK(both > SIZE * SIZE / 8, "%s: only %d pixels covered by both", what, both);
-    CHECK(flipped <= 8 && inner_flips == 0, "%s: coverage differs at %d pixels (%d off the silhouette)", what,
-          flipped, inner_flips);
+    CHECK(flipped <= 8 && inner_flips == 0, "%s: coverage differs at %d pixels (%d off the silhouette)", what, flipped,
+          inner_flips);
     CHECK(depth_rel <= 1e-4, "%s: depth differs by %g relative", what, depth_rel);
     CHECK(normal <= 1e-3, "%s: normal differs by %g", what, normal);
     CHECK(thick_rel <= 1e-3, "%s: thickness differs by %g relative", what, thick_rel);
@@ -118,8 +119,7 @@ static void check_identical(const char *what, const fs_gbuffer *a, const fs_gbuf
 {
     size_t n = (size_t)SIZE * SIZE;
     int same = !memcmp(a->coverage, b->coverage, n * sizeof(float)) && !memcmp(a->depth, b->depth, n * sizeof(float)) &&
-               !memcmp(a->normal, b->normal, 3 * n * sizeof(float)) &&
-               !memcmp(a->thickness, b->thickness, n * sizeof(float));
+        !memcmp(a->normal, b->normal, 3 * n * sizeof(float)) && !memcmp(a->thickness, b->thickness, n * sizeof(float));
     printf("%s: %s\n", what, same ? "identical to the first OSMesa render" : "DIFFERS");
     CHECK(same, "%s: the G-buffer differs from the first OSMesa render", what);
     CHECK(covered_count(b) == covered_count(a), "%s: %d covered pixels, first render had %d", what, covered_count(b),

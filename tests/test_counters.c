@@ -20,8 +20,8 @@ static uint64_t count_of(const fs_stages *st, const char *stage, int c)
 
 static void test_names(void)
 {
-    const char *want[] = {"field_evals",  "neighbours_visited", "march_samples",        "fragments_shaded",
-                          "filter_taps",  "texels_written",     "crossings",            "cells_walked",
+    const char *want[] = {"field_evals",   "neighbours_visited",   "march_samples",       "fragments_shaded",
+                          "filter_taps",   "texels_written",       "crossings",           "cells_walked",
                           "cells_marched", "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
                           "refine_evals",  "inside_evals"};
     CHECK(FS_NCOUNTERS == 14, "%d counters", FS_NCOUNTERS);
@@ -92,8 +92,8 @@ static void test_text(void)
     fs_counting_set(0);
     char text[640];
     CHECK(fs_stage_counts_format(&st, text, sizeof text) == FS_OK, "format");
-    CHECK(!strcmp(text, "1:march=0,0,123456789012345,0,0,0,0,0,0,0,0,0,0,0;bounds=9,0,0,0,0,0,0,0,0,0,0,0,0,0"), "text: %s",
-          text);
+    CHECK(!strcmp(text, "1:march=0,0,123456789012345,0,0,0,0,0,0,0,0,0,0,0;bounds=9,0,0,0,0,0,0,0,0,0,0,0,0,0"),
+          "text: %s", text);
     CHECK(fs_stage_counts_parse(text, &back) == FS_OK && back.n == 2, "parse");
     CHECK(!strcmp(back.name[1], "bounds") && !memcmp(back.count, st.count, sizeof st.count), "read back");
     CHECK(fs_stage_counts_parse("", &back) != FS_OK, "empty text is no counts");
@@ -102,28 +102,29 @@ static void test_text(void)
     CHECK(fs_stage_counts_parse("2:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14", &back) != FS_OK, "another format");
     CHECK(fs_stage_counts_format(&st, text, 20) != FS_OK, "too long for the buffer");
     /* strict: exactly the format, digits only, below 2^64 */
-    const char *bad[] = {"1:",
-                         "1:;",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;;",
-                         "1:=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=-1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march= 1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=+1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14 ",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15",
-                         "1:march=1,,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=01,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=18446744073709551616,0,0,0,0,0,0,0,0,0,0,0,0,0",
-                         "1:march=99999999999999999999,0,0,0,0,0,0,0,0,0,0,0,0,0",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;march=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14x",
-                         "1:a,b=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-                         "1:a=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=1,0,0,0,0,0,0,0,0,0,0,0,0,0" /* the total would wrap */};
+    const char *bad[] = {
+        "1:",
+        "1:;",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;;",
+        "1:=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=-1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march= 1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=+1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14 ",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15",
+        "1:march=1,,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=01,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=18446744073709551616,0,0,0,0,0,0,0,0,0,0,0,0,0",
+        "1:march=99999999999999999999,0,0,0,0,0,0,0,0,0,0,0,0,0",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;march=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14x",
+        "1:a,b=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
+        "1:a=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=1,0,0,0,0,0,0,0,0,0,0,0,0,0" /* the total would wrap */};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
         CHECK(fs_stage_counts_parse(bad[i], &back) == FS_ERR_INPUT, "rejects '%s'", bad[i]);
-    CHECK(fs_stage_counts_parse("1:march=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=0,0,0,0,0,0,0,0,0,0,0,0,0,1", &back) ==
-                  FS_OK &&
+    CHECK(fs_stage_counts_parse("1:march=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=0,0,0,0,0,0,0,0,0,0,0,0,0,1",
+                                &back) == FS_OK &&
               back.count[0][0] == UINT64_MAX && back.count[1][13] == 1 && back.n == 2,
           "2^64 - 1 and a second stage read back");
 }
@@ -169,12 +170,13 @@ static void test_totals(void)
  * stay pending for fs_run_count to refuse. */
 static void test_never_dropped(void)
 {
-    static const char *const names[FS_MAX_STAGES + 1] = {"s0", "s1", "s2",  "s3",  "s4",  "s5",  "s6",  "s7", "s8",
+    static const char *const names[FS_MAX_STAGES + 1] = {"s0", "s1",  "s2",  "s3",  "s4",  "s5",  "s6",  "s7", "s8",
                                                          "s9", "s10", "s11", "s12", "s13", "s14", "s15", "s16"};
     fs_stages st = {0};
     fs_counters_reset();
     for (int i = 0; i <= FS_MAX_STAGES; i++) fs_stages_add(&st, names[i], 1);
-    CHECK(st.n == FS_MAX_STAGES && fs_counters_check() == FS_OK, "not counting: the 17th stage's time is dropped, no error");
+    CHECK(st.n == FS_MAX_STAGES && fs_counters_check() == FS_OK,
+          "not counting: the 17th stage's time is dropped, no error");
     memset(&st, 0, sizeof st);
     fs_counting_set(1);
     for (int i = 0; i <= FS_MAX_STAGES; i++) {

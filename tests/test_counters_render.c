@@ -54,7 +54,7 @@ static int same_gbuffer(const fs_gbuffer *a, const fs_gbuffer *b)
     size_t n = (size_t)a->w * a->h;
     if (a->w != b->w || a->h != b->h || a->naovs != b->naovs) return 0;
     int ok = same_floats(a->depth, b->depth, n) && same_floats(a->normal, b->normal, 3 * n) &&
-             same_floats(a->thickness, b->thickness, n) && same_floats(a->coverage, b->coverage, n);
+        same_floats(a->thickness, b->thickness, n) && same_floats(a->coverage, b->coverage, n);
     for (int k = 0; k < a->naovs && ok; k++)
         ok = a->aov[k].ncomp == b->aov[k].ncomp && same_floats(a->aov[k].data, b->aov[k].data, n * a->aov[k].ncomp);
     return ok;
@@ -84,7 +84,8 @@ static void check_spheres(const fs_stages *c, const fs_gbuffer *g)
 {
     uint64_t fr = cnt(c, "splat", FS_CNT_FRAGMENTS), tx = cnt(c, "splat", FS_CNT_TEXELS);
     double bound = sprite_pixels_bound(S.radius);
-    CHECK(fr > 0 && fr <= bound, "spheres: %llu fragments, sprites hold at most %.0f pixels", (unsigned long long)fr, bound);
+    CHECK(fr > 0 && fr <= bound, "spheres: %llu fragments, sprites hold at most %.0f pixels", (unsigned long long)fr,
+          bound);
     CHECK(tx >= covered(g) && tx <= fr, "spheres: %llu texels written, %zu covered, %llu fragments",
           (unsigned long long)tx, covered(g), (unsigned long long)fr);
     CHECK(cnt(c, "thickness", FS_CNT_FRAGMENTS) == fr && cnt(c, "thickness", FS_CNT_TEXELS) == tx,
@@ -115,7 +116,8 @@ static void check_reference_cells(const fs_stages *c, const char *s, const char 
  * "thickness" counts. */
 static void check_reference_phases(const fs_stages *c, const fs_gbuffer *g, int thickness, const char *what)
 {
-    uint64_t hits = covered(g), first = cnt(c, "march", FS_CNT_CROSSINGS), after = cnt(c, "thickness", FS_CNT_CROSSINGS);
+    uint64_t hits = covered(g), first = cnt(c, "march", FS_CNT_CROSSINGS),
+             after = cnt(c, "thickness", FS_CNT_CROSSINGS);
     CHECK(hits > 0 && first == hits, "%s: %llu first-hit crossings for %llu covered pixels", what,
           (unsigned long long)first, (unsigned long long)hits);
     if (thickness)
@@ -189,7 +191,8 @@ static void check_volume_raycast(const fs_stages *c, const fs_gbuffer *g)
 {
     CHECK(cnt(c, "march", FS_CNT_TEXELS) == (size_t)g->w * g->h, "volume_raycast: the march writes every pixel once");
     CHECK(cnt(c, "march", FS_CNT_MARCH_SAMPLES) >= covered(g), "volume_raycast: a sample per covered pixel");
-    CHECK(cnt(c, "volume", FS_CNT_TEXELS) == cnt(c, "volume", FS_CNT_FRAGMENTS), "volume_raycast: a voxel per fragment");
+    CHECK(cnt(c, "volume", FS_CNT_TEXELS) == cnt(c, "volume", FS_CNT_FRAGMENTS),
+          "volume_raycast: a voxel per fragment");
 }
 
 /* levelset (a build with OpenVDB): the level set's voxels at upload, one intersector
@@ -228,13 +231,14 @@ static void test_method_set(const char *name, const char *set, void (*check)(con
     if (!rc) rc = fs_run_count(m, &S, fs_run_values(run), &CTX, &P, NULL, &S.camera, &counted, &cst);
     CHECK(!rc, "%s: %s", name, fs_error_message());
     if (!rc) {
-        CHECK(same_gbuffer(&timed.g, &counted.g), "%s: the counting render's G-buffer differs from the timed one", name);
+        CHECK(same_gbuffer(&timed.g, &counted.g), "%s: the counting render's G-buffer differs from the timed one",
+              name);
         uint64_t any = 0;
         for (int c = 0; c < FS_NCOUNTERS; c++) any |= cnt(&st, NULL, c);
         CHECK(!any, "%s: the timed render counted", name);
         for (int c = 0; c < FS_NCOUNTERS; c++)
-            CHECK(!cnt(&cst, NULL, c) || (m->counters & FS_CNT_BIT(c)), "%s counts %s, which it does not declare",
-                  name, fs_counter_name(c));
+            CHECK(!cnt(&cst, NULL, c) || (m->counters & FS_CNT_BIT(c)), "%s counts %s, which it does not declare", name,
+                  fs_counter_name(c));
         check(&cst, &counted.g);
     }
     fs_run_close(run);
@@ -284,13 +288,36 @@ static void test_gl_carry(void)
 }
 
 /* A method that declares no counters is refused, by name. */
-static void *none_create(const fs_method_setup *s) { (void)s; static int x; return &x; }
-static int none_upload(void *self, const fs_particles *p, const fs_grid *g) { (void)self; (void)p; (void)g; return FS_OK; }
-static int none_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t) { (void)self; (void)c; (void)o; (void)t; return FS_OK; }
+static void *none_create(const fs_method_setup *s)
+{
+    (void)s;
+    static int x;
+    return &x;
+}
+static int none_upload(void *self, const fs_particles *p, const fs_grid *g)
+{
+    (void)self;
+    (void)p;
+    (void)g;
+    return FS_OK;
+}
+static int none_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t)
+{
+    (void)self;
+    (void)c;
+    (void)o;
+    (void)t;
+    return FS_OK;
+}
 static void none_destroy(void *self) { (void)self; }
-static const fs_method uncounted = {.name = "uncounted", .description = "declares no counters", .paper = "",
-                                    .grid_use = FS_GRID_UNUSED, .create = none_create, .upload = none_upload,
-                                    .render = none_render, .destroy = none_destroy};
+static const fs_method uncounted = {.name = "uncounted",
+                                    .description = "declares no counters",
+                                    .paper = "",
+                                    .grid_use = FS_GRID_UNUSED,
+                                    .create = none_create,
+                                    .upload = none_upload,
+                                    .render = none_render,
+                                    .destroy = none_destroy};
 
 static void test_uncounted(void)
 {
@@ -307,7 +334,9 @@ static void test_uncounted(void)
  * naming the method or the stage, never counts dropped silently. */
 static int late_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages *t)
 {
-    (void)self; (void)c; (void)o;
+    (void)self;
+    (void)c;
+    (void)o;
     fs_stages_add(t, "late_stage", 0);
     fs_count_add(FS_CNT_FIELD_EVALS, 3); /* after the method's last stage */
     return FS_OK;
@@ -316,20 +345,32 @@ static int many_render(void *self, const fs_camera *c, fs_gbuffer *o, fs_stages 
 {
     static const char *const names[FS_MAX_STAGES] = {"s0", "s1", "s2",  "s3",  "s4",  "s5",  "s6",  "s7",
                                                      "s8", "s9", "s10", "s11", "s12", "s13", "s14", "s15"};
-    (void)self; (void)c; (void)o;
+    (void)self;
+    (void)c;
+    (void)o;
     for (int i = 0; i < FS_MAX_STAGES; i++) {
         fs_count_add(FS_CNT_FIELD_EVALS, 1);
         fs_stages_add(t, names[i], 0); /* with "upload" before them: the last finds the table full */
     }
     return FS_OK;
 }
-static const fs_method late = {.name = "late", .description = "counts after its last stage", .paper = "",
-                               .grid_use = FS_GRID_UNUSED, .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
-                               .create = none_create, .upload = none_upload, .render = late_render,
+static const fs_method late = {.name = "late",
+                               .description = "counts after its last stage",
+                               .paper = "",
+                               .grid_use = FS_GRID_UNUSED,
+                               .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
+                               .create = none_create,
+                               .upload = none_upload,
+                               .render = late_render,
                                .destroy = none_destroy};
-static const fs_method many = {.name = "many", .description = "has more stages than a table holds", .paper = "",
-                               .grid_use = FS_GRID_UNUSED, .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
-                               .create = none_create, .upload = none_upload, .render = many_render,
+static const fs_method many = {.name = "many",
+                               .description = "has more stages than a table holds",
+                               .paper = "",
+                               .grid_use = FS_GRID_UNUSED,
+                               .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS),
+                               .create = none_create,
+                               .upload = none_upload,
+                               .render = many_render,
                                .destroy = none_destroy};
 
 static void test_never_dropped(void)

@@ -19,7 +19,9 @@ static const float R_ = 0.025f;
 static uint64_t rng = 0x9e3779b97f4a7c15ull;
 static double frand(void) /* xorshift64, [0, 1) */
 {
-    rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17;
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
     return (rng >> 11) * 0x1.0p-53;
 }
 
@@ -133,9 +135,10 @@ static void splat_vs_exact(fs_slice_splat *ss, const fs_particles *p, fs_kernel 
         emax = fmax(emax, fabs(sp.data[i] - ex.data[i]));
         vmax = fmax(vmax, ex.data[i]);
     }
-    printf("(b) %s up %d, %dx%dx%d: rel L2 %.2e, max |diff| %.2e (max phi %.3f), %zu disks; exact %.0f ms, splat %.0f ms\n",
-           fs_kernel_name(kern), up, ex.dim[0], ex.dim[1], ex.dim[2], l2, emax, vmax, fs_slice_splat_disks(ss), t1 - t0,
-           t2 - t1);
+    printf(
+        "(b) %s up %d, %dx%dx%d: rel L2 %.2e, max |diff| %.2e (max phi %.3f), %zu disks; exact %.0f ms, splat %.0f ms\n",
+        fs_kernel_name(kern), up, ex.dim[0], ex.dim[1], ex.dim[2], l2, emax, vmax, fs_slice_splat_disks(ss), t1 - t0,
+        t2 - t1);
     CHECK(vmax > 1.0, "exact grid max %g: not the dam break interior", vmax);
     CHECK(l2 < 1e-3, "%s up %d: slice splat vs exact rel L2 %g (bar 1e-3)", fs_kernel_name(kern), up, l2);
     CHECK(emax < 1e-3, "%s up %d: max |diff| %g", fs_kernel_name(kern), up, emax);
@@ -187,7 +190,10 @@ static void vdb_roundtrip(const fs_density_grid *g)
         CHECK(ok, "origin axis %d: %g", a, t);
         placed &= ok;
     }
-    if (!placed) { fs_density_grid_free(&r); return; }
+    if (!placed) {
+        fs_density_grid_free(&r);
+        return;
+    }
     size_t active = 0;
     for (int k = 0; k < g->dim[2]; k++)
         for (int j = 0; j < g->dim[1]; j++)
@@ -258,7 +264,8 @@ int main(void)
     fs_particles_free(&spray);
 
     /* The lean build reads no VTK: it takes the dam break's BGEO frame instead. */
-    if (read_set(&dam, FS_WITH_VTK ? "dam_break_frame_23_24389_particles.vtk" : "dam_break_frame_9_6859_particles.bgeo"))
+    if (read_set(&dam,
+                 FS_WITH_VTK ? "dam_break_frame_23_24389_particles.vtk" : "dam_break_frame_9_6859_particles.bgeo"))
         TEST_DONE();
     fs_gl_context ctx;
     if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {

@@ -144,8 +144,8 @@ static void test_heatmap(void)
         for (int x = 0; x < BIG; x++) big[y * BIG + x] = (x + y) < 64 ? NAN : 0.5f * x / (BIG - 1) + 0.3f * y / BIG;
     fs_rgba_image hb;
     CHECK(fs_heatmap(big, BIG, BIG, 0.5, "depth error (r)", "r", &hb) == FS_OK, "%s", fs_error_message());
-    CHECK(hb.w - BIG > ow - W && hb.h - BIG > oh - H, "512 px margins %dx%d vs 128 px %dx%d", hb.w - BIG,
-          hb.h - BIG, ow - W, oh - H);
+    CHECK(hb.w - BIG > ow - W && hb.h - BIG > oh - H, "512 px margins %dx%d vs 128 px %dx%d", hb.w - BIG, hb.h - BIG,
+          ow - W, oh - H);
     write_png("figure_heatmap512.png", &hb);
     fs_rgba_free(&hb);
 
@@ -246,7 +246,10 @@ static void test_panel_look(void)
                 double u = (x - T / 2 + 0.5) / (T * 0.38), w = (y - T / 2 + 0.5) / (T * 0.38), rr = u * u + w * w;
                 float *p = im[m].pix + 4 * (y * T + x);
                 float *e = &err[y * T + x];
-                if (rr > 1) { *e = NAN; continue; }
+                if (rr > 1) {
+                    *e = NAN;
+                    continue;
+                }
                 double n = sqrt(1 - rr), d = 0.2 + 0.8 * fmax(0, (-0.4 * u - 0.5 * w + 0.77 * n));
                 p[0] = (float)(0.05 * d), p[1] = (float)(0.25 * d), p[2] = (float)(0.6 * d);
                 *e = (float)(vmax * (0.3 * (m + 1)) * rr * (1 + 0.3 * sin(9 * u + m)));
@@ -257,7 +260,7 @@ static void test_panel_look(void)
     }
     const fs_rgba_image *tp[6] = {&im[0], &im[1], &im[2], &hm[0], &hm[1], &hm[2]};
     const char *captions[6] = {"spheres  41.2 ms", "raycast_pca  88.0 ms", "aniso_ssf  12.5 ms",
-                               "mean 1.9 deg", "mean 3.8 deg", "mean 5.6 deg"};
+                               "mean 1.9 deg",     "mean 3.8 deg",         "mean 5.6 deg"};
     const char *rows[2] = {"image", "error"};
     fs_panel_spec spec = {2, 3, tp, captions, names, rows, "dam break, frame 120"};
     fs_rgba_image out;

@@ -47,7 +47,7 @@ static int same_gbuffer(const fs_gbuffer *a, const fs_gbuffer *b)
     size_t n = (size_t)a->w * a->h;
     if (a->w != b->w || a->h != b->h || a->naovs != b->naovs) return 0;
     int same = !memcmp(a->depth, b->depth, n * 4) && !memcmp(a->normal, b->normal, 3 * n * 4) &&
-               !memcmp(a->thickness, b->thickness, n * 4) && !memcmp(a->coverage, b->coverage, n * 4);
+        !memcmp(a->thickness, b->thickness, n * 4) && !memcmp(a->coverage, b->coverage, n * 4);
     return same && !strcmp(a->aov[0].name, b->aov[0].name) && !memcmp(a->aov[0].data, b->aov[0].data, n * 4);
 }
 
@@ -104,11 +104,13 @@ static void test_roundtrip_and_bad(void)
     CHECK(back.depth && same_gbuffer(&g, &back), "the entry differs from what was stored");
     fs_gbuffer_free(&back);
     CHECK(load(&c, k2, 16, 8) == FS_GCACHE_MISS, "another key misses");
-    CHECK(load(&c, k, 16, 9) == FS_GCACHE_BAD && strstr(fs_error_message(), "16x8"), "another size: %s", fs_error_message());
+    CHECK(load(&c, k, 16, 9) == FS_GCACHE_BAD && strstr(fs_error_message(), "16x8"), "another size: %s",
+          fs_error_message());
     fs_gcache_entry(&c, k, path, sizeof path);
     fs_gcache_entry(&c, k2, path2, sizeof path2);
     copy_file(path, path2, -1); /* k's entry under k2's name */
-    CHECK(load(&c, k2, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "another key"), "re-keyed: %s", fs_error_message());
+    CHECK(load(&c, k2, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "another key"), "re-keyed: %s",
+          fs_error_message());
     for (long cut = 0; cut < 2000; cut += 397) {
         copy_file(path, FS_TEST_OUT "/gbuffer_cache/whole.exr", -1);
         copy_file(FS_TEST_OUT "/gbuffer_cache/whole.exr", path, cut);
@@ -123,20 +125,27 @@ static void test_roundtrip_and_bad(void)
     fs_provenance_set(&p2, "cache_key", hex);
     fs_digest_hex(key_n(3), hex);
     fs_provenance_set(&p2, "cache_data", hex);
-    for (int i = 0; i < p2.n; i++) { p2.attr[i].name = p2.name[i]; p2.attr[i].value = p2.value[i]; }
+    for (int i = 0; i < p2.n; i++) {
+        p2.attr[i].name = p2.name[i];
+        p2.attr[i].value = p2.value[i];
+    }
     CHECK(fs_write_render(path, &g, rgba, &p2) == 0, "write");
-    CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "corrupt"), "altered: %s", fs_error_message());
+    CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "corrupt"), "altered: %s",
+          fs_error_message());
     /* the right key, no depth channel */
     const char *names[4] = {"R", "G", "B", "A"};
     fs_image img = {16, 8, 4, names, rgba};
     CHECK(fs_write_exr(path, &img, p2.attr, p2.n) == 0, "write");
-    CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "no channel 'depth'"), "channel: %s", fs_error_message());
+    CHECK(load(&c, k, 16, 8) == FS_GCACHE_BAD && strstr(fs_error_message(), "no channel 'depth'"), "channel: %s",
+          fs_error_message());
     /* a store replaces a bad entry */
-    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, NULL) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store over a bad entry");
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, NULL) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT,
+          "store over a bad entry");
     CHECK(!counts[0], "an entry stored without work counts brings back none: '%s'", counts);
     /* the work counts come back, and are covered by the content check */
     const char *text = "1:march=12,34,5,0,0,7";
-    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, text) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT, "store with counts");
+    CHECK(fs_gcache_store(&c, k, &g, rgba, &prov, text) == 0 && load(&c, k, 16, 8) == FS_GCACHE_HIT,
+          "store with counts");
     CHECK(!strcmp(counts, text), "the counts come back: '%s'", counts);
     /* the longest counts text any run makes (stage_counts.h) comes back whole */
     static char longest[FS_GCACHE_COUNTS];
@@ -146,7 +155,10 @@ static void test_roundtrip_and_bad(void)
           "store the longest counts: %s", fs_error_message());
     CHECK(!strcmp(counts, longest), "the longest counts come back (%zu of %zu bytes)", strlen(counts), strlen(longest));
     fs_provenance p3 = prov;
-    for (int i = 0; i < p3.n; i++) { p3.attr[i].name = p3.name[i]; p3.attr[i].value = p3.value[i]; }
+    for (int i = 0; i < p3.n; i++) {
+        p3.attr[i].name = p3.name[i];
+        p3.attr[i].value = p3.value[i];
+    }
     fs_digest_hex(k, hex);
     fs_provenance_set(&p3, "cache_key", hex);
     fs_digest_hex(fs_gcache_data_hash(&g), hex);

@@ -90,7 +90,8 @@ int main(void)
     CHECK(rc == FS_OK, "default context: %s", fs_error_message());
     if (rc) TEST_DONE();
     printf("renderer: %s, version: %s\n", ctx.renderer, ctx.version);
-    CHECK(strstr(ctx.version, "4.5") == ctx.version || strstr(ctx.version, "4.6") == ctx.version, "version %s", ctx.version);
+    CHECK(strstr(ctx.version, "4.5") == ctx.version || strstr(ctx.version, "4.6") == ctx.version, "version %s",
+          ctx.version);
     test_shader_errors();
     test_kernels_agree();
     CHECK(glGetError() == GL_NO_ERROR, "GL error left");

@@ -15,11 +15,20 @@
 static uint64_t rng = 88172645463325252ull;
 static double frand(void) /* xorshift64, [0, 1) */
 {
-    rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17;
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
     return (rng >> 11) * 0x1.0p-53;
 }
 
-typedef struct visit { const fs_grid *g; size_t count; uint64_t sum; int bad; const float *x; float r2; } visit;
+typedef struct visit {
+    const fs_grid *g;
+    size_t count;
+    uint64_t sum;
+    int bad;
+    const float *x;
+    float r2;
+} visit;
 static void on_visit(void *user, uint32_t slot, float d2)
 {
     visit *v = user;
@@ -59,7 +68,10 @@ static int check_slots(const fs_grid *g, const fs_particles *p)
         if (fs_grid_slot(g, cc[0], cc[1], cc[2]) != c) bad++;
         for (uint32_t s = g->start[c]; s < g->start[c + 1]; s++) {
             uint32_t o = g->index[s];
-            if (o >= p->n || seen[o]++) { bad++; continue; }
+            if (o >= p->n || seen[o]++) {
+                bad++;
+                continue;
+            }
             const float *q = g->pos4 + 4 * (size_t)s;
             if (q[0] != p->x[o] || q[1] != p->y[o] || q[2] != p->z[o]) bad++;
             for (int a = 0; a < 3; a++)
@@ -84,7 +96,8 @@ static int check_blocks(const fs_grid *g, const fs_particles *p)
     for (size_t c = 0; c < g->ncells; c++) {
         int cc[3], near = 0;
         slot_cell(g, c, cc);
-        for (int d = 0; d < 27; d++) near |= cell_occupied(g, cc[0] + d % 3 - 1, cc[1] + d / 3 % 3 - 1, cc[2] + d / 9 - 1);
+        for (int d = 0; d < 27; d++)
+            near |= cell_occupied(g, cc[0] + d % 3 - 1, cc[1] + d / 3 % 3 - 1, cc[2] + d / 9 - 1);
         if (near != fs_grid_near_occupied(g, cc[0], cc[1], cc[2])) bad++;
     }
     for (size_t b = 0; b < g->nblocks; b++) { /* no block without a near cell */
@@ -123,7 +136,10 @@ static int check_box_runs(const fs_grid *g)
     for (size_t c = 0; c < g->ncells; c += 7) {
         int cc[3], lo[3], hi[3];
         slot_cell(g, c, cc);
-        for (int a = 0; a < 3; a++) { lo[a] = cc[a] - 1; hi[a] = cc[a] + 1; }
+        for (int a = 0; a < 3; a++) {
+            lo[a] = cc[a] - 1;
+            hi[a] = cc[a] + 1;
+        }
         uint32_t runs[FS_GRID_MAX_RUNS][2], s0, s1, got = 0, want = 0;
         int nr = fs_grid_box_runs(g, lo, hi, runs);
         for (int r = 0; r < nr; r++) {
@@ -168,7 +184,9 @@ static void check_grid(const fs_particles *p, float cell, const float *radii, in
             /* Half the queries at particles, half anywhere in the box grown by the radius. */
             if (q % 2) {
                 size_t i = (size_t)(frand() * p->n);
-                x[0] = p->x[i]; x[1] = p->y[i]; x[2] = p->z[i];
+                x[0] = p->x[i];
+                x[1] = p->y[i];
+                x[2] = p->z[i];
             } else {
                 for (int a = 0; a < 3; a++)
                     x[a] = (float)(p->bmin[a] - 2 * radii[ri] + frand() * (p->bmax[a] - p->bmin[a] + 4 * radii[ri]));
@@ -179,7 +197,10 @@ static void check_grid(const fs_particles *p, float cell, const float *radii, in
             uint64_t sum = 0;
             for (size_t i = 0; i < p->n; i++) {
                 float dx = p->x[i] - x[0], dy = p->y[i] - x[1], dz = p->z[i] - x[2];
-                if (dx * dx + dy * dy + dz * dz <= v.r2) { count++; sum += (uint64_t)i * 2654435761u + 1; }
+                if (dx * dx + dy * dy + dz * dz <= v.r2) {
+                    count++;
+                    sum += (uint64_t)i * 2654435761u + 1;
+                }
             }
             if (count != v.count || sum != v.sum || v.bad) mismatches++;
             total += count;
@@ -240,10 +261,17 @@ static void lattice_density(void)
     const float r = 0.025f;
     const int m = 21;
     fs_particles p;
-    if (fs_particles_alloc(&p, (size_t)m * m * m, 0)) { CHECK(0, "alloc"); return; }
+    if (fs_particles_alloc(&p, (size_t)m * m * m, 0)) {
+        CHECK(0, "alloc");
+        return;
+    }
     for (int k = 0, i = 0; k < m; k++)
         for (int j = 0; j < m; j++)
-            for (int l = 0; l < m; l++, i++) { p.x[i] = 2 * r * l; p.y[i] = 2 * r * j; p.z[i] = 2 * r * k; }
+            for (int l = 0; l < m; l++, i++) {
+                p.x[i] = 2 * r * l;
+                p.y[i] = 2 * r * j;
+                p.z[i] = 2 * r * k;
+            }
     fs_field f = {r, 8 * r * r * r, FS_KERNEL_CUBIC, 4 * r, 0.6f};
     fs_particle_stats st;
     int rc = fs_particles_stats(&p, &f, &st);
@@ -262,7 +290,10 @@ static void lattice_density(void)
 static void refusals(void)
 {
     fs_particles p;
-    if (random_set(&p, 1000)) { CHECK(0, "alloc"); return; }
+    if (random_set(&p, 1000)) {
+        CHECK(0, "alloc");
+        return;
+    }
     fs_grid g;
     /* A tiny cell over a 2 m box: memory follows the particles (at most 8
      * blocks each), where the dense grid refused 10^13 cells. */
@@ -303,20 +334,35 @@ static void refusals(void)
 static void strays(void)
 {
     fs_particles p;
-    if (random_set(&p, 5000)) { CHECK(0, "alloc"); return; }
+    if (random_set(&p, 5000)) {
+        CHECK(0, "alloc");
+        return;
+    }
     fs_particles clean = p;
     float lo[3], hi[3];
     memcpy(lo, p.bmin, sizeof lo);
     memcpy(hi, p.bmax, sizeof hi);
     fs_particles q;
-    if (fs_particles_alloc(&q, p.n + 5, 0)) { CHECK(0, "alloc"); fs_particles_free(&p); return; }
+    if (fs_particles_alloc(&q, p.n + 5, 0)) {
+        CHECK(0, "alloc");
+        fs_particles_free(&p);
+        return;
+    }
     memcpy(q.x, p.x, p.n * sizeof *q.x);
     memcpy(q.y, p.y, p.n * sizeof *q.y);
     memcpy(q.z, p.z, p.n * sizeof *q.z);
     /* Two spray particles 0.6 m above the 2 m bulk (separate blocks, within its extent). */
-    for (int s = 0; s < 2; s++) { q.x[p.n + s] = 0.5f + 0.1f * s; q.y[p.n + s] = hi[1] + 0.6f; q.z[p.n + s] = -2.0f; }
+    for (int s = 0; s < 2; s++) {
+        q.x[p.n + s] = 0.5f + 0.1f * s;
+        q.y[p.n + s] = hi[1] + 0.6f;
+        q.z[p.n + s] = -2.0f;
+    }
     const float far[3][3] = {{2000, 0, 0}, {-3000, 1.5f, -2}, {100, 4000, -4000}};
-    for (int s = 0; s < 3; s++) { q.x[p.n + 2 + s] = far[s][0]; q.y[p.n + 2 + s] = far[s][1]; q.z[p.n + 2 + s] = far[s][2]; }
+    for (int s = 0; s < 3; s++) {
+        q.x[p.n + 2 + s] = far[s][0];
+        q.y[p.n + 2 + s] = far[s][1];
+        q.z[p.n + 2 + s] = far[s][2];
+    }
     fs_particles_bounds(&q);
     fs_grid g, gc;
     int rc = fs_grid_build(&g, &q, 0.05f);
@@ -328,12 +374,13 @@ static void strays(void)
                g.bulk_lo[1], g.bulk_hi[1]);
         CHECK(g.nblocks <= gc.nblocks + 5 * 8, "strays cost at most 8 blocks each: %zu vs %zu", g.nblocks, gc.nblocks);
         for (int s = 0; s < 3; s++) {
-            int c[3] = {fs_grid_coord(&g, 0, far[s][0]), fs_grid_coord(&g, 1, far[s][1]), fs_grid_coord(&g, 2, far[s][2])};
+            int c[3] = {fs_grid_coord(&g, 0, far[s][0]), fs_grid_coord(&g, 1, far[s][1]),
+                        fs_grid_coord(&g, 2, far[s][2])};
             int found = 0;
             for (int k = 0; k < g.nclusters; k++) {
                 const fs_grid_cluster *cl = &g.clusters[k];
                 found |= cl->n == 1 && cl->lo[0] <= c[0] && c[0] <= cl->hi[0] && cl->lo[1] <= c[1] &&
-                         c[1] <= cl->hi[1] && cl->lo[2] <= c[2] && c[2] <= cl->hi[2];
+                    c[1] <= cl->hi[1] && cl->lo[2] <= c[2] && c[2] <= cl->hi[2];
             }
             CHECK(found, "stray %d is a cluster of its own", s);
         }
@@ -364,7 +411,10 @@ static void strays(void)
 static void thread_independence(void)
 {
     fs_particles p;
-    if (random_set(&p, 300000)) { CHECK(0, "alloc"); return; }
+    if (random_set(&p, 300000)) {
+        CHECK(0, "alloc");
+        return;
+    }
     fs_grid g[2];
     for (int t = 0; t < 2; t++) {
         omp_set_num_threads(t + 1);
@@ -387,7 +437,10 @@ static void thread_independence(void)
  * splash frame). */
 static void radius_estimates(void)
 {
-    static const struct { const char *file; double tol; } frames[] = {
+    static const struct {
+        const char *file;
+        double tol;
+    } frames[] = {
         {"splashsurf/cube_2366_particles.vtk", 0.10},
         {"splashsurf/double_dam_break_frame_01_4732_particles.vtk", 0.10},
         {"splashsurf/dam_break_frame_23_24389_particles.vtk", 0.20},

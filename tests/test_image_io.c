@@ -13,11 +13,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char *AOV_NAMES[] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z",
-                                  "thickness", "coverage"};
+static const char *AOV_NAMES[] = {"R",        "G",        "B",        "A",         "depth",
+                                  "normal.X", "normal.Y", "normal.Z", "thickness", "coverage"};
 enum { AOV_N = 10 };
 
-static int exists(const char *path) { struct stat st; return stat(path, &st) == 0; }
+static int exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
 
 /* Any leftover temporary file (".NAME.tmpXXXXXX") of the given target name in dir. */
 static int temp_files_left(const char *dir, const char *name)
@@ -35,7 +39,7 @@ static int temp_files_left(const char *dir, const char *name)
 static unsigned long long file_hash(const char *path)
 {
     FILE *f = fopen(path, "rb");
-    unsigned long long h = 1469598103934665603ULL;
+    unsigned long long h = 14695981039346656037ULL; /* FNV-1a */
     if (!f) return 0;
     for (int c; (c = fgetc(f)) != EOF;) h = (h ^ (unsigned)c) * 1099511628211ULL;
     fclose(f);
@@ -63,7 +67,10 @@ static void test_exr_roundtrip(void)
     fs_image back;
     int rc = fs_read_image(path, &back);
     CHECK(rc == FS_OK, "read exr: %s", fs_error_message());
-    if (rc != FS_OK) { free(pix); return; }
+    if (rc != FS_OK) {
+        free(pix);
+        return;
+    }
     CHECK(back.w == w && back.h == h && back.nch == AOV_N, "exr shape %dx%dx%d", back.w, back.h, back.nch);
     for (int c = 0; c < AOV_N && back.nch == AOV_N; c++) {
         int bc = fs_image_channel(&back, AOV_NAMES[c]);
@@ -83,8 +90,8 @@ static void test_exr_roundtrip(void)
           "version attribute: '%s'", buf);
     CHECK(fs_read_image_attr(path, "fluidsurf:camera", buf, sizeof buf) == 1 && strcmp(buf, attrs[1].value) == 0,
           "camera attribute: '%s'", buf);
-    CHECK(fs_read_image_attr(path, "compression", buf, sizeof buf) == 1 && strcmp(buf, "zip") == 0,
-          "compression: '%s'", buf);
+    CHECK(fs_read_image_attr(path, "compression", buf, sizeof buf) == 1 && strcmp(buf, "zip") == 0, "compression: '%s'",
+          buf);
     CHECK(fs_read_image_attr(path, "fluidsurf:absent", buf, sizeof buf) == 0 && buf[0] == 0, "absent attribute found");
     char small[5];
     CHECK(fs_read_image_attr(path, "fluidsurf:version", small, sizeof small) == 1 && strcmp(small, "0.1.") == 0,
@@ -188,8 +195,8 @@ static void test_errors(void)
     rc = fs_write_png8(keep, row, wide, 1, 1);
     CHECK(rc == FS_ERR_RUNTIME, "a %d-pixel-wide PNG was written", wide);
     printf("expected error: %s\n", fs_error_message());
-    CHECK(strncmp(fs_error_message(), keep, strlen(keep)) == 0 && !strchr(fs_error_message(), '\n'),
-          "message: %s", fs_error_message());
+    CHECK(strncmp(fs_error_message(), keep, strlen(keep)) == 0 && !strchr(fs_error_message(), '\n'), "message: %s",
+          fs_error_message());
     free(row);
     fs_image empty = {1, 1, 4, names, NULL};
     CHECK(fs_write_png(keep, &empty) == FS_ERR_INPUT, "png without pixels accepted");
@@ -202,11 +209,14 @@ static void test_errors(void)
     const char *nofile = FS_TEST_OUT "/image_io_missing.exr";
     unlink(nofile);
     CHECK(fs_read_image(nofile, &back) == FS_ERR_INPUT, "missing file read");
-    CHECK(strncmp(fs_error_message(), nofile, strlen(nofile)) == 0 && !strchr(fs_error_message(), '\n'),
-          "message: %s", fs_error_message());
+    CHECK(strncmp(fs_error_message(), nofile, strlen(nofile)) == 0 && !strchr(fs_error_message(), '\n'), "message: %s",
+          fs_error_message());
     const char *junk = FS_TEST_OUT "/image_io_junk.exr";
     FILE *f = fopen(junk, "w");
-    if (f) { fputs("not an image at all\n", f); fclose(f); }
+    if (f) {
+        fputs("not an image at all\n", f);
+        fclose(f);
+    }
     CHECK(fs_read_image(junk, &back) == FS_ERR_INPUT, "junk file read as an image");
     CHECK(back.pix == NULL && back.chnames == NULL, "failed read left pointers");
     char buf[16];

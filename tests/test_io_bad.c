@@ -85,8 +85,11 @@ static size_t bgeo_header(unsigned char *b, int32_t npoints, int32_t attr_type)
     w += 5;
     int32_t h[9] = {5, npoints, 0, 0, 0, 1, 0, 0, 0};
     for (int i = 0; i < 9; i++) put_be32(&w, (uint32_t)h[i]);
-    *w++ = 0; *w++ = 1; *w++ = 'v';  /* name */
-    *w++ = 0; *w++ = 3;               /* size */
+    *w++ = 0;
+    *w++ = 1;
+    *w++ = 'v'; /* name */
+    *w++ = 0;
+    *w++ = 3; /* size */
     put_be32(&w, (uint32_t)attr_type);
     for (int k = 0; k < 3; k++) put_be32(&w, 0);
     return (size_t)(w - b);
@@ -161,7 +164,8 @@ static void test_truncated(void)
 static void test_wrong_magic_and_garbage(void)
 {
     /* Each data file with its first bytes overwritten. */
-    const char *srcs[] = {"cube_2366_particles.vtk", "fluid_250_particles.vtu", "dam_break_frame_9_6859_particles.bgeo"};
+    const char *srcs[] = {"cube_2366_particles.vtk", "fluid_250_particles.vtu",
+                          "dam_break_frame_9_6859_particles.bgeo"};
     const char *dsts[] = {"magic.vtk", "magic.vtu", "magic.bgeo"};
     for (int i = 0; i < 3; i++) {
         char src[512];
@@ -178,14 +182,18 @@ static void test_wrong_magic_and_garbage(void)
     expect_bad(out_path("magic.ply"), NULL, "magic");
     unsigned char noise[4096];
     uint32_t s = 12345;
-    for (size_t i = 0; i < sizeof noise; i++) { s = s * 1664525u + 1013904223u; noise[i] = (unsigned char)(s >> 24); }
+    for (size_t i = 0; i < sizeof noise; i++) {
+        s = s * 1664525u + 1013904223u;
+        noise[i] = (unsigned char)(s >> 24);
+    }
     write_file(out_path("noise.vdb"), noise, sizeof noise);
     expect_bad(out_path("noise.vdb"), NULL, NULL);
     write_file(out_path("noise.vtu"), noise, sizeof noise);
     expect_bad(out_path("noise.vtu"), NULL, NULL);
     /* A legacy header followed by garbage where the points should be. */
     char garbage[4096 + 200];
-    int h = snprintf(garbage, 200, "# vtk DataFile Version 4.1\nbad\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 100 float\n");
+    int h = snprintf(garbage, 200,
+                     "# vtk DataFile Version 4.1\nbad\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 100 float\n");
     memcpy(garbage + h, noise, 1200);
     memcpy(garbage + h + 1200, "\nCELLS 100 junk\n", 16);
     memcpy(garbage + h + 1216, noise + 1200, 800);
@@ -212,7 +220,8 @@ static void test_wrong_magic_and_garbage(void)
                       "property float y\nproperty float z\nend_header\n0123456789ab";
     write_file(out_path("hugecount.ply"), ply, strlen(ply));
     expect_bad(out_path("hugecount.ply"), NULL, "truncated");
-    const char *noxyz = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n";
+    const char *noxyz =
+        "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n";
     write_file(out_path("noxyz.ply"), noxyz, strlen(noxyz));
     expect_bad(out_path("noxyz.ply"), NULL, "x, y or z");
     write_file(out_path("odd.raw"), noise, 13);

@@ -57,8 +57,8 @@ static void test_data_files(void)
                     (float[]){1.45f, 0.70f, 1.45f}, 1, 0);
     check_data_file("double_dam_break_frame_26_4732_particles.vtk", 4732, (float[]){-1.5153f, -0.0153f, -1.5151f},
                     (float[]){1.5152f, 1.0168f, 1.5152f}, 1, 3.84);
-    check_data_file("cube_2366_particles.vtk", 2366, (float[]){0.85f, 0.05f, 0.85f}, (float[]){1.45f, 0.70f, 1.45f},
-                    0, 0);
+    check_data_file("cube_2366_particles.vtk", 2366, (float[]){0.85f, 0.05f, 0.85f}, (float[]){1.45f, 0.70f, 1.45f}, 0,
+                    0);
     check_data_file("fluid_250_particles.vtu", 250, (float[]){0.1133f, 0.1478f, 0.1097f},
                     (float[]){5.0708f, 1.1394f, 1.0902f}, 1, 0);
     check_data_file("dam_break_frame_9_6859_particles.bgeo", 6859, (float[]){-1.9516f, 0.0357f, -0.7104f},
@@ -125,7 +125,10 @@ static void test_ply_variants(void)
     for (int i = 0; i < 3; i++) {
         put_be(&w, &ref[i][0], 4);
         *w++ = (unsigned char)i; /* i list items */
-        for (int k = 0; k < i; k++) { int32_t v = k; put_be(&w, &v, 4); }
+        for (int k = 0; k < i; k++) {
+            int32_t v = k;
+            put_be(&w, &v, 4);
+        }
         put_be(&w, &ref[i][1], 4);
         double z = ref[i][2];
         put_be(&w, &z, 8);
@@ -189,7 +192,10 @@ static void test_csv_raw(void)
     write_file(path, plain, strlen(plain));
     rc = fs_particles_read(&p, path, "csv");
     CHECK(rc == FS_OK, "csv without header, forced format: %s", fs_error_message());
-    if (!rc) { check_ref(&p, "csv without header"); fs_particles_free(&p); }
+    if (!rc) {
+        check_ref(&p, "csv without header");
+        fs_particles_free(&p);
+    }
 
     snprintf(path, sizeof path, "%s/io_points.xyz", FS_TEST_OUT);
     unsigned char raw[36];
@@ -201,12 +207,17 @@ static void test_csv_raw(void)
     write_file(path, raw, sizeof raw);
     rc = fs_particles_read(&p, path, NULL);
     CHECK(rc == FS_OK, "raw xyz: %s", fs_error_message());
-    if (!rc) { check_ref(&p, "raw xyz"); fs_particles_free(&p); }
+    if (!rc) {
+        check_ref(&p, "raw xyz");
+        fs_particles_free(&p);
+    }
 }
 
 static void test_formats_and_frames(void)
 {
-    struct { const char *path, *format; } cases[] = {
+    struct {
+        const char *path, *format;
+    } cases[] = {
         {"a/b.vtk", "vtk"}, {"B.VTU", "vtu"}, {"x.bgeo", "bgeo"}, {"x.bgeo.gz", "bgeo"}, {"x.ply", "ply"},
         {"x.vdb", "vdb"},   {"x.raw", "raw"}, {"x.xyz", "raw"},   {"x.csv", "csv"},
     };
@@ -237,7 +248,11 @@ static void test_particles_basics(void)
     CHECK(fs_particles_alloc(&p, 4, FS_HAS_COLOR | FS_HAS_PHASE) == FS_OK, "alloc");
     CHECK(fs_particles_fields(&p) == (FS_HAS_COLOR | FS_HAS_PHASE), "fields %u", fs_particles_fields(&p));
     CHECK(p.vx == NULL && p.x[3] == 0.0f && p.color[11] == 0.0f, "zero-filled, no velocity");
-    for (int i = 0; i < 4; i++) { p.x[i] = (float)i; p.y[i] = -(float)i; p.z[i] = 2.0f; }
+    for (int i = 0; i < 4; i++) {
+        p.x[i] = (float)i;
+        p.y[i] = -(float)i;
+        p.z[i] = 2.0f;
+    }
     fs_particles_bounds(&p);
     CHECK(p.bmin[0] == 0 && p.bmax[0] == 3 && p.bmin[1] == -3 && p.bmax[1] == 0 && p.bmin[2] == 2, "bounds");
     CHECK(fs_particles_validate(&p, "mem") == FS_OK, "valid set rejected: %s", fs_error_message());

@@ -18,16 +18,16 @@ static void compare_ordered(const fs_particles *a, const fs_particles *b, const 
                             int has_radius)
 {
     CHECK(b->n == a->n, "%s: %zu particles back, wrote %zu", fmt, b->n, a->n);
-    CHECK((fs_particles_fields(b) & carried) == carried, "%s: fields %u back, expected %u", fmt,
-          fs_particles_fields(b), carried);
+    CHECK((fs_particles_fields(b) & carried) == carried, "%s: fields %u back, expected %u", fmt, fs_particles_fields(b),
+          carried);
     if (b->n != a->n || (fs_particles_fields(b) & carried) != carried) return;
     size_t bad_pos = 0, bad_attr = 0;
     for (size_t i = 0; i < a->n; i++) {
         bad_pos += fabs(a->x[i] - b->x[i]) > rel_tol(a->x[i]) || fabs(a->y[i] - b->y[i]) > rel_tol(a->y[i]) ||
-                   fabs(a->z[i] - b->z[i]) > rel_tol(a->z[i]);
+            fabs(a->z[i] - b->z[i]) > rel_tol(a->z[i]);
         if (carried & FS_HAS_VELOCITY)
-            bad_attr += fabs(a->vx[i] - b->vx[i]) > rel_tol(a->vx[i]) || fabs(a->vy[i] - b->vy[i]) > rel_tol(a->vy[i]) ||
-                        fabs(a->vz[i] - b->vz[i]) > rel_tol(a->vz[i]);
+            bad_attr += fabs(a->vx[i] - b->vx[i]) > rel_tol(a->vx[i]) ||
+                fabs(a->vy[i] - b->vy[i]) > rel_tol(a->vy[i]) || fabs(a->vz[i] - b->vz[i]) > rel_tol(a->vz[i]);
         if (carried & FS_HAS_COLOR)
             for (int k = 0; k < 3; k++) bad_attr += fabs(a->color[3 * i + k] - b->color[3 * i + k]) > 1e-6;
         if (carried & FS_HAS_PHASE) bad_attr += a->phase[i] != b->phase[i];
@@ -54,11 +54,15 @@ static void compare_vdb(const fs_particles *a, const fs_particles *b)
         for (size_t j = 0; j < a->n; j++) {
             double dx = a->x[j] - b->x[i], dy = a->y[j] - b->y[i], dz = a->z[j] - b->z[i];
             double d = dx * dx + dy * dy + dz * dz;
-            if (d < bd) { bd = d; best = j; }
+            if (d < bd) {
+                bd = d;
+                best = j;
+            }
         }
         reused += used[best]++ != 0;
         worst = fmax(worst, sqrt(bd));
-        worst_v = fmax(worst_v, fabs(a->vx[best] - b->vx[i]) + fabs(a->vy[best] - b->vy[i]) + fabs(a->vz[best] - b->vz[i]));
+        worst_v =
+            fmax(worst_v, fabs(a->vx[best] - b->vx[i]) + fabs(a->vy[best] - b->vy[i]) + fabs(a->vz[best] - b->vz[i]));
     }
     free(used);
     CHECK(worst <= tol, "vdb: a position moved by %g (tol %g)", worst, tol);
@@ -72,8 +76,7 @@ static int count_temp_files(void)
     int n = 0;
     DIR *d = opendir(FS_TEST_OUT);
     if (!d) return -1;
-    for (struct dirent *e; (e = readdir(d));)
-        n += e->d_name[0] == '.' && strstr(e->d_name, ".tmp") != NULL;
+    for (struct dirent *e; (e = readdir(d));) n += e->d_name[0] == '.' && strstr(e->d_name, ".tmp") != NULL;
     closedir(d);
     return n;
 }
@@ -89,8 +92,12 @@ int main(void)
     fs_particles full;
     CHECK(fs_particles_alloc(&full, src.n, FS_HAS_VELOCITY | FS_HAS_COLOR | FS_HAS_PHASE) == FS_OK, "alloc");
     for (size_t i = 0; i < src.n; i++) {
-        full.x[i] = src.x[i]; full.y[i] = src.y[i]; full.z[i] = src.z[i];
-        full.vx[i] = src.vx[i]; full.vy[i] = src.vy[i]; full.vz[i] = src.vz[i];
+        full.x[i] = src.x[i];
+        full.y[i] = src.y[i];
+        full.z[i] = src.z[i];
+        full.vx[i] = src.vx[i];
+        full.vy[i] = src.vy[i];
+        full.vz[i] = src.vz[i];
         for (int k = 0; k < 3; k++) full.color[3 * i + k] = (float)((i * (k + 3)) % 17) / 16.0f;
         full.phase[i] = (int32_t)(i % 5) - 1;
     }
@@ -98,7 +105,11 @@ int main(void)
     fs_particles_bounds(&full);
     int temps_before = count_temp_files();
 
-    const struct { const char *file; unsigned carried; int radius; } ordered[] = {
+    const struct {
+        const char *file;
+        unsigned carried;
+        int radius;
+    } ordered[] = {
         {"io_rt.vtk", FS_HAS_VELOCITY | FS_HAS_COLOR | FS_HAS_PHASE, 0},
         {"io_rt.bgeo.gz", FS_HAS_VELOCITY | FS_HAS_COLOR | FS_HAS_PHASE, 1},
         {"io_rt.ply", FS_HAS_VELOCITY | FS_HAS_COLOR | FS_HAS_PHASE, 1},
@@ -136,7 +147,10 @@ int main(void)
     CHECK(rc == FS_OK, "forced ply write: %s", fs_error_message());
     rc = rc ? rc : fs_particles_read(&back, path, "ply");
     CHECK(rc == FS_OK, "forced ply read: %s", fs_error_message());
-    if (!rc) { compare_ordered(&src, &back, "forced ply", FS_HAS_VELOCITY, 0); fs_particles_free(&back); }
+    if (!rc) {
+        compare_ordered(&src, &back, "forced ply", FS_HAS_VELOCITY, 0);
+        fs_particles_free(&back);
+    }
 
     /* Failures: no folder, unwritable format, empty set; nothing is left behind. */
     const char *missing = FS_TEST_OUT "/no_such_folder/x.vtk";

@@ -29,7 +29,9 @@ int main(void)
         double worst = 0, peak = 0;
         for (int i = 1; i < 1000; i++) {
             double d = H * i / 1000.0, e = 1e-4 * H;
-            double fd = ((double)fs_kernel_w((fs_kernel)k, (float)(d + e), H) - fs_kernel_w((fs_kernel)k, (float)(d - e), H)) / (2 * e);
+            double fd =
+                ((double)fs_kernel_w((fs_kernel)k, (float)(d + e), H) - fs_kernel_w((fs_kernel)k, (float)(d - e), H)) /
+                (2 * e);
             double dw = fs_kernel_dw((fs_kernel)k, (float)d, H);
             if (fabs(fd - dw) > worst) worst = fabs(fd - dw);
         }
@@ -37,15 +39,16 @@ int main(void)
             double v = fabs(fs_kernel_dw((fs_kernel)k, (float)(H * i / 200000.0), H));
             if (v > peak) peak = v;
         }
-        printf("%-7s |dW - finite difference| max %.3g (of max|dW| %.4g), bound %.6g, sampled max %.6g\n",
-               name, worst, peak, bound, peak);
+        printf("%-7s |dW - finite difference| max %.3g (of max|dW| %.4g), bound %.6g, sampled max %.6g\n", name, worst,
+               peak, bound, peak);
         CHECK(worst < 2e-3 * peak, "%s derivative differs from the finite difference by %g", name, worst);
         CHECK(bound >= peak, "%s: max_dw %g below the sampled %g", name, bound, peak);
         CHECK(bound <= 1.02 * peak, "%s: max_dw %g much looser than the sampled %g", name, bound, peak);
         /* Monotone decrease: the reference's segment bounds assume it. */
         int mono = 1;
         for (int i = 1; i <= 1000; i++)
-            if (fs_kernel_w((fs_kernel)k, H * i / 1000.0f, H) > fs_kernel_w((fs_kernel)k, H * (i - 1) / 1000.0f, H)) mono = 0;
+            if (fs_kernel_w((fs_kernel)k, H * i / 1000.0f, H) > fs_kernel_w((fs_kernel)k, H * (i - 1) / 1000.0f, H))
+                mono = 0;
         CHECK(mono, "%s does not decrease with distance", name);
     }
     CHECK(fs_kernel_from_name("gauss") == -1, "unknown kernel name");

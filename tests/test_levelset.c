@@ -39,7 +39,10 @@ static void exact_spheres(const fs_particles *p, float R, const fs_camera *cam, 
                 double c = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - (double)R * R, disc = b * b - c;
                 if (disc < 0) continue;
                 double t = -b - sqrt(disc);
-                if (t > 0 && t < best) { best = t; bi = i; }
+                if (t > 0 && t < best) {
+                    best = t;
+                    bi = i;
+                }
             }
             if (!isfinite(best)) continue;
             size_t id = (size_t)py * cam->width + px;
@@ -80,7 +83,8 @@ static float conventions(const char *what, const fs_gbuffer *g, const fs_camera 
           "%s: %d normals not unit, %d not facing the camera, %d bad depths, %d bad thickness", what, bad_n, bad_face,
           bad_d, bad_t);
     /* a grazing hit whose exit lies within the intersector's step has none: 0.1% */
-    if (want_thick) CHECK(zero_t <= covered / 1000, "%s: %d of %d covered pixels have thickness 0", what, zero_t, covered);
+    if (want_thick)
+        CHECK(zero_t <= covered / 1000, "%s: %d of %d covered pixels have thickness 0", what, zero_t, covered);
     return tmax;
 }
 
@@ -89,9 +93,10 @@ static fs_metrics measure(const char *what, const fs_gbuffer *a, const fs_gbuffe
     fs_metrics m;
     memset(&m, 0, sizeof m);
     CHECK(fs_metrics_compute(a, NULL, b, NULL, r, &m) == FS_OK, "metrics: %s", fs_error_message());
-    printf("%s: IoU %.4f, depth bias %.3f r, rmse %.3f r, p95 %.3f r, normal mean %.2f deg (interior %.2f), p95 %.2f deg\n",
-           what, m.mask_iou, m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.normal_mean_deg,
-           m.interior_normal_mean_deg, m.normal_p95_deg);
+    printf(
+        "%s: IoU %.4f, depth bias %.3f r, rmse %.3f r, p95 %.3f r, normal mean %.2f deg (interior %.2f), p95 %.2f deg\n",
+        what, m.mask_iou, m.depth_bias_r, m.depth_rmse_r, m.depth_p95_r, m.normal_mean_deg, m.interior_normal_mean_deg,
+        m.normal_p95_deg);
     return m;
 }
 
@@ -191,8 +196,9 @@ static fs_metrics vs_union(const char *name, const fs_particles *p, fs_field f, 
                         rim |= !ex->coverage[(size_t)v * cam->width + u] != !ex->coverage[id];
             off_rim += !rim;
         }
-    printf("%s: %d pixels change coverage, %d more than %d px off the exact silhouette (pixel >= %.3f r, offset <= %.3f r)\n",
-           what, changed, off_rim, k, px_r, offset_r);
+    printf(
+        "%s: %d pixels change coverage, %d more than %d px off the exact silhouette (pixel >= %.3f r, offset <= %.3f r)\n",
+        what, changed, off_rim, k, px_r, offset_r);
     CHECK(off_rim == 0, "%s: %d pixels change coverage more than %d px off the exact silhouette", what, off_rim, k);
     return e;
 }
@@ -223,7 +229,8 @@ static void frame(const char *name, const fs_particles *p, fs_field f, const fs_
     const char *off[] = {"thickness=off", NULL};
     fs_gbuffer no;
     fs_gbuffer_alloc(&no, cam->width, cam->height);
-    CHECK(fs_test_render("levelset", off, p, f, cam, &no, NULL) == FS_OK, "%s: thickness off: %s", name, fs_error_message());
+    CHECK(fs_test_render("levelset", off, p, f, cam, &no, NULL) == FS_OK, "%s: thickness off: %s", name,
+          fs_error_message());
     conventions("thickness off", &no, cam, 0);
     size_t n = (size_t)cam->width * cam->height;
     CHECK(!memcmp(no.depth, ls.depth, n * sizeof(float)) && !memcmp(no.normal, ls.normal, 3 * n * sizeof(float)),
@@ -238,7 +245,10 @@ static void dam_break(void)
     fs_particles p;
     fs_scene s;
     fs_field f;
-    if (fs_test_load_dam(&p, &s, &f)) { CHECK(0, "dam: %s", fs_error_message()); return; }
+    if (fs_test_load_dam(&p, &s, &f)) {
+        CHECK(0, "dam: %s", fs_error_message());
+        return;
+    }
     frame("dam break 6859, 128^2", &p, f, &s.camera, 0);
     fs_particles_free(&p);
 }
@@ -249,7 +259,10 @@ static void box(void)
     fs_particles p;
     int rc = fs_scene_load(&s, FS_SOURCE_DIR "/experiments/scenes/box.json");
     CHECK(rc == FS_OK, "box.json: %s", fs_error_message());
-    if (rc || fs_synthetic_generate(&s, 0, &p)) { CHECK(0, "box: %s", fs_error_message()); return; }
+    if (rc || fs_synthetic_generate(&s, 0, &p)) {
+        CHECK(0, "box: %s", fs_error_message());
+        return;
+    }
     s.camera.width = s.camera.height = 96;
     fs_scene_frame_particles(&s, &p);
     frame("box, 96^2", &p, fs_scene_field(&s), &s.camera, 1);
@@ -265,12 +278,14 @@ static void box(void)
     fs_camera_fit_clip(&c, p.bmin, p.bmax);
     fs_gbuffer g;
     fs_gbuffer_alloc(&g, 9, 9);
-    CHECK(fs_test_render("levelset", NULL, &p, fs_scene_field(&s), &c, &g, NULL) == FS_OK, "side: %s", fs_error_message());
+    CHECK(fs_test_render("levelset", NULL, &p, fs_scene_field(&s), &c, &g, NULL) == FS_OK, "side: %s",
+          fs_error_message());
     /* the ray passes at most sqrt(2) r from a lattice row (spacing 2r), so each end
      * sphere of 2r adds between sqrt(2) r and 2r to the centres' extent */
     float ext = p.bmax[0] - p.bmin[0], got = g.thickness[4 * 9 + 4];
     float lo = ext + 2 * 1.3f * s.radius, hi = ext + 2 * 2.05f * s.radius;
-    printf("box side view: centre thickness %.4f, want %.4f..%.4f (centres' extent %.4f + 2 x 1.3..2.05 r)\n", got, lo, hi, ext);
+    printf("box side view: centre thickness %.4f, want %.4f..%.4f (centres' extent %.4f + 2 x 1.3..2.05 r)\n", got, lo,
+           hi, ext);
     CHECK(got >= lo && got <= hi, "box: centre thickness %g, want %g..%g", got, lo, hi);
     fs_gbuffer_free(&g);
     fs_particles_free(&p);
@@ -315,13 +330,14 @@ static void refusals(void)
     fs_scene s;
     fs_field f;
     if (fs_test_load_dam(&p, &s, &f)) return;
-    const char *bad[][2] = {{"radius=0", NULL}, {"voxel=0", NULL}, {"voxel=-1", NULL}, {"half_width=0.5", NULL},
-                            {"smooth=median", NULL}, {"radius=0.5", NULL}};
+    const char *bad[][2] = {{"radius=0", NULL},       {"voxel=0", NULL},       {"voxel=-1", NULL},
+                            {"half_width=0.5", NULL}, {"smooth=median", NULL}, {"radius=0.5", NULL}};
     fs_gbuffer g;
     fs_gbuffer_alloc(&g, 8, 8);
     for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
         int rc = fs_test_render("levelset", bad[i], &p, f, &s.camera, &g, NULL);
-        CHECK(rc == FS_ERR_INPUT && !strchr(fs_error_message(), '\n'), "%s: rc %d (%s)", bad[i][0], rc, fs_error_message());
+        CHECK(rc == FS_ERR_INPUT && !strchr(fs_error_message(), '\n'), "%s: rc %d (%s)", bad[i][0], rc,
+              fs_error_message());
         printf("%s: %s\n", bad[i][0], fs_error_message());
     }
     /* the recipe runs: dilate, smooth, erode */

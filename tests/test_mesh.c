@@ -165,7 +165,10 @@ static void dam_break(void)
     fs_particles p;
     static fs_scene s;
     fs_field f;
-    if (fs_test_load_dam(&p, &s, &f)) { CHECK(0, "dam: %s", fs_error_message()); return; }
+    if (fs_test_load_dam(&p, &s, &f)) {
+        CHECK(0, "dam: %s", fs_error_message());
+        return;
+    }
     fs_gbuffer me, ref;
     fs_gbuffer_alloc(&me, s.camera.width, s.camera.height);
     fs_gbuffer_alloc(&ref, s.camera.width, s.camera.height);
@@ -173,7 +176,8 @@ static void dam_break(void)
     CHECK(fs_test_render("mesh", NULL, &p, f, &s.camera, &me, &st) == FS_OK, "mesh: %s", fs_error_message());
     const char *want[] = {"upload", "raster", "thickness", NULL}, *miss = fs_test_missing_stage(&st, want);
     CHECK(miss == NULL, "dam: no stage %s", miss);
-    CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &ref, NULL) == FS_OK, "reference: %s", fs_error_message());
+    CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &ref, NULL) == FS_OK, "reference: %s",
+          fs_error_message());
     fs_metrics m = measure("dam mesh vs reference", &me, &ref, f.r);
     CHECK(m.mask_iou >= 0.98 && m.depth_p95_r <= 0.1 && m.interior_normal_mean_deg <= 2,
           "dam: IoU %.4f (>= 0.98), depth p95 %.3f r (<= 0.1), interior normal %.2f deg (<= 2)", m.mask_iou,
@@ -219,7 +223,10 @@ static void interior_tiles(void)
     fs_particles p;
     static fs_scene s;
     fs_field f;
-    if (fs_test_load_dam(&p, &s, &f)) { CHECK(0, "dam: %s", fs_error_message()); return; }
+    if (fs_test_load_dam(&p, &s, &f)) {
+        CHECK(0, "dam: %s", fs_error_message());
+        return;
+    }
     fs_grid g;
     CHECK(fs_grid_build(&g, &p, f.H) == FS_OK, "grid: %s", fs_error_message());
     fs_trimesh a, b;
@@ -230,7 +237,7 @@ static void interior_tiles(void)
     printf("interior tiles: %zu of %zu leaves kept (all kept: %zu); %zu and %zu vertices\n", ka, la, kb, a.nv, b.nv);
     CHECK(la == lb && kb == lb && ka < 0.9 * la, "interior tiles: kept %zu of %zu (all: %zu of %zu)", ka, la, kb, lb);
     int same = a.nv == b.nv && a.nt == b.nt && !memcmp(a.pos, b.pos, 3 * a.nv * sizeof *a.pos) &&
-               !memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri);
+        !memcmp(a.tri, b.tri, 3 * a.nt * sizeof *a.tri);
     CHECK(same, "interior tiles: the mesh changed (%zu/%zu vertices, %zu/%zu triangles)", a.nv, b.nv, a.nt, b.nt);
     fs_trimesh_free(&a);
     fs_trimesh_free(&b);
@@ -243,7 +250,10 @@ int main(void)
     ball_mesh();
     interior_tiles();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     dam_break();
     fs_gl_context_destroy(&ctx);
     TEST_DONE();

@@ -17,17 +17,19 @@
 
 /* A test-only method whose struct lists its fields in another order than its
  * table, with a member that is not a parameter: only the offsets can place them. */
+typedef enum { MODE_A, MODE_B, MODE_C } probe_mode;
 typedef struct probe_params {
     double gain;
     int unused;
-    double mode, enabled;
+    probe_mode mode;
+    bool enabled;
 } probe_params;
 
 /* Spelled out here; the methods use FS_PARAM_FIELD, which also names each entry. */
 static const fs_param_def probe_table[] = {
-    {"enabled", offsetof(probe_params, enabled), FS_PARAM_BOOL, 1, 0, 1, NULL, "on/off"},
-    {"mode", offsetof(probe_params, mode), FS_PARAM_ENUM, 1, 0, 2, "a|b|c", "a choice"},
-    {"gain", offsetof(probe_params, gain), FS_PARAM_FLOAT, 0.5, 0, 10, NULL, "a number"},
+    {"enabled", offsetof(probe_params, enabled), FS_CTYPE_BOOL, FS_PARAM_BOOL, 1, 0, 1, NULL, "on/off"},
+    {"mode", offsetof(probe_params, mode), FS_CTYPE_INT, FS_PARAM_ENUM, 1, 0, 2, "a|b|c", "a choice"},
+    {"gain", offsetof(probe_params, gain), FS_CTYPE_DOUBLE, FS_PARAM_FLOAT, 0.5, 0, 10, NULL, "a number"},
 };
 
 static probe_params created; /* what the last create() received */
@@ -54,7 +56,8 @@ static void split(void)
 {
     fs_param_setting s;
     CHECK(fs_param_split("spheres.radius_scale=0.5", &s) == FS_OK && !strcmp(s.method, "spheres") &&
-          !strcmp(s.param, "radius_scale") && !strcmp(s.value, "0.5"), "split spheres.radius_scale=0.5");
+              !strcmp(s.param, "radius_scale") && !strcmp(s.value, "0.5"),
+          "split spheres.radius_scale=0.5");
     CHECK(fs_param_split("m.p=a.b=c", &s) == FS_OK && !strcmp(s.param, "p") && !strcmp(s.value, "a.b=c"),
           "the value keeps its '.' and '='");
     const char *bad[] = {"spheres", "spheres.radius_scale", ".p=1", "m.=1", "m.p=", "a=b.c", NULL};
@@ -85,8 +88,8 @@ static void same_messages(void)
         fs_scene_defaults(&s);
         int rc = fs_scene_add_set(&s, bad[i]);
         if (!rc) rc = fs_method_params_resolve(fs_method_find("spheres"), &s, (double[FS_MAX_PARAMS]){0});
-        CHECK(rc == FS_ERR_INPUT && !strcmp(fs_error_message(), want), "scene %s: %s vs %s", bad[i],
-              fs_error_message(), want);
+        CHECK(rc == FS_ERR_INPUT && !strcmp(fs_error_message(), want), "scene %s: %s vs %s", bad[i], fs_error_message(),
+              want);
     }
 }
 
@@ -95,11 +98,19 @@ static void fill(void)
     probe_params p;
     memset(&p, 0xff, sizeof p);
     CHECK(fs_method_params_fill(&probe, NULL, &p) == FS_OK, "fill defaults");
-    CHECK(p.enabled == 1 && p.mode == 1 && p.gain == 0.5 && p.unused == 0, "defaults %g %g %g %d", p.enabled, p.mode,
+    CHECK(p.enabled && p.mode == MODE_B && p.gain == 0.5 && p.unused == 0, "defaults %d %d %g %d", p.enabled, p.mode,
           p.gain, p.unused);
     double v[3] = {0, 2, 7.25}; /* table order: enabled, mode, gain */
-    CHECK(fs_method_params_fill(&probe, v, &p) == FS_OK && p.enabled == 0 && p.mode == 2 && p.gain == 7.25,
-          "values at their offsets: %g %g %g", p.enabled, p.mode, p.gain);
+    CHECK(fs_method_params_fill(&probe, v, &p) == FS_OK && !p.enabled && p.mode == MODE_C && p.gain == 7.25,
+          "values at their offsets, in their types: %d %d %g", p.enabled, p.mode, p.gain);
+    /* an entry whose field's C type does not fit its kind (a bool parameter on an int field) */
+    fs_param_def wrong[3];
+    memcpy(wrong, probe_table, sizeof wrong);
+    wrong[0].ctype = FS_CTYPE_INT;
+    fs_method mistyped = probe;
+    mistyped.params = wrong;
+    CHECK(fs_method_params_fill(&mistyped, NULL, &p) == FS_ERR_RUNTIME && strstr(fs_error_message(), "C type"),
+          "a field whose C type does not fit its kind is refused: %s", fs_error_message());
     fs_method small = probe;
     small.params_size = sizeof(double);
     CHECK(fs_method_params_fill(&small, NULL, &p) == FS_ERR_RUNTIME && strstr(fs_error_message(), "outside"),
@@ -113,12 +124,31 @@ static void by_name(void)
     fs_scene s;
     fs_scene_defaults(&s);
     CHECK(fs_scene_add_set(&s, "probe.gain=3") == FS_OK && fs_scene_add_set(&s, "probe.mode=c") == FS_OK &&
-          fs_scene_add_set(&s, "spheres.thickness=off") == FS_OK, "settings");
+              fs_scene_add_set(&s, "spheres.thickness=off") == FS_OK,
+          "settings");
     fs_run *run = NULL; /* resolves the settings by name and fills the struct */
     CHECK(fs_run_open(&run, &probe, &s, NULL, NULL) == FS_OK, "open: %s", fs_error_message());
     fs_run_close(run);
-    CHECK(created.gain == 3 && created.mode == 2 && created.enabled == 1, "created with %g %g %g", created.gain,
+    CHECK(created.gain == 3 && created.mode == MODE_C && created.enabled, "created with %g %d %d", created.gain,
           created.mode, created.enabled);
+}
+
+/* Settings are parsed once, when added: a bad one is refused there, and a run reads the
+ * stored value, not the text (overwritten here to prove it). */
+static void parsed_once(void)
+{
+    fs_scene s;
+    fs_scene_defaults(&s);
+    CHECK(fs_scene_add_set(&s, "probe.mode=zz") == FS_ERR_INPUT && strstr(fs_error_message(), "probe.mode") &&
+              s.nsets == 0,
+          "a bad value is refused when added: %s", fs_error_message());
+    CHECK(fs_scene_add_set(&s, "probe.nosuch=1") == FS_ERR_INPUT && s.nsets == 0, "an unknown parameter too: %s",
+          fs_error_message());
+    CHECK(fs_scene_add_set(&s, "probe.gain=4.5") == FS_OK && s.sets[0].method == &probe && s.sets[0].value == 4.5,
+          "stored resolved: method %p, param %d, value %g", s.sets[0].method, s.sets[0].param, s.sets[0].value);
+    snprintf(s.sets[0].text, sizeof s.sets[0].text, "probe.gain=9");
+    double v[FS_MAX_PARAMS];
+    CHECK(fs_method_params_resolve(&probe, &s, v) == FS_OK && v[2] == 4.5, "resolve reads the parsed value: %g", v[2]);
 }
 
 /* Every built-in table fits its struct, one distinct double per parameter, and
@@ -127,13 +157,23 @@ static void builtin_tables(void)
 {
     for (int i = 0; i < fs_method_count(); i++) {
         const fs_method *m = fs_method_at(i);
-        /* every field is a parameter: a field without a table entry would stay 0 */
-        CHECK(m->params_size == m->nparams * sizeof(double) && m->nparams <= FS_MAX_PARAMS, "%s: %zu bytes, %d parameters",
-              m->name, m->params_size, m->nparams);
-        for (int a = 0; a < m->nparams; a++)
-            for (int b = 0; b < a; b++)
-                CHECK(m->params[a].offset != m->params[b].offset, "%s: %s and %s share an offset", m->name,
-                      m->params[a].name, m->params[b].name);
+        /* every field is a parameter (a field without a table entry would stay 0): laid out in
+         * offset order, each field starts where the one before ends, aligned, and the struct
+         * ends after the last (a field hidden in alignment padding is not seen) */
+        CHECK(m->nparams <= FS_MAX_PARAMS, "%s: %d parameters", m->name, m->nparams);
+        size_t end = 0, align = 1;
+        for (size_t off = 0, n = 0; n < (size_t)m->nparams; n++) {
+            int at = -1;
+            for (int a = 0; a < m->nparams; a++)
+                if (m->params[a].offset >= off && (at < 0 || m->params[a].offset < m->params[at].offset)) at = a;
+            size_t size = fs_param_ctype_size(m->params[at].ctype);
+            size_t want = (end + size - 1) / size * size;
+            CHECK(m->params[at].offset == want, "%s: %s at byte %zu, the field before it ends at %zu", m->name,
+                  m->params[at].name, m->params[at].offset, end);
+            end = m->params[at].offset + size, off = end, align = size > align ? size : align;
+        }
+        CHECK(m->params_size == (end + align - 1) / align * align, "%s: %zu bytes, its fields end at %zu", m->name,
+              m->params_size, end);
         void *p = fs_method_params_alloc(m, NULL);
         CHECK(p != NULL, "%s: fill: %s", m->name, fs_error_message());
         free(p);
@@ -161,6 +201,7 @@ int main(void)
     same_messages();
     fill();
     by_name();
+    parsed_once();
     builtin_tables();
     declared_costs();
     TEST_DONE();

@@ -53,17 +53,27 @@ static int next_value(const fs_param_def *def, const char **pos, char *out, int 
             char *end;
             double v = strtod(s, &end);
             *pos = s = end;
-            if (def->type == FS_PARAM_FLOAT || def->type == FS_PARAM_INT) { snprintf(out, size, "%g", v); return 1; }
+            if (def->type == FS_PARAM_FLOAT || def->type == FS_PARAM_INT) {
+                snprintf(out, size, "%g", v);
+                return 1;
+            }
             continue;
         }
-        if (!isalpha((unsigned char)*s) && *s != '_') { s++; continue; }
+        if (!isalpha((unsigned char)*s) && *s != '_') {
+            s++;
+            continue;
+        }
         while (isalnum((unsigned char)*s) || *s == '_') s++;
         *pos = s;
         char word[64];
         snprintf(word, sizeof word, "%.*s", (int)(s - t), t);
         int fits = def->type == FS_PARAM_BOOL ? !strcmp(word, "on") || !strcmp(word, "off")
-                 : def->type == FS_PARAM_ENUM ? fs_param_choice(def, word) >= 0 : 0;
-        if (fits) { snprintf(out, size, "%s", word); return 1; }
+            : def->type == FS_PARAM_ENUM      ? fs_param_choice(def, word) >= 0
+                                              : 0;
+        if (fits) {
+            snprintf(out, size, "%s", word);
+            return 1;
+        }
     }
     return 0;
 }
@@ -95,14 +105,16 @@ static int check_row(const fs_method *m, const char *names, const char *defaults
         snprintf(name, sizeof name, "%.*s", (int)(e - b - 1), b + 1);
         b = e;
         int i = fs_method_param_index(m, name);
-        if (i < 0) { bad += problem(where, "`%s` is not a parameter of %s", name, m->name); continue; }
+        if (i < 0) {
+            bad += problem(where, "`%s` is not a parameter of %s", name, m->name);
+            continue;
+        }
         if (seen[i]++) bad += problem(where, "`%s` has a second row", name);
         char want[64], got[64];
         fs_param_format(&m->params[i], m->params[i].def, want, sizeof want);
         if (!next_value(&m->params[i], &pos, got, sizeof got))
             bad += problem(where, "no default for `%s` in \"%s\" (the table's: %s)", name, defaults, want);
-        else if (strcmp(got, want))
-            bad += problem(where, "`%s` defaults to %s, the README says %s", name, want, got);
+        else if (strcmp(got, want)) bad += problem(where, "`%s` defaults to %s, the README says %s", name, want, got);
     }
     return bad;
 }
@@ -131,8 +143,15 @@ static int check_text(const fs_method *m, const char *text, const char *where)
     char buf[4096], *cells[MAX_CELLS];
     for (const char *line = text; line; line = next_line(line)) {
         int n = row_cells(line, buf, sizeof buf, cells);
-        if (n == 0) { in_table = 0; continue; }
-        if (!in_table) { in_table = 1; col = default_column(cells, n); continue; } /* the header */
+        if (n == 0) {
+            in_table = 0;
+            continue;
+        }
+        if (!in_table) {
+            in_table = 1;
+            col = default_column(cells, n);
+            continue;
+        } /* the header */
         if (col < 0 || !strncmp(cells[0], "---", 3)) continue;
         if (col < n) bad += check_row(m, cells[0], cells[col], seen, where);
     }
@@ -150,11 +169,11 @@ static void checker(void)
     const char *cases[][2] = {
         {"| `radius_scale` | 1 | 1.0 r | a |\n| `thickness` | — | on | b |\n", "0"},
         {"| `radius_scale`, `thickness` | | 1, on | a |\n", "0"},
-        {"| `radius_scale` | 1 | 1.5 | a |\n| `thickness` | — | on | b |\n", "1"},   /* wrong number */
-        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | — | off | b |\n", "1"},   /* wrong bool */
-        {"| `radius_scale` | 1 | 1 | a |\n", "1"},                                  /* missing row */
+        {"| `radius_scale` | 1 | 1.5 | a |\n| `thickness` | — | on | b |\n", "1"},                   /* wrong number */
+        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | — | off | b |\n", "1"},                    /* wrong bool */
+        {"| `radius_scale` | 1 | 1 | a |\n", "1"},                                                   /* missing row */
         {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | | on | b |\n| `radius` | | 1 | |\n", "1"}, /* unknown */
-        {"| `radius_scale` | 1 | r | a |\n| `thickness` | — | on | b |\n", "1"},   /* no value */
+        {"| `radius_scale` | 1 | r | a |\n| `thickness` | — | on | b |\n", "1"},                     /* no value */
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         char text[1024];

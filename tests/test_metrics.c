@@ -209,7 +209,8 @@ static void test_depth_outliers(void)
               m.depth_abs_p99_r < 0.005,
           "median %g, |e| p50 %g p95 %g p99 %g: not within the plane's 0.005 r", m.depth_median_r, m.depth_abs_p50_r,
           m.depth_abs_p95_r, m.depth_abs_p99_r);
-    CHECK(m.depth_over_1r_frac == (double)NOUT / NP, "over_1r_frac %g, want %g", m.depth_over_1r_frac, (double)NOUT / NP);
+    CHECK(m.depth_over_1r_frac == (double)NOUT / NP, "over_1r_frac %g, want %g", m.depth_over_1r_frac,
+          (double)NOUT / NP);
     /* each exactly the nearest-rank value of the sorted errors */
     CHECK_NEAR(m.depth_abs_p50_r, pct_sorted(ad, NP, 50), 1e-12, "|e| p50 (nearest rank)");
     CHECK_NEAR(m.depth_abs_p95_r, pct_sorted(ad, NP, 95), 1e-12, "|e| p95 (nearest rank)");
@@ -231,8 +232,7 @@ static void rotate(const double v[3], const double u[3], double ang, double out[
 
 /* Normals in the plane perpendicular to the axis u, varying over the image, rotated
  * about u by ang_of(x, y) degrees in b. */
-static void fill_rotated(fs_gbuffer *a, fs_gbuffer *b, int x0, int y0, int x1, int y1,
-                         double (*ang_of)(int, int))
+static void fill_rotated(fs_gbuffer *a, fs_gbuffer *b, int x0, int y0, int x1, int y1, double (*ang_of)(int, int))
 {
     double u[3] = {1 / sqrt(14), 2 / sqrt(14), 3 / sqrt(14)};
     double e1[3] = {2 / sqrt(5), -1 / sqrt(5), 0}; /* perpendicular to u */
@@ -246,8 +246,16 @@ static void fill_rotated(fs_gbuffer *a, fs_gbuffer *b, int x0, int y0, int x1, i
         }
 }
 
-static double ang_10(int x, int y) { (void)x, (void)y; return 10; }
-static double ang_col(int x, int y) { (void)y; return 0.5 * (x - 4); }
+static double ang_10(int x, int y)
+{
+    (void)x, (void)y;
+    return 10;
+}
+static double ang_col(int x, int y)
+{
+    (void)y;
+    return 0.5 * (x - 4);
+}
 static double ang_ring(int x, int y) { return x >= 13 && x < 27 && y >= 13 && y < 27 ? 10 : 30; }
 
 static void test_normal_rotation(void)

@@ -30,21 +30,27 @@ static void test_parse(void)
 {
     fs_obstacles ob;
     int rc = parse("[{\"min\": [0, 0, 0], \"max\": [1, 2, 3]}, {\"centre\": [1, 1, 1], \"radius\": 0.5, "
-                   "\"color\": [1, 0, 0]}]", &ob);
+                   "\"color\": [1, 0, 0]}]",
+                   &ob);
     CHECK(rc == FS_OK && ob.n == 2, "valid obstacles refused: %s", fs_error_message());
     CHECK(ob.o[0].kind == FS_OBSTACLE_BOX && ob.o[0].hi[2] == 3 && ob.o[1].kind == FS_OBSTACLE_SPHERE &&
-          ob.o[1].radius == 0.5f && ob.o[1].color[0] == 1, "obstacles read wrongly");
-    static const char *const bad[] = {
-        "{}", "[1]", "[{\"min\": [1, 0, 0], \"max\": [0, 1, 1]}]", "[{\"centre\": [0, 0, 0], \"radius\": -1}]",
-        "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"size\": 2}]", "[{\"min\": [0, 0, 0]}]",
-        "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"radius\": 1}]", "[{\"centre\": [0, 0], \"radius\": 1}]",
-        "[{\"centre\": [0, 0, 0], \"radius\": 1, \"color\": [2, 0, 0]}]",
-        "[{\"centre\": [0, 0, 0], \"radius\": 1, \"radius\": 2}]"};
+              ob.o[1].radius == 0.5f && ob.o[1].color[0] == 1,
+          "obstacles read wrongly");
+    static const char *const bad[] = {"{}",
+                                      "[1]",
+                                      "[{\"min\": [1, 0, 0], \"max\": [0, 1, 1]}]",
+                                      "[{\"centre\": [0, 0, 0], \"radius\": -1}]",
+                                      "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"size\": 2}]",
+                                      "[{\"min\": [0, 0, 0]}]",
+                                      "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"radius\": 1}]",
+                                      "[{\"centre\": [0, 0], \"radius\": 1}]",
+                                      "[{\"centre\": [0, 0, 0], \"radius\": 1, \"color\": [2, 0, 0]}]",
+                                      "[{\"centre\": [0, 0, 0], \"radius\": 1, \"radius\": 2}]"};
     for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
         rc = parse(bad[i], &ob);
         const char *m = fs_error_message();
-        CHECK(rc == FS_ERR_INPUT && strstr(m, "t.json: ") == m && !strchr(m, '\n') && ob.n == 0,
-              "%s: rc %d, %s", bad[i], rc, m);
+        CHECK(rc == FS_ERR_INPUT && strstr(m, "t.json: ") == m && !strchr(m, '\n') && ob.n == 0, "%s: rc %d, %s",
+              bad[i], rc, m);
     }
 }
 
@@ -99,7 +105,10 @@ static void fill(fs_gbuffer *g, float depth)
     }
 }
 
-static int same(const float *a, const float *b) { return fabsf(a[0] - b[0]) + fabsf(a[1] - b[1]) + fabsf(a[2] - b[2]) < 1e-5f; }
+static int same(const float *a, const float *b)
+{
+    return fabsf(a[0] - b[0]) + fabsf(a[1] - b[1]) + fabsf(a[2] - b[2]) < 1e-5f;
+}
 
 static void test_shading(fs_gbuffer *g)
 {
@@ -128,7 +137,8 @@ static void test_shading(fs_gbuffer *g)
     s.material = none.material = FS_MATERIAL_WATER; /* water in front refracts the box */
     fs_shade(&s, &cam, g, 0, img);
     fs_shade(&none, &cam, g, 0, plain);
-    CHECK(img[4 * L + 1] < 0.5f * plain[4 * L + 1], "the red box is not seen through the water: G %g vs %g", img[4 * L + 1], plain[4 * L + 1]);
+    CHECK(img[4 * L + 1] < 0.5f * plain[4 * L + 1], "the red box is not seen through the water: G %g vs %g",
+          img[4 * L + 1], plain[4 * L + 1]);
     CHECK(same(img + 4 * R, plain + 4 * R), "the box changes water pixels it is not behind");
     free(img);
     free(empty);
@@ -210,10 +220,12 @@ static void test_mesh(fs_gbuffer *g)
     write_unit_cube(FS_TEST_OUT "/unit_cube.obj");
     fs_obstacles ob;
     int rc = parse_at("[{\"mesh\": \"unit_cube.obj\", \"scale\": 2, \"offset\": [1, 0, -1]},"
-                      " {\"min\": [1, 0, -1], \"max\": [3, 2, 1]}]", FS_TEST_OUT "/scene.json", &ob);
+                      " {\"min\": [1, 0, -1], \"max\": [3, 2, 1]}]",
+                      FS_TEST_OUT "/scene.json", &ob);
     CHECK(rc == FS_OK && ob.n == 2 && ob.o[0].kind == FS_OBSTACLE_MESH, "mesh obstacle: %s", fs_error_message());
     if (rc) return;
-    CHECK(ob.o[0].lo[0] == 1 && ob.o[0].hi[0] == 3 && ob.o[0].hi[1] == 2, "mesh bounds %g..%g", ob.o[0].lo[0], ob.o[0].hi[0]);
+    CHECK(ob.o[0].lo[0] == 1 && ob.o[0].hi[0] == 3 && ob.o[0].hi[1] == 2, "mesh bounds %g..%g", ob.o[0].lo[0],
+          ob.o[0].hi[0]);
     float worst = 0;
     for (int k = 0; k < 200; k++) { /* points inside, outside and near the faces */
         float p[3] = {(float)(k % 7) * 0.7f - 0.5f, (float)(k % 5) * 0.6f - 0.4f, (float)(k % 11) * 0.35f - 1.9f};
@@ -226,7 +238,8 @@ static void test_mesh(fs_gbuffer *g)
         float org[3] = {-2, 0.03f * k, 0.5f - 0.02f * k}, d[3] = {1, 0.05f, 0.01f}, t1 = 0, t2 = 0, n1[3], n2[3];
         float l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         for (int i = 0; i < 3; i++) d[i] /= l;
-        int h1 = fs_obstacles_hit(&one, org, d, 0, INFINITY, &t1, n1), h2 = fs_obstacles_hit(&other, org, d, 0, INFINITY, &t2, n2);
+        int h1 = fs_obstacles_hit(&one, org, d, 0, INFINITY, &t1, n1),
+            h2 = fs_obstacles_hit(&other, org, d, 0, INFINITY, &t2, n2);
         misses += (h1 < 0) != (h2 < 0) || (h1 >= 0 && (fabsf(t1 - t2) > 1e-4f || fabsf(n1[0] - n2[0]) > 1e-4f));
     }
     CHECK(misses == 0, "%d of 100 rays hit the mesh and the box differently", misses);
@@ -250,9 +263,10 @@ static void test_mesh(fs_gbuffer *g)
 /* Bad mesh obstacles: one line naming the scene, the obstacle and the mesh file's problem. */
 static void test_bad_mesh(void)
 {
-    static const char *const files[][2] = {
-        {"nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"}, {"badv.obj", "v 0 0\nf 1 1 1\n"},
-        {"badf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}, {"short.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"}};
+    static const char *const files[][2] = {{"nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"},
+                                           {"badv.obj", "v 0 0\nf 1 1 1\n"},
+                                           {"badf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"},
+                                           {"short.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"}};
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         char path[512], json[256];
         snprintf(path, sizeof path, FS_TEST_OUT "/%s", files[i][0]);
@@ -267,10 +281,9 @@ static void test_bad_mesh(void)
                   !strchr(m, '\n'),
               "%s: rc %d, %s", files[i][0], rc, m);
     }
-    static const char *const bad[] = {"[{\"mesh\": \"missing.obj\"}]", "[{\"mesh\": 3}]",
-                                      "[{\"mesh\": \"x.obj\", \"radius\": 1}]",
-                                      "[{\"centre\": [0, 0, 0], \"radius\": 1, \"scale\": 2}]",
-                                      "[{\"mesh\": \"x.obj\", \"scale\": -1}]"};
+    static const char *const bad[] = {
+        "[{\"mesh\": \"missing.obj\"}]", "[{\"mesh\": 3}]", "[{\"mesh\": \"x.obj\", \"radius\": 1}]",
+        "[{\"centre\": [0, 0, 0], \"radius\": 1, \"scale\": 2}]", "[{\"mesh\": \"x.obj\", \"scale\": -1}]"};
     for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
         fs_obstacles ob;
         int rc = parse(bad[i], &ob);
@@ -287,7 +300,8 @@ static void test_scene_file(void)
     fclose(f);
     fs_scene s;
     int rc = fs_scene_load(&s, path);
-    CHECK(rc == FS_OK && s.obstacles.n == 1 && s.obstacles.o[0].radius == 0.1f, "scene obstacles: %s", fs_error_message());
+    CHECK(rc == FS_OK && s.obstacles.n == 1 && s.obstacles.o[0].radius == 0.1f, "scene obstacles: %s",
+          fs_error_message());
     f = fopen(path, "w");
     fputs("{\"particles\": {\"synthetic\": \"slab\"}, \"obstacles\": [{\"centre\": [0, 0, 0]}]}", f);
     fclose(f);

@@ -14,7 +14,8 @@ static float dist3(const float a[3], const float b[3])
 int main(void)
 {
     for (int up = 0; up < 3; up++) {
-        fs_camera c = {.eye = {3.2f, 3.4f, 5.4f}, .target = {0.1f, 1.0f, -0.2f}, .fovy_deg = 40, .width = 64, .height = 48};
+        fs_camera c = {
+            .eye = {3.2f, 3.4f, 5.4f}, .target = {0.1f, 1.0f, -0.2f}, .fovy_deg = 40, .width = 64, .height = 48};
         c.up[up] = 1;
         fs_orbit o;
         fs_orbit_from_camera(&o, &c, up);
@@ -32,7 +33,8 @@ int main(void)
         CHECK(o.pitch < 1.5708f && o.pitch > 1.5f, "up %d: pitch %g not held below the pole", up, o.pitch);
 
         fs_orbit_from_camera(&o, &c, up);
-        float px = fs_orbit_pixel_size(&o, 48), right[3], vup[3], fwd[3], t0[3] = {o.target[0], o.target[1], o.target[2]};
+        float px = fs_orbit_pixel_size(&o, 48), right[3], vup[3], fwd[3],
+              t0[3] = {o.target[0], o.target[1], o.target[2]};
         fs_orbit_apply(&o, &d);
         fs_camera_basis(&d, right, vup, fwd);
         fs_orbit_pan(&o, 10, 0, 48); /* drag right: the scene follows, the target moves left */

@@ -2,13 +2,29 @@
  * VDB readers run in: every field a reader fills comes back unchanged through the
  * pipe; a reader's own refusal comes back as it was; a reader that crashes or exits
  * early leaves this process running, with one error line naming the file and an
- * empty particle set. The readers here are small functions that do exactly that. */
+ * empty particle set, and neither this process's crash handlers nor its sanitizer
+ * death callback run in the child (a fuzzer's would save the input as its own
+ * crash). The readers here are small functions that do exactly that. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "read_in_child.h"
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define FS_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FS_TEST_ASAN 1
+#endif
+#endif
+#ifdef FS_TEST_ASAN
+#include <sanitizer/common_interface_defs.h>
+#endif
 
 #define N 5000
 
@@ -53,6 +69,25 @@ static int read_exiting(fs_particles *p, const char *path)
     _exit(1); /* as a sanitizer does after its report */
 }
 
+static int read_segfaulting(fs_particles *p, const char *path)
+{
+    read_all_fields(p, path);
+    raise(SIGSEGV);
+    return 0;
+}
+
+#ifdef FS_TEST_ASAN
+/* A write past a buffer: the sanitizer reports it and the child exits. */
+static int read_overflowing(fs_particles *p, const char *path)
+{
+    read_all_fields(p, path);
+    volatile char *b = malloc(8);
+    b[8] = 1;
+    free((void *)b);
+    return 0;
+}
+#endif
+
 static void test_fields_come_back(void)
 {
     fs_particles p;
@@ -66,14 +101,13 @@ static void test_fields_come_back(void)
     int same = p.n == N;
     for (size_t i = 0; same && i < N; i++)
         same = p.x[i] == ref.x[i] && p.y[i] == ref.y[i] && p.z[i] == ref.z[i] && p.vx[i] == ref.vx[i] &&
-               p.vy[i] == ref.vy[i] && p.vz[i] == ref.vz[i] && p.phase[i] == ref.phase[i] &&
-               !memcmp(p.color + 3 * i, ref.color + 3 * i, 3 * sizeof(float));
+            p.vy[i] == ref.vy[i] && p.vz[i] == ref.vz[i] && p.phase[i] == ref.phase[i] &&
+            !memcmp(p.color + 3 * i, ref.color + 3 * i, 3 * sizeof(float));
     CHECK(same, "a field changed on its way through the pipe");
     CHECK(p.radius == 0.0125f, "radius %g", p.radius);
     fs_particles_free(&p);
     fs_particles_free(&ref);
-    CHECK(fs_read_in_child(&p, "pos.vtu", read_positions_only, "test reader") == FS_OK, "read: %s",
-          fs_error_message());
+    CHECK(fs_read_in_child(&p, "pos.vtu", read_positions_only, "test reader") == FS_OK, "read: %s", fs_error_message());
     CHECK(p.n == 3 && p.x[2] == 7 && !p.vx && !p.color && !p.phase, "positions only: n %zu", p.n);
     fs_particles_free(&p);
 }
@@ -91,11 +125,50 @@ static void expect_refused(int (*reader)(fs_particles *, const char *), const ch
     CHECK(p.n == 0 && !p.x, "a refused read left %zu particles", p.n);
 }
 
+/* What a fuzzer (libFuzzer) or a host application does on a crash: it records one
+ * (libFuzzer writes the input as crash-*) and exits. In the child it must not run:
+ * there the crash is the reader's, contained, and the parent reports it. */
+static char marker[64];
+static void host_records_crash(void)
+{
+    int fd = open(marker, O_WRONLY | O_CREAT, 0600);
+    if (fd >= 0) close(fd);
+}
+static void host_crash_handler(int sig)
+{
+    (void)sig;
+    host_records_crash();
+    _exit(42);
+}
+
+static void test_host_crash_handling_stays_out(void)
+{
+    snprintf(marker, sizeof marker, "/tmp/fs_test_child_crash_%d", (int)getpid());
+    unlink(marker);
+    struct sigaction sa, old_abrt, old_segv;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = host_crash_handler;
+    sigaction(SIGABRT, &sa, &old_abrt);
+    sigaction(SIGSEGV, &sa, &old_segv);
+    expect_refused(read_crashing, "test reader crashed on it (signal 6)");
+    expect_refused(read_segfaulting, "test reader crashed on it (signal 11)");
+#ifdef FS_TEST_ASAN
+    __sanitizer_set_death_callback(host_records_crash);
+    expect_refused(read_overflowing, "test reader failed on it");
+    __sanitizer_set_death_callback(NULL);
+#endif
+    sigaction(SIGABRT, &old_abrt, NULL);
+    sigaction(SIGSEGV, &old_segv, NULL);
+    CHECK(access(marker, F_OK) != 0, "the parent's crash handling ran in the child (%s written)", marker);
+    unlink(marker);
+}
+
 int main(void)
 {
     test_fields_come_back();
     expect_refused(read_refusing, "the reader's own refusal");
     expect_refused(read_crashing, "test reader crashed on it (signal 6)");
     expect_refused(read_exiting, "test reader failed on it");
+    test_host_crash_handling_stays_out();
     TEST_DONE();
 }

@@ -98,14 +98,18 @@ static void flat_normals(void)
             sum += ang;
             n++;
         }
-    printf("(a) unjittered slab top face: %d pixels, normal error mean %.4f deg, max %.4f deg\n", n, n ? sum / n : 0, worst);
+    printf("(a) unjittered slab top face: %d pixels, normal error mean %.4f deg, max %.4f deg\n", n, n ? sum / n : 0,
+           worst);
     CHECK(n > 2000, "top-face pixels %d", n);
     CHECK(worst < 1.0, "top-face normal off by %g degrees", worst);
     fs_gbuffer_free(&ref);
     fs_gbuffer_free(&ana);
 }
 
-typedef struct stats { double bias, spread, iou, bias_in, angle_in; int both, interior; } stats;
+typedef struct stats {
+    double bias, spread, iou, bias_in, angle_in;
+    int both, interior;
+} stats;
 
 /* 1 when every pixel within 3 px of (x, y) is covered by both buffers. */
 static int interior(const fs_gbuffer *a, const fs_gbuffer *b, int x, int y)
@@ -145,7 +149,10 @@ static stats compare(const fs_gbuffer *ref, const fs_gbuffer *ana, float r)
         st.bias = s1 / st.both;
         st.spread = sqrt(fmax(0, s2 / st.both - st.bias * st.bias));
     }
-    if (st.interior) { st.bias_in /= st.interior; st.angle_in /= st.interior; }
+    if (st.interior) {
+        st.bias_in /= st.interior;
+        st.angle_in /= st.interior;
+    }
     st.iou = either ? (double)st.both / either : 0;
     return st;
 }
@@ -168,8 +175,8 @@ static void against_analytic(void)
             CHECK(fs_synthetic_analytic(&s, 0, &cam, &ana) == FS_OK, "analytic %s", names[si]);
             stats st = compare(&ref, &ana, s.radius);
             printf("(b) %-6s seed %u: depth bias %+.4f r, spread %.4f r, IoU %.4f over %d pixels; interior (%d px): "
-                   "bias %+.4f r, normal angle %.2f deg\n", names[si], seeds[k], st.bias, st.spread, st.iou, st.both,
-                   st.interior, st.bias_in, st.angle_in);
+                   "bias %+.4f r, normal angle %.2f deg\n",
+                   names[si], seeds[k], st.bias, st.spread, st.iou, st.both, st.interior, st.bias_in, st.angle_in);
             CHECK(st.both > 2000, "%s: %d pixels both cover", names[si], st.both);
             /* The iso-surface sits ~0.25 r inside the ideal faces (see the vertical
              * ray below); seen at 25 degrees elevation that is ~0.6 r of depth. */
@@ -216,7 +223,10 @@ static void thickness_and_params(void)
     fs_gbuffer_free(&off);
 }
 
-typedef struct phi_sum { const fs_field *f; float sum; } phi_sum;
+typedef struct phi_sum {
+    const fs_field *f;
+    float sum;
+} phi_sum;
 static void add_w(void *user, uint32_t slot, float d2)
 {
     (void)slot;
@@ -261,7 +271,12 @@ static void against_brute_force(void)
     if (!rc) rc = fs_run_render(run, &cam, &im, NULL);
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
     fs_run_close(run);
-    if (rc) { fs_run_image_free(&im); fs_grid_free(&g); fs_particles_free(&p); return; }
+    if (rc) {
+        fs_run_image_free(&im);
+        fs_grid_free(&g);
+        fs_particles_free(&p);
+        return;
+    }
     const fs_gbuffer gb = im.g;
     float rt[3], up[3], fwd[3];
     fs_camera_basis(&cam, rt, up, fwd);
@@ -279,21 +294,33 @@ static void against_brute_force(void)
         }
         int hit = 0;
         for (float t = t0; t < t1 && !hit; t += h)
-            if (phi_brute(&g, &f, cam.eye, d, t + h) >= f.iso) { hit = 1; lo = t; hi = t + h; }
-        if (!hit) { extra += gb.coverage[i] > 0; continue; }
+            if (phi_brute(&g, &f, cam.eye, d, t + h) >= f.iso) {
+                hit = 1;
+                lo = t;
+                hi = t + h;
+            }
+        if (!hit) {
+            extra += gb.coverage[i] > 0;
+            continue;
+        }
         while (hi - lo > 1e-4f * f.r) {
             float mid = 0.5f * (lo + hi);
-            if (phi_brute(&g, &f, cam.eye, d, mid) >= f.iso) hi = mid; else lo = mid;
+            if (phi_brute(&g, &f, cam.eye, d, mid) >= f.iso) hi = mid;
+            else lo = mid;
         }
         float depth = 0.5f * (lo + hi) * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
         plain++;
-        if (!(gb.coverage[i] > 0)) { missed++; continue; }
+        if (!(gb.coverage[i] > 0)) {
+            missed++;
+            continue;
+        }
         double diff = (gb.depth[i] - depth) / f.r;
         if (diff > 1e-3) behind++;
         if (fabs(diff) > worst && diff > -0.05) worst = fabs(diff);
     }
     printf("(c) double dam break 26, 40x40: plain march hits %d, reference misses %d, behind %d, "
-           "reference-only %d, largest depth difference where both agree %.5f r\n", plain, missed, behind, extra, worst);
+           "reference-only %d, largest depth difference where both agree %.5f r\n",
+           plain, missed, behind, extra, worst);
     CHECK(plain > 200, "plain march found %d surface pixels", plain);
     CHECK(missed == 0 && behind == 0, "reference missed %d, found a later surface at %d pixels", missed, behind);
     CHECK(worst < 0.01, "depths differ by %g r where both find the same surface", worst);
@@ -305,7 +332,8 @@ static void against_brute_force(void)
 static void refusals(void)
 {
     const fs_method *m = fs_method_find("reference");
-    CHECK(m && !m->needs_gl && fs_method_param_index(m, "step_min") >= 0 && fs_method_param_index(m, "field") >= 0, "registered, no GL, step_min and field parameters");
+    CHECK(m && !m->needs_gl && fs_method_param_index(m, "step_min") >= 0 && fs_method_param_index(m, "field") >= 0,
+          "registered, no GL, step_min and field parameters");
     if (!m) return;
     fs_scene s = scene(FS_SYNTH_BOX, 0.1f, 1);
     fs_particles p;
@@ -318,7 +346,8 @@ static void refusals(void)
     CHECK(rc == FS_ERR_INPUT && strstr(fs_error_message(), "smaller than the kernel support"),
           "grid cell below H refused: %s", fs_error_message());
     fs_run_image im = {0};
-    CHECK(run && fs_run_render(run, &s.camera, &im, NULL) != FS_OK && strstr(fs_error_message(), "smaller than the kernel support"),
+    CHECK(run && fs_run_render(run, &s.camera, &im, NULL) != FS_OK &&
+              strstr(fs_error_message(), "smaller than the kernel support"),
           "no render after a failed upload, with its reason: %s", fs_error_message());
     fs_run_image_free(&im);
     fs_run_close(run);

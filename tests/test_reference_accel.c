@@ -28,7 +28,11 @@ static void compare_one(const char *what, const char *const *on, const fs_partic
     int rc = fs_test_render("reference", off, p, f, cam, &a, NULL);
     if (!rc) rc = fs_test_render("reference", on, p, f, cam, &b, NULL);
     CHECK(!rc, "%s: renders (%s)", what, fs_error_message());
-    if (rc) { fs_gbuffer_free(&a); fs_gbuffer_free(&b); return; }
+    if (rc) {
+        fs_gbuffer_free(&a);
+        fs_gbuffer_free(&b);
+        return;
+    }
     size_t n = (size_t)a.w * a.h, both = 0, either = 0;
     double dd = 0, dt = 0, dn = 0;
     for (size_t i = 0; i < n; i++) {
@@ -52,8 +56,8 @@ static void compare_one(const char *what, const char *const *on, const fs_partic
         dn = ang > dn ? ang : dn;
     }
     double iou = either ? (double)both / (double)either : 1;
-    printf("%s: %zu pixels covered, IoU %.6f, max |depth| %.2g r, max |thickness| %.2g r, max normal %.2g deg\n",
-           what, both, iou, dd, dt, dn);
+    printf("%s: %zu pixels covered, IoU %.6f, max |depth| %.2g r, max |thickness| %.2g r, max normal %.2g deg\n", what,
+           both, iou, dd, dt, dn);
     CHECK(both > n / 20, "%s: the fluid covers the image (%zu pixels)", what, both);
     CHECK(iou >= 0.9999, "%s: IoU %.6f", what, iou);
     CHECK(dd <= 2e-4, "%s: depth differs by %.3g r", what, dd);

@@ -28,7 +28,9 @@ int main(void)
     if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
     if (!rc) rc = fs_run_shade(run, &s.camera, &im, FS_APPEARANCE_SHARED, NULL);
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
-    if (!rc) CHECK(fs_golden_check("reference_cube", im.rgba, 128, 128, 1.0, 0.01) == 0, "golden image reference_cube differs");
+    if (!rc)
+        CHECK(fs_golden_check("reference_cube", im.rgba, 128, 128, 1.0, 0.01) == 0,
+              "golden image reference_cube differs");
     fs_run_image_free(&im);
     fs_run_close(run);
     fs_particles_free(&p);

@@ -83,7 +83,7 @@ static void default_unchanged(void)
     if (!render(&s, &p, &cam, NULL, 1, &a) && !render(&s, &p, &cam, one, 1, &b)) {
         size_t n = (size_t)a.w * a.h;
         CHECK(same_layer(a.depth, b.depth, n) && same_layer(a.normal, b.normal, 3 * n) &&
-              same_layer(a.thickness, b.thickness, n) && same_layer(a.coverage, b.coverage, n),
+                  same_layer(a.thickness, b.thickness, n) && same_layer(a.coverage, b.coverage, n),
               "supersample=1 is the default's G-buffer bit for bit");
         size_t hit = 0;
         for (size_t i = 0; i < n; i++) hit += a.coverage[i] == 1.0f;
@@ -107,8 +107,8 @@ static void small_radius(void)
         goto done;
     size_t n1, n2, frac1 = 0, frac2 = 0, n = (size_t)g1.w * g1.h;
     double e1 = normal_error(&g1, &g8, &n1), e2 = normal_error(&g2, &g8, &n2);
-    printf("r ~ 1 px: normal error against 8 x 8 rays: %.2f deg at 1 ray (%zu px), %.2f deg at 2 x 2 (%zu px)\n", e1, n1,
-           e2, n2);
+    printf("r ~ 1 px: normal error against 8 x 8 rays: %.2f deg at 1 ray (%zu px), %.2f deg at 2 x 2 (%zu px)\n", e1,
+           n1, e2, n2);
     CHECK(n1 > 300 && n2 > 300, "pixels compared: %zu, %zu", n1, n2);
     CHECK(e1 > 1, "one ray a pixel is off the 8 x 8 rays' normals by over a degree (the moire): %.2f deg", e1);
     CHECK(e2 < 0.75 * e1, "2 x 2 rays are closer to 8 x 8 than 1 ray: %.2f against %.2f deg", e2, e1);
@@ -124,7 +124,8 @@ static void small_radius(void)
     }
     size_t covered2 = 0;
     for (size_t i = 0; i < n; i++) covered2 += g2.coverage[i] > 0;
-    CHECK(frac1 == 0 && frac2 > 20, "fractional coverage at the silhouette: %zu px at 2 x 2, %zu at 1 ray", frac2, frac1);
+    CHECK(frac1 == 0 && frac2 > 20, "fractional coverage at the silhouette: %zu px at 2 x 2, %zu at 1 ray", frac2,
+          frac1);
     CHECK(unit == covered2, "renormalised normals, facing the camera: %zu of %zu", unit, covered2);
 done:
     fs_gbuffer_free(&g1);
@@ -166,7 +167,8 @@ static void note(void)
     notes_of(48, 2, NULL, text, sizeof text);
     const char *prefix = "fluidsurf: note: reference: r is ", *at = strstr(text, prefix);
     CHECK(at && strstr(at, " px at the particles' centre (under 2 px") && strstr(at, "reference.supersample=3 ") &&
-          !strstr(at + strlen(prefix), "r is"), "r ~ 1 px: one note over two renders, naming the setting: %s", text);
+              !strstr(at + strlen(prefix), "r is"),
+          "r ~ 1 px: one note over two renders, naming the setting: %s", text);
     double px = at ? atof(at + strlen(prefix)) : 0;
     CHECK(px > 0.5 && px < 2, "r ~ 1 px: %g px", px);
     notes_of(256, 1, NULL, text, sizeof text);

@@ -10,7 +10,11 @@
 
 enum { NP = 400 };
 
-typedef struct ray_set { float a[NP], b[NP], keep[NP]; uint32_t slot[NP]; near_soa N; } ray_set;
+typedef struct ray_set {
+    float a[NP], b[NP], keep[NP];
+    uint32_t slot[NP];
+    near_soa N;
+} ray_set;
 
 static double urand(unsigned *s) { return (double)rand_r(s) / RAND_MAX; }
 
@@ -70,7 +74,8 @@ static void check_ray(const reference *R, const near_soa *N, unsigned *seed, int
     for (double t = f->H; t < 3 * f->H && tc < 0; t += 0.01 * f->r)
         if ((phi_at(f, N, t) >= f->iso) != (phi_at(f, N, t + 0.01 * f->r) >= f->iso)) tc = t;
     for (int k = 0; k < 60; k++) { /* the proven steps and the bracket, from either side */
-        float t = k < 40 || tc < 0 ? f->H + (float)urand(seed) * 2 * f->H : (float)(tc + (urand(seed) - 0.5) * 0.1 * f->r);
+        float t =
+            k < 40 || tc < 0 ? f->H + (float)urand(seed) * 2 * f->H : (float)(tc + (urand(seed) - 0.5) * 0.1 * f->r);
         float slope, g = fs_ref_slope_sum(R, N, t, &slope) - f->iso;
         float sg = g >= 0 ? 1.0f : -1.0f, lo, hi;
         fs_ref_taylor_steps(R, sg * g, sg * slope, M, &lo, &hi);
@@ -105,7 +110,8 @@ int main(void)
     float a1 = 0.2f, b1 = 0, k1 = 0, w1 = 1, keep1 = 1;
     uint32_t s1 = 0;
     near_soa one = {&a1, &b1, &k1, &w1, &keep1, &s1, {0, 0, 0}, 1};
-    double h = 0.02 * R.f.r, c2 = (phi_at(&R.f, &one, a1 + h) - 2 * phi_at(&R.f, &one, a1) + phi_at(&R.f, &one, a1 - h)) / (h * h);
+    double h = 0.02 * R.f.r,
+           c2 = (phi_at(&R.f, &one, a1 + h) - 2 * phi_at(&R.f, &one, a1) + phi_at(&R.f, &one, a1 - h)) / (h * h);
     float M1 = fs_ref_curv_bound(&R, &one, 0, 0.4f);
     CHECK(fabs(c2) <= M1 && fabs(c2) >= 0.99 * M1, "one particle: |phi''| %g against the bound %g", fabs(c2), M1);
     /* the bound must also be useful: long steps inside, and exits bracketed */

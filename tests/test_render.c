@@ -25,8 +25,8 @@ static int scene_for(fs_scene *s, const char *method, const char *const *sets, f
     return FS_OK;
 }
 
-int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
-                   const fs_camera *cam, fs_gbuffer *out, fs_stages *st)
+int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f, const fs_camera *cam,
+                   fs_gbuffer *out, fs_stages *st)
 {
     fs_methods_register_builtin();
     const fs_method *m = fs_method_find(method);
@@ -39,7 +39,10 @@ int fs_test_render(const char *method, const char *const *sets, const fs_particl
     if (!rc) rc = fs_run_upload(run, p, NULL, st);
     if (!rc) rc = fs_run_render(run, cam, &im, st);
     fs_run_close(run);
-    if (rc) { fs_run_image_free(&im); return rc; }
+    if (rc) {
+        fs_run_image_free(&im);
+        return rc;
+    }
     fs_gbuffer_free(out);
     *out = im.g;
     return FS_OK;

@@ -7,8 +7,8 @@
 
 /* FS_OK or an error code with fs_fail set (also for a bad setting). out is replaced
  * by the method's G-buffer at the camera's size. st may be NULL. */
-int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f,
-                   const fs_camera *cam, fs_gbuffer *out, fs_stages *st);
+int fs_test_render(const char *method, const char *const *sets, const fs_particles *p, fs_field f, const fs_camera *cam,
+                   fs_gbuffer *out, fs_stages *st);
 
 /* The first name of the NULL-terminated list want that st does not report, or NULL. */
 const char *fs_test_missing_stage(const fs_stages *st, const char *const *want);

@@ -71,14 +71,18 @@ static void jacobi(void)
     }
 }
 
-static float frand(unsigned *st) { *st = *st * 1664525u + 1013904223u; return (*st >> 8) / 16777216.0f * 2 - 1; }
+static float frand(unsigned *st)
+{
+    *st = *st * 1664525u + 1013904223u;
+    return (*st >> 8) / 16777216.0f * 2 - 1;
+}
 
 /* A tilted plane patch of points (jittered within the plane): PCA finds its normal. */
 static void flat_patch(void)
 {
     float nrm[3] = {0.36f, 0.48f, 0.8f}; /* unit */
-    float t1[3] = {0.8f, -0.6f, 0}, t2[3] = {nrm[1] * t1[2] - nrm[2] * t1[1], nrm[2] * t1[0] - nrm[0] * t1[2],
-                                             nrm[0] * t1[1] - nrm[1] * t1[0]};
+    float t1[3] = {0.8f, -0.6f, 0},
+          t2[3] = {nrm[1] * t1[2] - nrm[2] * t1[1], nrm[2] * t1[0] - nrm[0] * t1[2], nrm[0] * t1[1] - nrm[1] * t1[0]};
     float pts[3 * 121], x[3] = {0.05f * nrm[0], 0.05f * nrm[1], 0.05f * nrm[2]}; /* query above the plane */
     unsigned st = 3;
     int n = 0;
@@ -101,7 +105,11 @@ static void flat_patch(void)
     CHECK(rpca_normal(x, pts, n, &o, out) == 0 && out[0] == b[0] && out[1] == b[1] && out[2] == b[2],
           "too few neighbours: falls back to the basic normal");
     float line[3 * 9];
-    for (int i = 0; i < 9; i++) { line[3 * i] = 0.02f * (i - 4); line[3 * i + 1] = 0; line[3 * i + 2] = 0; }
+    for (int i = 0; i < 9; i++) {
+        line[3 * i] = 0.02f * (i - 4);
+        line[3 * i + 1] = 0;
+        line[3 * i + 2] = 0;
+    }
     float xl[3] = {0, 0.05f, 0};
     CHECK(!rpca_pca_normal(xl, line, 9, 0.15f, 3, p), "collinear points: singular covariance refused");
 }

@@ -21,11 +21,18 @@
  * the view axis) is covered, at the depth of the box's nearest face; it keeps
  * the particle set it was given, as surfels and volume_raycast do. It declares
  * one AOV, "test_aov", holding each pixel's index. */
-typedef struct flat_params { double depth_scale; } flat_params;
+typedef struct flat_params {
+    double depth_scale;
+} flat_params;
 static const fs_param_def flat_table[] = {
-    {"depth_scale", offsetof(flat_params, depth_scale), FS_PARAM_FLOAT, 1.0, 0.1, 10, NULL, "scales the depth"},
+    {"depth_scale", offsetof(flat_params, depth_scale), FS_CTYPE_DOUBLE, FS_PARAM_FLOAT, 1.0, 0.1, 10, NULL,
+     "scales the depth"},
 };
-typedef struct flat { flat_params prm; const fs_particles *p; int renders; } flat;
+typedef struct flat {
+    flat_params prm;
+    const fs_particles *p;
+    int renders;
+} flat;
 static flat the_flat;
 
 static void *flat_create(const fs_method_setup *setup)
@@ -90,8 +97,8 @@ static int grid_upload(void *self, const fs_particles *p, const fs_grid *g)
     return flat_upload(self, p, g);
 }
 
-static const fs_method gl_method = {.name = "test_needs_gl", .needs_gl = 1, .params_size = 0,
-                                    .create = flat_create, .destroy = flat_destroy};
+static const fs_method gl_method = {
+    .name = "test_needs_gl", .needs_gl = 1, .params_size = 0, .create = flat_create, .destroy = flat_destroy};
 
 /* A square of n x n particles in the plane z = 0, half-size h. */
 static void square(fs_particles *p, int n, float h)
@@ -184,7 +191,11 @@ static void render_and_read_back(void)
     if (!rc) rc = fs_run_render(run, &cam, &im, &st);
     if (!rc) rc = fs_run_shade(run, &cam, &im, FS_APPEARANCE_SHARED, &st);
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
-    if (rc) { fs_run_close(run); fs_particles_free(&p); return; }
+    if (rc) {
+        fs_run_close(run);
+        fs_particles_free(&p);
+        return;
+    }
     CHECK(fs_run_values(run)[0] == 2 && !strcmp(fs_run_renderer(run), "CPU"), "values and renderer");
     CHECK(fs_run_shade(run, &cam, &im, FS_APPEARANCE_OWN, NULL) == FS_ERR_INPUT, "no own appearance to show");
     const char *want[] = {"grid", "upload", "flat", "shade"};
@@ -209,7 +220,7 @@ static void render_and_read_back(void)
         size_t same = 0;
         for (size_t i = 0; i < 64 * 64; i++)
             same += back.coverage[i] == im.g.coverage[i] &&
-                    (!back.coverage[i] || (back.depth[i] == im.g.depth[i] && back.normal[3 * i + 2] == 1));
+                (!back.coverage[i] || (back.depth[i] == im.g.depth[i] && back.normal[3 * i + 2] == 1));
         CHECK(same == 64 * 64, "%zu of %d pixels read back as written", same, 64 * 64);
         CHECK(fabsf(im.g.depth[32 * 64 + 32] - 4.0f) < 1e-5f, "depth_scale=2 doubles the depth: %g",
               im.g.depth[32 * 64 + 32]);
@@ -267,7 +278,8 @@ static void aov_list(void)
     fs_gbuffer g;
     CHECK(fs_gbuffer_alloc(&g, 4, 2) == FS_OK && g.naovs == 0 && !fs_gbuffer_aov(&g, FS_AOV_OWN), "none at first");
     CHECK(fs_gbuffer_add_aov(&g, FS_AOV_OWN, 4) == FS_OK && fs_gbuffer_add_aov(&g, "extra", 1) == FS_OK &&
-              fs_gbuffer_add_aov(&g, FS_AOV_OWN, 4) == FS_OK && g.naovs == 2, "added once each: %d", g.naovs);
+              fs_gbuffer_add_aov(&g, FS_AOV_OWN, 4) == FS_OK && g.naovs == 2,
+          "added once each: %d", g.naovs);
     CHECK(fs_gbuffer_add_aov(&g, FS_AOV_COLOR, 1) == FS_ERR_INPUT, "color has 4 components");
     CHECK(fs_gbuffer_add_aov(&g, "a.b", 1) == FS_ERR_INPUT && fs_gbuffer_add_aov(&g, "x", 3) == FS_ERR_INPUT,
           "no '.' in a name, 1 or 4 components");
@@ -320,13 +332,15 @@ static void lifetime_and_failures(void)
     CHECK(im.g.w == cam.width && im.g.h == cam.height && covered(&im.g) == 0, "and leaves an empty image to show");
     fs_run *fresh = NULL; /* a first upload that fails: the image is still sized to the camera */
     fs_run_image im2 = {0};
-    CHECK(fs_run_open(&fresh, &flat_method, &scene, NULL, NULL) == FS_OK && fs_run_upload(fresh, &big, NULL, NULL) != FS_OK &&
-              fs_run_render(fresh, &cam, &im2, NULL) != FS_OK && im2.g.w == cam.width && covered(&im2.g) == 0,
+    CHECK(fs_run_open(&fresh, &flat_method, &scene, NULL, NULL) == FS_OK &&
+              fs_run_upload(fresh, &big, NULL, NULL) != FS_OK && fs_run_render(fresh, &cam, &im2, NULL) != FS_OK &&
+              im2.g.w == cam.width && covered(&im2.g) == 0,
           "a failed first upload: %dx%d image", im2.g.w, im2.g.h);
     fs_run_close(fresh);
     fs_run_image_free(&im2);
     CHECK(fs_run_upload(run, &b, NULL, NULL) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK &&
-              covered(&im.g) == large, "the next upload recovers: %s", fs_error_message());
+              covered(&im.g) == large,
+          "the next upload recovers: %s", fs_error_message());
 
     int before = the_flat.renders;
     CHECK(fs_run_upload(run, &empty, NULL, NULL) == FS_OK && fs_run_render(run, &cam, &im, NULL) == FS_OK,

@@ -18,7 +18,8 @@ static const char *write_scene(const char *name, const char *text)
 
 static void full_scene(void)
 {
-    const char *path = write_scene("scene_full.json",
+    const char *path = write_scene(
+        "scene_full.json",
         "{\"particles\": {\"file\": \"frames/f_%03d.bgeo\", \"first\": 3, \"last\": 7, \"format\": \"bgeo\"},\n"
         " \"radius\": 0.01, \"volume_scale\": 0.8, \"kernel\": \"poly6\", \"support\": 3, \"iso\": 0.5, \"up\": \"z\",\n"
         " \"camera\": {\"eye\": [1, 2, 3], \"target\": [0, 0, 0], \"up\": [0, 0, 1], \"fov\": 30, \"width\": 320, \"height\": 200},\n"
@@ -52,7 +53,7 @@ static void full_scene(void)
     CHECK_NEAR(s.ior, 1.5, 1e-7, "ior");
     CHECK(s.background == FS_BACKGROUND_SKY, "background");
     CHECK(s.nsets == 2, "sets %d", s.nsets);
-    CHECK(s.nsets == 2 && !strcmp(s.sets[1], "spheres.thickness=off"), "set %s", s.sets[1]);
+    CHECK(s.nsets == 2 && !strcmp(s.sets[1].text, "spheres.thickness=off"), "set %s", s.sets[1].text);
     fs_field f = fs_scene_field(&s);
     CHECK_NEAR(f.volume, 0.8 * 0.02 * 0.02 * 0.02, 1e-12, "V");
     CHECK_NEAR(f.H, 0.03, 1e-7, "H");
@@ -93,7 +94,8 @@ int main(void)
     expect_error("e_huge.json", "{\"particles\": \"a.vtk\", \"camera\": {\"height\": 1e9}}", "height");
     expect_error("e_frac.json", "{\"particles\": \"a.vtk\", \"camera\": {\"width\": 10.5}}", "integer");
     expect_error("e_eyeonly.json", "{\"particles\": \"a.vtk\", \"camera\": {\"eye\": [0, 0, 1]}}", "target");
-    expect_error("e_eyeistarget.json", "{\"particles\": \"a.vtk\", \"camera\": {\"eye\": [1,1,1], \"target\": [1,1,1]}}", "target");
+    expect_error("e_eyeistarget.json",
+                 "{\"particles\": \"a.vtk\", \"camera\": {\"eye\": [1,1,1], \"target\": [1,1,1]}}", "target");
     expect_error("e_vec.json", "{\"particles\": \"a.vtk\", \"camera\": {\"eye\": [1, 2], \"target\": [0,0,0]}}", "eye");
     expect_error("e_light.json", "{\"particles\": \"a.vtk\", \"light\": {\"direction\": [0, 0, 0]}}", "direction");
     expect_error("e_material.json", "{\"particles\": \"a.vtk\", \"material\": \"glass\"}", "material");

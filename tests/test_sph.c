@@ -27,7 +27,11 @@ static void cpu_vs_gpu(const char *scene, size_t n, int steps, const char *rende
     fs_sph_params p;
     fs_sph_params_default(&p);
     fs_sph *a = make(scene, n, &p, 0), *b = make(scene, n, &p, 1);
-    if (!a || !b) { fs_sph_destroy(a); fs_sph_destroy(b); return; }
+    if (!a || !b) {
+        fs_sph_destroy(a);
+        fs_sph_destroy(b);
+        return;
+    }
     float dt = fs_sph_dt_bound(a);
     double ta = 0, tb = 0;
     for (int i = 0; i < steps; i++) {
@@ -79,8 +83,8 @@ static void pool_at_rest(void)
     CHECK(fs_sph_measure_state(s, &m) == FS_OK, "measure");
     const fs_sph_stats *st = fs_sph_get_stats(s);
     printf("pool at rest, %zu particles, t = %.2f s: density error %.4f (|interior| %.4f), depth %.4f vs %.4f, "
-           "kinetic %.2g, clamps %ld\n", fs_sph_count(s), st->t, m.density_err, m.density_abs_err, m.depth,
-           m.depth_expected, m.kinetic, st->clamps);
+           "kinetic %.2g, clamps %ld\n",
+           fs_sph_count(s), st->t, m.density_err, m.density_abs_err, m.depth, m.depth_expected, m.kinetic, st->clamps);
     CHECK(m.density_err < 0.02 && m.density_abs_err < 0.02, "density error %g / %g", m.density_err, m.density_abs_err);
     CHECK(fabs(m.depth / m.depth_expected - 1) < 0.05, "depth %g vs %g", m.depth, m.depth_expected);
     CHECK(m.outside == 0 && st->clamps == 0, "outside %zu clamps %ld", m.outside, st->clamps);
@@ -109,8 +113,9 @@ static void dam_break_short(void)
     CHECK(fabs(m0.depth / m0.depth_expected - 1) < 0.01, "depth at t = 0: %g vs %g", m0.depth, m0.depth_expected);
     CHECK(fabs(m.depth / m.depth_expected - 1) < 0.02, "depth at 0.4 s: %g vs %g", m.depth, m.depth_expected);
     printf("dam break, %zu particles, box %.2f x %.2f x %.2f, t = %.2f s: %ld steps, dt %.2e..%.2e, smallest bound "
-           "%.2e, v_max %.2f m/s, clamps %ld, outside %zu, violations %ld\n", fs_sph_count(s), hi[0], hi[1], hi[2],
-           st->t, st->steps, st->dt_min, st->dt_max, st->bound_min, st->v_max, st->clamps, m.outside, st->violations);
+           "%.2e, v_max %.2f m/s, clamps %ld, outside %zu, violations %ld\n",
+           fs_sph_count(s), hi[0], hi[1], hi[2], st->t, st->steps, st->dt_min, st->dt_max, st->bound_min, st->v_max,
+           st->clamps, m.outside, st->violations);
     CHECK(fabs(st->t - 0.4) < 1e-4, "time %g", st->t);
     CHECK(m.outside == 0, "%zu particles outside", m.outside);
     CHECK(st->clamps == 0, "%ld safety clamps", st->clamps);
@@ -184,7 +189,11 @@ static void moved_box(void)
     fs_sph_params p;
     fs_sph_params_default(&p);
     fs_sph *a = make("pool", 500, &p, 0), *b = make("pool", 500, &p, 1);
-    if (!a || !b) { fs_sph_destroy(a); fs_sph_destroy(b); return; }
+    if (!a || !b) {
+        fs_sph_destroy(a);
+        fs_sph_destroy(b);
+        return;
+    }
     const float d[3] = {0.02f / 6, 0, 0};
     for (int f = 0; f < 6; f++) {
         CHECK(fs_sph_move_box(a, d, 1.0 / 60) == FS_OK, "move cpu: %s", fs_error_message());
@@ -215,7 +224,10 @@ int main(void)
     dam_break_short();
     spouts();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     cpu_vs_gpu("dam_break", 1000, 20, ctx.renderer);
     cpu_vs_gpu("spouts", 1500, 40, ctx.renderer);
     moved_box();

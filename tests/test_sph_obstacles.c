@@ -25,7 +25,10 @@ static void write_file(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
     CHECK(f != NULL, "cannot write %s", path);
-    if (f) { fputs(text, f); fclose(f); }
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
 }
 
 /* One obstacle as JSON, with every float written so that it parses back to itself. */
@@ -72,7 +75,9 @@ static float distance(const fs_obstacles *ob, const float p[3])
 
 /* The lattice counted here: sites r + i 2r inside the box; inside an obstacle
  * boundary down to 2 spacings deep, empty deeper; fluid in the dam elsewhere. */
-typedef struct sites { size_t shell, fluid; } sites;
+typedef struct sites {
+    size_t shell, fluid;
+} sites;
 static sites count_lattice(const fs_obstacles *ob, float r)
 {
     const float dx = 2 * r;
@@ -83,7 +88,10 @@ static sites count_lattice(const fs_obstacles *ob, float r)
         for (int j = 0; j < nc[1]; j++)
             for (int i = 0; i < nc[0]; i++) {
                 float p[3] = {r + i * dx, r + j * dx, r + k * dx}, d = distance(ob, p);
-                if (d < 0) { n.shell += d >= -2 * dx; continue; }
+                if (d < 0) {
+                    n.shell += d >= -2 * dx;
+                    continue;
+                }
                 int in = 1;
                 for (int a = 0; a < 3; a++) in &= p[a] >= FLUID_LO[a] && p[a] < FLUID_HI[a];
                 n.fluid += in;
@@ -93,7 +101,10 @@ static sites count_lattice(const fs_obstacles *ob, float r)
 
 /* Fluid particles of s deeper than depth inside an obstacle, within `near` of
  * one's surface, and the deepest one's distance. */
-typedef struct contact { size_t inside, near; float deepest; } contact;
+typedef struct contact {
+    size_t inside, near;
+    float deepest;
+} contact;
 static contact contacts(fs_sph *s, const fs_obstacles *ob, float depth, float near)
 {
     contact c = {0, 0, INFINITY};
@@ -114,7 +125,11 @@ static contact contacts(fs_sph *s, const fs_obstacles *ob, float depth, float ne
 static void check_build(const char *path, const char *plain, const fs_obstacles *ob, const char *what)
 {
     fs_sph *s = make(path, 0), *s0 = make(plain, 0);
-    if (!s || !s0) { fs_sph_destroy(s); fs_sph_destroy(s0); return; }
+    if (!s || !s0) {
+        fs_sph_destroy(s);
+        fs_sph_destroy(s0);
+        return;
+    }
     float r = fs_sph_get_params(s)->r;
     sites e = count_lattice(ob, r), e0 = count_lattice(&(fs_obstacles){0}, r);
     size_t nb = fs_sph_boundary_count(s), nb0 = fs_sph_boundary_count(s0);
@@ -160,9 +175,9 @@ static void check_flow(const char *path, const fs_obstacles *ob, int downstream,
     CHECK(rc == FS_OK, "%s: advance: %s", what, fs_error_message());
     const fs_sph_stats *st = fs_sph_get_stats(s);
     printf("%s: %zu fluid + %zu boundary, t = %.2f s in %.1f s (%ld steps): deepest fluid centre %.4f m (r = %.3f; "
-           "< 0 inside), %zu deeper than r over 30 frames, up to %zu within 3r, %ld clamps\n", what, fs_sph_count(s),
-           fs_sph_boundary_count(s), st->t, (fs_now_ms() - t0) / 1000, st->steps, c.deepest, r, c.inside, c.near,
-           st->clamps);
+           "< 0 inside), %zu deeper than r over 30 frames, up to %zu within 3r, %ld clamps\n",
+           what, fs_sph_count(s), fs_sph_boundary_count(s), st->t, (fs_now_ms() - t0) / 1000, st->steps, c.deepest, r,
+           c.inside, c.near, st->clamps);
     CHECK(c.inside == 0, "%s: %zu fluid centres deeper than r inside (deepest %g m)", what, c.inside, c.deepest);
     CHECK(c.near >= 20, "%s: the fluid did not reach the obstacle (%zu within 3r)", what, c.near);
     CHECK(fabs(st->t - 0.5) < 1e-4, "%s: time %g", what, st->t);
@@ -177,7 +192,8 @@ static void check_scaled(const char *path, const fs_obstacles *ob)
     float lo[3], hi[3];
     fs_sph_box(s, lo, hi);
     const fs_obstacle *o = &fs_sph_obstacles(s)->o[0];
-    printf("scaled x%.4f: box x %.3f, obstacle min x %.4f (file %.4f)\n", hi[0] / BOX[0], hi[0], o->lo[0], ob->o[0].lo[0]);
+    printf("scaled x%.4f: box x %.3f, obstacle min x %.4f (file %.4f)\n", hi[0] / BOX[0], hi[0], o->lo[0],
+           ob->o[0].lo[0]);
     for (int a = 0; a < 3; a++)
         CHECK(fabsf(o->lo[a] - 2 * ob->o[0].lo[a]) < 1e-3f && fabsf(o->hi[a] - 2 * ob->o[0].hi[a]) < 1e-3f,
               "scaled obstacle axis %d: %g..%g", a, o->lo[a], o->hi[a]);
@@ -189,8 +205,10 @@ static void refused(const char *name, const char *obstacles, const char *what)
 {
     char path[512], text[1024];
     snprintf(path, sizeof path, DIR "/%s.json", name);
-    snprintf(text, sizeof text, "{\"box\": [1.2, 0.8, 0.5], \"fluid\": [{\"min\": [0, 0, 0], \"max\": [0.5, 0.6, 0.5]}], "
-             "%s}\n", obstacles);
+    snprintf(text, sizeof text,
+             "{\"box\": [1.2, 0.8, 0.5], \"fluid\": [{\"min\": [0, 0, 0], \"max\": [0.5, 0.6, 0.5]}], "
+             "%s}\n",
+             obstacles);
     write_file(path, text);
     fs_sph_params p;
     fs_sph_params_default(&p);
@@ -206,8 +224,10 @@ static void refused(const char *name, const char *obstacles, const char *what)
 static void bad_obstacles(void)
 {
     refused("min_above_max", "\"obstacles\": [{\"min\": [0.9, 0, 0.1], \"max\": [0.7, 0.3, 0.4]}]", "obstacles[0]");
-    refused("negative_radius", "\"obstacles\": [{\"min\": [0.7, 0, 0.1], \"max\": [1, 0.3, 0.4]}, "
-            "{\"centre\": [0.5, 0.2, 0.25], \"radius\": -0.1}]", "obstacles[1]");
+    refused("negative_radius",
+            "\"obstacles\": [{\"min\": [0.7, 0, 0.1], \"max\": [1, 0.3, 0.4]}, "
+            "{\"centre\": [0.5, 0.2, 0.25], \"radius\": -0.1}]",
+            "obstacles[1]");
     refused("unknown_key", "\"obstacles\": [{\"min\": [0.7, 0, 0.1], \"max\": [1, 0.3, 0.4], \"colour\": [1, 0, 0]}]",
             "obstacles[0]");
     refused("not_array", "\"obstacles\": {\"min\": [0.7, 0, 0.1], \"max\": [1, 0.3, 0.4]}", "obstacles");
@@ -230,9 +250,10 @@ static void check_mesh(const char *pbox, const fs_obstacles *box)
     const char *obj = DIR "/cube.obj", *pmesh = DIR "/mesh.json";
     write_cube(obj, box->o[0].lo, box->o[0].hi);
     char text[512];
-    snprintf(text, sizeof text, "{\"box\": [%g, %g, %g], \"fluid\": [{\"min\": [%g, %g, %g], \"max\": [%g, %g, %g]}], "
-             "\"obstacles\": [{\"mesh\": \"cube.obj\"}]}\n", BOX[0], BOX[1], BOX[2], FLUID_LO[0], FLUID_LO[1], FLUID_LO[2],
-             FLUID_HI[0], FLUID_HI[1], FLUID_HI[2]);
+    snprintf(text, sizeof text,
+             "{\"box\": [%g, %g, %g], \"fluid\": [{\"min\": [%g, %g, %g], \"max\": [%g, %g, %g]}], "
+             "\"obstacles\": [{\"mesh\": \"cube.obj\"}]}\n",
+             BOX[0], BOX[1], BOX[2], FLUID_LO[0], FLUID_LO[1], FLUID_LO[2], FLUID_HI[0], FLUID_HI[1], FLUID_HI[2]);
     write_file(pmesh, text);
     fs_sph *a = make(pbox, 0), *b = make(pmesh, 0);
     if (a && b)
@@ -251,14 +272,19 @@ int main(void)
      * of 6^3 - 2^3 = 208 and 8 empty sites within. */
     fs_obstacles box = {1, {{.kind = FS_OBSTACLE_BOX, .lo = {0.7f, 0, 0.1f}, .hi = {1.0f, 0.3f, 0.4f}, .scale = 1}}};
     /* A ball on the floor cutting into the dam's front (its bounds as the parser sets them). */
-    fs_obstacles ball = {1, {{.kind = FS_OBSTACLE_SPHERE, .lo = {0.55f - 0.15f, 0.15f - 0.15f, 0.25f - 0.15f},
-                              .hi = {0.55f + 0.15f, 0.15f + 0.15f, 0.25f + 0.15f},
-                              .c = {0.55f, 0.15f, 0.25f}, .radius = 0.15f, .scale = 1}}};
+    fs_obstacles ball = {1,
+                         {{.kind = FS_OBSTACLE_SPHERE,
+                           .lo = {0.55f - 0.15f, 0.15f - 0.15f, 0.25f - 0.15f},
+                           .hi = {0.55f + 0.15f, 0.15f + 0.15f, 0.25f + 0.15f},
+                           .c = {0.55f, 0.15f, 0.25f},
+                           .radius = 0.15f,
+                           .scale = 1}}};
     const char *plain = DIR "/plain.json", *pbox = DIR "/box.json", *pball = DIR "/ball.json";
     write_scene(plain, &(fs_obstacles){0});
     write_scene(pbox, &box);
     write_scene(pball, &ball);
-    CHECK(count_lattice(&box, 0.025f).shell == 208, "box shell %zu, expected 6^3 - 2^3", count_lattice(&box, 0.025f).shell);
+    CHECK(count_lattice(&box, 0.025f).shell == 208, "box shell %zu, expected 6^3 - 2^3",
+          count_lattice(&box, 0.025f).shell);
     bad_obstacles();
     fs_sph *dam = make("dam_break", 0);
     CHECK(dam && fs_sph_obstacles(dam)->n == 0, "built-in scenes have no obstacles");

@@ -22,7 +22,9 @@ static void test_single_sphere(const fs_method *m)
     const float r = 0.25f;
     fs_particles p;
     fs_particles_alloc(&p, 1, 0);
-    p.x[0] = 0.1f; p.y[0] = -0.05f; p.z[0] = 0.0f;
+    p.x[0] = 0.1f;
+    p.y[0] = -0.05f;
+    p.z[0] = 0.0f;
     fs_particles_bounds(&p);
     static fs_scene s; /* the default field (cubic spline, H = 4r, iso 0.6) at r */
     fs_scene_defaults(&s);
@@ -36,7 +38,11 @@ static void test_single_sphere(const fs_method *m)
     fs_stages st = {0};
     CHECK(fs_run_render(run, &cam, &im, &st) == FS_OK, "render: %s", fs_error_message());
     const fs_gbuffer g = im.g;
-    if (!g.depth) { fs_run_close(run); fs_particles_free(&p); return; }
+    if (!g.depth) {
+        fs_run_close(run);
+        fs_particles_free(&p);
+        return;
+    }
     int mismatched = 0, covered = 0;
     double worst_depth = 0, worst_normal = 0, worst_thick = 0;
     float rr[3], uu[3], ff[3];
@@ -57,15 +63,18 @@ static void test_single_sphere(const fs_method *m)
             float t = -b - sqrtf(disc), hp[3], n[3], nv[3];
             for (int k = 0; k < 3; k++) hp[k] = cam.eye[k] + t * d[k];
             float depth = (hp[0] - cam.eye[0]) * ff[0] + (hp[1] - cam.eye[1]) * ff[1] + (hp[2] - cam.eye[2]) * ff[2];
-            n[0] = (hp[0] - p.x[0]) / r; n[1] = (hp[1] - p.y[0]) / r; n[2] = (hp[2] - p.z[0]) / r;
+            n[0] = (hp[0] - p.x[0]) / r;
+            n[1] = (hp[1] - p.y[0]) / r;
+            n[2] = (hp[2] - p.z[0]) / r;
             fs_camera_to_view_dir(&cam, n, nv);
             double dot = nv[0] * g.normal[3 * i] + nv[1] * g.normal[3 * i + 1] + nv[2] * g.normal[3 * i + 2];
             if (fabs(g.depth[i] - depth) > worst_depth) worst_depth = fabs(g.depth[i] - depth);
             if (1 - dot > worst_normal) worst_normal = 1 - dot;
-            if (fabs(g.thickness[i] - 2 * sqrtf(disc)) > worst_thick) worst_thick = fabs(g.thickness[i] - 2 * sqrtf(disc));
+            if (fabs(g.thickness[i] - 2 * sqrtf(disc)) > worst_thick)
+                worst_thick = fabs(g.thickness[i] - 2 * sqrtf(disc));
         }
-    printf("single sphere: %d covered, %d mismatched, depth err %.2g, 1-cos normal %.2g, thickness err %.2g\n",
-           covered, mismatched, worst_depth, worst_normal, worst_thick);
+    printf("single sphere: %d covered, %d mismatched, depth err %.2g, 1-cos normal %.2g, thickness err %.2g\n", covered,
+           mismatched, worst_depth, worst_normal, worst_thick);
     CHECK(covered > 300, "sphere covers only %d pixels", covered);
     CHECK(mismatched == 0, "%d pixels disagree with exact coverage", mismatched);
     CHECK(worst_depth < 1e-4, "depth error %g", worst_depth);
@@ -103,7 +112,9 @@ static void test_golden(const fs_method *m)
     if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
     if (!rc) rc = fs_run_shade(run, &s.camera, &im, FS_APPEARANCE_SHARED, NULL); /* floor: lowest centre - r */
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
-    if (!rc) CHECK(fs_golden_check("spheres_block", im.rgba, 128, 128, 1.0, 0.01) == 0, "golden image spheres_block differs");
+    if (!rc)
+        CHECK(fs_golden_check("spheres_block", im.rgba, 128, 128, 1.0, 0.01) == 0,
+              "golden image spheres_block differs");
     fs_run_image_free(&im);
     fs_run_close(run);
     fs_particles_free(&p);
@@ -113,7 +124,10 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     const fs_method *m = fs_method_find("spheres");
     CHECK(m != NULL, "spheres is not registered");
     if (m) {

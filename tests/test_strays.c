@@ -84,12 +84,21 @@ static void check_method(const char *m, const fs_particles *p, const fs_particle
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     fs_particles p, q;
     fs_scene s;
     fs_field f;
-    if (fs_test_load_dam(&p, &s, &f)) { CHECK(0, "load: %s", fs_error_message()); TEST_DONE(); }
-    if (with_strays(&p, &q)) { CHECK(0, "alloc"); TEST_DONE(); }
+    if (fs_test_load_dam(&p, &s, &f)) {
+        CHECK(0, "load: %s", fs_error_message());
+        TEST_DONE();
+    }
+    if (with_strays(&p, &q)) {
+        CHECK(0, "alloc");
+        TEST_DONE();
+    }
     check_framing(&s, &q);
     fs_methods_register_builtin();
     for (int i = 0; i < fs_method_count(); i++) check_method(fs_method_at(i)->name, &p, &q, f, &s.camera);

@@ -89,7 +89,8 @@ static void against_reference(void)
     const char *splat[] = {"grid_res=128", NULL}, *exact[] = {"grid_res=128", "grid_build=exact", NULL};
     CHECK(fs_test_render("surfels", splat, &p, f, &s.camera, &a, &st) == FS_OK, "surfels: %s", fs_error_message());
     CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &b, NULL) == FS_OK, "reference: %s", fs_error_message());
-    CHECK(fs_test_render("surfels", exact, &p, f, &s.camera, &c, NULL) == FS_OK, "surfels exact: %s", fs_error_message());
+    CHECK(fs_test_render("surfels", exact, &p, f, &s.camera, &c, NULL) == FS_OK, "surfels exact: %s",
+          fs_error_message());
     fs_metrics mt, me;
     CHECK(fs_metrics_compute(&a, NULL, &b, NULL, f.r, &mt) == FS_OK, "metrics: %s", fs_error_message());
     CHECK(fs_metrics_compute(&a, NULL, &c, NULL, f.r, &me) == FS_OK, "metrics: %s", fs_error_message());
@@ -134,11 +135,21 @@ static void own_appearance_and_exports(void)
     if (!rc) rc = fs_run_upload(run, &p, NULL, NULL);
     if (!rc) rc = fs_run_render(run, &s.camera, &im, NULL);
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
-    if (rc) { fs_run_close(run); fs_run_image_free(&im); fs_particles_free(&p); return; }
+    if (rc) {
+        fs_run_close(run);
+        fs_run_image_free(&im);
+        fs_particles_free(&p);
+        return;
+    }
     const fs_gbuffer g = im.g;
     const float *own = fs_gbuffer_aov(&g, FS_AOV_OWN), *caustics = fs_gbuffer_aov(&g, FS_AOV_CAUSTICS);
     CHECK(own && caustics, "the declared AOVs own and caustics are there");
-    if (!own || !caustics) { fs_run_close(run); fs_run_image_free(&im); fs_particles_free(&p); return; }
+    if (!own || !caustics) {
+        fs_run_close(run);
+        fs_run_image_free(&im);
+        fs_particles_free(&p);
+        return;
+    }
     size_t water = 0, caustic_water = 0, sky = 0, sky_caustic = 0;
     for (int i = 0; i < 128 * 128; i++) {
         const float *o = own + 4 * i;
@@ -206,7 +217,10 @@ int main(void)
     fs_methods_register_builtin();
     extraction_on_sphere();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     against_reference();
     own_appearance_and_exports();
     fs_gl_context_destroy(&ctx);

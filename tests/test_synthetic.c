@@ -17,7 +17,8 @@ static fs_scene scene(fs_synth_shape shape, float jitter, unsigned seed)
 
 static int same(const fs_particles *a, const fs_particles *b)
 {
-    return a->n == b->n && !memcmp(a->x, b->x, a->n * 4) && !memcmp(a->y, b->y, a->n * 4) && !memcmp(a->z, b->z, a->n * 4);
+    return a->n == b->n && !memcmp(a->x, b->x, a->n * 4) && !memcmp(a->y, b->y, a->n * 4) &&
+        !memcmp(a->z, b->z, a->n * 4);
 }
 
 static void counts_and_jitter(void)
@@ -49,7 +50,8 @@ static void counts_and_jitter(void)
         }
         printf("%s: %zu particles, max jitter %.4f r, mean jitter (%.4f %.4f %.4f) r\n", names[si], p0.n, maxoff / r,
                mean[0] / p0.n / r, mean[1] / p0.n / r, mean[2] / p0.n / r);
-        CHECK(maxoff <= 0.1 * r * 1.0001 && maxoff > 0.09 * r, "%s: jitter %g r outside (0.09, 0.1]", names[si], maxoff / r);
+        CHECK(maxoff <= 0.1 * r * 1.0001 && maxoff > 0.09 * r, "%s: jitter %g r outside (0.09, 0.1]", names[si],
+              maxoff / r);
         for (int a = 0; a < 3; a++) CHECK(fabs(mean[a] / p0.n) < 0.01 * r, "%s: jitter mean", names[si]);
         /* Ideal bottom at 0 (lowest centre at r), centred horizontally. */
         if (si < 2) CHECK_NEAR(lo, r, 1e-6, "lowest centre at r");
@@ -72,7 +74,10 @@ static void determinism(void)
     CHECK(same(&a, &b), "same seed and frame give the same particles");
     CHECK(!same(&a, &c), "another frame re-jitters");
     CHECK(!same(&a, &d), "another seed re-jitters");
-    fs_particles_free(&a); fs_particles_free(&b); fs_particles_free(&c); fs_particles_free(&d);
+    fs_particles_free(&a);
+    fs_particles_free(&b);
+    fs_particles_free(&c);
+    fs_particles_free(&d);
     /* moving: frame 3 is frame 0 shifted by 3 * 2r along x. */
     s = scene(FS_SYNTH_SLAB, 0, 1);
     s.synth.moving = 1;
@@ -82,10 +87,13 @@ static void determinism(void)
     for (size_t i = 0; i < a.n; i++)
         worst = fmax(worst, fabs(b.x[i] - a.x[i] - 6 * s.radius) + fabs(b.y[i] - a.y[i]) + fabs(b.z[i] - a.z[i]));
     CHECK(worst < 1e-5, "moving slab shifts by 2r per frame (off by %g)", worst);
-    fs_particles_free(&a); fs_particles_free(&b);
+    fs_particles_free(&a);
+    fs_particles_free(&b);
     /* Custom sizes and the z-up convention. */
     s = scene(FS_SYNTH_SLAB, 0, 1);
-    s.synth.size[0] = 5; s.synth.size[1] = 3; s.synth.size[2] = 4;
+    s.synth.size[0] = 5;
+    s.synth.size[1] = 3;
+    s.synth.size[2] = 4;
     s.up_axis = 2;
     fs_synthetic_generate(&s, 0, &a);
     CHECK(a.n == 60, "5x3x4 slab has %zu", a.n);
@@ -116,7 +124,10 @@ static void analytic(void)
      * while the ray length grows towards the corners. */
     size_t covered = 0, off = 0;
     for (size_t i = 0; i < (size_t)129 * 129; i++) {
-        if (!gb.coverage[i]) { CHECK(isinf(gb.depth[i]), "empty pixel depth"); continue; }
+        if (!gb.coverage[i]) {
+            CHECK(isinf(gb.depth[i]), "empty pixel depth");
+            continue;
+        }
         covered++;
         if (fabsf(gb.depth[i] - (eye - top)) > 1e-4f * r) off++;
     }

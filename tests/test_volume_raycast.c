@@ -112,8 +112,10 @@ static void against_reference(void)
     CHECK(fs_test_render("volume_raycast", layered, &p, f, &s.camera, &a, &st) == FS_OK, "layered: %s",
           fs_error_message());
     CHECK(fs_test_render("reference", NULL, &p, f, &s.camera, &b, NULL) == FS_OK, "reference: %s", fs_error_message());
-    CHECK(fs_test_render("volume_raycast", slice, &p, f, &s.camera, &c, NULL) == FS_OK, "slice: %s", fs_error_message());
-    CHECK(fs_test_render("volume_raycast", exact, &p, f, &s.camera, &e, NULL) == FS_OK, "exact: %s", fs_error_message());
+    CHECK(fs_test_render("volume_raycast", slice, &p, f, &s.camera, &c, NULL) == FS_OK, "slice: %s",
+          fs_error_message());
+    CHECK(fs_test_render("volume_raycast", exact, &p, f, &s.camera, &e, NULL) == FS_OK, "exact: %s",
+          fs_error_message());
     fs_metrics mt, ms, me;
     CHECK(fs_metrics_compute(&a, NULL, &b, NULL, f.r, &mt) == FS_OK, "metrics: %s", fs_error_message());
     CHECK(fs_metrics_compute(&c, NULL, &a, NULL, f.r, &ms) == FS_OK, "metrics: %s", fs_error_message());
@@ -176,7 +178,10 @@ static void transfer_and_export(void)
             rc = fs_fail(FS_ERR_RUNTIME, "the declared AOVs own and caustics are missing");
     CHECK(rc == FS_OK, "render: %s", fs_error_message());
     if (rc) {
-        for (int k = 0; k < 2; k++) { fs_run_close(runs[k]); fs_run_image_free(&im[k]); }
+        for (int k = 0; k < 2; k++) {
+            fs_run_close(runs[k]);
+            fs_run_image_free(&im[k]);
+        }
         fs_particles_free(&p);
         return;
     }
@@ -227,7 +232,8 @@ static void transfer_and_export(void)
     fs_grid ng;
     fs_grid_build(&ng, &p, f.H);
     CHECK(fs_density_grid_read_vdb(&d, vdb, "density") == FS_OK, "read vdb back: %s", fs_error_message());
-    CHECK(fs_density_grid_init(&ex, p.bmin, p.bmax, f.H, 96) == FS_OK && fs_density_grid_exact(&ex, &p, &ng, &f) == FS_OK,
+    CHECK(fs_density_grid_init(&ex, p.bmin, p.bmax, f.H, 96) == FS_OK &&
+              fs_density_grid_exact(&ex, &p, &ng, &f) == FS_OK,
           "exact: %s", fs_error_message());
     /* the VDB holds the active (phi > 0) bounding box: compare by world position */
     double maxd = 0, maxv = 0;
@@ -247,8 +253,12 @@ static void transfer_and_export(void)
     fs_density_grid_free(&ex);
     fs_grid_free(&ng);
 #endif
-    CHECK(fs_run_export(opaque, FS_TEST_OUT "/volume_raycast_export.ply") == FS_ERR_INPUT, "a .ply export must be refused");
-    for (int k = 0; k < 2; k++) { fs_run_close(runs[k]); fs_run_image_free(&im[k]); }
+    CHECK(fs_run_export(opaque, FS_TEST_OUT "/volume_raycast_export.ply") == FS_ERR_INPUT,
+          "a .ply export must be refused");
+    for (int k = 0; k < 2; k++) {
+        fs_run_close(runs[k]);
+        fs_run_image_free(&im[k]);
+    }
     fs_particles_free(&p);
 }
 
@@ -256,7 +266,10 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) { CHECK(0, "context: %s", fs_error_message()); TEST_DONE(); }
+    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
+        CHECK(0, "context: %s", fs_error_message());
+        TEST_DONE();
+    }
     layered_grid();
     against_reference();
     transfer_and_export();

@@ -7,7 +7,7 @@ find_program(XVFB_RUN xvfb-run)
 if(NOT XVFB_RUN)
   message(FATAL_ERROR "xvfb-run not found: the viewer test needs it. Run scripts/setup.sh (Debian package xvfb).")
 endif()
-add_test(NAME cli_view COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24"
+add_test(NAME cli_view COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/xvfb.sh 1024x768x24
          bash ${CMAKE_CURRENT_SOURCE_DIR}/view.sh $<TARGET_FILE:fluidsurf> ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/view)
 set_tests_properties(cli_view PROPERTIES TIMEOUT 180
   ENVIRONMENT "${FS_TEST_ENV}")
@@ -18,7 +18,7 @@ find_program(PYTHON3 python3)
 if(NOT PYTHON3)
   message(FATAL_ERROR "python3 not found: tests/view_methods.sh reads its screenshots with it. Run scripts/setup.sh.")
 endif()
-add_test(NAME cli_view_methods COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24"
+add_test(NAME cli_view_methods COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/xvfb.sh 1024x768x24
          env PYTHON3=${PYTHON3} bash ${CMAKE_CURRENT_SOURCE_DIR}/view_methods.sh $<TARGET_FILE:fluidsurf> ${CMAKE_SOURCE_DIR}
          ${CMAKE_BINARY_DIR}/test-out/view_methods)
 set_tests_properties(cli_view_methods PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77 # a skipped case

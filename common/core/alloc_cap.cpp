@@ -9,7 +9,8 @@
 #include <new>
 #include <sys/stat.h>
 
-namespace {
+namespace
+{
 thread_local std::size_t cap = 0; // 0: none
 }
 
@@ -32,7 +33,8 @@ extern "C" void fs_alloc_cap_end(size_t previous) { cap = previous; }
 // own), and memory crosses between them (a std::vector grown in libopenvdb, freed in
 // our inlined destructor): so each form forwards to its global namesake whenever that
 // is not this very function, and every new pairs with its delete in either case.
-namespace {
+namespace
+{
 template <typename F> F global_or_null(const char *name, F self)
 {
     void *f = dlsym(RTLD_DEFAULT, name);

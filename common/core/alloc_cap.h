@@ -21,16 +21,18 @@ void fs_alloc_cap_end(size_t previous);
 #ifdef __cplusplus
 }
 
-namespace fs {
+namespace fs
+{
 // The cap for the scope of this object.
-class AllocCap {
-public:
+class AllocCap
+{
+  public:
     explicit AllocCap(const char *path) : saved_(fs_alloc_cap_begin(path)) {}
     ~AllocCap() { fs_alloc_cap_end(saved_); }
     AllocCap(const AllocCap &) = delete;
     AllocCap &operator=(const AllocCap &) = delete;
 
-private:
+  private:
     size_t saved_;
 };
 } // namespace fs

@@ -4,11 +4,11 @@
 #include <stdio.h>
 #include <string.h>
 
-static const char *const names[FS_NCOUNTERS] = {"field_evals",         "neighbours_visited",   "march_samples",
-                                                "fragments_shaded",    "filter_taps",          "texels_written",
-                                                "crossings",           "cells_walked",         "cells_marched",
-                                                "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
-                                                "refine_evals",        "inside_evals"};
+static const char *const names[FS_NCOUNTERS] = {
+    "field_evals",   "neighbours_visited",   "march_samples",       "fragments_shaded",
+    "filter_taps",   "texels_written",       "crossings",           "cells_walked",
+    "cells_marched", "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
+    "refine_evals",  "inside_evals"};
 
 const char *fs_counter_name(int c) { return c >= 0 && c < FS_NCOUNTERS ? names[c] : NULL; }
 
@@ -21,8 +21,8 @@ int fs_counter_index(const char *name)
 
 int fs_counting;
 static uint64_t pending[FS_NCOUNTERS];
-static unsigned pending_over;      /* bits: counters whose pending sum wrapped */
-static char over_msg[200];         /* the first error: an overflow with its stage, or a full stage table */
+static unsigned pending_over; /* bits: counters whose pending sum wrapped */
+static char over_msg[200];    /* the first error: an overflow with its stage, or a full stage table */
 static void (*collector)(void);
 
 void fs_counting_set(int on) { fs_counting = on; }

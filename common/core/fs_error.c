@@ -10,8 +10,11 @@ static _Thread_local int fs_code;
  * (a stray continuation byte, an overlong form, a surrogate, past U+10FFFF). */
 static int utf8_length(const unsigned char *s)
 {
-    int n = s[0] < 0x80 ? 1 : s[0] >= 0xc2 && s[0] <= 0xdf ? 2 : s[0] >= 0xe0 && s[0] <= 0xef ? 3
-          : s[0] >= 0xf0 && s[0] <= 0xf4 ? 4 : 0;
+    int n = s[0] < 0x80                ? 1
+        : s[0] >= 0xc2 && s[0] <= 0xdf ? 2
+        : s[0] >= 0xe0 && s[0] <= 0xef ? 3
+        : s[0] >= 0xf0 && s[0] <= 0xf4 ? 4
+                                       : 0;
     for (int i = 1; i < n; i++)
         if ((s[i] & 0xc0) != 0x80) return 0;
     if ((s[0] == 0xe0 && s[1] < 0xa0) || (s[0] == 0xed && s[1] > 0x9f) || (s[0] == 0xf0 && s[1] < 0x90) ||
@@ -30,7 +33,8 @@ void fs_text_line(char *out, size_t size, const char *in)
         int n = utf8_length(s);
         if (n == 0) o += (size_t)snprintf(out + o, size - o, "\\x%02X", *s++);
         else if (n == 1) out[o++] = *s < 0x20 || *s == 0x7f ? '?' : (char)*s, s++;
-        else while (n--) out[o++] = (char)*s++;
+        else
+            while (n--) out[o++] = (char)*s++;
     }
     out[o] = 0;
 }

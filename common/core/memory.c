@@ -13,9 +13,10 @@ static size_t env_limit(void)
     if (!s || !*s) return SIZE_MAX;
     char *end;
     double v = strtod(s, &end);
-    double unit = *end == 'K' || *end == 'k' ? 1024.0 : *end == 'M' || *end == 'm' ? 1048576.0
-                  : *end == 'G' || *end == 'g'                                     ? 1073741824.0
-                                                                                   : 1.0;
+    double unit = *end == 'K' || *end == 'k' ? 1024.0
+        : *end == 'M' || *end == 'm'         ? 1048576.0
+        : *end == 'G' || *end == 'g'         ? 1073741824.0
+                                             : 1.0;
     return v > 0 && v * unit < (double)SIZE_MAX ? (size_t)(v * unit) : SIZE_MAX;
 }
 

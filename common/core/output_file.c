@@ -14,7 +14,10 @@
  * it reads the slots without the lock, and a slot is marked used only once its
  * path is complete). */
 #define MAX_LIVE 64
-static struct { char path[4096]; volatile sig_atomic_t used; } live[MAX_LIVE];
+static struct {
+    char path[4096];
+    volatile sig_atomic_t used;
+} live[MAX_LIVE];
 static pthread_mutex_t live_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static void remember(const char *tmp)
@@ -84,6 +87,31 @@ int fs_output_end(const char *final, const char *tmp, int ok)
     if (!moved) unlink(tmp);
     forget(tmp);
     return moved ? FS_OK : fs_fail(FS_ERR_RUNTIME, "%s: cannot rename output: %s", final, strerror(e));
+}
+
+int fs_output_open(fs_output *o, const char *final)
+{
+    o->f = NULL;
+    if (snprintf(o->final, sizeof o->final, "%s", final) >= (int)sizeof o->final)
+        return fs_fail(FS_ERR_INPUT, "%.200s...: output path too long", final);
+    int rc = fs_output_begin(final, o->tmp, sizeof o->tmp);
+    if (rc) return rc;
+    if ((o->f = fopen(o->tmp, "wb"))) return FS_OK;
+    int e = errno;
+    fs_output_end(final, o->tmp, 0);
+    return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", final, strerror(e));
+}
+
+int fs_output_close(fs_output *o, int ok)
+{
+    int e = 0;
+    if (ferror(o->f) || fflush(o->f) != 0) e = errno ? errno : EIO;
+    if (fclose(o->f) != 0 && !e) e = errno ? errno : EIO;
+    o->f = NULL;
+    if (ok && !e) return fs_output_end(o->final, o->tmp, 1);
+    fs_output_end(o->final, o->tmp, 0);
+    /* ok 0 without a stream error: the caller failed and its message stands */
+    return e ? fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", o->final, strerror(e)) : FS_ERR_RUNTIME;
 }
 
 int fs_path_ends_with(const char *path, const char *suffix)

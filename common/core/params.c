@@ -29,8 +29,14 @@ int fs_param_parse(const fs_param_def *def, const char *text, double *out, const
         return FS_OK;
     }
     if (def->type == FS_PARAM_BOOL) {
-        if (!strcmp(text, "on") || !strcmp(text, "1") || !strcmp(text, "true")) { *out = 1; return FS_OK; }
-        if (!strcmp(text, "off") || !strcmp(text, "0") || !strcmp(text, "false")) { *out = 0; return FS_OK; }
+        if (!strcmp(text, "on") || !strcmp(text, "1") || !strcmp(text, "true")) {
+            *out = 1;
+            return FS_OK;
+        }
+        if (!strcmp(text, "off") || !strcmp(text, "0") || !strcmp(text, "false")) {
+            *out = 0;
+            return FS_OK;
+        }
         return fs_fail(FS_ERR_INPUT, "%s: '%s' is not on or off", what, text);
     }
     char *end;
@@ -48,11 +54,20 @@ int fs_param_parse(const fs_param_def *def, const char *text, double *out, const
 
 void fs_param_format(const fs_param_def *def, double v, char *buf, int size)
 {
-    if (def->type == FS_PARAM_BOOL) { snprintf(buf, size, "%s", v != 0 ? "on" : "off"); return; }
+    if (def->type == FS_PARAM_BOOL) {
+        snprintf(buf, size, "%s", v != 0 ? "on" : "off");
+        return;
+    }
     if (def->type == FS_PARAM_ENUM) {
         const char *c = def->choices;
-        for (int i = 0; i < (int)v && c; i++) { c = strchr(c, '|'); if (c) c++; }
-        if (!c) { snprintf(buf, size, "?"); return; }
+        for (int i = 0; i < (int)v && c; i++) {
+            c = strchr(c, '|');
+            if (c) c++;
+        }
+        if (!c) {
+            snprintf(buf, size, "?");
+            return;
+        }
         const char *bar = strchr(c, '|');
         snprintf(buf, size, "%.*s", bar ? (int)(bar - c) : (int)strlen(c), c);
         return;
@@ -72,4 +87,9 @@ int fs_param_split(const char *text, fs_param_setting *out)
     snprintf(out->param, sizeof out->param, "%.*s", np, dot + 1);
     out->value = eq + 1;
     return FS_OK;
+}
+
+size_t fs_param_ctype_size(fs_param_ctype c)
+{
+    return c == FS_CTYPE_DOUBLE ? sizeof(double) : (c == FS_CTYPE_BOOL ? sizeof(bool) : sizeof(int));
 }

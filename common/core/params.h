@@ -1,9 +1,12 @@
 /* Method parameters: each method declares a table of fs_param_def, one entry per
- * double field of its parameter struct (enums hold the choice index, bools 0/1).
- * "METHOD.PARAM=VALUE" strings (--set, scene files, the library) are split here and
+ * field of its parameter struct, typed as the parameter is: double (FLOAT), int (INT),
+ * an enum whose values are the choices' indices (ENUM), bool (BOOL). Values travel as
+ * doubles (settings, sweeps, provenance) and take the field's type in the struct.
+ * "METHOD.PARAM=VALUE" strings (the command line's, scene files', the library's) are split here and
  * validated against the table. */
 #ifndef FS_PARAMS_H
 #define FS_PARAMS_H
+#include <stdbool.h>
 #include <stddef.h>
 #ifdef __cplusplus
 extern "C" {
@@ -12,22 +15,29 @@ extern "C" {
 #define FS_MAX_PARAMS 32
 
 typedef enum { FS_PARAM_FLOAT, FS_PARAM_INT, FS_PARAM_BOOL, FS_PARAM_ENUM } fs_param_type;
+/* The C type of a parameter's field (an enum's is int-sized: int or unsigned). */
+typedef enum { FS_CTYPE_DOUBLE = 1, FS_CTYPE_INT, FS_CTYPE_BOOL } fs_param_ctype;
 
 typedef struct fs_param_def {
     const char *name;
-    size_t offset;          /* of the parameter's double in the method's struct */
+    size_t offset;        /* of the parameter's field in the method's struct */
+    fs_param_ctype ctype; /* that field's C type, taken from its declaration */
     fs_param_type type;
-    double def, min, max;   /* range for FLOAT/INT, inclusive */
-    const char *choices;    /* ENUM: "a|b|c"; the value is the index */
-    const char *help;       /* one line, with units */
+    double def, min, max; /* range for FLOAT/INT, inclusive */
+    const char *choices;  /* ENUM: "a|b|c"; the value is the index */
+    const char *help;     /* one line, with units */
 } fs_param_def;
 
-/* The first two members of a table entry: the name and offset of member `member`
- * of struct type `type`, so a parameter is always named like its field. The
- * sizeof term is 0, or a compile error when the member is not a double (the
- * fill writes doubles). */
-#define FS_PARAM_FIELD(type, member) \
-    #member, offsetof(type, member) + 0 * sizeof(char[_Generic(((type *)0)->member, double: 1, default: -1)])
+/* The first three members of a table entry: the name, offset and C type of member `member`
+ * of struct type `type`, so a parameter is always named like its field; a field that is not
+ * a double, an int, an enum or a bool is a compile error. fs_method_params_fill checks the
+ * C type against the entry's fs_param_type (FLOAT: double; INT, ENUM: int or enum; BOOL: bool). */
+#define FS_PARAM_FIELD(type, member) #member, offsetof(type, member), FS_PARAM_CTYPE(((type *)0)->member)
+/* The fs_param_ctype of an (unevaluated) field expression. */
+#define FS_PARAM_CTYPE(field)                                                                                          \
+    _Generic(field, double : FS_CTYPE_DOUBLE, int : FS_CTYPE_INT, unsigned : FS_CTYPE_INT, bool : FS_CTYPE_BOOL)
+/* sizeof the field of that C type. */
+size_t fs_param_ctype_size(fs_param_ctype c);
 
 /* One "METHOD.PARAM=VALUE" setting, split at its first '.' and its first '=' (after the '.'). */
 typedef struct fs_param_setting {
@@ -35,7 +45,7 @@ typedef struct fs_param_setting {
     const char *value; /* into the split text: everything after the '=' */
 } fs_param_setting;
 
-/* The one parser of "METHOD.PARAM=VALUE" (scenes, --set, sweeps, tests): FS_ERR_INPUT
+/* The one parser of "METHOD.PARAM=VALUE" (scenes, the caller's settings, sweeps, tests): FS_ERR_INPUT
  * with "TEXT: ..." when a part is missing or empty or a name is too long. */
 int fs_param_split(const char *text, fs_param_setting *out);
 

@@ -114,7 +114,8 @@ static char *put_long(char *at, size_t *left, long v)
 {
     char digits[24];
     int n = 0;
-    do digits[n++] = (char)('0' + v % 10); while ((v /= 10) > 0 && n < 23);
+    do digits[n++] = (char)('0' + v % 10);
+    while ((v /= 10) > 0 && n < 23);
     char s[24];
     for (int i = 0; i < n; i++) s[i] = digits[n - 1 - i];
     s[n] = 0;

@@ -33,5 +33,6 @@ void fs_provenance_init_base(fs_provenance *p, const char *renderer, const char 
 void fs_provenance_line(const fs_provenance *p, char *buf, int size)
 {
     int n = snprintf(buf, size, "#");
-    for (int i = 0; i < p->n && n < size; i++) n += snprintf(buf + n, size - n, " %s=%s;", p->name[i] + 10, p->value[i]);
+    for (int i = 0; i < p->n && n < size; i++)
+        n += snprintf(buf + n, size - n, " %s=%s;", p->name[i] + 10, p->value[i]);
 }

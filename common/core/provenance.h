@@ -10,7 +10,9 @@ extern "C" {
 #define FS_PROV_MAX 40
 
 /* A string attribute (EXR header entry). */
-typedef struct fs_attr { const char *name, *value; } fs_attr;
+typedef struct fs_attr {
+    const char *name, *value;
+} fs_attr;
 
 /* fluidsurf's version, the commit it was built at ("unknown" outside git) and whether the
  * tree outside results/ differed from that commit (1) or not (0) (generated fs_version.c). */

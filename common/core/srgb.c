@@ -10,15 +10,9 @@ static double srgb_encode_exact(float linear)
     return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
 }
 
-unsigned char fs_srgb_encode8(float linear)
-{
-    return (unsigned char)(srgb_encode_exact(linear) * 255.0 + 0.5);
-}
+unsigned char fs_srgb_encode8(float linear) { return (unsigned char)(srgb_encode_exact(linear) * 255.0 + 0.5); }
 
-float fs_srgb_encode(float linear)
-{
-    return (float)srgb_encode_exact(linear);
-}
+float fs_srgb_encode(float linear) { return (float)srgb_encode_exact(linear); }
 
 float fs_srgb_decode8(unsigned char code)
 {

@@ -6,8 +6,7 @@
 
 static int name_ok(const char *s, size_t len)
 {
-    return len >= 1 && len <= FS_STAGE_NAME_MAX && !memchr(s, '=', len) && !memchr(s, ',', len) &&
-           !memchr(s, ';', len);
+    return len >= 1 && len <= FS_STAGE_NAME_MAX && !memchr(s, '=', len) && !memchr(s, ',', len) && !memchr(s, ';', len);
 }
 
 int fs_stage_counts_format(const fs_stages *st, char *buf, int size)

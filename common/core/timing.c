@@ -32,13 +32,6 @@ void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms)
 
 void fs_stages_add(fs_stages *s, const char *name, double ms) { fs_stages_add_gpu(s, name, ms, NAN); }
 
-double fs_stages_gpu(const fs_stages *s, const char *name)
-{
-    for (int i = 0; i < s->n; i++)
-        if (!strcmp(s->name[i], name)) return s->gpu_ms[i];
-    return NAN;
-}
-
 double fs_stages_total(const fs_stages *s)
 {
     double t = 0;

@@ -25,8 +25,6 @@ double fs_now_ms(void); /* CLOCK_MONOTONIC in milliseconds */
 void fs_stages_add(fs_stages *s, const char *name, double ms);
 /* The same, with the GL clock's time of the stage (NaN: none; kept NaN until one comes). */
 void fs_stages_add_gpu(fs_stages *s, const char *name, double ms, double gpu_ms);
-/* The GL time of stage name; NaN when it has none or does not exist. */
-double fs_stages_gpu(const fs_stages *s, const char *name);
 double fs_stages_total(const fs_stages *s);
 /* The sum of work counter c over the stages into *total: 0, or 1 when it wraps
  * 2^64 (*total is then UINT64_MAX). Every total of counts is made here. */

@@ -9,8 +9,8 @@ static const char *scene_name(const fs_scene *s) { return s->path[0] ? s->path :
 
 /* Entry and exit distances of the ray o + t dir through the box, or 0 on a miss;
  * *axis is the axis of the entry face. */
-static int ray_box(const double o[3], const double dir[3], const double lo[3], const double hi[3],
-                   double *t0, double *t1, int *axis)
+static int ray_box(const double o[3], const double dir[3], const double lo[3], const double hi[3], double *t0,
+                   double *t1, int *axis)
 {
     double tn = -INFINITY, tf = INFINITY;
     *axis = 0;
@@ -20,8 +20,15 @@ static int ray_box(const double o[3], const double dir[3], const double lo[3], c
             continue;
         }
         double u = (lo[a] - o[a]) / dir[a], v = (hi[a] - o[a]) / dir[a];
-        if (u > v) { double w = u; u = v; v = w; }
-        if (u > tn) { tn = u; *axis = a; }
+        if (u > v) {
+            double w = u;
+            u = v;
+            v = w;
+        }
+        if (u > tn) {
+            tn = u;
+            *axis = a;
+        }
         if (v < tf) tf = v;
     }
     *t0 = tn;
@@ -67,8 +74,7 @@ int fs_synthetic_analytic(const fs_scene *s, int frame, const fs_camera *cam, fs
             if (!hit || !(t0 > 0) || !(t1 > t0)) continue;
             if (L.sphere)
                 for (int a = 0; a < 3; a++) nw[a] = (o[a] + t0 * dir[a] - L.centre[a]) / L.R;
-            else
-                nw[axis] = dir[axis] > 0 ? -1 : 1;
+            else nw[axis] = dir[axis] > 0 ? -1 : 1;
             float n[3] = {(float)nw[0], (float)nw[1], (float)nw[2]}, nv[3];
             fs_camera_to_view_dir(cam, n, nv);
             float len = sqrtf(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);

@@ -65,8 +65,12 @@ void fs_interior_mask(const fs_gbuffer *a, const fs_gbuffer *b, int dist, unsign
     int K = dist < 0 ? 1 : dist > 254 ? 255 : dist + 1;
     for (size_t i = 0; i < (size_t)w * h; i++)
         mask[i] = is_covered(a->coverage[i]) && is_covered(b->coverage[i]) ? (unsigned char)K : 0;
-#define M(x, y) ((x) < 0 || (x) >= w || (y) < 0 || (y) >= h ? 0 : (int)mask[(size_t)(y) * w + (x)])
-#define RELAX(x, y) do { int _n = M(x, y) + 1; if (_n < v) v = _n; } while (0)
+#define M(x, y) ((x) < 0 || (x) >= w || (y) < 0 || (y) >= h ? 0 : (int)mask[(size_t)(y)*w + (x)])
+#define RELAX(x, y)                                                                                                    \
+    do {                                                                                                               \
+        int _n = M(x, y) + 1;                                                                                          \
+        if (_n < v) v = _n;                                                                                            \
+    } while (0)
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
             int v = mask[(size_t)y * w + x];
@@ -98,8 +102,8 @@ void fs_normal_error_map(const fs_gbuffer *a, const fs_gbuffer *b, float *deg)
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++)
         deg[i] = is_covered(a->coverage[i]) && is_covered(b->coverage[i])
-                     ? (float)normal_angle_deg(a->normal + 3 * i, b->normal + 3 * i)
-                     : NAN;
+            ? (float)normal_angle_deg(a->normal + 3 * i, b->normal + 3 * i)
+            : NAN;
 }
 
 void fs_depth_error_map(const fs_gbuffer *a, const fs_gbuffer *b, float r, double bias_r, float *err_r)
@@ -108,8 +112,8 @@ void fs_depth_error_map(const fs_gbuffer *a, const fs_gbuffer *b, float r, doubl
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++)
         err_r[i] = is_covered(a->coverage[i]) && is_covered(b->coverage[i])
-                       ? (float)fabs(((double)a->depth[i] - b->depth[i]) / r - bias_r)
-                       : NAN;
+            ? (float)fabs(((double)a->depth[i] - b->depth[i]) / r - bias_r)
+            : NAN;
 }
 
 void fs_srgb_luminance(const float *rgba, int w, int h, float *lum)
@@ -119,8 +123,7 @@ void fs_srgb_luminance(const float *rgba, int w, int h, float *lum)
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++) {
         const float *p = rgba + 4 * i;
-        lum[i] = (float)(0.2126 * fs_srgb_encode(p[0]) + 0.7152 * fs_srgb_encode(p[1]) +
-                         0.0722 * fs_srgb_encode(p[2]));
+        lum[i] = (float)(0.2126 * fs_srgb_encode(p[0]) + 0.7152 * fs_srgb_encode(p[1]) + 0.0722 * fs_srgb_encode(p[2]));
     }
 }
 
@@ -173,7 +176,7 @@ static int ssim_mean(const float *x, const float *y, int w, int h, const unsigne
             o[3] = syy / sw;
             o[4] = sxy / sw;
         }
-    /* vertical pass, then the SSIM of each pixel, summed per row */
+        /* vertical pass, then the SSIM of each pixel, summed per row */
 #pragma omp parallel for schedule(static)
     for (int j = 0; j < h; j++) {
         double rs = 0;
@@ -260,8 +263,8 @@ static int scratch_alloc(metric_scratch *s, int w, int h, int with_rgba)
         s->lum_a = malloc(n * sizeof(float));
         s->lum_b = malloc(n * sizeof(float));
     }
-    if (!s->dd || !s->ang || !s->vals || !s->row_a || !s->row_b || !s->row_n || !s->row_u || !s->row_off ||
-        !s->both || !s->uni || !s->interior || (with_rgba && (!s->lum_a || !s->lum_b))) {
+    if (!s->dd || !s->ang || !s->vals || !s->row_a || !s->row_b || !s->row_n || !s->row_u || !s->row_off || !s->both ||
+        !s->uni || !s->interior || (with_rgba && (!s->lum_a || !s->lum_b))) {
         scratch_free(s);
         return fs_fail(FS_ERR_RUNTIME, "metrics: out of memory for %dx%d images", w, h);
     }

@@ -9,23 +9,23 @@ extern "C" {
 #endif
 
 typedef struct fs_metrics {
-    double mask_iou;                 /* |A and B| / |A or B| of coverage (1 when both empty) */
-    double depth_bias_r;             /* mean (a - b) eye depth over pixels both cover, in r */
-    double depth_rmse_r;             /* RMS of (a - b - bias), in r: the error around the bias */
-    double depth_p95_r;              /* 95th percentile of |a - b - bias|, in r: around the mean, so a few
+    double mask_iou;        /* |A and B| / |A or B| of coverage (1 when both empty) */
+    double depth_bias_r;    /* mean (a - b) eye depth over pixels both cover, in r */
+    double depth_rmse_r;    /* RMS of (a - b - bias), in r: the error around the bias */
+    double depth_p95_r;     /* 95th percentile of |a - b - bias|, in r: around the mean, so a few
                                         outliers that pull the mean make it read their pull */
-    double normal_mean_deg;          /* mean angle between normals over pixels both cover */
+    double normal_mean_deg; /* mean angle between normals over pixels both cover */
     double normal_p95_deg;
     double interior_normal_mean_deg; /* over the interior mask (>= 3 px from either silhouette) */
     double psnr_db;                  /* sRGB luminance over the union of the masks; INFINITY if equal */
     double ssim;                     /* Wang et al. 2004 on sRGB luminance, mean over the union */
     size_t n_both, n_union, n_interior;
     /* The depth error e = (a - b) / r itself, not around its mean: robust to a few outliers */
-    double depth_median_r;           /* median of e (signed) */
-    double depth_abs_p50_r;          /* 50th, 95th and 99th percentiles of |e| */
+    double depth_median_r;  /* median of e (signed) */
+    double depth_abs_p50_r; /* 50th, 95th and 99th percentiles of |e| */
     double depth_abs_p95_r;
     double depth_abs_p99_r;
-    double depth_over_1r_frac;       /* share of the pixels both cover with |e| > 1 */
+    double depth_over_1r_frac; /* share of the pixels both cover with |e| > 1 */
 } fs_metrics;
 
 /* rgba_a/rgba_b: linear RGBA of the shaded images (PSNR/SSIM; either NULL -> both

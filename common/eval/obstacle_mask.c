@@ -43,7 +43,10 @@ int fs_obstacle_hide(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *
         if (!(rc = fs_obstacle_hidden_mask(s, cam, by[k], one)))
             for (size_t i = 0; i < n; i++) hidden[i] |= one[i];
     for (int k = 0; k < ng && !rc; k++) {
-        if (g[k]->w != w || g[k]->h != h) { rc = fs_fail(FS_ERR_INPUT, "metrics: image sizes differ"); break; }
+        if (g[k]->w != w || g[k]->h != h) {
+            rc = fs_fail(FS_ERR_INPUT, "metrics: image sizes differ");
+            break;
+        }
         views[k] = *g[k];
         views[k].coverage = cov + (size_t)k * n;
         for (size_t i = 0; i < n; i++) views[k].coverage[i] = hidden[i] ? 0.0f : g[k]->coverage[i];
@@ -102,7 +105,8 @@ int fs_solids_layer(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g
     *buf = NULL;
     if (!s->obstacles.n || fs_gbuffer_aov(g, FS_AOV_SOLID_DEPTH) || g->naovs >= FS_GBUFFER_MAX_AOVS) return FS_OK;
     size_t n = (size_t)g->w * g->h;
-    if (!(*buf = malloc(n * sizeof **buf))) return fs_fail(FS_ERR_RUNTIME, "out of memory for a %dx%d image", g->w, g->h);
+    if (!(*buf = malloc(n * sizeof **buf)))
+        return fs_fail(FS_ERR_RUNTIME, "out of memory for a %dx%d image", g->w, g->h);
     fs_obstacles_depth(&s->obstacles, cam, g->w, g->h, *buf);
     for (size_t i = 0; i < n; i++)
         if (!isfinite((*buf)[i])) (*buf)[i] = 0.0f; /* no solid: 0, as empty depth in an EXR */

@@ -3,6 +3,7 @@
  * surface alone. Per pixel and independent of the others: deterministic for any
  * thread count. */
 #include "shading.h"
+#include "vec3.h"
 #include <math.h>
 #include <stddef.h>
 
@@ -27,17 +28,11 @@ typedef struct shade_ctx {
     float floor_light[3]; /* ambient + direct light on the floor */
 } shade_ctx;
 
-static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static void normalize3(float v[3])
-{
-    float l = sqrtf(dot3(v, v));
-    if (l > 0) { v[0] /= l; v[1] /= l; v[2] /= l; }
-}
 static float mixf(float a, float b, float t) { return a + (b - a) * t; }
 
 static void sky(const shade_ctx *c, const float d[3], float out[3])
 {
-    float t = dot3(d, c->up);
+    float t = fs_v3_dot(d, c->up);
     if (t >= 0) {
         float k = 1.0f - (1.0f - t) * (1.0f - t); /* quick departure from the horizon */
         for (int i = 0; i < 3; i++) out[i] = mixf(SKY_HORIZON[i], SKY_ZENITH[i], k);
@@ -65,15 +60,14 @@ static float filtered_square(float x, float w)
 static float highlight(const shade_ctx *c, const float n[3], const float v[3], float shininess)
 {
     float h[3] = {c->L[0] + v[0], c->L[1] + v[1], c->L[2] + v[2]};
-    normalize3(h);
-    float nh = dot3(n, h);
-    return nh > 0 && dot3(n, c->L) > 0 ? powf(nh, shininess) : 0.0f;
+    fs_v3_normalize(h);
+    float nh = fs_v3_dot(n, h);
+    return nh > 0 && fs_v3_dot(n, c->L) > 0 ? powf(nh, shininess) : 0.0f;
 }
 
-static void shade_opaque(const shade_ctx *c, const float n[3], const float v[3], const float albedo[3],
-                         float out[3])
+static void shade_opaque(const shade_ctx *c, const float n[3], const float v[3], const float albedo[3], float out[3])
 {
-    float nl = fmaxf(dot3(n, c->L), 0.0f);
+    float nl = fmaxf(fs_v3_dot(n, c->L), 0.0f);
     float spec = OPAQUE_SPEC * highlight(c, n, v, OPAQUE_SHININESS);
     for (int i = 0; i < 3; i++)
         out[i] = albedo[i] * (c->s->ambient + nl * c->s->light_color[i]) + spec * c->s->light_color[i];
@@ -142,7 +136,7 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
                         float thickness, const float tint[3], float out[3])
 {
     float v[3] = {-d[0], -d[1], -d[2]};
-    float cos_i = fminf(fmaxf(dot3(n, v), 0.0f), 1.0f);
+    float cos_i = fminf(fmaxf(fs_v3_dot(n, v), 0.0f), 1.0f);
     float ior = c->s->ior > 1e-3f ? c->s->ior : 1.0f;
     float F = fresnel(cos_i, ior);
 
@@ -157,11 +151,17 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
     float t[3], exit[3], trans[3];
     float tn = eta * cos_i - sqrtf(fmaxf(k, 0.0f));
     for (int i = 0; i < 3; i++) t[i] = eta * d[i] + tn * n[i];
-    normalize3(t);
+    fs_v3_normalize(t);
     /* A solid inside the water is seen through the water in front of it. */
-    float seen;
+    float seen, to_floor = floor_distance(c, p, t);
     if (obstacle_seen(c, p, t, thickness, trans, &seen)) thickness = seen;
-    else {
+    else if (to_floor <= thickness) {
+        /* The water ends at the floor: a refracted ray that reaches it within the
+         * thickness sees the floor there (looked up from p: from an exit point
+         * below the floor it would see the sky's ground colour, issue 35). */
+        thickness = to_floor;
+        background(c, p, t, dist, trans);
+    } else {
         for (int i = 0; i < 3; i++) exit[i] = p[i] + t[i] * thickness;
         background(c, exit, t, dist + thickness, trans);
     }
@@ -183,7 +183,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
         c.L[i] = s->light_dir[i];
         c.up[i] = i == s->up_axis ? 1.0f : 0.0f;
     }
-    normalize3(c.L);
+    fs_v3_normalize(c.L);
     c.floor_y = floor_y;
     c.check = s->radius > 0 ? 8.0f * s->radius : 1.0f;
     c.eps = 1e-3f * (s->radius > 0 ? s->radius : 1.0f);
@@ -206,24 +206,28 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
             float cov = g->coverage[idx];
             cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
             /* A solid in front of the fluid: the pixel shows the solid alone (a NaN depth hides too). */
-            if (cov > 0 && isfinite(t_obstacle) && !(t_obstacle * dot3(d, c.fwd) >= g->depth[idx])) cov = 0;
+            if (cov > 0 && isfinite(t_obstacle) && !(t_obstacle * fs_v3_dot(d, c.fwd) >= g->depth[idx])) cov = 0;
             if (cov > 0) {
                 float n[3], vn[3] = {g->normal[3 * idx], g->normal[3 * idx + 1], g->normal[3 * idx + 2]};
-                if (!(dot3(vn, vn) > 1e-12f)) { vn[0] = 0; vn[1] = 0; vn[2] = 1; }
+                if (!(fs_v3_dot(vn, vn) > 1e-12f)) {
+                    vn[0] = 0;
+                    vn[1] = 0;
+                    vn[2] = 1;
+                }
                 fs_camera_from_view_dir(cam, vn, n);
-                normalize3(n);
+                fs_v3_normalize(n);
                 /* Normals bent slightly away at silhouettes: make them face the camera. */
-                float nv = -dot3(n, d);
+                float nv = -fs_v3_dot(n, d);
                 if (nv < 0.02f) {
                     for (int i = 0; i < 3; i++) n[i] -= (0.02f - nv) * d[i];
-                    normalize3(n);
+                    fs_v3_normalize(n);
                 }
                 const float *albedo = color ? color + 4 * idx : s->material_color;
                 float v[3] = {-d[0], -d[1], -d[2]};
                 if (s->material == FS_MATERIAL_OPAQUE) {
                     shade_opaque(&c, n, v, albedo, col);
                 } else {
-                    float along = dot3(d, c.fwd), depth = g->depth[idx], p[3];
+                    float along = fs_v3_dot(d, c.fwd), depth = g->depth[idx], p[3];
                     float dist = isfinite(depth) && along > 0 ? depth / along : 0.0f;
                     for (int i = 0; i < 3; i++) p[i] = c.eye[i] + d[i] * dist;
                     float thick = g->thickness[idx];

@@ -84,7 +84,8 @@ static int aniso_point(const fs_grid *g, const float x[3], const fs_aniso_params
     double ev[3], V[9];
     fs_eigen3_sym(C, ev, V); /* ascending: ev[2] is sigma_1 */
     double s[3];
-    for (int k = 0; k < 3; k++) s[k] = ev[k] > ev[2] / ap->kappa ? ev[k] : ev[2] / ap->kappa; /* max(sigma_k, sigma_1/kappa) */
+    for (int k = 0; k < 3; k++)
+        s[k] = ev[k] > ev[2] / ap->kappa ? ev[k] : ev[2] / ap->kappa; /* max(sigma_k, sigma_1/kappa) */
     double norm = ap->per_particle ? cbrt(s[0] * s[1] * s[2]) : ap->sigma_ref;
     for (int k = 0; k < 3; k++) s[k] *= ap->scale / norm;
     for (int i = 0; i < 3; i++)

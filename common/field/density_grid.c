@@ -136,22 +136,33 @@ int fs_density_grid_exact(fs_density_grid *g, const fs_particles *p, const fs_gr
 static int inside(const fs_particles *p, size_t i, const float lo[3], const float hi[3])
 {
     return p->x[i] >= lo[0] && p->x[i] <= hi[0] && p->y[i] >= lo[1] && p->y[i] <= hi[1] && p->z[i] >= lo[2] &&
-           p->z[i] <= hi[2];
+        p->z[i] <= hi[2];
 }
 
 int fs_density_grid_keep(const fs_particles *p, const float lo[3], const float hi[3], float pad, fs_particles *out,
                          size_t *dropped)
 {
     float l[3], h[3];
-    for (int a = 0; a < 3; a++) { l[a] = lo[a] - pad; h[a] = hi[a] + pad; }
+    for (int a = 0; a < 3; a++) {
+        l[a] = lo[a] - pad;
+        h[a] = hi[a] + pad;
+    }
     size_t keep = 0;
     for (size_t i = 0; i < p->n; i++) keep += inside(p, i, l, h);
     *dropped = p->n - keep;
-    if (!*dropped) { *out = *p; return FS_OK; }
+    if (!*dropped) {
+        *out = *p;
+        return FS_OK;
+    }
     if (fs_particles_alloc(out, keep, 0))
         return fs_fail(FS_ERR_RUNTIME, "density grid: out of memory for %zu particles", keep);
     for (size_t i = 0, k = 0; i < p->n; i++)
-        if (inside(p, i, l, h)) { out->x[k] = p->x[i]; out->y[k] = p->y[i]; out->z[k] = p->z[i]; k++; }
+        if (inside(p, i, l, h)) {
+            out->x[k] = p->x[i];
+            out->y[k] = p->y[i];
+            out->z[k] = p->z[i];
+            k++;
+        }
     out->radius = p->radius;
     fs_particles_bounds(out);
     return FS_OK;

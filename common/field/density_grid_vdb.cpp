@@ -13,7 +13,8 @@
 #include <cstring>
 #include <exception>
 
-namespace {
+namespace
+{
 
 void write_grid(const fs_density_grid *g, const char *tmp, const char *name)
 {
@@ -46,7 +47,8 @@ int read_grid(fs_density_grid *g, const char *path, const char *name)
     openvdb::GridBase::Ptr base = file.readGrid(name);
     file.close();
     openvdb::FloatGrid::Ptr grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
-    if (!grid) return fs_fail(FS_ERR_INPUT, "%s: grid '%s' is a %s, not a float grid", path, name, base->type().c_str());
+    if (!grid)
+        return fs_fail(FS_ERR_INPUT, "%s: grid '%s' is a %s, not a float grid", path, name, base->type().c_str());
     const openvdb::math::Transform &xf = grid->transform();
     openvdb::Vec3d vs = xf.voxelSize();
     if (!xf.isLinear() || std::fabs(vs[0] - vs[1]) > 1e-6 * vs[0] || std::fabs(vs[0] - vs[2]) > 1e-6 * vs[0])

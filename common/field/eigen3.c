@@ -42,7 +42,11 @@ int fs_eigen3_sym(const double a_in[9], double eval[3], double evec[9])
     int o[3] = {0, 1, 2};
     for (int i = 0; i < 3; i++)
         for (int j = i + 1; j < 3; j++)
-            if (a[o[j]][o[j]] < a[o[i]][o[i]]) { int t = o[i]; o[i] = o[j]; o[j] = t; }
+            if (a[o[j]][o[j]] < a[o[i]][o[i]]) {
+                int t = o[i];
+                o[i] = o[j];
+                o[j] = t;
+            }
     for (int k = 0; k < 3; k++) {
         eval[k] = a[o[k]][o[k]];
         for (int i = 0; i < 3; i++) evec[3 * k + i] = v[i][o[k]];

@@ -13,8 +13,8 @@ extern "C" {
 
 typedef struct fs_field_eval {
     fs_field f;
-    const fs_grid *g;            /* isotropic: the particles' grid, cell >= H */
-    const fs_aniso_kernels *ak;  /* anisotropic: the kernels (their grid is used), else NULL */
+    const fs_grid *g;           /* isotropic: the particles' grid, cell >= H */
+    const fs_aniso_kernels *ak; /* anisotropic: the kernels (their grid is used), else NULL */
 } fs_field_eval;
 
 /* phi(x) into *phi and grad phi(x) into grad; returns the kernel terms summed

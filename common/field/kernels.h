@@ -18,7 +18,10 @@ static inline float fs_cubic_w(float d, float H)
 {
     float q = d / H, s = (float)(8.0 / FS_PI) / (H * H * H);
     if (q <= 0.5f) return s * (6.0f * q * q * q - 6.0f * q * q + 1.0f);
-    if (q < 1.0f) { float t = 1.0f - q; return 2.0f * s * t * t * t; }
+    if (q < 1.0f) {
+        float t = 1.0f - q;
+        return 2.0f * s * t * t * t;
+    }
     return 0.0f;
 }
 /* dW/dd (<= 0). */
@@ -26,7 +29,10 @@ static inline float fs_cubic_dw(float d, float H)
 {
     float q = d / H, s = (float)(8.0 / FS_PI) / (H * H * H * H);
     if (q <= 0.5f) return s * (18.0f * q * q - 12.0f * q);
-    if (q < 1.0f) { float t = 1.0f - q; return -6.0f * s * t * t; }
+    if (q < 1.0f) {
+        float t = 1.0f - q;
+        return -6.0f * s * t * t;
+    }
     return 0.0f;
 }
 
@@ -103,11 +109,11 @@ int fs_kernel_from_name(const char *name);
 
 /* The scalar field of docs/DESIGN.md: phi(x) = sum_j V W(|x - p_j|, H). */
 typedef struct fs_field {
-    float r;            /* particle radius */
-    float volume;       /* V = volume_scale * (2r)^3 */
+    float r;      /* particle radius */
+    float volume; /* V = volume_scale * (2r)^3 */
     fs_kernel kernel;
-    float H;            /* support radius, scene units */
-    float iso;          /* iso value on the phi scale */
+    float H;   /* support radius, scene units */
+    float iso; /* iso value on the phi scale */
 } fs_field;
 
 #ifdef __cplusplus

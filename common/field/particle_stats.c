@@ -71,7 +71,11 @@ static int stats_grid(const fs_particles *p, float min_cell, fs_grid *g, float *
 }
 
 /* The K smallest squared distances to other particles, kept sorted. */
-typedef struct knn_state { uint32_t self; int k; float d2[KNN]; } knn_state;
+typedef struct knn_state {
+    uint32_t self;
+    int k;
+    float d2[KNN];
+} knn_state;
 static void knn_visit(void *user, uint32_t slot, float d2)
 {
     knn_state *s = user;
@@ -129,7 +133,10 @@ int fs_particles_estimate_radius(const fs_particles *p, float *r)
     return FS_OK;
 }
 
-typedef struct phi_state { const fs_field *f; double sum; } phi_state;
+typedef struct phi_state {
+    const fs_field *f;
+    double sum;
+} phi_state;
 static void phi_visit(void *user, uint32_t slot, float d2)
 {
     (void)slot;

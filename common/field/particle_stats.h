@@ -15,10 +15,10 @@ extern "C" {
 #define FS_STATS_SAMPLE 4096
 
 typedef struct fs_particle_stats {
-    size_t n;              /* particles */
-    size_t sampled;        /* particles the medians are over: min(n, FS_STATS_SAMPLE) */
-    float nn_median;       /* median distance to the nearest neighbour */
-    float density_median;  /* median normalised density phi at particle centres */
+    size_t n;             /* particles */
+    size_t sampled;       /* particles the medians are over: min(n, FS_STATS_SAMPLE) */
+    float nn_median;      /* median distance to the nearest neighbour */
+    float density_median; /* median normalised density phi at particle centres */
 } fs_particle_stats;
 
 /* Needs r, volume_scale and the kernel/support to evaluate phi. */

@@ -18,8 +18,8 @@ typedef struct fs_slice_splat fs_slice_splat;
 fs_slice_splat *fs_slice_splat_create(void); /* NULL with fs_fail set */
 void fs_slice_splat_destroy(fs_slice_splat *s);
 /* g must be initialised (fs_density_grid_init); its values are overwritten. */
-int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles *p, const fs_field *f,
-                       int up_axis, int clusters);
+int fs_slice_splat_run(fs_slice_splat *s, fs_density_grid *g, const fs_particles *p, const fs_field *f, int up_axis,
+                       int clusters);
 /* Disks drawn in the last run (one per particle per 4-plane pass it was drawn in). */
 size_t fs_slice_splat_disks(const fs_slice_splat *s);
 

@@ -1,4 +1,5 @@
 #define _GNU_SOURCE /* dl_iterate_phdr */
+#include "caller_words.h"
 #include "gl_context.h"
 #include "fs_error.h"
 #include "gl_device.h"
@@ -52,7 +53,8 @@ fs_ctx_kind fs_gl_context_default_kind(void)
 static int create_osmesa(fs_gl_context *c)
 {
     (void)c;
-    return fs_fail(FS_ERR_INPUT, "OpenGL: an OSMesa context needs a build with FS_WITH_OSMESA=ON (use --gl egl)");
+    return fs_fail(FS_ERR_INPUT, "OpenGL: an OSMesa context needs a build with FS_WITH_OSMESA=ON (use %s)",
+                   fs_word("gl_egl"));
 }
 #else
 /* OSMesa is opened with dlopen at the first OSMesa context, not linked: libOSMesa
@@ -97,13 +99,24 @@ static int create_osmesa(fs_gl_context *c)
 {
     pthread_once(&osm_once, osmesa_load);
     if (!osm.CreateContextAttribs) return fs_fail(FS_ERR_RUNTIME, "OpenGL: OSMesa: %s", osm_error);
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           4,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           5,
+                           0};
     OSMesaContext ctx = osm.CreateContextAttribs(attribs, NULL);
     if (!ctx) return fs_fail(FS_ERR_RUNTIME, "OpenGL: OSMesa cannot create a 4.5 core context (Mesa too old?)");
     c->extra = calloc((size_t)c->width * c->height, 4);
-    if (!c->extra) { osm.DestroyContext(ctx); return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory"); }
+    if (!c->extra) {
+        osm.DestroyContext(ctx);
+        return fs_fail(FS_ERR_RUNTIME, "OpenGL: out of memory");
+    }
     c->handle = ctx;
     return FS_OK;
 }
@@ -196,7 +209,8 @@ static const char *egl_load(egl_fns *e)
     LOAD(ChooseConfig, PFNEGLCHOOSECONFIGPROC, "eglChooseConfig");
     LOAD(CreateContext, PFNEGLCREATECONTEXTPROC, "eglCreateContext");
 #undef LOAD
-    if (!e->QueryDevices || !e->GetPlatformDisplay) return "device enumeration (EGL_EXT_device_enumeration) unavailable";
+    if (!e->QueryDevices || !e->GetPlatformDisplay)
+        return "device enumeration (EGL_EXT_device_enumeration) unavailable";
     if (!e->MakeCurrent || !e->DestroyContext || !e->Terminate || !e->Initialize || !e->BindAPI || !e->ChooseConfig ||
         !e->CreateContext)
         return "an EGL 1.4 entry point is missing";
@@ -213,9 +227,11 @@ static const char *egl_open(egl_fns *e, EGLDeviceEXT dev, fs_gl_context *c)
     if (d == EGL_NO_DISPLAY || !e->Initialize(d, &major, &minor)) return "no EGL display initialises";
     e->dpy = d;
     const EGLint cfg_attr[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-    if (!e->BindAPI(EGL_OPENGL_API) || !e->ChooseConfig(d, cfg_attr, &cfg, 1, &ncfg) || ncfg < 1) return "no OpenGL config";
-    const EGLint ctx_attr[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    if (!e->BindAPI(EGL_OPENGL_API) || !e->ChooseConfig(d, cfg_attr, &cfg, 1, &ncfg) || ncfg < 1)
+        return "no OpenGL config";
+    const EGLint ctx_attr[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext ctx = e->CreateContext(d, cfg, EGL_NO_CONTEXT, ctx_attr);
     if (ctx == EGL_NO_CONTEXT) return "cannot create a 4.5 core context";
     c->handle = ctx;
@@ -411,7 +427,8 @@ static int check_required_gpu(const fs_gl_context *c)
     const char *env = getenv("FLUIDSURF_REQUIRE_GPU");
     int from_env = env && *env && strcmp(env, "0");
     if (!c->software || !(require_gpu || from_env)) return FS_OK;
-    char who[64] = "--require-gpu";
+    char who[64];
+    snprintf(who, sizeof who, "%s", fs_word("require_gpu"));
     if (!require_gpu) snprintf(who, sizeof who, "FLUIDSURF_REQUIRE_GPU=%s", env);
     return fs_fail(FS_ERR_RUNTIME, "%s: the OpenGL renderer is %s, a software rasterizer", who, c->renderer);
 }

@@ -12,11 +12,11 @@ typedef enum { FS_CTX_OSMESA = 0, FS_CTX_EGL, FS_CTX_GLFW } fs_ctx_kind;
 
 typedef struct fs_gl_context {
     fs_ctx_kind kind;
-    void *handle;     /* OSMesaContext, EGLContext or GLFWwindow* */
-    void *extra;      /* backend data (OSMesa buffer, EGL display) */
+    void *handle; /* OSMesaContext, EGLContext or GLFWwindow* */
+    void *extra;  /* backend data (OSMesa buffer, EGL display) */
     int width, height;
-    char renderer[256]; /* GL_RENDERER, for every timing and provenance */
-    char version[128];  /* GL_VERSION */
+    char renderer[256];   /* GL_RENDERER, for every timing and provenance */
+    char version[128];    /* GL_VERSION */
     int device, ndevices; /* EGL: the device's enumeration index and how many EGL lists; -1, 0 otherwise */
     int software;         /* a software rasterizer: EGL marks the device so, or GL_RENDERER names one */
 } fs_gl_context;

@@ -13,12 +13,15 @@ const char *fs_gl_counter_defines(void)
 {
     static char text[800];
     if (text[0]) return text;
-    int n = snprintf(text, sizeof text, "FS_COUNTERS 1\nFS_CNT_BINDING %d\nFS_CNT_WORDS %d", FS_GL_COUNTER_BINDING, WORDS);
-    static const char *const macro[FS_NCOUNTERS] = {
-        "FS_CNT_FIELD_EVALS", "FS_CNT_NEIGHBOURS",    "FS_CNT_MARCH_SAMPLES", "FS_CNT_FRAGMENTS",
-        "FS_CNT_FILTER_TAPS", "FS_CNT_TEXELS",        "FS_CNT_CROSSINGS",     "FS_CNT_CELLS_WALKED",
-        "FS_CNT_CELLS_MARCHED", "FS_CNT_CELLS_MARCHED_INSIDE", "FS_CNT_CELLS_PROVEN_INSIDE",
-        "FS_CNT_CELLS_PROVEN_OUTSIDE", "FS_CNT_REFINE_EVALS", "FS_CNT_INSIDE_EVALS"};
+    int n =
+        snprintf(text, sizeof text, "FS_COUNTERS 1\nFS_CNT_BINDING %d\nFS_CNT_WORDS %d", FS_GL_COUNTER_BINDING, WORDS);
+    static const char *const macro[FS_NCOUNTERS] = {"FS_CNT_FIELD_EVALS",         "FS_CNT_NEIGHBOURS",
+                                                    "FS_CNT_MARCH_SAMPLES",       "FS_CNT_FRAGMENTS",
+                                                    "FS_CNT_FILTER_TAPS",         "FS_CNT_TEXELS",
+                                                    "FS_CNT_CROSSINGS",           "FS_CNT_CELLS_WALKED",
+                                                    "FS_CNT_CELLS_MARCHED",       "FS_CNT_CELLS_MARCHED_INSIDE",
+                                                    "FS_CNT_CELLS_PROVEN_INSIDE", "FS_CNT_CELLS_PROVEN_OUTSIDE",
+                                                    "FS_CNT_REFINE_EVALS",        "FS_CNT_INSIDE_EVALS"};
     for (int c = 0; c < FS_NCOUNTERS; c++) n += snprintf(text + n, sizeof text - n, "\n%s %du", macro[c], c);
     return text;
 }

@@ -55,7 +55,10 @@ int fs_gl_grid_upload(fs_gl_grid *gg, const fs_grid *g)
 
 int fs_gl_grid_upload_attr(fs_gl_grid *gg, const fs_grid *g, const float *vec4s)
 {
-    if (gg->has_attr) { glDeleteBuffers(gg->nchunks, gg->attr); gg->has_attr = 0; }
+    if (gg->has_attr) {
+        glDeleteBuffers(gg->nchunks, gg->attr);
+        gg->has_attr = 0;
+    }
     size_t n = g->n ? g->n : 1;
     float *sorted = calloc(n * 4, sizeof *sorted);
     if (!sorted) return fs_fail(FS_ERR_RUNTIME, "grid: out of memory for %zu attributes", n);
@@ -77,7 +80,8 @@ void fs_gl_grid_bind(const fs_gl_grid *gg, unsigned prog)
     for (int b = 0; b < FS_GL_GRID_MAX_CHUNKS; b++) {
         int src = b < gg->nchunks ? b : 0;
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_POS + b, gg->pos[src]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_ATTR + b, gg->has_attr ? gg->attr[src] : gg->pos[src]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FS_GL_GRID_BINDING_ATTR + b,
+                         gg->has_attr ? gg->attr[src] : gg->pos[src]);
     }
     glUseProgram(prog);
     glUniform3f(glGetUniformLocation(prog, "u_grid_origin"), gg->origin[0], gg->origin[1], gg->origin[2]);

@@ -15,8 +15,8 @@ extern "C" {
 /* SSBO bindings used by grid.glsl (keep equal to the #defines there). */
 #define FS_GL_GRID_BINDING_START 8
 #define FS_GL_GRID_BINDING_NEAR 9
-#define FS_GL_GRID_BINDING_POS 10   /* 10 .. 13 */
-#define FS_GL_GRID_BINDING_ATTR 14  /* 14 .. 17 */
+#define FS_GL_GRID_BINDING_POS 10  /* 10 .. 13 */
+#define FS_GL_GRID_BINDING_ATTR 14 /* 14 .. 17 */
 #define FS_GL_GRID_BINDING_BKEY 18
 #define FS_GL_GRID_BINDING_TABLE 19
 
@@ -26,7 +26,7 @@ typedef struct fs_gl_grid {
     int nchunks, has_attr;
     size_t chunk; /* particles per chunk */
     float origin[3], cell;
-    int lo[3], hi[3];     /* range of the stored cells */
+    int lo[3], hi[3]; /* range of the stored cells */
     unsigned table_mask;
 } fs_gl_grid;
 

@@ -112,7 +112,8 @@ int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *b
         glCreateBuffers(1, &bufs[b]);
         glNamedBufferStorage(bufs[b], (GLsizeiptr)(cnt * 4 * sizeof(float)), vec4s + 4 * b * chunk, 0);
     }
-    if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
+    if (glGetError() != GL_NO_ERROR)
+        return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
     return nb;
 }
 
@@ -146,7 +147,8 @@ int fs_gl_upload_xyz(const float *x, const float *y, const float *z, size_t n, s
         fill_xyz(bufs[b], x, y, z, first, cnt, stage, STAGE);
     }
     free(stage);
-    if (glGetError() != GL_NO_ERROR) return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
+    if (glGetError() != GL_NO_ERROR)
+        return -fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate particle buffers (out of memory?)");
     return nb;
 }
 

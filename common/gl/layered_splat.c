@@ -41,7 +41,10 @@ struct fs_layered_splat {
 fs_layered_splat *fs_layered_splat_create(void)
 {
     fs_layered_splat *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory");
+        return NULL;
+    }
     GLint maxv = 0, maxc = 0, maxi = 0;
     glGetIntegerv(GL_MAX_GEOMETRY_OUTPUT_VERTICES, &maxv);
     glGetIntegerv(GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS, &maxc);
@@ -52,7 +55,8 @@ fs_layered_splat *fs_layered_splat_create(void)
     if (layers * 4 * 8 > maxc) layers = maxc / 32;
     if (layers < 1 || maxi < 1) {
         free(s);
-        fs_fail(FS_ERR_RUNTIME, "layered splat: geometry shader limits too small (%d vertices, %d components)", maxv, maxc);
+        fs_fail(FS_ERR_RUNTIME, "layered splat: geometry shader limits too small (%d vertices, %d components)", maxv,
+                maxc);
         return NULL;
     }
     s->layers = layers;
@@ -155,10 +159,16 @@ static int upload_particles(fs_layered_splat *s, const fs_particles *p, size_t c
     free_buffers(s);
     int maxb = (int)((p->n + chunk - 1) / chunk);
     s->bufs = calloc(maxb, sizeof *s->bufs);
-    if (!s->bufs) { free(v); return fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory"); }
+    if (!s->bufs) {
+        free(v);
+        return fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory");
+    }
     int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, maxb);
     free(v);
-    if (nb < 0) { free_buffers(s); return -nb; }
+    if (nb < 0) {
+        free_buffers(s);
+        return -nb;
+    }
     s->nbufs = nb;
     return FS_OK;
 }

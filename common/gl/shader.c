@@ -8,7 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct fs_embedded_shader { const char *name; const char *text; };
+struct fs_embedded_shader {
+    const char *name;
+    const char *text;
+};
 extern const struct fs_embedded_shader fs_embedded_shaders[];
 
 char *fs_shader_text(const char *name)
@@ -18,13 +21,20 @@ char *fs_shader_text(const char *name)
         char path[2048];
         snprintf(path, sizeof path, "%s/%s", dir, name);
         FILE *f = fopen(path, "rb");
-        if (!f) { fs_fail(FS_ERR_RUNTIME, "%s: cannot open shader (FLUIDSURF_SHADER_DIR)", path); return NULL; }
+        if (!f) {
+            fs_fail(FS_ERR_RUNTIME, "%s: cannot open shader (FLUIDSURF_SHADER_DIR)", path);
+            return NULL;
+        }
         fseek(f, 0, SEEK_END);
         long n = ftell(f);
         rewind(f);
         char *s = malloc(n + 1);
         if (s && fread(s, 1, n, f) == (size_t)n) s[n] = 0;
-        else { free(s); s = NULL; fs_fail(FS_ERR_RUNTIME, "%s: cannot read shader", path); }
+        else {
+            free(s);
+            s = NULL;
+            fs_fail(FS_ERR_RUNTIME, "%s: cannot read shader", path);
+        }
         fclose(f);
         return s;
     }
@@ -35,7 +45,10 @@ char *fs_shader_text(const char *name)
 }
 
 /* Growing string. */
-typedef struct sbuf { char *s; size_t n, cap; } sbuf;
+typedef struct sbuf {
+    char *s;
+    size_t n, cap;
+} sbuf;
 static void sb_add(sbuf *b, const char *s, size_t n)
 {
     if (b->n + n + 1 > b->cap) {
@@ -74,8 +87,7 @@ static void map_line(srcmap *m, int file, int line)
  * line of the top file. */
 static int expand(sbuf *out, const char *name, srcmap *map, const char *defines, int depth)
 {
-    if (depth > 8 || map->n == MAX_FILES)
-        return fs_fail(FS_ERR_RUNTIME, "shaders/%s: includes nested too deep", name);
+    if (depth > 8 || map->n == MAX_FILES) return fs_fail(FS_ERR_RUNTIME, "shaders/%s: includes nested too deep", name);
     char *text = fs_shader_text(name);
     if (!text) return FS_ERR_RUNTIME;
     int id = map->n++;
@@ -87,7 +99,10 @@ static int expand(sbuf *out, const char *name, srcmap *map, const char *defines,
         char inc[256];
         if (sscanf(p, " #include \"%255[^\"]\"", inc) == 1) {
             int rc = expand(out, inc, map, NULL, depth + 1);
-            if (rc) { free(text); return rc; }
+            if (rc) {
+                free(text);
+                return rc;
+            }
         } else {
             sb_add(out, p, len);
             sb_add(out, "\n", 1);
@@ -169,11 +184,17 @@ unsigned fs_program_build(const char *const *stages, const char *defines_in)
     srcmap map = {0};
     for (int i = 0; stages[i] && nsh < 8; i++) {
         GLenum type = stage_type(stages[i]);
-        if (!type) { fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", stages[i]); goto fail; }
+        if (!type) {
+            fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", stages[i]);
+            goto fail;
+        }
         sbuf src = {0};
         map.n = map.lines = 0;
         int rc = expand(&src, stages[i], &map, defines, 0);
-        if (rc) { free(src.s); goto fail; }
+        if (rc) {
+            free(src.s);
+            goto fail;
+        }
         fs_shader_dump(stages[i], defines, src.s, i == 0);
         GLuint s = glCreateShader(type);
         const char *text = src.s;

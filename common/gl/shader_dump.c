@@ -1,16 +1,16 @@
 #include "shader_dump.h"
+#include "hash.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-/* FNV-1a: names a source by its text, so identical sources share one file. */
+/* FNV-1a, folded to 32 bits: names a source by its text, so identical sources share one file. */
 static uint32_t text_hash(const char *s)
 {
-    uint32_t h = 2166136261u;
-    for (; *s; s++) h = (h ^ (unsigned char)*s) * 16777619u;
-    return h;
+    uint64_t h = fs_fnv1a(FS_FNV1A_BASIS, s, strlen(s));
+    return (uint32_t)(h ^ h >> 32);
 }
 
 /* glslangValidator takes the stage from the last extension: ".vert.glsl" -> "vert". */
@@ -49,7 +49,10 @@ void fs_shader_dump(const char *stage, const char *defines, const char *source, 
     /* one line, appended: several processes of one test may dump into the same folder */
     snprintf(path, sizeof path, "%s/index.tsv", dir);
     FILE *f = fopen(path, "a");
-    if (!f) { fprintf(stderr, "fluidsurf: FS_SHADER_DUMP: %s: cannot write\n", path); return; }
+    if (!f) {
+        fprintf(stderr, "fluidsurf: FS_SHADER_DUMP: %s: cannot write\n", path);
+        return;
+    }
     fprintf(f, "%s\t", stage);
     for (const char *d = defines ? defines : ""; *d; d++) fputc(*d == '\n' ? ';' : *d, f);
     fprintf(f, "\t%s\t%ld.%d\n", name, (long)getpid(), program);

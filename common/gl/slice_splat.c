@@ -22,8 +22,8 @@
 
 struct fs_slice_splat {
     unsigned prog, vao, fbo, tex;
-    int tw, th;           /* size of tex */
-    unsigned *bufs;       /* particle buffers of the last run */
+    int tw, th;     /* size of tex */
+    unsigned *bufs; /* particle buffers of the last run */
     int nbufs;
     size_t disks;
     /* uniform locations */
@@ -33,15 +33,24 @@ struct fs_slice_splat {
 fs_slice_splat *fs_slice_splat_create(void)
 {
     fs_slice_splat *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory");
+        return NULL;
+    }
     const char *st[] = {"common/slice_splat.vert.glsl", "common/slice_splat.frag.glsl", NULL};
     s->prog = fs_program_build(st, NULL);
-    if (!s->prog) { free(s); return NULL; }
+    if (!s->prog) {
+        free(s);
+        return NULL;
+    }
     glCreateVertexArrays(1, &s->vao);
-    const struct { int *loc; const char *name; } u[] = {
-        {&s->u_first, "u_first"},   {&s->u_axes, "u_axes"},     {&s->u_origin, "u_origin"}, {&s->u_spacing, "u_spacing"},
-        {&s->u_size, "u_size"},     {&s->u_zrange, "u_zrange"}, {&s->u_H, "u_H"},           {&s->u_planes, "u_planes"},
-        {&s->u_V, "u_V"},           {&s->u_kernel, "u_kernel"},
+    const struct {
+        int *loc;
+        const char *name;
+    } u[] = {
+        {&s->u_first, "u_first"}, {&s->u_axes, "u_axes"},     {&s->u_origin, "u_origin"}, {&s->u_spacing, "u_spacing"},
+        {&s->u_size, "u_size"},   {&s->u_zrange, "u_zrange"}, {&s->u_H, "u_H"},           {&s->u_planes, "u_planes"},
+        {&s->u_V, "u_V"},         {&s->u_kernel, "u_kernel"},
     };
     for (size_t i = 0; i < sizeof u / sizeof *u; i++) *u[i].loc = glGetUniformLocation(s->prog, u[i].name);
     return s;
@@ -122,7 +131,8 @@ static int cluster_upload(fs_slice_splat *s, const fs_particles *p, int up, int 
     unsigned short *band = malloc(p->n * sizeof *band);
     float *v = malloc(p->n * 4 * sizeof(float));
     if (!band || !v) {
-        free(band); free(v);
+        free(band);
+        free(v);
         return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory for %zu particles", p->n);
     }
     memset(start, 0, (nc + 1) * sizeof *start);
@@ -133,7 +143,8 @@ static int cluster_upload(fs_slice_splat *s, const fs_particles *p, int up, int 
     for (int k = 0; k < nc; k++) start[k + 1] += start[k];
     size_t *fill = malloc(nc * sizeof *fill);
     if (!fill) {
-        free(band); free(v);
+        free(band);
+        free(v);
         return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory");
     }
     memcpy(fill, start, nc * sizeof *fill);
@@ -150,10 +161,16 @@ static int cluster_upload(fs_slice_splat *s, const fs_particles *p, int up, int 
     size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
     int maxb = (int)((p->n + chunk - 1) / chunk);
     s->bufs = calloc(maxb, sizeof *s->bufs);
-    if (!s->bufs) { free(v); return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory"); }
+    if (!s->bufs) {
+        free(v);
+        return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory");
+    }
     int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, maxb);
     free(v);
-    if (nb < 0) { free_buffers(s); return -nb; }
+    if (nb < 0) {
+        free_buffers(s);
+        return -nb;
+    }
     s->nbufs = nb;
     return FS_OK;
 }
@@ -199,8 +216,9 @@ static int plane_axes_of(const fs_density_grid *g, int up, plane_axes *a)
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxtex);
     glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxvp);
     if (a->w > maxtex || a->h > maxtex || a->w > maxvp[0] || a->h > maxvp[1])
-        return fs_fail(FS_ERR_INPUT, "slice splat: planes of %dx%d points exceed this context's %dx%d framebuffer limit",
-                       a->w, a->h, maxvp[0] < maxtex ? maxvp[0] : maxtex, maxvp[1] < maxtex ? maxvp[1] : maxtex);
+        return fs_fail(FS_ERR_INPUT,
+                       "slice splat: planes of %dx%d points exceed this context's %dx%d framebuffer limit", a->w, a->h,
+                       maxvp[0] < maxtex ? maxvp[0] : maxtex, maxvp[1] < maxtex ? maxvp[1] : maxtex);
     return FS_OK;
 }
 
@@ -301,7 +319,8 @@ static void store_plane(fs_density_grid *g, const plane_axes *a, const float *pi
         const float *src = pix + (size_t)j * w * 4 + c;
         if (a->ax == 0) { /* a row of pixels is a row of the grid */
             float *dst = g->data + fs_density_grid_index(g, ijk[0], ijk[1], ijk[2]);
-            if (drawn) for (int i = 0; i < w; i++) dst[i] = src[4 * i];
+            if (drawn)
+                for (int i = 0; i < w; i++) dst[i] = src[4 * i];
             else memset(dst, 0, (size_t)w * sizeof(float));
         } else {
             for (int i = 0; i < w; i++) {

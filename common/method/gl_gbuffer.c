@@ -15,7 +15,10 @@ int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g)
     if (!rc) rc = fs_gl_read_texture(t->tex[FS_TARGET_THICKNESS], 1, t->w, t->h, g->thickness);
     float *color = fs_gbuffer_aov(g, FS_AOV_COLOR);
     if (!rc && color) rc = fs_gl_read_texture(t->tex[FS_TARGET_COLOR], 4, t->w, t->h, color);
-    if (rc) { free(nrm); return rc; }
+    if (rc) {
+        free(nrm);
+        return rc;
+    }
     for (size_t i = 0; i < n; i++) {
         float cov = nrm[4 * i + 3] > 0.5f ? 1.0f : 0.0f;
         g->coverage[i] = cov;

@@ -18,7 +18,7 @@ extern "C" {
 /* What every method sees of the scene. */
 struct fs_scene;
 typedef struct fs_method_setup {
-    fs_field field;         /* r, V, kernel, H, iso */
+    fs_field field; /* r, V, kernel, H, iso */
     /* The method's parameter struct, every field filled (fs_method_params_fill);
      * create() copies what it keeps, so it need only live during create(). */
     const void *params;
@@ -57,7 +57,7 @@ typedef struct fs_method {
     int naovs;
     const fs_param_def *params; /* one entry per field of its parameter struct */
     int nparams;
-    size_t params_size;         /* sizeof that struct */
+    size_t params_size; /* sizeof that struct */
     /* Returns NULL on failure with fs_fail() set. */
     void *(*create)(const fs_method_setup *setup);
     /* The frame and a grid with cell >= field.H (NULL for FS_GRID_UNUSED). Called by the run layer only (run.h),

@@ -49,16 +49,25 @@ int fs_method_setting_parse(const fs_method_setting *set, const char *value, dou
     return fs_param_parse(def, value, out, what);
 }
 
+int fs_method_setting_resolve(fs_scene_setting *set)
+{
+    fs_method_setting ms;
+    double v;
+    int rc = fs_method_setting_find(set->text, &ms);
+    if (!rc) rc = fs_method_setting_parse(&ms, ms.value, &v);
+    if (rc) return rc;
+    set->method = ms.m, set->param = ms.param, set->value = v;
+    return FS_OK;
+}
+
 int fs_method_params_resolve(const fs_method *m, const fs_scene *s, double values[FS_MAX_PARAMS])
 {
     for (int i = 0; i < m->nparams; i++) values[i] = m->params[i].def;
     for (int k = 0; k < s->nsets; k++) {
-        fs_method_setting set;
-        double v;
-        int rc = fs_method_setting_find(s->sets[k], &set);
-        if (!rc) rc = fs_method_setting_parse(&set, set.value, &v);
-        if (rc) return rc;
-        if (set.m == m) values[set.param] = v;
+        fs_scene_setting set = s->sets[k];
+        int rc; /* a setting added before any method was registered is resolved here */
+        if (!set.method && (rc = fs_method_setting_resolve(&set))) return rc;
+        if (set.method == m) values[set.param] = set.value;
     }
     return FS_OK;
 }
@@ -76,15 +85,31 @@ void fs_method_params_string(const fs_method *m, const double *values, char *buf
 
 /* ---- the parameter struct handed to create() ---- */
 
+/* The C type a kind of parameter needs. */
+static fs_param_ctype ctype_for(fs_param_type t)
+{
+    return t == FS_PARAM_FLOAT ? FS_CTYPE_DOUBLE : (t == FS_PARAM_BOOL ? FS_CTYPE_BOOL : FS_CTYPE_INT);
+}
+
+static void store(const fs_param_def *def, double v, void *field)
+{
+    if (def->ctype == FS_CTYPE_DOUBLE) *(double *)field = v;
+    else if (def->ctype == FS_CTYPE_BOOL) *(bool *)field = v != 0;
+    else *(int *)field = (int)v; /* INT and ENUM values are whole numbers in range (fs_param_parse) */
+}
+
 int fs_method_params_fill(const fs_method *m, const double *values, void *dst)
 {
     memset(dst, 0, m->params_size);
     for (int i = 0; i < m->nparams; i++) {
         const fs_param_def *def = &m->params[i];
-        if (def->offset + sizeof(double) > m->params_size)
+        if (def->ctype != ctype_for(def->type))
+            return fs_fail(FS_ERR_RUNTIME, "%s: parameter %s: its field's C type does not fit its kind", m->name,
+                           def->name);
+        if (def->offset + fs_param_ctype_size(def->ctype) > m->params_size)
             return fs_fail(FS_ERR_RUNTIME, "%s: parameter %s lies outside its %zu-byte struct", m->name, def->name,
                            m->params_size);
-        *(double *)((char *)dst + def->offset) = values ? values[i] : def->def;
+        store(def, values ? values[i] : def->def, (char *)dst + def->offset);
     }
     return FS_OK;
 }
@@ -92,8 +117,14 @@ int fs_method_params_fill(const fs_method *m, const double *values, void *dst)
 void *fs_method_params_alloc(const fs_method *m, const double *values)
 {
     void *p = malloc(m->params_size ? m->params_size : 1);
-    if (!p) { fs_fail(FS_ERR_RUNTIME, "%s: out of memory for its parameters", m->name); return NULL; }
-    if (fs_method_params_fill(m, values, p)) { free(p); return NULL; }
+    if (!p) {
+        fs_fail(FS_ERR_RUNTIME, "%s: out of memory for its parameters", m->name);
+        return NULL;
+    }
+    if (fs_method_params_fill(m, values, p)) {
+        free(p);
+        return NULL;
+    }
     return p;
 }
 

@@ -25,8 +25,13 @@ int fs_method_setting_parse(const fs_method_setting *set, const char *value, dou
 void fs_method_names(char *buf, int size);
 void fs_method_param_names(const fs_method *m, char *buf, int size);
 
-/* FS_ERR_INPUT when a setting names an unknown method or parameter, or a bad
- * value; settings for other methods are checked but not applied. */
+/* The scene's resolver (fs_scene_set_resolver; the registry installs it): the setting's
+ * method, parameter index and value, from its text; FS_ERR_INPUT naming the setting when
+ * the method or parameter is unknown or the value bad. */
+int fs_method_setting_resolve(fs_scene_setting *set);
+/* m's values: its defaults, then each of the scene's settings for m, in order (each
+ * resolved once, when it was added; a setting added before any method was registered is
+ * resolved here, and refused like there). */
 int fs_method_params_resolve(const fs_method *m, const fs_scene *s, double values[FS_MAX_PARAMS]);
 /* "p=v;q=w" of every parameter (for provenance). */
 void fs_method_params_string(const fs_method *m, const double *values, char *buf, int size);

@@ -2,6 +2,7 @@
  * built-in table; a test may register a method of its own the same way. */
 #include "method.h"
 #include "fs_error.h"
+#include "method_params.h"
 #include <string.h>
 
 #define MAX_METHODS 32
@@ -15,10 +16,13 @@ int fs_method_register(const fs_method *m, int flags)
 {
     for (int i = 0; i < nmethods; i++)
         if (methods[i] == m) return FS_OK;
-        else if (!strcmp(methods[i]->name, m->name)) return fs_fail(FS_ERR_INPUT, "method '%s' is registered twice", m->name);
-    if (nmethods == MAX_METHODS) return fs_fail(FS_ERR_RUNTIME, "method '%s': more than %d methods", m->name, MAX_METHODS);
+        else if (!strcmp(methods[i]->name, m->name))
+            return fs_fail(FS_ERR_INPUT, "method '%s' is registered twice", m->name);
+    if (nmethods == MAX_METHODS)
+        return fs_fail(FS_ERR_RUNTIME, "method '%s': more than %d methods", m->name, MAX_METHODS);
     hidden[nmethods] = (flags & FS_METHOD_HIDDEN) != 0;
     methods[nmethods++] = m;
+    fs_scene_set_resolver(fs_method_setting_resolve); /* settings are resolved as they are added */
     return FS_OK;
 }
 

@@ -1,4 +1,4 @@
-/* Parameter sweeps of `compare`: "--set M.P=v1,v2" lists; each method runs once
+/* Parameter sweeps of a study: "M.P=v1,v2" settings; each method runs once
  * per combination of its swept values (a variant). */
 #ifndef FS_SWEEP_H
 #define FS_SWEEP_H
@@ -13,7 +13,7 @@ extern "C" {
 
 typedef struct fs_sweep {
     const fs_method *m;
-    int param;                          /* index in m->params */
+    int param; /* index in m->params */
     int nvalues;
     char values[FS_MAX_SWEEP_VALUES][48];
 } fs_sweep;
@@ -38,7 +38,8 @@ void fs_label_value(const char *value, char *out, int size);
 int fs_label_is_safe(const char *text);
 /* Expands the variants of method m (1 when it has no sweep) into out[max];
  * returns the count, or -(error code). Scene settings apply first, sweeps last. */
-int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *sweeps, int nsweeps, fs_variant *out, int max);
+int fs_sweep_variants(const fs_method *m, const fs_scene *s, const fs_sweep *sweeps, int nsweeps, fs_variant *out,
+                      int max);
 
 #ifdef __cplusplus
 }

@@ -38,13 +38,24 @@ static int positions_box(const fs_particles *p, float lo[3], float hi[3])
 #pragma omp parallel for if (n > FS_GRID_PARALLEL_MIN) reduction(min : x0, y0, z0) reduction(max : x1, y1, z1, bad)
     for (long i = 0; i < n; i++) {
         float x = p->x[i], y = p->y[i], z = p->z[i];
-        if (!isfinite(x) || !isfinite(y) || !isfinite(z)) { if (i > bad) bad = i; continue; }
-        x0 = fminf(x0, x); y0 = fminf(y0, y); z0 = fminf(z0, z);
-        x1 = fmaxf(x1, x); y1 = fmaxf(y1, y); z1 = fmaxf(z1, z);
+        if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {
+            if (i > bad) bad = i;
+            continue;
+        }
+        x0 = fminf(x0, x);
+        y0 = fminf(y0, y);
+        z0 = fminf(z0, z);
+        x1 = fmaxf(x1, x);
+        y1 = fmaxf(y1, y);
+        z1 = fmaxf(z1, z);
     }
     if (bad >= 0) return fs_fail(FS_ERR_INPUT, "particles: particle %ld has a non-finite position", bad);
-    lo[0] = x0; lo[1] = y0; lo[2] = z0;
-    hi[0] = x1; hi[1] = y1; hi[2] = z1;
+    lo[0] = x0;
+    lo[1] = y0;
+    lo[2] = z0;
+    hi[0] = x1;
+    hi[1] = y1;
+    hi[2] = z1;
     return FS_OK;
 }
 
@@ -61,7 +72,7 @@ static int check_span(const fs_grid *g, const fs_particles *p, const float hi[3]
         return fs_fail(FS_ERR_INPUT,
                        "grid: particle %zu lies %g from the lowest particle along %c, more than 2^29 cells of %g: "
                        "drop the stray particles or raise the cell size",
-                       far, (double)hi[a] - g->origin[a] - g->cell, "xyz"[a], g->cell);
+                       far, (double)hi[a] - g->origin[a] - g->cell, "xyz"[a], g -> cell);
     }
     return FS_OK;
 }
@@ -115,7 +126,10 @@ static uint64_t face_mask(int a, int side)
 static int dilate(fs_grid_blockset *set)
 {
     uint64_t face[3][2];
-    for (int a = 0; a < 3; a++) { face[a][0] = face_mask(a, -1); face[a][1] = face_mask(a, +1); }
+    for (int a = 0; a < 3; a++) {
+        face[a][0] = face_mask(a, -1);
+        face[a][1] = face_mask(a, +1);
+    }
     size_t nocc = set->n;
     for (size_t b = 0; b < nocc; b++)
         for (int dk = -1; dk <= 1; dk++)
@@ -151,7 +165,10 @@ static int final_blocks(fs_grid *g, const fs_grid_blockset *set, uint32_t *remap
     size_t size = 1;
     while (size < 2 * nb) size *= 2;
     g->table = malloc(size * sizeof *g->table);
-    if (!tagged || !g->bkey || !g->table) { free(tagged); return 1; }
+    if (!tagged || !g->bkey || !g->table) {
+        free(tagged);
+        return 1;
+    }
     for (size_t b = 0; b < nb; b++) {
         memcpy(tagged + 4 * b, set->key + 3 * b, 3 * sizeof *tagged);
         tagged[4 * b + 3] = (int32_t)b;
@@ -235,7 +252,10 @@ static void near_bits(fs_grid *g)
 
 static void stored_range(fs_grid *g)
 {
-    for (int a = 0; a < 3; a++) { g->lo[a] = g->nblocks ? INT32_MAX : 0; g->hi[a] = g->nblocks ? INT32_MIN : -1; }
+    for (int a = 0; a < 3; a++) {
+        g->lo[a] = g->nblocks ? INT32_MAX : 0;
+        g->hi[a] = g->nblocks ? INT32_MIN : -1;
+    }
     for (size_t b = 0; b < g->nblocks; b++)
         for (int a = 0; a < 3; a++) {
             int c = g->bkey[3 * b + a] * FS_GRID_B;
@@ -288,7 +308,10 @@ int fs_grid_build(fs_grid *g, const fs_particles *p, float cell)
     g->cell = cell;
     g->n = p->n;
     int rc = check_span(g, p, hi);
-    if (rc) { memset(g, 0, sizeof *g); return rc; }
+    if (rc) {
+        memset(g, 0, sizeof *g);
+        return rc;
+    }
     size_t n = p->n;
     uint32_t *slot = malloc((n ? n : 1) * sizeof *slot);
     if (!slot || build_blocks(g, p, slot)) {
@@ -357,7 +380,10 @@ size_t fs_grid_query(const fs_grid *g, const float x[3], float radius, fs_grid_v
 int fs_grid_fit(const fs_grid *given, const fs_particles *p, float cell, fs_grid *own, int *has_own,
                 const fs_grid **out)
 {
-    if (*has_own) { fs_grid_free(own); *has_own = 0; }
+    if (*has_own) {
+        fs_grid_free(own);
+        *has_own = 0;
+    }
     *out = given;
     if (given && given->cell >= cell && given->n == p->n) return FS_OK;
     int rc = fs_grid_build(own, p, cell);
@@ -388,7 +414,11 @@ int fs_grid_box_runs(const fs_grid *g, const int lo[3], const int hi[3], uint32_
                     for (int j = j0; j <= j1; j++) {
                         uint32_t row = b * FS_GRID_B3 + (uint32_t)((k * FS_GRID_B + j) * FS_GRID_B);
                         uint32_t s0 = g->start[row + i0], s1 = g->start[row + i1 + 1];
-                        if (s1 > s0) { runs[n][0] = s0; runs[n][1] = s1; n++; }
+                        if (s1 > s0) {
+                            runs[n][0] = s0;
+                            runs[n][1] = s1;
+                            n++;
+                        }
                     }
             }
     return n;

@@ -46,8 +46,8 @@ typedef struct fs_grid {
     uint32_t *near;   /* ncells / 32 + 1 bits: one of the 27 cells around the slot holds a particle */
     uint32_t *table;  /* hash slots (a power of two): stored block index, or FS_GRID_NONE */
     size_t table_mask;
-    uint32_t *index;  /* n: sorted slot -> original particle */
-    float *pos4;      /* 4n: sorted positions, w = original index as float bits */
+    uint32_t *index;           /* n: sorted slot -> original particle */
+    float *pos4;               /* 4n: sorted positions, w = original index as float bits */
     fs_grid_cluster *clusters; /* nclusters, largest first */
     int nclusters;
     float bulk_lo[3], bulk_hi[3]; /* robust bounds: the box of the clusters that make the bulk */
@@ -106,7 +106,10 @@ static inline uint32_t fs_grid_slot(const fs_grid *g, int i, int j, int k)
 static inline void fs_grid_cell_run(const fs_grid *g, int i, int j, int k, uint32_t *s0, uint32_t *s1)
 {
     uint32_t c = fs_grid_slot(g, i, j, k);
-    if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return; }
+    if (c == FS_GRID_NONE) {
+        *s0 = *s1 = 0;
+        return;
+    }
     *s0 = g->start[c];
     *s1 = g->start[c + 1];
 }
@@ -122,10 +125,47 @@ static inline int fs_grid_row_run(const fs_grid *g, int i0, int i1, int j, int k
     int bi = fs_grid_floordiv(i0), e = bi * FS_GRID_B + FS_GRID_B - 1;
     if (e > i1) e = i1;
     uint32_t c = fs_grid_slot(g, i0, j, k);
-    if (c == FS_GRID_NONE) { *s0 = *s1 = 0; return e; }
+    if (c == FS_GRID_NONE) {
+        *s0 = *s1 = 0;
+        return e;
+    }
     *s0 = g->start[c];
     *s1 = g->start[c + (uint32_t)(e - i0) + 1];
     return e;
+}
+/* The particles of the cells lo..hi (inclusive) as runs of sorted slots, in the order of the
+ * nested loops k, j, then i (so sums over them do not change with the walk):
+ *   fs_grid_box b; fs_grid_box_begin(&b, g, lo, hi);   (or fs_grid_box_around: 27 cells)
+ *   for (uint32_t s0, s1; fs_grid_box_next(&b, &s0, &s1);) for (uint32_t s = s0; s < s1; s++) ... */
+typedef struct fs_grid_box {
+    const fs_grid *g;
+    int lo[3], hi[3], i, j, k;
+} fs_grid_box;
+static inline void fs_grid_box_begin(fs_grid_box *b, const fs_grid *g, const int lo[3], const int hi[3])
+{
+    b->g = g;
+    for (int a = 0; a < 3; a++) b->lo[a] = lo[a], b->hi[a] = hi[a];
+    b->i = lo[0], b->j = lo[1], b->k = lo[2];
+}
+/* The 27 cells around the cell of point x: every particle within one cell size of x. */
+static inline void fs_grid_box_around(fs_grid_box *b, const fs_grid *g, const float x[3])
+{
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; a++) lo[a] = fs_grid_coord(g, a, x[a]) - 1, hi[a] = lo[a] + 2;
+    fs_grid_box_begin(b, g, lo, hi);
+}
+/* The next run [*s0, *s1) (possibly empty); 0 when the box is done. */
+static inline int fs_grid_box_next(fs_grid_box *b, uint32_t *s0, uint32_t *s1)
+{
+    while (b->k <= b->hi[2]) {
+        if (b->i <= b->hi[0]) {
+            b->i = fs_grid_row_run(b->g, b->i, b->hi[0], b->j, b->k, s0, s1) + 1;
+            return 1;
+        }
+        b->i = b->lo[0];
+        if (++b->j > b->hi[1]) b->j = b->lo[1], b->k++;
+    }
+    return 0;
 }
 /* 1 when a particle lies in one of the 27 cells around cell (i, j, k). */
 static inline int fs_grid_near_occupied(const fs_grid *g, int i, int j, int k)

@@ -41,7 +41,10 @@ static int grow(fs_grid_blockset *s)
     uint64_t *mask = realloc(s->mask, cap * sizeof *mask);
     if (mask) s->mask = mask;
     uint32_t *table = new_table(2 * cap);
-    if (!key || !mask || !table) { free(table); return 1; }
+    if (!key || !mask || !table) {
+        free(table);
+        return 1;
+    }
     memset(s->mask + s->cap, 0, (cap - s->cap) * sizeof *mask);
     free(s->table);
     s->table = table;

@@ -102,7 +102,10 @@ static fs_grid_cluster *collect(const fs_grid *g, const uint32_t *parent, uint32
     fs_grid_cluster *cl = calloc(nc ? (size_t)nc : 1, sizeof *cl);
     if (!cl) return NULL;
     for (int c = 0; c < nc; c++)
-        for (int a = 0; a < 3; a++) { cl[c].lo[a] = INT32_MAX; cl[c].hi[a] = INT32_MIN; }
+        for (int a = 0; a < 3; a++) {
+            cl[c].lo[a] = INT32_MAX;
+            cl[c].hi[a] = INT32_MIN;
+        }
     for (size_t b = 0; b < g->nblocks; b++) {
         label[b] = label[find((uint32_t *)parent, (uint32_t)b)];
         fs_grid_cluster *c = cl + label[b];
@@ -134,15 +137,28 @@ int fs_grid_clusters(fs_grid *g)
         rank = malloc((size_t)nc * sizeof *rank);
         in_bulk = malloc((size_t)nc);
     }
-    if (!rank || !in_bulk) { free(parent); free(label); free(cl); free(rank); free(in_bulk); return 1; }
+    if (!rank || !in_bulk) {
+        free(parent);
+        free(label);
+        free(cl);
+        free(rank);
+        free(in_bulk);
+        return 1;
+    }
     /* Sort, remembering where each label went. */
     for (int c = 0; c < nc; c++) cl[c].n = cl[c].n * (size_t)nc + (size_t)c; /* tag; undone below */
     qsort(cl, (size_t)nc, sizeof *cl, cmp_cluster);
-    for (int c = 0; c < nc; c++) { rank[cl[c].n % (size_t)nc] = c; cl[c].n /= (size_t)nc; }
+    for (int c = 0; c < nc; c++) {
+        rank[cl[c].n % (size_t)nc] = c;
+        cl[c].n /= (size_t)nc;
+    }
     g->clusters = cl;
     g->nclusters = nc;
     bulk_clusters(g, in_bulk);
     bulk_box(g, label, rank, in_bulk);
-    free(parent); free(label); free(rank); free(in_bulk);
+    free(parent);
+    free(label);
+    free(rank);
+    free(in_bulk);
     return 0;
 }

@@ -19,7 +19,8 @@ int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields)
 {
     memset(p, 0, sizeof *p);
     /* refused up front: a header can declare (and a sparse file back) more than fits */
-    int per = 3 + (fields & FS_HAS_VELOCITY ? 3 : 0) + (fields & FS_HAS_COLOR ? 3 : 0) + (fields & FS_HAS_PHASE ? 1 : 0);
+    int per =
+        3 + (fields & FS_HAS_VELOCITY ? 3 : 0) + (fields & FS_HAS_COLOR ? 3 : 0) + (fields & FS_HAS_PHASE ? 1 : 0);
     char what[64];
     snprintf(what, sizeof what, "%zu particles", n);
     int rc = fs_memory_check((double)n * per * 4, what);
@@ -53,8 +54,12 @@ int fs_particles_alloc(fs_particles *p, size_t n, unsigned fields)
 void fs_particles_free(fs_particles *p)
 {
     if (!p) return;
-    free(p->x); free(p->y); free(p->z);
-    free(p->vx); free(p->vy); free(p->vz);
+    free(p->x);
+    free(p->y);
+    free(p->z);
+    free(p->vx);
+    free(p->vy);
+    free(p->vz);
     free(p->color);
     free(p->phase);
     memset(p, 0, sizeof *p);
@@ -129,9 +134,4 @@ void fs_particles_core_bounds_in(const fs_particles *p, float frac, const float 
     }
     free(v);
     free(pick);
-}
-
-void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3])
-{
-    fs_particles_core_bounds_in(p, frac, p->bmin, p->bmax, lo, hi);
 }

@@ -29,10 +29,9 @@ void fs_particles_bounds(fs_particles *p);
  * or the radius (0: none given) lies outside [1e-9, 1e9]. */
 int fs_particles_validate(const fs_particles *p, const char *name);
 /* Per-axis quantile box [frac, 1 - frac] (from at most 65536 evenly spaced
- * particles): frames the body of the fluid without far-flung spray. */
-void fs_particles_core_bounds(const fs_particles *p, float frac, float lo[3], float hi[3]);
-/* The same over the sampled particles inside [in_lo, in_hi] (the grid's bulk box),
- * so far strays neither widen the box nor shift its quantiles. */
+ * particles) over the sampled particles inside [in_lo, in_hi] (the grid's bulk
+ * box): frames the body of the fluid without far-flung spray, and far strays
+ * neither widen the box nor shift its quantiles. */
 void fs_particles_core_bounds_in(const fs_particles *p, float frac, const float in_lo[3], const float in_hi[3],
                                  float lo[3], float hi[3]);
 

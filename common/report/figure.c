@@ -46,18 +46,6 @@ void fs_rgba_free(fs_rgba_image *im)
     memset(im, 0, sizeof *im);
 }
 
-void fs_blit(fs_rgba_image *dst, const fs_rgba_image *src, int x, int y)
-{
-    int x0 = x < 0 ? -x : 0, y0 = y < 0 ? -y : 0;
-    int x1 = src->w, y1 = src->h;
-    if (x + x1 > dst->w) x1 = dst->w - x;
-    if (y + y1 > dst->h) y1 = dst->h - y;
-    if (x0 >= x1) return;
-    for (int j = y0; j < y1; j++)
-        memcpy(dst->pix + 4 * ((size_t)(y + j) * dst->w + x + x0), src->pix + 4 * ((size_t)j * src->w + x0),
-               (size_t)(x1 - x0) * 4 * sizeof(float));
-}
-
 /* src over dst with straight alpha, clipped; the result is opaque where dst was. */
 static void composite_over(fs_rgba_image *dst, const fs_rgba_image *src, int x, int y)
 {
@@ -172,8 +160,7 @@ int fs_heatmap_layout(int w, int h, double vmax, const char *title, const char *
     return FS_OK;
 }
 
-int fs_heatmap(const float *values, int w, int h, double vmax, const char *title, const char *units,
-               fs_rgba_image *out)
+int fs_heatmap(const float *values, int w, int h, double vmax, const char *title, const char *units, fs_rgba_image *out)
 {
     heatmap_geom g;
     memset(out, 0, sizeof *out);
@@ -238,7 +225,8 @@ static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
     for (int k = 0; k < n; k++) {
         const fs_rgba_image *t = s->tiles[k];
         if (t && (t->w <= 0 || t->h <= 0 || !t->pix))
-            return fs_fail(FS_ERR_INPUT, "panel: tile %d (row %d, column %d) has no pixels", k, k / s->cols, k % s->cols);
+            return fs_fail(FS_ERR_INPUT, "panel: tile %d (row %d, column %d) has no pixels", k, k / s->cols,
+                           k % s->cols);
         if (t && t->h > max_h) max_h = t->h;
     }
     g->font = figure_font(max_h);
@@ -372,8 +360,8 @@ int fs_panel_compose(const fs_panel_spec *spec, fs_rgba_image *out)
         if (spec->tiles[k]) composite_over(out, spec->tiles[k], x, y);
         if (spec->captions) {
             int cy = g.row_y[r] + g.row_h[r] + g.pad / 2;
-            if ((rc = draw_centred(out, g.col_mid[c], g.col_x[c], g.col_x[c] + g.col_w[c], cy,
-                                   nth(spec->captions, k), g.font)))
+            if ((rc = draw_centred(out, g.col_mid[c], g.col_x[c], g.col_x[c] + g.col_w[c], cy, nth(spec->captions, k),
+                                   g.font)))
                 goto done;
         }
     }

@@ -8,7 +8,10 @@
 extern "C" {
 #endif
 
-typedef struct fs_rgba_image { int w, h; float *pix; /* 4*w*h */ } fs_rgba_image;
+typedef struct fs_rgba_image {
+    int w, h;
+    float *pix; /* 4*w*h */
+} fs_rgba_image;
 
 int fs_rgba_alloc(fs_rgba_image *im, int w, int h, const float fill[4]);
 void fs_rgba_free(fs_rgba_image *im);
@@ -20,14 +23,13 @@ int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, int size, co
  * fs_draw_text (without OpenImageIO, FS_OK with an estimate: 0.6 em a code point
  * wide, 1.2 em high). */
 int fs_text_size(const char *text, int size, int *w, int *h);
-/* Copies src into dst at (x, y), clipped. */
-void fs_blit(fs_rgba_image *dst, const fs_rgba_image *src, int x, int y);
 
 /* A heatmap of values (NAN = no data, drawn dark grey) from 0 to vmax with a
  * perceptual colour map (values above vmax saturate), plus a vertical colour bar
  * on the right labelled "0", the midpoint and "vmax" with units, and a title
  * line on top (e.g. "normal error (deg)"). Output size: w + bar width, h + title. */
-int fs_heatmap(const float *values, int w, int h, double vmax, const char *title, const char *units, fs_rgba_image *out);
+int fs_heatmap(const float *values, int w, int h, double vmax, const char *title, const char *units,
+               fs_rgba_image *out);
 /* fs_heatmap's geometry without drawing: the output is out_w x out_h, white,
  * with the w x h data pixels at (data_x, data_y). Font size max(11, h/24) px;
  * out_h = data_y + h + half a text line (room for the "0" label); out_w = w +
@@ -41,11 +43,11 @@ int fs_heatmap_layout(int w, int h, double vmax, const char *title, const char *
  * the left (NULL for none), white background, dark text. */
 typedef struct fs_panel_spec {
     int rows, cols;
-    const fs_rgba_image *const *tiles;   /* rows*cols, row-major; NULL leaves a cell empty */
-    const char *const *captions;         /* rows*cols or NULL */
-    const char *const *col_headers;      /* cols or NULL */
-    const char *const *row_headers;      /* rows or NULL */
-    const char *title;                   /* or NULL */
+    const fs_rgba_image *const *tiles; /* rows*cols, row-major; NULL leaves a cell empty */
+    const char *const *captions;       /* rows*cols or NULL */
+    const char *const *col_headers;    /* cols or NULL */
+    const char *const *row_headers;    /* rows or NULL */
+    const char *title;                 /* or NULL */
 } fs_panel_spec;
 /* Tiles are composited over white with their (straight) alpha. Layout, with font
  * f = max(11, tallest tile / 24) px, line height L (fs_text_size of any one-line

@@ -130,8 +130,7 @@ static int read_checked(const char *path, int w, int h, fs_gbuffer *g, char *cou
     return rc;
 }
 
-fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts,
-                                int size)
+fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts, int size)
 {
     counts[0] = 0;
     char path[FS_GCACHE_PATH], hex[FS_DIGEST_HEX];
@@ -139,7 +138,10 @@ fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h,
     memset(g, 0, sizeof *g);
     fs_gcache_entry(c, key, path, sizeof path);
     if (stat(path, &st) != 0) return FS_GCACHE_MISS;
-    if (!S_ISREG(st.st_mode)) { fs_fail(FS_ERR_INPUT, "%s: not a regular file", path); return FS_GCACHE_BAD; }
+    if (!S_ISREG(st.st_mode)) {
+        fs_fail(FS_ERR_INPUT, "%s: not a regular file", path);
+        return FS_GCACHE_BAD;
+    }
     fs_digest_hex(key, hex);
     if (check_attr(path, KEY_ATTR, hex, "holds another key (a stale entry or a name collision)")) return FS_GCACHE_BAD;
     return read_checked(path, w, h, g, counts, size) ? FS_GCACHE_BAD : FS_GCACHE_HIT;

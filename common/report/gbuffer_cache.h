@@ -35,8 +35,7 @@ void fs_gcache_entry(const fs_gcache *c, fs_digest key, char *path, int size);
  * none). A file that is unreadable, truncated, of another size, lacks a
  * channel, holds another key or fails the content check (which covers the
  * counts) is BAD, never a hit. */
-fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts,
-                                int size);
+fs_gcache_result fs_gcache_load(const fs_gcache *c, fs_digest key, int w, int h, fs_gbuffer *g, char *counts, int size);
 /* Stores g (rgba: its shaded image, kept so the entry can be viewed) and the
  * work counts' text (attribute fluidsurf:counters; NULL or "": none) under key,
  * atomically (a temporary file in the folder, renamed), replacing any entry. */

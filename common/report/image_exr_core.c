@@ -204,7 +204,10 @@ static int read_pixels(exr_context_t f, const char *path, fs_image *img)
             int c = -1;
             for (int j = 0; j < nch && c < 0; j++)
                 if (!strcmp(chl->entries[j].name.str, ch->channel_name)) c = order[j];
-            if (c < 0) { ch->decode_to_ptr = NULL; continue; }
+            if (c < 0) {
+                ch->decode_to_ptr = NULL;
+                continue;
+            }
             ch->decode_to_ptr = (uint8_t *)(img->pix + (size_t)(ci.start_y - dw.min.y) * row + c);
             ch->user_pixel_stride = (int32_t)(nch * sizeof(float));
             ch->user_line_stride = (int32_t)(row * sizeof(float));
@@ -256,7 +259,8 @@ int fs_exr_read_attr(const char *path, const char *name, char *buf, int size)
     /* OpenImageIO reports the compression as a string attribute too ("zip", ...). */
     exr_compression_t comp;
     if (!strcmp(name, "compression") && exr_get_compression(f, 0, &comp) == EXR_ERR_SUCCESS) {
-        static const char *const names[] = {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"};
+        static const char *const names[] = {"none",  "rle", "zips", "zip",  "piz",
+                                            "pxr24", "b44", "b44a", "dwaa", "dwab"};
         int known = (unsigned)comp < sizeof names / sizeof names[0];
         if (known && size > 0) snprintf(buf, (size_t)size, "%s", names[comp]);
         exr_finish(&f);

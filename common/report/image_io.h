@@ -12,8 +12,8 @@ extern "C" {
 
 typedef struct fs_image {
     int w, h, nch;
-    const char **chnames;  /* nch names ("R","G","B","A","depth","normal.X",...) */
-    float *pix;            /* w*h*nch, rows top to bottom, interleaved */
+    const char **chnames; /* nch names ("R","G","B","A","depth","normal.X",...) */
+    float *pix;           /* w*h*nch, rows top to bottom, interleaved */
 } fs_image;
 
 /* Writes an EXR with the given channels and string header attributes, safely

@@ -18,7 +18,8 @@
 
 using namespace OIIO;
 
-namespace {
+namespace
+{
 
 // The first line of an OpenImageIO message, control characters (from the file) as '?'.
 std::string first_line(const std::string &msg)
@@ -38,7 +39,8 @@ const char *sniff(const char *path)
     FILE *f = std::fopen(path, "rb");
     size_t n = f ? std::fread(m, 1, sizeof m, f) : 0;
     if (f) std::fclose(f);
-    static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01},
+                               png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     if (n >= 4 && !std::memcmp(m, exr, 4)) return "openexr";
     if (n == 8 && !std::memcmp(m, png, 8)) return "png";
     return nullptr;
@@ -126,8 +128,8 @@ template <class F> int capped(const char *path, int failed, F read)
         fs::AllocCap cap(path);
         return read();
     } catch (const std::bad_alloc &) {
-        fs_fail(FS_ERR_INPUT, "%s: OpenImageIO asked for a buffer larger than the file can fill (a damaged or forged size)",
-                path);
+        fs_fail(FS_ERR_INPUT,
+                "%s: OpenImageIO asked for a buffer larger than the file can fill (a damaged or forged size)", path);
     } catch (const std::exception &e) {
         fs_fail(FS_ERR_INPUT, "%s: %s", path, first_line(e.what()).c_str());
     }

@@ -46,7 +46,8 @@ static int sniff(const char *path, file_kind *kind)
     fclose(f);
     if (err) return fs_fail(FS_ERR_INPUT, "%s: cannot read: %s", path, strerror(err));
     if (got == 0) return fs_fail(FS_ERR_INPUT, "%s: empty file", path);
-    static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01}, png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char exr[4] = {0x76, 0x2f, 0x31, 0x01},
+                               png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     *kind = got >= 4 && !memcmp(m, exr, 4) ? KIND_EXR : got == 8 && !memcmp(m, png, 8) ? KIND_PNG : KIND_OTHER;
     if (*kind == KIND_OTHER) return fs_fail(FS_ERR_INPUT, "%s: not an EXR or PNG image", path);
     return FS_OK;
@@ -70,7 +71,8 @@ static int read_png(const char *path, fs_image *img)
     for (int c = 0; ok && c < nch; c++) ok = (img->chnames[c] = strdup(names[nch - 1][c])) != NULL;
     if (ok)
         for (size_t i = 0; i < count; i++)
-            img->pix[i] = sixteen ? ((const unsigned short *)data)[i] / 65535.0f : ((const unsigned char *)data)[i] / 255.0f;
+            img->pix[i] =
+                sixteen ? ((const unsigned short *)data)[i] / 65535.0f : ((const unsigned char *)data)[i] / 255.0f;
     stbi_image_free(data);
     if (!ok) {
         fs_image_free(img);

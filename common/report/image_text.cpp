@@ -22,7 +22,8 @@
 
 using namespace OIIO;
 
-namespace {
+namespace
+{
 
 const char *const kFontName = "DejaVuSans";
 const char *const kFontFile = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
@@ -42,13 +43,12 @@ const std::string &font()
     return found;
 }
 
-int font_missing()
-{
-    return fs_fail(FS_ERR_RUNTIME, "%s: font not found (install fonts-dejavu-core)", kFontFile);
-}
+int font_missing() { return fs_fail(FS_ERR_RUNTIME, "%s: font not found (install fonts-dejavu-core)", kFontFile); }
 
 // Where text goes relative to its top-left corner: pen offset and box size.
-struct Placement { int pen_x, baseline, w, h; };
+struct Placement {
+    int pen_x, baseline, w, h;
+};
 
 bool place(const char *text, int size, Placement *p)
 {

@@ -5,6 +5,7 @@
 #include "image_io.h"
 #include "fs_error.h"
 
+#include "bytes.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,12 +24,10 @@ int fs_image_fits_file(const char *path, double w, double h, int nch)
 {
     struct stat st;
     if (stat(path, &st) == 0 && w * h * nch * 4 > 2064.0 * (double)st.st_size + 1e6)
-        return fs_fail(FS_ERR_INPUT, "%s: image of %.0fx%.0fx%d is more than the file's %lld bytes can hold", path, w, h,
-                       nch, (long long)st.st_size);
+        return fs_fail(FS_ERR_INPUT, "%s: image of %.0fx%.0fx%d is more than the file's %lld bytes can hold", path, w,
+                       h, nch, (long long)st.st_size);
     return FS_OK;
 }
-
-static uint32_t be32(const unsigned char *b) { return (uint32_t)b[0] << 24 | b[1] << 16 | b[2] << 8 | b[3]; }
 
 /* The whole file in memory (images here are small: a G-buffer EXR of a few MB). */
 static unsigned char *slurp(const char *path, size_t *n)
@@ -56,9 +55,9 @@ static unsigned char *slurp(const char *path, size_t *n)
 static const char *png_chunks_problem(const unsigned char *b, size_t n)
 {
     for (size_t at = 8; at + 12 <= n;) {
-        uint32_t len = be32(b + at);
+        uint32_t len = fs_be32(b + at);
         if (len > n - at - 12) return "truncated PNG chunk";
-        if (crc32(0, b + at + 4, len + 4) != be32(b + at + 8 + len)) return "PNG chunk with a bad CRC";
+        if (crc32(0, b + at + 4, len + 4) != fs_be32(b + at + 8 + len)) return "PNG chunk with a bad CRC";
         if (!memcmp(b + at + 4, "IEND", 4)) return NULL;
         at += 12 + (size_t)len;
     }
@@ -85,7 +84,7 @@ static const char *exr_header_problem(const unsigned char *b, size_t n)
         const unsigned char *type_end = type < n ? memchr(b + type, 0, n - type) : NULL;
         if (!type_end || (size_t)(type_end - b) + 5 > n) return "truncated EXR header";
         size_t value = (size_t)(type_end - b) + 5;
-        int32_t size = (int32_t)(b[value - 4] | b[value - 3] << 8 | b[value - 2] << 16 | (uint32_t)b[value - 1] << 24);
+        int32_t size = (int32_t)fs_le32(b + value - 4);
         if (size < 0 || (size_t)size > n - value) return "EXR header attribute larger than the file";
         at = value + (size_t)size;
     }
@@ -96,10 +95,11 @@ int fs_image_structure_check(const char *path)
     size_t n;
     unsigned char *b = slurp(path, &n);
     if (!b) return fs_fail(FS_ERR_INPUT, "%s: cannot read", path);
-    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}, exr[4] = {0x76, 0x2f, 0x31, 0x01};
+    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'},
+                               exr[4] = {0x76, 0x2f, 0x31, 0x01};
     const char *why = n >= 8 && !memcmp(b, png, 8) ? png_chunks_problem(b, n)
-                      : n >= 4 && !memcmp(b, exr, 4) ? exr_header_problem(b, n)
-                                                     : NULL;
+        : n >= 4 && !memcmp(b, exr, 4)             ? exr_header_problem(b, n)
+                                                   : NULL;
     free(b);
     return why ? fs_fail(FS_ERR_INPUT, "%s: %s", path, why) : FS_OK;
 }

@@ -8,6 +8,7 @@
 int fs_read_image_oiio(const char *path, fs_image *img)
 {
     memset(img, 0, sizeof *img);
-    return fs_fail(FS_ERR_INPUT, "%s: a tiled or deep EXR needs a build with FS_WITH_OIIO=ON (only scanline EXRs are read without it)",
-                   path);
+    return fs_fail(
+        FS_ERR_INPUT,
+        "%s: a tiled or deep EXR needs a build with FS_WITH_OIIO=ON (only scanline EXRs are read without it)", path);
 }

@@ -7,7 +7,8 @@
 #include "fs_error.h"
 #include "text_blend.h"
 
-namespace {
+namespace
+{
 const fs_oiio_host *host;
 }
 

@@ -37,16 +37,14 @@ static unsigned char *zlib_compress(unsigned char *data, int len, int *out_len, 
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
-/* Writes n bytes to path (an fs_output_begin temporary), checking every step. */
-static int write_all(const char *path, const char *tmp, const unsigned char *data, size_t n)
+/* Writes n bytes to path through a temporary, checking every step. */
+static int write_all(const char *path, const unsigned char *data, size_t n)
 {
-    FILE *f = fopen(tmp, "wb");
-    if (!f) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(errno));
-    int ok = fwrite(data, 1, n, f) == n && fflush(f) == 0;
-    int err = ok ? 0 : errno;
-    if (fclose(f) != 0 && ok) ok = 0, err = errno;
-    if (!ok) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", path, strerror(err ? err : EIO));
-    return FS_OK;
+    fs_output out;
+    int rc = fs_output_open(&out, path);
+    if (rc) return rc;
+    fwrite(data, 1, n, out.f); /* a short write sets the stream's error: fs_output_close reports it */
+    return fs_output_close(&out, 1);
 }
 
 int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int nch)
@@ -67,13 +65,7 @@ int fs_write_png8(const char *path, const unsigned char *pix, int w, int h, int 
         free(png);
         return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%d PNG", path, w, h);
     }
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
-    if (!rc) {
-        rc = write_all(path, tmp, png, (size_t)len);
-        if (rc) fs_output_end(path, tmp, 0);
-        else rc = fs_output_end(path, tmp, 1);
-    }
+    int rc = write_all(path, png, (size_t)len);
     free(png);
     return rc;
 }

@@ -20,8 +20,8 @@ static const char *const rgba_suffix[4] = {"R", "G", "B", "A"};
 
 /* The core layers' channels, in the order they are written. */
 enum { CORE_CHANNELS = 10 };
-static const char *const core_names[CORE_CHANNELS] = {"R", "G", "B", "A", "depth", "normal.X", "normal.Y", "normal.Z",
-                                                      "thickness", "coverage"};
+static const char *const core_names[CORE_CHANNELS] = {"R",        "G",        "B",        "A",         "depth",
+                                                      "normal.X", "normal.Y", "normal.Z", "thickness", "coverage"};
 
 /* An AOV's EXR channel names into names (from names[0]); returns how many. */
 static int aov_channel_names(const fs_aov *a, char names[][FS_AOV_NAME_MAX + 2])

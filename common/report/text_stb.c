@@ -60,8 +60,7 @@ static void load_font(void)
     if (!have_font) {
         free(font_data);
         font_data = NULL;
-        fs_note("%s: font not found or unreadable (install fonts-dejavu-core): figures are written without text",
-                path);
+        fs_note("%s: font not found or unreadable (install fonts-dejavu-core): figures are written without text", path);
     }
 }
 
@@ -73,7 +72,10 @@ static int next_cp(const char **s)
     if (cp >= 0x80 && !more) cp = '?';
     if (more) cp &= 0x3f >> more;
     for (; more; more--, p++) {
-        if ((*p & 0xc0) != 0x80) { cp = '?'; break; }
+        if ((*p & 0xc0) != 0x80) {
+            cp = '?';
+            break;
+        }
         cp = cp << 6 | (*p & 0x3f);
     }
     *s = (const char *)p;
@@ -82,7 +84,9 @@ static int next_cp(const char **s)
 
 /* Walks the glyphs of text at pixel size `size`: box (relative to pen start and
  * baseline) and, if cover is given, their coverage written at (ox, oy) + glyph offset. */
-typedef struct box { int x0, y0, x1, y1, any; } box;
+typedef struct box {
+    int x0, y0, x1, y1, any;
+} box;
 
 static void layout(const char *text, int size, box *b, float *cover, int cw, int ch, int ox, int oy)
 {
@@ -127,7 +131,9 @@ static void layout(const char *text, int size, box *b, float *cover, int cw, int
 }
 
 /* Where text goes relative to its top-left corner: pen offset and box size. */
-typedef struct placement { int pen_x, baseline, w, h; } placement;
+typedef struct placement {
+    int pen_x, baseline, w, h;
+} placement;
 
 static void place(const char *text, int size, placement *p)
 {

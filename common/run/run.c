@@ -23,11 +23,11 @@ struct fs_run {
      * current frame's and the one being uploaded. */
     fs_particles frame[2];
     fs_grid grid[2];
-    int grid_owned[2];     /* 1: the run built grid[k] and frees it */
-    int cur;               /* slot of the current frame, -1 when none */
+    int grid_owned[2]; /* 1: the run built grid[k] and frees it */
+    int cur;           /* slot of the current frame, -1 when none */
     float floor_y;
     int floor_set;
-    char why[512];         /* why there is no frame (a failed upload) */
+    char why[512]; /* why there is no frame (a failed upload) */
 };
 
 void fs_run_image_free(fs_run_image *im)
@@ -74,7 +74,10 @@ int fs_run_open(fs_run **out, const fs_method *m, const fs_scene *s, const doubl
     if (!rc) fs_error_clear();
     if (!rc && !(r->self = m->create(&setup))) rc = fs_error_code();
     free((void *)setup.params);
-    if (rc) { free(r); return rc; }
+    if (rc) {
+        free(r);
+        return rc;
+    }
     *out = r;
     return FS_OK;
 }
@@ -129,7 +132,10 @@ static int fill_slot(fs_run *r, int k, const fs_particles *p, const fs_grid *g, 
     int rc = check_bounds(r, p);
     if (rc) return rc;
     if (r->m->grid_use == FS_GRID_UNUSED) return FS_OK;
-    if (g) { r->grid[k] = *g; return FS_OK; }
+    if (g) {
+        r->grid[k] = *g;
+        return FS_OK;
+    }
     rc = build_grid(r, p, &r->grid[k], st);
     r->grid_owned[k] = !rc;
     return rc;
@@ -140,8 +146,9 @@ int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages 
     int k = r->cur == 0 ? 1 : 0; /* not the current frame's slot (after a failure, none is current) */
     int rc = fill_slot(r, k, p, g, st);
     if (!rc && !r->floor_set) /* from the grid's bulk (while it is held), so far strays do not lower the floor */
-        r->floor_y = !p->n ? 0 : (r->m->grid_use == FS_GRID_UNUSED ? fs_scene_floor_of(r->scene, p)
-                                                                   : fs_scene_floor(r->scene, &r->grid[k]));
+        r->floor_y = !p->n ? 0
+                           : (r->m->grid_use == FS_GRID_UNUSED ? fs_scene_floor_of(r->scene, p)
+                                                               : fs_scene_floor(r->scene, &r->grid[k]));
     if (!rc && p->n) {
         double t0 = fs_now_ms();
         rc = r->m->upload(r->self, &r->frame[k], r->m->grid_use == FS_GRID_UNUSED ? NULL : &r->grid[k]);

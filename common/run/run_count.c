@@ -1,4 +1,5 @@
 /* The counting render of the run layer (run.h, docs/DESIGN.md "Work counters"). */
+#include "caller_words.h"
 #include "run.h"
 #include "counters.h"
 #include "fs_error.h"
@@ -8,7 +9,7 @@
 int fs_run_check_counters(const fs_method *m)
 {
     if (m->counters) return FS_OK;
-    return fs_fail(FS_ERR_INPUT, "--counters: method '%s' reports no work counters yet", m->name);
+    return fs_fail(FS_ERR_INPUT, "%s: method '%s' reports no work counters yet", fs_word("counters"), m->name);
 }
 
 /* The totals over the stages (the CSV's "total" rows) must not wrap either. */
@@ -30,8 +31,9 @@ static int check_attributed(const fs_method *m, const fs_stages *st)
     if (!left) return FS_OK;
     int c = 0;
     while (!(left & FS_CNT_BIT(c))) c++;
-    return fs_fail(FS_ERR_RUNTIME, "method '%s': work counter %s was counted after its last stage (%s); no stage took it",
-                   m->name, fs_counter_name(c), st->n ? st->name[st->n - 1] : "none");
+    return fs_fail(FS_ERR_RUNTIME,
+                   "method '%s': work counter %s was counted after its last stage (%s); no stage took it", m->name,
+                   fs_counter_name(c), st->n ? st->name[st->n - 1] : "none");
 }
 
 int fs_run_count(const fs_method *m, const fs_scene *s, const double *values, const fs_gl_context *ctx,

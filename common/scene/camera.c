@@ -1,40 +1,41 @@
 #include "camera.h"
+#include "vec3.h"
 #include <math.h>
 #include <string.h>
 
-static void sub(const float a[3], const float b[3], float o[3]) { o[0] = a[0] - b[0]; o[1] = a[1] - b[1]; o[2] = a[2] - b[2]; }
-static float dot(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static void cross(const float a[3], const float b[3], float o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-static void normalize(float v[3])
-{
-    float l = sqrtf(dot(v, v));
-    if (l > 0) { v[0] /= l; v[1] /= l; v[2] /= l; }
-}
-
 void fs_camera_basis(const fs_camera *c, float right[3], float up[3], float fwd[3])
 {
-    sub(c->target, c->eye, fwd);
-    normalize(fwd);
-    cross(fwd, c->up, right);
-    if (dot(right, right) < 1e-12f) { /* up parallel to the view: pick any perpendicular */
+    fs_v3_sub(c->target, c->eye, fwd);
+    fs_v3_normalize(fwd);
+    fs_v3_cross(fwd, c->up, right);
+    if (fs_v3_dot(right, right) < 1e-12f) { /* up parallel to the view: pick any perpendicular */
         float alt[3] = {fabsf(fwd[0]) < 0.9f ? 1.0f : 0.0f, fabsf(fwd[0]) < 0.9f ? 0.0f : 1.0f, 0};
-        cross(fwd, alt, right);
+        fs_v3_cross(fwd, alt, right);
     }
-    normalize(right);
-    cross(right, fwd, up);
+    fs_v3_normalize(right);
+    fs_v3_cross(right, fwd, up);
 }
 
 void fs_camera_view_matrix(const fs_camera *c, float m[16])
 {
     float r[3], u[3], f[3];
     fs_camera_basis(c, r, u, f);
-    float t[16] = {r[0], u[0], -f[0], 0, r[1], u[1], -f[1], 0, r[2], u[2], -f[2], 0,
-                   -dot(r, c->eye), -dot(u, c->eye), dot(f, c->eye), 1};
+    float t[16] = {r[0],
+                   u[0],
+                   -f[0],
+                   0,
+                   r[1],
+                   u[1],
+                   -f[1],
+                   0,
+                   r[2],
+                   u[2],
+                   -f[2],
+                   0,
+                   -fs_v3_dot(r, c->eye),
+                   -fs_v3_dot(u, c->eye),
+                   fs_v3_dot(f, c->eye),
+                   1};
     memcpy(m, t, sizeof t);
 }
 
@@ -57,15 +58,17 @@ void fs_camera_ray(const fs_camera *c, float px, float py, float dir[3])
     float t = tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
     float x = (2.0f * px / c->width - 1.0f) * t * a, y = (1.0f - 2.0f * py / c->height) * t;
     for (int i = 0; i < 3; i++) dir[i] = f[i] + x * r[i] + y * u[i];
-    normalize(dir);
+    fs_v3_normalize(dir);
 }
 
 void fs_camera_to_view_dir(const fs_camera *c, const float w[3], float v[3])
 {
     float r[3], u[3], f[3];
     fs_camera_basis(c, r, u, f);
-    float x = dot(w, r), y = dot(w, u), z = -dot(w, f);
-    v[0] = x; v[1] = y; v[2] = z;
+    float x = fs_v3_dot(w, r), y = fs_v3_dot(w, u), z = -fs_v3_dot(w, f);
+    v[0] = x;
+    v[1] = y;
+    v[2] = z;
 }
 
 void fs_camera_from_view_dir(const fs_camera *c, const float v[3], float w[3])
@@ -83,10 +86,12 @@ static float box_extent(const fs_camera *c, const float bmin[3], const float bma
     float t = tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
     for (int k = 0; k < 8; k++) {
         float p[3] = {k & 1 ? bmax[0] : bmin[0], k & 2 ? bmax[1] : bmin[1], k & 4 ? bmax[2] : bmin[2]}, d[3];
-        sub(p, c->eye, d);
-        float z = fmaxf(dot(d, f), 1e-6f), x = dot(d, r) / (z * t * a), y = dot(d, u) / (z * t);
-        lo[0] = fminf(lo[0], x); hi[0] = fmaxf(hi[0], x);
-        lo[1] = fminf(lo[1], y); hi[1] = fmaxf(hi[1], y);
+        fs_v3_sub(p, c->eye, d);
+        float z = fmaxf(fs_v3_dot(d, f), 1e-6f), x = fs_v3_dot(d, r) / (z * t * a), y = fs_v3_dot(d, u) / (z * t);
+        lo[0] = fminf(lo[0], x);
+        hi[0] = fmaxf(hi[0], x);
+        lo[1] = fminf(lo[1], y);
+        hi[1] = fmaxf(hi[1], y);
     }
     ctr[0] = 0.5f * (lo[0] + hi[0]);
     ctr[1] = 0.5f * (lo[1] + hi[1]);
@@ -96,13 +101,20 @@ static float box_extent(const fs_camera *c, const float bmin[3], const float bma
 void fs_camera_frame_box(fs_camera *c, const float bmin[3], const float bmax[3], int up_axis)
 {
     float ctr[3], ext[3];
-    for (int i = 0; i < 3; i++) { ctr[i] = 0.5f * (bmin[i] + bmax[i]); ext[i] = bmax[i] - bmin[i]; }
-    float radius = 0.5f * sqrtf(dot(ext, ext));
+    for (int i = 0; i < 3; i++) {
+        ctr[i] = 0.5f * (bmin[i] + bmax[i]);
+        ext[i] = bmax[i] - bmin[i];
+    }
+    float radius = 0.5f * sqrtf(fs_v3_dot(ext, ext));
     if (radius <= 0) radius = 1;
     /* Look across the longer horizontal side (a dam break is seen from its
      * long side), 25 degrees above the horizon and 30 degrees off-axis. */
     int a = (up_axis + 1) % 3, b = (up_axis + 2) % 3;
-    if (ext[a] < ext[b]) { int tmp = a; a = b; b = tmp; }
+    if (ext[a] < ext[b]) {
+        int tmp = a;
+        a = b;
+        b = tmp;
+    }
     float dir[3];
     dir[up_axis] = sinf(25.0f * (float)M_PI / 180);
     dir[b] = cosf(25.0f * (float)M_PI / 180) * cosf(30.0f * (float)M_PI / 180);
@@ -122,7 +134,7 @@ void fs_camera_frame_box(fs_camera *c, const float bmin[3], const float bmax[3],
         float nc[2], e = box_extent(c, bmin, bmax, nc);
         float r[3], u[3], f[3], t = tanf(c->fovy_deg * (float)M_PI / 360.0f);
         fs_camera_basis(c, r, u, f);
-        float zc = dot(dir, dir) * dist;
+        float zc = fs_v3_dot(dir, dir) * dist;
         for (int i = 0; i < 3; i++) c->target[i] += (nc[0] * t * aspect * r[i] + nc[1] * t * u[i]) * zc;
         if (e > 0) dist *= 0.5f + 0.5f * e / 0.9f;
     }
@@ -135,8 +147,8 @@ void fs_camera_fit_clip(fs_camera *c, const float bmin[3], const float bmax[3])
     fs_camera_basis(c, r, u, f);
     for (int k = 0; k < 8; k++) {
         float p[3] = {k & 1 ? bmax[0] : bmin[0], k & 2 ? bmax[1] : bmin[1], k & 4 ? bmax[2] : bmin[2]}, d[3];
-        sub(p, c->eye, d);
-        float z = dot(d, f);
+        fs_v3_sub(p, c->eye, d);
+        float z = fs_v3_dot(d, f);
         if (z < nearest) nearest = z;
         if (z > farthest) farthest = z;
     }

@@ -9,9 +9,9 @@ extern "C" {
 
 typedef struct fs_camera {
     float eye[3], target[3], up[3];
-    float fovy_deg;     /* vertical field of view */
+    float fovy_deg; /* vertical field of view */
     int width, height;
-    float znear, zfar;  /* clip planes, scene units (set from the scene bounds) */
+    float znear, zfar; /* clip planes, scene units (set from the scene bounds) */
 } fs_camera;
 
 /* Orthonormal basis: right, up, forward (forward points from eye to target). */

@@ -1,3 +1,4 @@
+#include "caller_words.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "particle_io.h"
@@ -9,8 +10,13 @@
 
 void fs_scene_frames(const fs_scene *s, int *first, int *last)
 {
-    if (s->frame_first >= 0) { *first = s->frame_first; *last = s->frame_last; }
-    else { *first = 0; *last = 0; }
+    if (s->frame_first >= 0) {
+        *first = s->frame_first;
+        *last = s->frame_last;
+    } else {
+        *first = 0;
+        *last = 0;
+    }
 }
 
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p)
@@ -27,7 +33,7 @@ int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p)
 static const char *radius_source(const fs_scene *s)
 {
     switch (s->r_source) {
-    case FS_R_OPTION: return "--radius";
+    case FS_R_OPTION: return fs_word("radius");
     case FS_R_SCENE: return "the scene";
     case FS_R_FILE: return "the file";
     default: return NULL;
@@ -39,7 +45,8 @@ static const char *radius_source(const fs_scene *s)
 static void settle_radius(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)
 {
     if (radius_opt > 0) s->radius = radius_opt, s->r_source = FS_R_OPTION;
-    else if (!s->synth.shape && s->r_source != FS_R_SCENE && p->radius > 0) s->radius = p->radius, s->r_source = FS_R_FILE;
+    else if (!s->synth.shape && s->r_source != FS_R_SCENE && p->radius > 0)
+        s->radius = p->radius, s->r_source = FS_R_FILE;
     float est = 0;
     /* a synthetic set is made at its r: nothing to estimate or check */
     int have_est = s->synth.shape == FS_SYNTH_NONE && fs_particles_estimate_radius(p, &est) == FS_OK;
@@ -48,23 +55,26 @@ static void settle_radius(fs_scene *s, const fs_particles *p, float radius_opt, 
     if (!from && have_est) {
         s->radius = est;
         s->r_source = FS_R_ESTIMATED;
-        snprintf(note, (size_t)size, "%.400s gives no particle radius: r = %g estimated from its spacing (set --radius)",
-                 s->source, est);
+        snprintf(note, (size_t)size, "%.400s gives no particle radius: r = %g estimated from its spacing (set %s)",
+                 s->source, est, fs_word("radius"));
     } else if (!from && s->synth.shape == FS_SYNTH_NONE) {
-        snprintf(note, (size_t)size, "%.400s: used the default r = %g (set --radius)", s->source, s->radius);
+        snprintf(note, (size_t)size, "%.400s: used the default r = %g (set %s)", s->source, s->radius,
+                 fs_word("radius"));
     } else if (from && have_est && (s->radius > 4 * est || 4 * s->radius < est)) {
-        snprintf(note, (size_t)size, "%.400s: r = %g from %s is %.2g times the r its spacing implies (%g): check the units",
-                 s->source, s->radius, from, s->radius / est, est);
+        snprintf(note, (size_t)size,
+                 "%.400s: r = %g from %s is %.2g times the r its spacing implies (%g): check the units", s->source,
+                 s->radius, from, s->radius / est, est);
     }
 }
 
-/* --up auto: the first frame decides, and a note says how. */
+/* up "auto": the first frame decides, and a note says how. */
 static void settle_up(fs_scene *s, const fs_particles *p, char *note, int size)
 {
     if (s->up_source != FS_UP_AUTO) return;
     char why[160];
     s->up_axis = fs_up_axis_guess(p, s->source, why, sizeof why);
-    snprintf(note, (size_t)size, "%.200s: up is %c (auto: %s; set --up)", s->source, 'x' + s->up_axis, why);
+    snprintf(note, (size_t)size, "%.200s: up is %c (auto: %s; set %s)", s->source, 'x' + s->up_axis, why,
+             fs_word("up"));
 }
 
 void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)

@@ -2,19 +2,25 @@
  * bounding-box test: the solids of a scene are small (a few thousand triangles). */
 #include "obstacle_mesh.h"
 #include "fs_error.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct mesh_entry { char *path; fs_mesh_solid m; } mesh_entry;
+typedef struct mesh_entry {
+    char *path;
+    fs_mesh_solid m;
+} mesh_entry;
 static mesh_entry *loaded; /* reachable until exit: every scene copy shares its mesh */
 static int nloaded;
 
 typedef struct obj_reader {
     const char *path;
-    float *v; int nv, capv;
-    float *tri; int ntri, capt;
+    float *v;
+    int nv, capv;
+    float *tri;
+    int ntri, capt;
 } obj_reader;
 
 static int grow(void **p, int *cap, int need, size_t elem)
@@ -56,7 +62,8 @@ static int read_line(obj_reader *r, char *line, int lineno)
     char *save, *tok = strtok_r(line, " \t\r\n", &save);
     if (!tok || tok[0] == '#') return FS_OK;
     if (!strcmp(tok, "v")) {
-        if (!grow((void **)&r->v, &r->capv, r->nv + 1, 3 * sizeof(float))) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", r->path);
+        if (!grow((void **)&r->v, &r->capv, r->nv + 1, 3 * sizeof(float)))
+            return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", r->path);
         for (int k = 0; k < 3; k++) {
             char *t = strtok_r(NULL, " \t\r\n", &save), *end;
             double x = t ? strtod(t, &end) : 0;
@@ -69,7 +76,9 @@ static int read_line(obj_reader *r, char *line, int lineno)
         int first = -1, prev = -1, n = 0;
         for (char *t; (t = strtok_r(NULL, " \t\r\n", &save)); n++) {
             int k = vertex_ref(t, r->nv);
-            if (k < 0) return fs_fail(FS_ERR_INPUT, "%s: line %d: face vertex '%s' is not one of the %d vertices so far", r->path, lineno, t, r->nv);
+            if (k < 0)
+                return fs_fail(FS_ERR_INPUT, "%s: line %d: face vertex '%s' is not one of the %d vertices so far",
+                               r->path, lineno, t, r->nv);
             int rc = n >= 2 ? add_triangle(r, first, prev, k) : FS_OK;
             if (rc) return rc;
             if (!n) first = k;
@@ -91,10 +100,16 @@ static int read_obj(const char *path, fs_mesh_solid *m)
     fclose(f);
     free(r.v);
     if (!rc && !r.ntri) rc = fs_fail(FS_ERR_INPUT, "%s: no faces (an OBJ mesh of \"v\" and \"f\" lines)", path);
-    if (rc) { free(r.tri); return rc; }
+    if (rc) {
+        free(r.tri);
+        return rc;
+    }
     m->ntri = r.ntri;
     m->tri = r.tri;
-    for (int a = 0; a < 3; a++) { m->lo[a] = INFINITY; m->hi[a] = -INFINITY; }
+    for (int a = 0; a < 3; a++) {
+        m->lo[a] = INFINITY;
+        m->hi[a] = -INFINITY;
+    }
     for (int i = 0; i < 3 * r.ntri; i++)
         for (int a = 0; a < 3; a++) {
             m->lo[a] = fminf(m->lo[a], r.tri[3 * i + a]);
@@ -106,7 +121,10 @@ static int read_obj(const char *path, fs_mesh_solid *m)
 int fs_mesh_solid_load(const char *path, const fs_mesh_solid **out)
 {
     for (int i = 0; i < nloaded; i++)
-        if (!strcmp(loaded[i].path, path)) { *out = &loaded[i].m; return FS_OK; }
+        if (!strcmp(loaded[i].path, path)) {
+            *out = &loaded[i].m;
+            return FS_OK;
+        }
     fs_mesh_solid m;
     int rc = read_obj(path, &m);
     if (rc) return rc;
@@ -125,32 +143,23 @@ int fs_mesh_solid_load(const char *path, const fs_mesh_solid **out)
     return FS_OK;
 }
 
-static void sub3(const float a[3], const float b[3], float o[3]) { o[0] = a[0] - b[0]; o[1] = a[1] - b[1]; o[2] = a[2] - b[2]; }
-static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-static void cross3(const float a[3], const float b[3], float o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* Moeller-Trumbore: t of the hit of org + t dir with triangle q, or -1. */
 static float ray_triangle(const float *q, const float org[3], const float dir[3])
 {
     float e1[3], e2[3], pv[3], tv[3], qv[3];
-    sub3(q + 3, q, e1);
-    sub3(q + 6, q, e2);
-    cross3(dir, e2, pv);
-    float det = dot3(e1, pv);
+    fs_v3_sub(q + 3, q, e1);
+    fs_v3_sub(q + 6, q, e2);
+    fs_v3_cross(dir, e2, pv);
+    float det = fs_v3_dot(e1, pv);
     if (fabsf(det) < 1e-20f) return -1;
     float inv = 1.0f / det;
-    sub3(org, q, tv);
-    float u = dot3(tv, pv) * inv;
+    fs_v3_sub(org, q, tv);
+    float u = fs_v3_dot(tv, pv) * inv;
     if (u < 0 || u > 1) return -1;
-    cross3(tv, e1, qv);
-    float v = dot3(dir, qv) * inv;
+    fs_v3_cross(tv, e1, qv);
+    float v = fs_v3_dot(dir, qv) * inv;
     if (v < 0 || u + v > 1) return -1;
-    return dot3(e2, qv) * inv;
+    return fs_v3_dot(e2, qv) * inv;
 }
 
 /* Squared distance from p to triangle q (the closest point by regions, Ericson 5.1.5). */
@@ -158,22 +167,34 @@ static float point_triangle2(const float *q, const float p[3])
 {
     const float *a = q, *b = q + 3, *c = q + 6;
     float ab[3], ac[3], ap[3], bp[3], cp[3], x[3];
-    sub3(b, a, ab); sub3(c, a, ac); sub3(p, a, ap);
-    float d1 = dot3(ab, ap), d2 = dot3(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return dot3(ap, ap);
-    sub3(p, b, bp);
-    float d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return dot3(bp, bp);
-    sub3(p, c, cp);
-    float d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return dot3(cp, cp);
+    fs_v3_sub(b, a, ab);
+    fs_v3_sub(c, a, ac);
+    fs_v3_sub(p, a, ap);
+    float d1 = fs_v3_dot(ab, ap), d2 = fs_v3_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return fs_v3_dot(ap, ap);
+    fs_v3_sub(p, b, bp);
+    float d3 = fs_v3_dot(ab, bp), d4 = fs_v3_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return fs_v3_dot(bp, bp);
+    fs_v3_sub(p, c, cp);
+    float d5 = fs_v3_dot(ab, cp), d6 = fs_v3_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return fs_v3_dot(cp, cp);
     float vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4, s, t;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) { s = d1 / (d1 - d3); t = 0; }
-    else if (vb <= 0 && d2 >= 0 && d6 <= 0) { s = 0; t = d2 / (d2 - d6); }
-    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) { t = (d4 - d3) / ((d4 - d3) + (d5 - d6)); s = 1 - t; }
-    else { float den = 1.0f / (va + vb + vc); s = vb * den; t = vc * den; }
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        s = d1 / (d1 - d3);
+        t = 0;
+    } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        s = 0;
+        t = d2 / (d2 - d6);
+    } else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+        t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        s = 1 - t;
+    } else {
+        float den = 1.0f / (va + vb + vc);
+        s = vb * den;
+        t = vc * den;
+    }
     for (int k = 0; k < 3; k++) x[k] = a[k] + s * ab[k] + t * ac[k] - p[k];
-    return dot3(x, x);
+    return fs_v3_dot(x, x);
 }
 
 float fs_mesh_solid_distance(const fs_mesh_solid *m, const float p[3])
@@ -213,15 +234,18 @@ int fs_mesh_solid_hit(const fs_mesh_solid *m, const float org[3], const float di
     int best = -1;
     for (int i = 0; i < m->ntri; i++) {
         float ti = ray_triangle(m->tri + 9 * i, org, dir);
-        if (ti > tmin && ti < tmax) { tmax = ti; best = i; }
+        if (ti > tmin && ti < tmax) {
+            tmax = ti;
+            best = i;
+        }
     }
     if (best < 0) return 0;
     const float *q = m->tri + 9 * best;
     float e1[3], e2[3];
-    sub3(q + 3, q, e1);
-    sub3(q + 6, q, e2);
-    cross3(e1, e2, n);
-    float l = sqrtf(dot3(n, n)), s = dot3(n, dir) > 0 ? -1.0f : 1.0f;
+    fs_v3_sub(q + 3, q, e1);
+    fs_v3_sub(q + 6, q, e2);
+    fs_v3_cross(e1, e2, n);
+    float l = sqrtf(fs_v3_dot(n, n)), s = fs_v3_dot(n, dir) > 0 ? -1.0f : 1.0f;
     for (int k = 0; k < 3; k++) n[k] *= s / l;
     *t = tmax;
     return 1;

@@ -11,8 +11,8 @@ extern "C" {
 
 typedef struct fs_mesh_solid {
     int ntri;
-    float *tri;          /* 9 floats per triangle: its three corners */
-    float lo[3], hi[3];  /* bounds */
+    float *tri;         /* 9 floats per triangle: its three corners */
+    float lo[3], hi[3]; /* bounds */
 } fs_mesh_solid;
 
 /* Reads an OBJ file's "v" and "f" lines (polygons fanned into triangles; "v/vt/vn"

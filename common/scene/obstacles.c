@@ -25,9 +25,11 @@ static int vec3(const cJSON *a, float out[3])
 /* A mesh obstacle's "scale" and "offset"; NULL or the reason they are malformed. */
 static const char *parse_placement(const cJSON *e, fs_obstacle *o)
 {
-    const cJSON *sc = cJSON_GetObjectItemCaseSensitive(e, "scale"), *off = cJSON_GetObjectItemCaseSensitive(e, "offset");
+    const cJSON *sc = cJSON_GetObjectItemCaseSensitive(e, "scale"),
+                *off = cJSON_GetObjectItemCaseSensitive(e, "offset");
     o->scale = 1;
-    if (sc && (!cJSON_IsNumber(sc) || !(sc->valuedouble > 0) || sc->valuedouble > 1e30)) return "\"scale\" must be a positive number";
+    if (sc && (!cJSON_IsNumber(sc) || !(sc->valuedouble > 0) || sc->valuedouble > 1e30))
+        return "\"scale\" must be a positive number";
     if (sc) o->scale = (float)sc->valuedouble;
     if (off && !vec3(off, o->offset)) return "\"offset\" must be an array of 3 numbers";
     return NULL;
@@ -47,7 +49,8 @@ static const char *parse_one(const cJSON *e, fs_obstacle *o, const char **mesh_f
     }
     const cJSON *mn = cJSON_GetObjectItemCaseSensitive(e, "min"), *mx = cJSON_GetObjectItemCaseSensitive(e, "max");
     const cJSON *c = cJSON_GetObjectItemCaseSensitive(e, "centre"), *r = cJSON_GetObjectItemCaseSensitive(e, "radius");
-    const cJSON *mesh = cJSON_GetObjectItemCaseSensitive(e, "mesh"), *col = cJSON_GetObjectItemCaseSensitive(e, "color");
+    const cJSON *mesh = cJSON_GetObjectItemCaseSensitive(e, "mesh"),
+                *col = cJSON_GetObjectItemCaseSensitive(e, "color");
     memset(o, 0, sizeof *o);
     memcpy(o->color, DEFAULT_COLOR, sizeof o->color);
     o->scale = 1;
@@ -70,9 +73,13 @@ static const char *parse_one(const cJSON *e, fs_obstacle *o, const char **mesh_f
     } else {
         o->kind = FS_OBSTACLE_SPHERE;
         if (!vec3(c, o->c)) return "\"centre\" must be an array of 3 numbers";
-        if (!cJSON_IsNumber(r) || !(r->valuedouble > 0) || r->valuedouble > 1e30) return "\"radius\" must be a positive number";
+        if (!cJSON_IsNumber(r) || !(r->valuedouble > 0) || r->valuedouble > 1e30)
+            return "\"radius\" must be a positive number";
         o->radius = (float)r->valuedouble;
-        for (int a = 0; a < 3; a++) { o->lo[a] = o->c[a] - o->radius; o->hi[a] = o->c[a] + o->radius; }
+        for (int a = 0; a < 3; a++) {
+            o->lo[a] = o->c[a] - o->radius;
+            o->hi[a] = o->c[a] + o->radius;
+        }
     }
     if (col) {
         if (!vec3(col, o->color)) return "\"color\" must be an array of 3 numbers";
@@ -86,7 +93,8 @@ static const char *parse_one(const cJSON *e, fs_obstacle *o, const char **mesh_f
 static int load_mesh(fs_obstacle *o, const char *path, int i, const char *file)
 {
     char full[2048];
-    if (fs_path_beside(path, file, full, sizeof full)) return fs_fail(FS_ERR_INPUT, "%s: obstacles[%d]: mesh path too long", path, i);
+    if (fs_path_beside(path, file, full, sizeof full))
+        return fs_fail(FS_ERR_INPUT, "%s: obstacles[%d]: mesh path too long", path, i);
     int rc = fs_mesh_solid_load(full, &o->mesh);
     if (rc) {
         char why[1024]; /* fs_fail writes the buffer fs_error_message reads */
@@ -163,9 +171,19 @@ static int hit_box(const fs_obstacle *o, const float org[3], const float dir[3],
             continue;
         }
         float inv = 1.0f / dir[a], u = (o->lo[a] - org[a]) * inv, v = (o->hi[a] - org[a]) * inv;
-        if (u > v) { float s = u; u = v; v = s; }
-        if (u > t0) { t0 = u; a0 = a; }
-        if (v < t1) { t1 = v; a1 = a; }
+        if (u > v) {
+            float s = u;
+            u = v;
+            v = s;
+        }
+        if (u > t0) {
+            t0 = u;
+            a0 = a;
+        }
+        if (v < t1) {
+            t1 = v;
+            a1 = a;
+        }
     }
     if (t0 > t1) return 0;
     int a = t0 > tmin ? a0 : a1;
@@ -193,7 +211,8 @@ static int hit_sphere(const fs_obstacle *o, const float org[3], const float dir[
 }
 
 /* The mesh in its own frame: the ray's origin moved there, distances scaled. */
-static int hit_mesh(const fs_obstacle *o, const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3])
+static int hit_mesh(const fs_obstacle *o, const float org[3], const float dir[3], float tmin, float tmax, float *t,
+                    float n[3])
 {
     float q[3];
     for (int a = 0; a < 3; a++) q[a] = (org[a] - o->offset[a]) / o->scale;
@@ -210,7 +229,7 @@ int fs_obstacles_hit(const fs_obstacles *ob, const float org[3], const float dir
         float ti, ni[3];
         const fs_obstacle *o = &ob->o[i];
         int hit = o->kind == FS_OBSTACLE_SPHERE ? hit_sphere(o, org, dir, tmin, &ti, ni)
-                  : o->kind == FS_OBSTACLE_MESH ? hit_mesh(o, org, dir, tmin, tmax, &ti, ni)
+            : o->kind == FS_OBSTACLE_MESH       ? hit_mesh(o, org, dir, tmin, tmax, &ti, ni)
                                                 : hit_box(o, org, dir, tmin, &ti, ni);
         if (hit && ti < tmax) {
             tmax = ti;

@@ -17,11 +17,11 @@ typedef enum { FS_OBSTACLE_BOX = 0, FS_OBSTACLE_SPHERE, FS_OBSTACLE_MESH } fs_ob
 struct fs_mesh_solid;
 typedef struct fs_obstacle {
     fs_obstacle_kind kind;
-    float lo[3], hi[3];  /* the bounds in the scene (a box's corners), lo < hi */
-    float c[3], radius;  /* sphere: centre and radius > 0 */
+    float lo[3], hi[3];               /* the bounds in the scene (a box's corners), lo < hi */
+    float c[3], radius;               /* sphere: centre and radius > 0 */
     const struct fs_mesh_solid *mesh; /* mesh (obstacle_mesh.h), placed at scale * p + offset */
     float scale, offset[3];
-    float color[3];      /* linear albedo of the opaque shading */
+    float color[3]; /* linear albedo of the opaque shading */
 } fs_obstacle;
 
 typedef struct fs_obstacles {

@@ -9,10 +9,10 @@ extern "C" {
 
 typedef struct fs_orbit {
     float target[3];
-    float dist;        /* eye to target */
-    float yaw, pitch;  /* radians; pitch from the horizontal plane, up positive */
+    float dist;       /* eye to target */
+    float yaw, pitch; /* radians; pitch from the horizontal plane, up positive */
     float fovy_deg;
-    int up_axis;       /* 0 x, 1 y, 2 z */
+    int up_axis; /* 0 x, 1 y, 2 z */
 } fs_orbit;
 
 /* The orbit that reproduces camera c (eye, target, fov) around up_axis. */

@@ -27,13 +27,20 @@ void fs_scene_defaults(fs_scene *s)
     s->camera.width = 512;
     s->camera.height = 512;
     float l[3] = {0.35f, 0.85f, 0.4f}, n = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-    for (int i = 0; i < 3; i++) { s->light_dir[i] = l[i] / n; s->light_color[i] = 1.0f; }
+    for (int i = 0; i < 3; i++) {
+        s->light_dir[i] = l[i] / n;
+        s->light_color[i] = 1.0f;
+    }
     s->ambient = 0.25f;
     s->material = FS_MATERIAL_WATER;
-    s->material_color[0] = 0.55f; s->material_color[1] = 0.75f; s->material_color[2] = 0.95f;
+    s->material_color[0] = 0.55f;
+    s->material_color[1] = 0.75f;
+    s->material_color[2] = 0.95f;
     s->ior = 1.333f;
     /* Clear water tinted blue over a few tens of particle diameters. */
-    s->absorption[0] = 1.2f; s->absorption[1] = 0.45f; s->absorption[2] = 0.2f;
+    s->absorption[0] = 1.2f;
+    s->absorption[1] = 0.45f;
+    s->absorption[2] = 0.2f;
     s->background = FS_BACKGROUND_CHECKER;
 }
 
@@ -61,14 +68,23 @@ fs_field fs_scene_field(const fs_scene *s)
     return f;
 }
 
+static fs_scene_resolver resolver;
+
+void fs_scene_set_resolver(fs_scene_resolver r) { resolver = r; }
+
 int fs_scene_add_set(fs_scene *s, const char *set)
 {
-    fs_param_setting split; /* only checked here: methods resolve the setting later */
+    fs_param_setting split;
     int rc = fs_param_split(set, &split);
     if (rc) return rc;
     if (s->nsets == FS_MAX_SETS) return fs_fail(FS_ERR_INPUT, "setting %.80s: more than %d settings", set, FS_MAX_SETS);
-    if (strlen(set) >= sizeof s->sets[0]) return fs_fail(FS_ERR_INPUT, "setting %.80s...: longer than %d characters", set, (int)sizeof s->sets[0] - 1);
-    strcpy(s->sets[s->nsets++], set);
+    fs_scene_setting *st = &s->sets[s->nsets];
+    if (strlen(set) >= sizeof st->text)
+        return fs_fail(FS_ERR_INPUT, "setting %.80s...: longer than %d characters", set, (int)sizeof st->text - 1);
+    memset(st, 0, sizeof *st);
+    strcpy(st->text, set);
+    if (resolver && (rc = resolver(st))) return rc;
+    s->nsets++;
     return FS_OK;
 }
 
@@ -77,14 +93,14 @@ void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3
     if (!s->has_camera) fs_camera_frame_box(&s->camera, bmin, bmax, s->up_axis);
     /* Clip planes enclose the particles grown by the kernel support. */
     float g = s->support_r * s->radius, lo[3], hi[3];
-    for (int i = 0; i < 3; i++) { lo[i] = bmin[i] - g; hi[i] = bmax[i] + g; }
+    for (int i = 0; i < 3; i++) {
+        lo[i] = bmin[i] - g;
+        hi[i] = bmax[i] + g;
+    }
     fs_camera_fit_clip(&s->camera, lo, hi);
 }
 
-float fs_scene_floor(const fs_scene *s, const fs_grid *g)
-{
-    return g->bulk_lo[s->up_axis] - s->radius;
-}
+float fs_scene_floor(const fs_scene *s, const fs_grid *g) { return g->bulk_lo[s->up_axis] - s->radius; }
 
 /* The bulk box of p (grid.h) with cells of the scene's support; the bounding
  * box when the grid cannot be built (the run reports why later). */
@@ -113,7 +129,10 @@ void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
     if (!s->has_camera) {
         float lo[3], hi[3];
         fs_particles_core_bounds_in(p, 0.01f, blo, bhi, lo, hi);
-        for (int i = 0; i < 3; i++) { lo[i] -= s->radius; hi[i] += s->radius; }
+        for (int i = 0; i < 3; i++) {
+            lo[i] -= s->radius;
+            hi[i] += s->radius;
+        }
         fs_camera_frame_box(&s->camera, lo, hi, s->up_axis);
         s->has_camera = 1;
     }
@@ -122,7 +141,10 @@ void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
 
 /* ---- JSON scene files ---- */
 
-typedef struct jctx { const char *path; int rc; } jctx;
+typedef struct jctx {
+    const char *path;
+    int rc;
+} jctx;
 
 static int bad(jctx *c, const char *key, const char *what)
 {
@@ -158,7 +180,10 @@ static void get_num(jctx *c, const cJSON *o, const char *key, float *out, double
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (!v || c->rc) return;
-    if (!cJSON_IsNumber(v)) { bad(c, key, "must be a number"); return; }
+    if (!cJSON_IsNumber(v)) {
+        bad(c, key, "must be a number");
+        return;
+    }
     if (!(v->valuedouble >= lo && v->valuedouble <= hi)) {
         char msg[128];
         snprintf(msg, sizeof msg, "must lie in [%g, %g], got %g", lo, hi, v->valuedouble);
@@ -174,7 +199,10 @@ static void get_int(jctx *c, const cJSON *o, const char *key, int *out, int lo, 
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (!v || c->rc) return;
-    if (!cJSON_IsNumber(v)) { bad(c, key, "must be a number"); return; }
+    if (!cJSON_IsNumber(v)) {
+        bad(c, key, "must be a number");
+        return;
+    }
     double d = v->valuedouble;
     if (!(d >= lo && d <= hi)) {
         char msg[128];
@@ -182,7 +210,10 @@ static void get_int(jctx *c, const cJSON *o, const char *key, int *out, int lo, 
         bad(c, key, msg);
         return;
     }
-    if (d != floor(d)) { bad(c, key, "must be an integer"); return; }
+    if (d != floor(d)) {
+        bad(c, key, "must be an integer");
+        return;
+    }
     *out = (int)d;
 }
 
@@ -190,10 +221,16 @@ static void get_vec3(jctx *c, const cJSON *o, const char *key, float out[3])
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (!v || c->rc) return;
-    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3) { bad(c, key, "must be an array of 3 numbers"); return; }
+    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3) {
+        bad(c, key, "must be an array of 3 numbers");
+        return;
+    }
     for (int i = 0; i < 3; i++) {
         const cJSON *e = cJSON_GetArrayItem(v, i);
-        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble)) { bad(c, key, "must be an array of 3 numbers"); return; }
+        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble)) {
+            bad(c, key, "must be an array of 3 numbers");
+            return;
+        }
         out[i] = (float)e->valuedouble;
     }
 }
@@ -202,7 +239,10 @@ static const char *get_str(jctx *c, const cJSON *o, const char *key)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (!v || c->rc) return NULL;
-    if (!cJSON_IsString(v)) { bad(c, key, "must be a string"); return NULL; }
+    if (!cJSON_IsString(v)) {
+        bad(c, key, "must be a string");
+        return NULL;
+    }
     return v->valuestring;
 }
 
@@ -213,27 +253,44 @@ static void set_path(fs_scene *s, jctx *c, const char *file)
 
 static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
 {
-    if (cJSON_IsString(v)) { set_path(s, c, v->valuestring); return; }
-    if (!cJSON_IsObject(v)) { bad(c, "particles", "must be a file name or an object"); return; }
-    static const char *const keys[] = {"file", "format", "first", "last", "synthetic", "size", "jitter", "seed", "moving", NULL};
+    if (cJSON_IsString(v)) {
+        set_path(s, c, v->valuestring);
+        return;
+    }
+    if (!cJSON_IsObject(v)) {
+        bad(c, "particles", "must be a file name or an object");
+        return;
+    }
+    static const char *const keys[] = {"file", "format", "first", "last",   "synthetic",
+                                       "size", "jitter", "seed",  "moving", NULL};
     check_keys(c, v, "particles", keys);
     const char *file = get_str(c, v, "file"), *fmt = get_str(c, v, "format"), *syn = get_str(c, v, "synthetic");
     if (c->rc) return;
-    if (!!file == !!syn) { bad(c, "particles", "needs exactly one of \"file\" and \"synthetic\""); return; }
+    if (!!file == !!syn) {
+        bad(c, "particles", "needs exactly one of \"file\" and \"synthetic\"");
+        return;
+    }
     if (file) set_path(s, c, file);
     if (fmt) snprintf(s->format, sizeof s->format, "%s", fmt);
     if (syn) {
         static const char *const shapes[] = {"", "slab", "sphere", "box"};
         for (int i = 1; i < 4; i++)
             if (!strcmp(syn, shapes[i])) s->synth.shape = (fs_synth_shape)i;
-        if (!s->synth.shape) { bad(c, "synthetic", "must be slab, sphere or box"); return; }
+        if (!s->synth.shape) {
+            bad(c, "synthetic", "must be slab, sphere or box");
+            return;
+        }
         const cJSON *size = cJSON_GetObjectItemCaseSensitive(v, "size");
         if (size) {
             int n = cJSON_IsArray(size) ? cJSON_GetArraySize(size) : 0;
-            if (n < 1 || n > 3) { bad(c, "size", "must be an array of 1 to 3 particle counts"); return; }
+            if (n < 1 || n > 3) {
+                bad(c, "size", "must be an array of 1 to 3 particle counts");
+                return;
+            }
             for (int i = 0; i < n; i++) {
                 const cJSON *e = cJSON_GetArrayItem(size, i);
-                if (!cJSON_IsNumber(e) || e->valuedouble < 1 || e->valuedouble > 1000 || e->valuedouble != floor(e->valuedouble)) {
+                if (!cJSON_IsNumber(e) || e->valuedouble < 1 || e->valuedouble > 1000 ||
+                    e->valuedouble != floor(e->valuedouble)) {
                     bad(c, "size", "entries must be integers in [1, 1000]");
                     return;
                 }
@@ -248,8 +305,12 @@ static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
         if (mv && !cJSON_IsBool(mv)) bad(c, "moving", "must be true or false");
         s->synth.moving = mv && cJSON_IsTrue(mv);
     }
-    const cJSON *first = cJSON_GetObjectItemCaseSensitive(v, "first"), *last = cJSON_GetObjectItemCaseSensitive(v, "last");
-    if (!!first != !!last) { bad(c, first ? "first" : "last", "needs both \"first\" and \"last\""); return; }
+    const cJSON *first = cJSON_GetObjectItemCaseSensitive(v, "first"),
+                *last = cJSON_GetObjectItemCaseSensitive(v, "last");
+    if (!!first != !!last) {
+        bad(c, first ? "first" : "last", "needs both \"first\" and \"last\"");
+        return;
+    }
     if (first) {
         get_int(c, v, "first", &s->frame_first, 0, 100000000);
         get_int(c, v, "last", &s->frame_last, 0, 100000000);
@@ -259,13 +320,19 @@ static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
 
 static void parse_camera(fs_scene *s, jctx *c, const cJSON *v)
 {
-    if (!cJSON_IsObject(v)) { bad(c, "camera", "must be an object"); return; }
+    if (!cJSON_IsObject(v)) {
+        bad(c, "camera", "must be an object");
+        return;
+    }
     static const char *const keys[] = {"eye", "target", "up", "fov", "width", "height", NULL};
     check_keys(c, v, "camera", keys);
     fs_camera *cam = &s->camera;
     int has_eye = cJSON_GetObjectItemCaseSensitive(v, "eye") != NULL;
     int has_target = cJSON_GetObjectItemCaseSensitive(v, "target") != NULL;
-    if (has_eye != has_target) { bad(c, has_eye ? "eye" : "target", "needs both \"eye\" and \"target\""); return; }
+    if (has_eye != has_target) {
+        bad(c, has_eye ? "eye" : "target", "needs both \"eye\" and \"target\"");
+        return;
+    }
     cam->up[0] = cam->up[2] = 0;
     cam->up[1] = 1;
     get_vec3(c, v, "eye", cam->eye);
@@ -292,24 +359,37 @@ static void parse_material(fs_scene *s, jctx *c, const cJSON *v)
         get_vec3(c, v, "color", s->material_color);
         get_num(c, v, "ior", &s->ior, 1, 3);
         get_vec3(c, v, "absorption", s->absorption);
-    } else { bad(c, "material", "must be \"water\", \"opaque\" or an object"); return; }
+    } else {
+        bad(c, "material", "must be \"water\", \"opaque\" or an object");
+        return;
+    }
     if (type && !strcmp(type, "opaque")) s->material = FS_MATERIAL_OPAQUE;
     else if (type && strcmp(type, "water")) bad(c, "material", "type must be water or opaque");
 }
 
 static void parse_methods(fs_scene *s, jctx *c, const cJSON *v)
 {
-    if (!cJSON_IsObject(v)) { bad(c, "methods", "must be an object of method parameter objects"); return; }
+    if (!cJSON_IsObject(v)) {
+        bad(c, "methods", "must be an object of method parameter objects");
+        return;
+    }
     check_unique(c, v);
     for (const cJSON *m = v->child; m && !c->rc; m = m->next) {
-        if (!cJSON_IsObject(m)) { bad(c, m->string, "must be an object of parameters"); return; }
+        if (!cJSON_IsObject(m)) {
+            bad(c, m->string, "must be an object of parameters");
+            return;
+        }
         check_unique(c, m);
         for (const cJSON *p = m->child; p && !c->rc; p = p->next) {
             char set[200];
             if (cJSON_IsNumber(p)) snprintf(set, sizeof set, "%s.%s=%.17g", m->string, p->string, p->valuedouble);
             else if (cJSON_IsString(p)) snprintf(set, sizeof set, "%s.%s=%s", m->string, p->string, p->valuestring);
-            else if (cJSON_IsBool(p)) snprintf(set, sizeof set, "%s.%s=%s", m->string, p->string, cJSON_IsTrue(p) ? "on" : "off");
-            else { bad(c, p->string, "must be a number, a string or a boolean"); return; }
+            else if (cJSON_IsBool(p))
+                snprintf(set, sizeof set, "%s.%s=%s", m->string, p->string, cJSON_IsTrue(p) ? "on" : "off");
+            else {
+                bad(c, p->string, "must be a number, a string or a boolean");
+                return;
+            }
             if (fs_scene_add_set(s, set)) c->rc = fs_fail(FS_ERR_INPUT, "%s: %s", c->path, fs_error_message());
         }
     }
@@ -325,7 +405,11 @@ static char *read_all(const char *path, size_t *len)
         if (n + 4096 > cap) {
             cap = (n + 4096) * 2;
             char *nb = realloc(buf, cap);
-            if (!nb) { free(buf); fclose(f); return NULL; }
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
             buf = nb;
         }
         size_t got = fread(buf + n, 1, cap - n - 1, f);
@@ -346,8 +430,11 @@ int fs_scene_load(fs_scene *s, const char *path)
     size_t len = 0;
     char *text = read_all(path, &len);
     if (!text) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
-    s->hash = fs_fnv1a(FS_FNV1A_START, text, len);
-    if (!len) { free(text); return fs_fail(FS_ERR_INPUT, "%s: empty scene file", path); }
+    s->hash = fs_fnv1a(FS_SCENE_HASH_START, text, len);
+    if (!len) {
+        free(text);
+        return fs_fail(FS_ERR_INPUT, "%s: empty scene file", path);
+    }
     const char *err = NULL;
     cJSON *root = cJSON_ParseWithOpts(text, &err, 1);
     if (!root) {
@@ -359,9 +446,9 @@ int fs_scene_load(fs_scene *s, const char *path)
     free(text);
     jctx c = {path, 0};
     if (!cJSON_IsObject(root)) bad(&c, "(top level)", "must be an object");
-    static const char *const keys[] = {"particles", "radius", "volume_scale", "kernel", "support", "iso", "up",
-                                       "camera", "light", "material", "background", "obstacles", "methods", "description",
-                                       NULL};
+    static const char *const keys[] = {"particles",  "radius",    "volume_scale", "kernel",      "support",
+                                       "iso",        "up",        "camera",       "light",       "material",
+                                       "background", "obstacles", "methods",      "description", NULL};
     if (!c.rc) check_keys(&c, root, NULL, keys);
     const cJSON *v;
     if (!c.rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(&c, "particles", "is missing");
@@ -372,7 +459,8 @@ int fs_scene_load(fs_scene *s, const char *path)
     get_num(&c, root, "support", &s->support_r, 0.5, 64);
     get_num(&c, root, "iso", &s->iso, 1e-6, 1e6);
     const char *k = get_str(&c, root, "kernel");
-    if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0) bad(&c, "kernel", "must be cubic, poly6, spiky or wyvill");
+    if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0)
+        bad(&c, "kernel", "must be cubic, poly6, spiky or wyvill");
     const char *up = get_str(&c, root, "up");
     if (up) {
         s->up_source = FS_UP_SCENE;
@@ -389,9 +477,11 @@ int fs_scene_load(fs_scene *s, const char *path)
             get_vec3(&c, v, "direction", s->light_dir);
             get_vec3(&c, v, "color", s->light_color);
             get_num(&c, v, "ambient", &s->ambient, 0, 10);
-            float n = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] + s->light_dir[2] * s->light_dir[2]);
+            float n = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] +
+                            s->light_dir[2] * s->light_dir[2]);
             if (!c.rc && n < 1e-12f) bad(&c, "direction", "must not be zero");
-            else for (int i = 0; i < 3; i++) s->light_dir[i] /= n;
+            else
+                for (int i = 0; i < 3; i++) s->light_dir[i] /= n;
         }
     }
     if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "material"))) parse_material(s, &c, v);
@@ -401,7 +491,8 @@ int fs_scene_load(fs_scene *s, const char *path)
         else if (!strcmp(bg, "checker")) s->background = FS_BACKGROUND_CHECKER;
         else bad(&c, "background", "must be sky or checker");
     }
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "obstacles"))) c.rc = fs_obstacles_parse(v, path, &s->obstacles);
+    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "obstacles")))
+        c.rc = fs_obstacles_parse(v, path, &s->obstacles);
     if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "methods"))) parse_methods(s, &c, v);
     cJSON_Delete(root);
     return c.rc;

@@ -1,6 +1,6 @@
 /* A scene (JSON, cJSON): particle source, units, field, camera, light,
  * material, background and per-method parameters. Command-line flags and
- * --set override it. See the scenes in experiments/scenes/ and README.md for the keys. */
+ * the caller's settings override it. See the scenes in experiments/scenes/ and README.md for the keys. */
 #ifndef FS_SCENE_H
 #define FS_SCENE_H
 #include "camera.h"
@@ -23,11 +23,23 @@ typedef enum { FS_UP_DEFAULT = 0, FS_UP_SCENE, FS_UP_OPTION, FS_UP_AUTO } fs_up_
 
 typedef struct fs_synthetic {
     fs_synth_shape shape;
-    int size[3];        /* particles per axis (slab, box); size[0] = diameter in particles (sphere) */
-    float jitter;       /* amplitude in multiples of r (default 0.1) */
+    int size[3];  /* particles per axis (slab, box); size[0] = diameter in particles (sphere) */
+    float jitter; /* amplitude in multiples of r (default 0.1) */
     unsigned seed;
-    int moving;         /* sequence: 0 re-jitter per frame, 1 also translate */
+    int moving; /* sequence: 0 re-jitter per frame, 1 also translate */
 } fs_synthetic;
+
+/* A "method.param=value" setting, parsed once: split when it is added and, once the
+ * method layer has installed its resolver (fs_scene_set_resolver), resolved there too.
+ * The scene sits below the method registry, so it holds the method only as an opaque
+ * pointer the registry gave it. */
+typedef struct fs_scene_setting {
+    char text[160];     /* as written: messages name it */
+    const void *method; /* the fs_method it sets; NULL: not resolved yet (no resolver) */
+    int param;          /* index in that method's parameter table */
+    double value;       /* parsed against that parameter */
+} fs_scene_setting;
+typedef int (*fs_scene_resolver)(fs_scene_setting *set);
 
 typedef struct fs_scene {
     char path[FS_PATH_MAX];      /* the scene file itself, "" when built from flags */
@@ -36,43 +48,48 @@ typedef struct fs_scene {
     int frame_first, frame_last; /* for a pattern source; -1 when not a sequence */
     fs_synthetic synth;
 
-    float radius;        /* particle radius r */
+    float radius; /* particle radius r */
     fs_radius_source r_source;
-    float volume_scale;  /* V = volume_scale (2r)^3 */
+    float volume_scale; /* V = volume_scale (2r)^3 */
     fs_kernel kernel;
-    float support_r;     /* H in multiples of r */
+    float support_r; /* H in multiples of r */
     float iso;
-    int up_axis;         /* 0 x, 1 y, 2 z */
+    int up_axis; /* 0 x, 1 y, 2 z */
     fs_up_source up_source;
 
     fs_camera camera;
-    int has_camera;      /* 0: frame the particles */
+    int has_camera; /* 0: frame the particles */
 
-    float light_dir[3];  /* towards the light, world space */
+    float light_dir[3]; /* towards the light, world space */
     float light_color[3];
     float ambient;
 
     fs_material_kind material;
     float material_color[3]; /* opaque albedo, or water's tint */
     float ior;
-    float absorption[3];     /* water, per scene unit of thickness */
+    float absorption[3]; /* water, per scene unit of thickness */
 
     fs_background_kind background;
-    fs_obstacles obstacles;      /* static solids, drawn opaque (obstacles.h) */
+    fs_obstacles obstacles; /* static solids, drawn opaque (obstacles.h) */
 
     int nsets;
-    char sets[FS_MAX_SETS][160]; /* "method.param=value", scene first, then --set */
-    unsigned long long hash;     /* FNV-1a of the scene file bytes, or of the flags */
+    fs_scene_setting sets[FS_MAX_SETS]; /* scene first, then the caller's */
+    unsigned long long hash;            /* the scene hash (hash.h) of the scene file bytes, or of the flags */
 } fs_scene;
 
 void fs_scene_defaults(fs_scene *s);
+/* The method layer's resolver (the registry installs it when a method is registered):
+ * from then on fs_scene_add_set resolves each setting as it stores it, and refuses an
+ * unknown method or parameter or a bad value there. NULL: settings are only split. */
+void fs_scene_set_resolver(fs_scene_resolver r);
 /* "default", "scene", "file", "option", "estimated"; "auto" ... for up. */
 const char *fs_radius_source_name(fs_radius_source r);
 const char *fs_up_source_name(fs_up_source u);
 /* Reads a scene file; FS_ERR_INPUT with "path: what" on malformed JSON, bad keys
  * or values. Relative particle paths are resolved against the scene's folder. */
 int fs_scene_load(fs_scene *s, const char *path);
-/* Appends "method.param=value" (FS_ERR_INPUT if the list is full or malformed). */
+/* Appends "method.param=value", resolved when there is a resolver (FS_ERR_INPUT if the
+ * list is full, the text malformed, or the resolver refuses it). */
 int fs_scene_add_set(fs_scene *s, const char *set);
 fs_field fs_scene_field(const fs_scene *s);
 /* Completes the camera: frames the box when has_camera is 0, sets clip planes. */

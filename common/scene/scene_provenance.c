@@ -26,4 +26,3 @@ void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *rendere
              c->width, c->height);
     fs_provenance_set(p, "camera", v);
 }
-

@@ -7,7 +7,6 @@
 #include <stdint.h>
 #include <string.h>
 
-
 static const char *scene_name(const fs_scene *s) { return s->path[0] ? s->path : "synthetic scene"; }
 
 static int sphere_keeps(const fs_synthetic_layout *L, int i, int j, int k)
@@ -31,7 +30,8 @@ int fs_synthetic_layout_of(const fs_scene *s, int frame, fs_synthetic_layout *L)
         return fs_fail(FS_ERR_INPUT, "%s: particle radius %g must be positive", scene_name(s), s->radius);
     if (!(y->jitter >= 0) || y->jitter > 1)
         return fs_fail(FS_ERR_INPUT, "%s: jitter %g must lie in [0, 1] (multiples of r)", scene_name(s), y->jitter);
-    if (s->up_axis < 0 || s->up_axis > 2) return fs_fail(FS_ERR_INPUT, "%s: up axis %d is not 0, 1 or 2", scene_name(s), s->up_axis);
+    if (s->up_axis < 0 || s->up_axis > 2)
+        return fs_fail(FS_ERR_INPUT, "%s: up axis %d is not 0, 1 or 2", scene_name(s), s->up_axis);
     int up = s->up_axis;
     L->r = s->radius;
     L->sphere = y->shape == FS_SYNTH_SPHERE;
@@ -39,7 +39,8 @@ int fs_synthetic_layout_of(const fs_scene *s, int frame, fs_synthetic_layout *L)
      * thin along the up axis). */
     for (int a = 0; a < 3; a++) {
         int v = L->sphere ? y->size[0] : y->size[a];
-        if (v < 0 || v > 2000) return fs_fail(FS_ERR_INPUT, "%s: synthetic size %d must lie in [1, 2000]", scene_name(s), v);
+        if (v < 0 || v > 2000)
+            return fs_fail(FS_ERR_INPUT, "%s: synthetic size %d must lie in [1, 2000]", scene_name(s), v);
         if (v == 0) v = y->shape == FS_SYNTH_SLAB ? (a == up ? 6 : 48) : (y->shape == FS_SYNTH_BOX ? 16 : 20);
         L->n[a] = v;
     }
@@ -66,7 +67,8 @@ int fs_synthetic_layout_of(const fs_scene *s, int frame, fs_synthetic_layout *L)
         }
     }
     if (L->count == 0) return fs_fail(FS_ERR_INPUT, "%s: the synthetic shape holds no particles", scene_name(s));
-    if (L->count > ((size_t)1 << 30)) return fs_fail(FS_ERR_INPUT, "%s: %zu synthetic particles: too many", scene_name(s), L->count);
+    if (L->count > ((size_t)1 << 30))
+        return fs_fail(FS_ERR_INPUT, "%s: %zu synthetic particles: too many", scene_name(s), L->count);
     return FS_OK;
 }
 
@@ -90,7 +92,8 @@ int fs_synthetic_generate(const fs_scene *s, int frame, fs_particles *p)
     rc = fs_particles_alloc(p, L.count, 0);
     if (rc) return rc;
     /* Seed and frame both enter the state, so each frame re-jitters deterministically. */
-    uint64_t state = (uint64_t)s->synth.seed * 0xD1B54A32D192ED03ull ^ ((uint64_t)(uint32_t)frame + 1) * 0x8CB92BA72F3D8DD7ull;
+    uint64_t state =
+        (uint64_t)s->synth.seed * 0xD1B54A32D192ED03ull ^ ((uint64_t)(uint32_t)frame + 1) * 0x8CB92BA72F3D8DD7ull;
     splitmix64(&state);
     double amp = s->synth.jitter * L.r, d = 2 * L.r;
     size_t m = 0;

@@ -28,7 +28,7 @@ typedef struct fs_synthetic_layout {
     int sphere;
     double centre[3], rc, R; /* sphere: keep radius, ideal radius */
     size_t count;
-    double lo[3], hi[3];     /* block: the ideal box */
+    double lo[3], hi[3]; /* block: the ideal box */
 } fs_synthetic_layout;
 /* The layout of frame `frame`; FS_ERR_INPUT on a bad shape/size/jitter/r. */
 int fs_synthetic_layout_of(const fs_scene *s, int frame, fs_synthetic_layout *L);

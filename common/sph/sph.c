@@ -31,8 +31,7 @@ static float lattice_mass(float r, float H, float rho0)
     double w = 0;
     for (int k = -m; k <= m; k++)
         for (int j = -m; j <= m; j++)
-            for (int i = -m; i <= m; i++)
-                w += fs_poly6_w(dx * sqrtf((float)(i * i + j * j + k * k)), H);
+            for (int i = -m; i <= m; i++) w += fs_poly6_w(dx * sqrtf((float)(i * i + j * j + k * k)), H);
     return (float)(rho0 / w);
 }
 
@@ -41,10 +40,17 @@ void fs_sph_destroy(fs_sph *s)
     if (!s) return;
     if (s->gpu) fs_sph_gpu_free(s);
     fs_grid_free(&s->g);
-    free(s->x); free(s->y); free(s->z);
-    free(s->vx); free(s->vy); free(s->vz);
-    free(s->m); free(s->phase);
-    free(s->vel4); free(s->rho); free(s->prs);
+    free(s->x);
+    free(s->y);
+    free(s->z);
+    free(s->vx);
+    free(s->vy);
+    free(s->vz);
+    free(s->m);
+    free(s->phase);
+    free(s->vel4);
+    free(s->rho);
+    free(s->prs);
     free(s);
 }
 
@@ -68,7 +74,10 @@ int fs_sph_create(fs_sph **out, const char *scene, size_t particles, const fs_sp
     s->H = p->support * p->r;
     s->mass = lattice_mass(p->r, s->H, p->rho0);
     int rc = fs_sph_scene_build(s, scene, particles);
-    if (rc) { fs_sph_destroy(s); return rc; }
+    if (rc) {
+        fs_sph_destroy(s);
+        return rc;
+    }
     float c = s->prm.c;
     s->B = s->prm.rho0 * c * c / 7.0f; /* Tait, gamma = 7: dp/drho = c^2 at rho0 */
     s->k = s->prm.k > 0 ? s->prm.k : c * c;
@@ -78,8 +87,14 @@ int fs_sph_create(fs_sph **out, const char *scene, size_t particles, const fs_sp
     s->vel4 = malloc(n * 4 * sizeof *s->vel4);
     s->rho = malloc(n * sizeof *s->rho);
     s->prs = malloc(n * sizeof *s->prs);
-    if (!s->vel4 || !s->rho || !s->prs) { fs_sph_destroy(s); return fs_fail(FS_ERR_RUNTIME, "sph: out of memory"); }
-    if (gpu && (rc = fs_sph_gpu_init(s))) { fs_sph_destroy(s); return rc; }
+    if (!s->vel4 || !s->rho || !s->prs) {
+        fs_sph_destroy(s);
+        return fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
+    }
+    if (gpu && (rc = fs_sph_gpu_init(s))) {
+        fs_sph_destroy(s);
+        return rc;
+    }
     *out = s;
     return FS_OK;
 }
@@ -103,10 +118,17 @@ static void emit(fs_sph *s)
         float *d = sp->dir, u[3], w[3];
         /* u, w: unit vectors across the nozzle (d is never vertical here). */
         float l = sqrtf(d[0] * d[0] + d[2] * d[2]);
-        u[0] = -d[2] / l; u[1] = 0; u[2] = d[0] / l;
-        w[0] = d[1] * u[2] - d[2] * u[1]; w[1] = d[2] * u[0] - d[0] * u[2]; w[2] = d[0] * u[1] - d[1] * u[0];
+        u[0] = -d[2] / l;
+        u[1] = 0;
+        u[2] = d[0] / l;
+        w[0] = d[1] * u[2] - d[2] * u[1];
+        w[1] = d[2] * u[0] - d[0] * u[2];
+        w[2] = d[0] * u[1] - d[1] * u[0];
         while (sp->next <= s->st.t) {
-            if (s->nf + (size_t)(sp->width * sp->width) > s->cap) { sp->next = INFINITY; break; }
+            if (s->nf + (size_t)(sp->width * sp->width) > s->cap) {
+                sp->next = INFINITY;
+                break;
+            }
             float lag = (float)(s->st.t - sp->next) * sp->speed;
             for (int a = 0; a < sp->width; a++)
                 for (int b = 0; b < sp->width; b++) {
@@ -115,7 +137,9 @@ static void emit(fs_sph *s)
                     s->x[o] = sp->pos[0] + fa * u[0] + fb * w[0] + lag * d[0];
                     s->y[o] = sp->pos[1] + fa * u[1] + fb * w[1] + lag * d[1];
                     s->z[o] = sp->pos[2] + fa * u[2] + fb * w[2] + lag * d[2];
-                    s->vx[o] = sp->speed * d[0]; s->vy[o] = sp->speed * d[1]; s->vz[o] = sp->speed * d[2];
+                    s->vx[o] = sp->speed * d[0];
+                    s->vy[o] = sp->speed * d[1];
+                    s->vz[o] = sp->speed * d[2];
                     s->m[o] = s->mass;
                     s->phase[o] = sp->phase;
                 }
@@ -143,8 +167,8 @@ int fs_sph_step(fs_sph *s, float dt)
     if (dt < s->st.dt_min) s->st.dt_min = dt;
     if (dt > s->st.dt_max) s->st.dt_max = dt;
     if (s->st.nonfinite)
-        return fs_fail(FS_ERR_RUNTIME, "sph: the simulation diverged at t = %.4f s (%ld non-finite particles)",
-                       s->st.t, s->st.nonfinite);
+        return fs_fail(FS_ERR_RUNTIME, "sph: the simulation diverged at t = %.4f s (%ld non-finite particles)", s->st.t,
+                       s->st.nonfinite);
     return FS_OK;
 }
 
@@ -170,10 +194,7 @@ int fs_sph_advance(fs_sph *s, double frame_dt)
     return FS_OK;
 }
 
-static int sync(fs_sph *s)
-{
-    return s->gpu && s->dirty ? fs_sph_gpu_read(s) : FS_OK;
-}
+static int sync(fs_sph *s) { return s->gpu && s->dirty ? fs_sph_gpu_read(s) : FS_OK; }
 
 int fs_sph_get(fs_sph *s, fs_particles *p)
 {
@@ -214,7 +235,11 @@ void fs_sph_box(const fs_sph *s, float lo[3], float hi[3])
 
 /* Density at every fluid particle (boundary included, as the solver sums it),
  * column heights over the floor in cells of 2r, and the counts of the bar. */
-typedef struct dsum { const fs_sph *s; const fs_grid *g; double rho; } dsum;
+typedef struct dsum {
+    const fs_sph *s;
+    const fs_grid *g;
+    double rho;
+} dsum;
 static void dvisit(void *user, uint32_t slot, float d2)
 {
     dsum *q = user;
@@ -226,13 +251,18 @@ static void dvisit(void *user, uint32_t slot, float d2)
  * sum over the boundary particles): 1 inside fluid at rest density, next to a
  * wall too, 0 in air. Without the wall term a column next to a wall would read
  * its surface high (the wall's own volume counted as water). */
-typedef struct csum { const fs_sph *s; const fs_grid *g; double f, w; } csum;
+typedef struct csum {
+    const fs_sph *s;
+    const fs_grid *g;
+    double f, w;
+} csum;
 static void cvisit(void *user, uint32_t slot, float d2)
 {
     csum *q = user;
     uint32_t j = q->g->index[slot];
     double v = q->s->m[j] / q->s->prm.rho0 * fs_poly6_w(sqrtf(d2), q->s->H);
-    if (j < q->s->nb) q->w += v; else q->f += v;
+    if (j < q->s->nb) q->w += v;
+    else q->f += v;
 }
 static double fluid_fraction(const fs_sph *s, const fs_grid *g, float x, float y, float z)
 {
@@ -264,7 +294,7 @@ typedef struct columns {
 static int column_of(const fs_sph *s, const columns *c, size_t i)
 {
     return fs_grid_clampi((int)((s->z[i] - s->box_lo[2]) / c->dx), c->cz - 1) * c->cx +
-           fs_grid_clampi((int)((s->x[i] - s->box_lo[0]) / c->dx), c->cx - 1);
+        fs_grid_clampi((int)((s->x[i] - s->box_lo[0]) / c->dx), c->cx - 1);
 }
 
 static int column_tops(const fs_sph *s, columns *c)
@@ -289,10 +319,11 @@ static double surface_height(const fs_sph *s, const fs_grid *g, float x, float z
     float y = ystart;
     while (y > s->box_lo[1] && fluid_fraction(s, g, x, y, z) < 0.5) y -= step;
     if (y <= s->box_lo[1]) return 0; /* dry column: height 0 */
-    float a = y, b = y + step; /* fraction(a) >= 1/2 > fraction(b) */
+    float a = y, b = y + step;       /* fraction(a) >= 1/2 > fraction(b) */
     for (int it = 0; it < 16; it++) {
         float mid = 0.5f * (a + b);
-        if (fluid_fraction(s, g, x, mid, z) >= 0.5) a = mid; else b = mid;
+        if (fluid_fraction(s, g, x, mid, z) >= 0.5) a = mid;
+        else b = mid;
     }
     return 0.5 * (a + b) - s->box_lo[1];
 }
@@ -345,7 +376,10 @@ static void density_errors(const fs_sph *s, const fs_grid *g, const columns *c, 
         fs_grid_query(g, x, s->H, dvisit, &q);
         double e = q.rho / s->prm.rho0 - 1;
         err += e > 0 ? e : 0;
-        if (is_interior(s, c, column_of(s, c, i), s->y[i])) { aerr += fabs(e); ninner++; }
+        if (is_interior(s, c, column_of(s, c, i), s->y[i])) {
+            aerr += fabs(e);
+            ninner++;
+        }
     }
     m->density_err = err / s->nf;
     m->density_abs_err = ninner ? aerr / ninner : 0;
@@ -364,12 +398,18 @@ int fs_sph_measure_state(fs_sph *s, fs_sph_measure *m)
     if ((rc = column_tops(s, &c))) return rc;
     fs_particles view = {0};
     view.n = s->nb + s->nf;
-    view.x = s->x; view.y = s->y; view.z = s->z;
+    view.x = s->x;
+    view.y = s->y;
+    view.z = s->z;
     fs_grid g;
-    if ((rc = fs_grid_build(&g, &view, s->H))) { free(c.top); return rc; }
+    if ((rc = fs_grid_build(&g, &view, s->H))) {
+        free(c.top);
+        return rc;
+    }
     m->depth = mean_depth(s, &g, &c);
     float dx = c.dx;
-    m->depth_expected = (double)s->nf * dx * dx * dx / ((double)(s->box_hi[0] - s->box_lo[0]) * (s->box_hi[2] - s->box_lo[2]));
+    m->depth_expected =
+        (double)s->nf * dx * dx * dx / ((double)(s->box_hi[0] - s->box_lo[0]) * (s->box_hi[2] - s->box_lo[2]));
     density_errors(s, &g, &c, m);
     fs_grid_free(&g);
     free(c.top);

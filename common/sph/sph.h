@@ -22,29 +22,29 @@ extern "C" {
 typedef enum { FS_SPH_TAIT = 0, FS_SPH_IDEAL } fs_sph_eos;
 
 typedef struct fs_sph_params {
-    float r;           /* particle radius (lattice spacing 2r); default 0.025 */
-    float support;     /* kernel support H in multiples of r; default 4 */
-    float rho0;        /* rest density, default 1000 */
-    fs_sph_eos eos;    /* default Tait */
-    float c;           /* speed of sound; 0: 10x the scene's expected peak speed */
-    float k;           /* ideal gas p = k (rho - rho0); 0: c^2 (same stiffness at rho0) */
-    float nu;          /* kinematic viscosity (m^2/s) of the Laplacian term; default 0.05 */
-    float gravity;     /* along -y, default 9.81 */
-    float cfl;         /* lambda of dt <= lambda H / (c + v_max); default 0.2 */
-    float fixed_dt;    /* > 0: every step is this long, whatever the bound (inacio2010 Fig. 6) */
+    float r;        /* particle radius (lattice spacing 2r); default 0.025 */
+    float support;  /* kernel support H in multiples of r; default 4 */
+    float rho0;     /* rest density, default 1000 */
+    fs_sph_eos eos; /* default Tait */
+    float c;        /* speed of sound; 0: 10x the scene's expected peak speed */
+    float k;        /* ideal gas p = k (rho - rho0); 0: c^2 (same stiffness at rho0) */
+    float nu;       /* kinematic viscosity (m^2/s) of the Laplacian term; default 0.05 */
+    float gravity;  /* along -y, default 9.81 */
+    float cfl;      /* lambda of dt <= lambda H / (c + v_max); default 0.2 */
+    float fixed_dt; /* > 0: every step is this long, whatever the bound (inacio2010 Fig. 6) */
 } fs_sph_params;
 
 /* Running totals since creation; per frame values are differences. */
 typedef struct fs_sph_stats {
-    double t;              /* simulated time */
+    double t; /* simulated time */
     long steps;
-    float dt_min, dt_max;  /* over the steps taken */
-    float bound_min;       /* smallest stability bound met (CFL, viscosity) */
-    long violations;       /* steps whose dt exceeded the bound (fixed-dt mode only) */
-    float v_max;           /* largest speed after the last step */
-    long clamps;           /* safety clamps: particle centres put back into the box */
-    long nonfinite;        /* particles with a NaN/Inf position or velocity, last step */
-    double step_ms;        /* wall time in fs_sph_step, glFinish included on the GPU path */
+    float dt_min, dt_max; /* over the steps taken */
+    float bound_min;      /* smallest stability bound met (CFL, viscosity) */
+    long violations;      /* steps whose dt exceeded the bound (fixed-dt mode only) */
+    float v_max;          /* largest speed after the last step */
+    long clamps;          /* safety clamps: particle centres put back into the box */
+    long nonfinite;       /* particles with a NaN/Inf position or velocity, last step */
+    double step_ms;       /* wall time in fs_sph_step, glFinish included on the GPU path */
 } fs_sph_stats;
 
 typedef struct fs_sph fs_sph;
@@ -70,10 +70,11 @@ int fs_sph_get(fs_sph *s, fs_particles *p);
 const fs_sph_stats *fs_sph_get_stats(const fs_sph *s);
 const fs_sph_params *fs_sph_get_params(const fs_sph *s);
 void fs_sph_box(const fs_sph *s, float lo[3], float hi[3]);
-int fs_sph_move_box(fs_sph *s, const float delta[3], double frame_dt); /* advances frame_dt while the walls move by delta (0: jump; sph_move.c) */
-size_t fs_sph_count(const fs_sph *s);           /* active fluid particles */
+int fs_sph_move_box(fs_sph *s, const float delta[3],
+                    double frame_dt); /* advances frame_dt while the walls move by delta (0: jump; sph_move.c) */
+size_t fs_sph_count(const fs_sph *s); /* active fluid particles */
 size_t fs_sph_boundary_count(const fs_sph *s);
-float fs_sph_mass(const fs_sph *s);              /* fluid particle mass */
+float fs_sph_mass(const fs_sph *s); /* fluid particle mass */
 /* The scene's static obstacles in the simulation's frame (the JSON's
  * coordinates times the scene scale: exactly them at particles 0); none for
  * the built-in scenes. fs_sph_move_box moves them with the walls. */

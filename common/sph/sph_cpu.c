@@ -26,20 +26,21 @@
 
 /* Calls BODY for every slot t of the cells around x within one support, cells
  * in (k, j, i) order as the GPU path's dense grid visits them. */
-#define FOR_NEIGHBOUR_SLOTS(g, x, H, t, ...) do { \
-    int lo_[3], hi_[3]; \
-    for (int a_ = 0; a_ < 3; a_++) { \
-        lo_[a_] = fs_grid_coord(g, a_, (x)[a_] - (H)); \
-        hi_[a_] = fs_grid_coord(g, a_, (x)[a_] + (H)); \
-    } \
-    for (int k_ = lo_[2]; k_ <= hi_[2]; k_++) \
-        for (int j_ = lo_[1]; j_ <= hi_[1]; j_++) \
-            for (int i_ = lo_[0], e_; i_ <= hi_[0]; i_ = e_ + 1) { \
-                uint32_t s0_, s1_; \
-                e_ = fs_grid_row_run(g, i_, hi_[0], j_, k_, &s0_, &s1_); \
-                for (uint32_t t = s0_; t < s1_; t++) { __VA_ARGS__ } \
-            } \
-} while (0)
+#define FOR_NEIGHBOUR_SLOTS(g, x, H, t, ...)                                                                           \
+    do {                                                                                                               \
+        int lo_[3], hi_[3];                                                                                            \
+        for (int a_ = 0; a_ < 3; a_++) {                                                                               \
+            lo_[a_] = fs_grid_coord(g, a_, (x)[a_] - (H));                                                             \
+            hi_[a_] = fs_grid_coord(g, a_, (x)[a_] + (H));                                                             \
+        }                                                                                                              \
+        for (int k_ = lo_[2]; k_ <= hi_[2]; k_++)                                                                      \
+            for (int j_ = lo_[1]; j_ <= hi_[1]; j_++)                                                                  \
+                for (int i_ = lo_[0], e_; i_ <= hi_[0]; i_ = e_ + 1) {                                                 \
+                    uint32_t s0_, s1_;                                                                                 \
+                    e_ = fs_grid_row_run(g, i_, hi_[0], j_, k_, &s0_, &s1_);                                           \
+                    for (uint32_t t = s0_; t < s1_; t++) { __VA_ARGS__ }                                               \
+                }                                                                                                      \
+    } while (0)
 
 /* The constants of a step: support H, poly6 and spiky normalisations, dynamic
  * viscosity mu, the wall repulsion's r0^2 and D, gravity. */
@@ -71,7 +72,10 @@ static void sort_velocities(fs_sph *s, long n)
 #pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN)
     for (long t = 0; t < n; t++) {
         uint32_t i = g->index[t];
-        vel4[4 * t] = s->vx[i]; vel4[4 * t + 1] = s->vy[i]; vel4[4 * t + 2] = s->vz[i]; vel4[4 * t + 3] = 0;
+        vel4[4 * t] = s->vx[i];
+        vel4[4 * t + 1] = s->vy[i];
+        vel4[4 * t + 2] = s->vz[i];
+        vel4[4 * t + 3] = 0;
     }
 }
 
@@ -84,13 +88,20 @@ static void density_pressure(fs_sph *s, const step_consts *k, long n)
     float *rho = s->rho, *prs = s->prs;
 #pragma omp parallel for schedule(static) if (n > FS_SPH_PARALLEL_MIN)
     for (long sl = 0; sl < n; sl++) {
-        if (g->index[sl] < nb) { rho[sl] = k->rho0; prs[sl] = 0; continue; }
+        if (g->index[sl] < nb) {
+            rho[sl] = k->rho0;
+            prs[sl] = 0;
+            continue;
+        }
         const float *xi = g->pos4 + 4 * sl;
         float sum = 0;
         FOR_NEIGHBOUR_SLOTS(g, xi, H, t, {
             const float *xj = g->pos4 + 4 * (size_t)t;
             float dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2], d2 = dx * dx + dy * dy + dz * dz;
-            if (d2 < H2) { float w = H2 - d2; sum += m[g->index[t]] * cpoly * w * w * w; }
+            if (d2 < H2) {
+                float w = H2 - d2;
+                sum += m[g->index[t]] * cpoly * w * w * w;
+            }
         });
         rho[sl] = sum;
         prs[sl] = fs_sph_pressure(s, sum);
@@ -144,18 +155,31 @@ static void fluid_forces(const fs_sph *s, const step_consts *k, long sl, float a
             float f = m[j] * (pi + prs[t]) / (2 * ri * rho[t]);
             float gr = f * cspiky * h * h / d; /* -grad W points from j to i: push apart */
             if (j < nb) {
-                if (d2 < r02) { float q = r02 / d2, q2 = q * q, q6 = q2 * q2 * q2; gr += D * (q6 - q2) / d2; }
-                ax += gr * dx; ay += gr * dy; az += gr * dz;
+                if (d2 < r02) {
+                    float q = r02 / d2, q2 = q * q, q6 = q2 * q2 * q2;
+                    gr += D * (q6 - q2) / d2;
+                }
+                ax += gr * dx;
+                ay += gr * dy;
+                az += gr * dz;
             } else {
-                ax += gr * dx; ay += gr * dy; az += gr * dz;
+                ax += gr * dx;
+                ay += gr * dy;
+                az += gr * dz;
                 const float *vj = vel4 + 4 * (size_t)t;
                 float l = m[j] / rho[t] * cspiky * h;
-                bx += l * (vj[0] - vi[0]); by += l * (vj[1] - vi[1]); bz += l * (vj[2] - vi[2]);
+                bx += l * (vj[0] - vi[0]);
+                by += l * (vj[1] - vi[1]);
+                bz += l * (vj[2] - vi[2]);
             }
         }
     });
-    a[0] = ax; a[1] = ay; a[2] = az;
-    b[0] = bx; b[1] = by; b[2] = bz;
+    a[0] = ax;
+    a[1] = ay;
+    a[2] = az;
+    b[0] = bx;
+    b[1] = by;
+    b[2] = bz;
 }
 
 /* The safety-net box clamp of x (velocity into the wall zeroed); returns whether it clamped. */
@@ -164,8 +188,16 @@ static int clamp_to_box(const fs_sph *s, float x[3], float v[3])
     const float *lo = s->box_lo, *hi = s->box_hi;
     int clamped = 0;
     for (int a = 0; a < 3; a++) {
-        if (x[a] < lo[a]) { x[a] = lo[a]; if (v[a] < 0) v[a] = 0; clamped = 1; }
-        if (x[a] > hi[a]) { x[a] = hi[a]; if (v[a] > 0) v[a] = 0; clamped = 1; }
+        if (x[a] < lo[a]) {
+            x[a] = lo[a];
+            if (v[a] < 0) v[a] = 0;
+            clamped = 1;
+        }
+        if (x[a] > hi[a]) {
+            x[a] = hi[a];
+            if (v[a] > 0) v[a] = 0;
+            clamped = 1;
+        }
     }
     return clamped;
 }
@@ -185,7 +217,8 @@ static void forces_integrate(fs_sph *s, const step_consts *k, long n, float dt)
         float a[3], b[3];
         fluid_forces(s, k, sl, a, b);
         float c = k->mu / s->rho[sl];
-        float v[3] = {vi[0] + dt * (a[0] + c * b[0]), vi[1] + dt * (a[1] + c * b[1] - k->gy), vi[2] + dt * (a[2] + c * b[2])};
+        float v[3] = {vi[0] + dt * (a[0] + c * b[0]), vi[1] + dt * (a[1] + c * b[1] - k->gy),
+                      vi[2] + dt * (a[2] + c * b[2])};
         float x[3] = {xi[0] + dt * v[0], xi[1] + dt * v[1], xi[2] + dt * v[2]};
         if (!isfinite(x[0] + x[1] + x[2] + v[0] + v[1] + v[2])) bad++;
         else {
@@ -193,8 +226,12 @@ static void forces_integrate(fs_sph *s, const step_consts *k, long n, float dt)
             float sp = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
             if (sp > vmax) vmax = sp;
         }
-        s->x[i] = x[0]; s->y[i] = x[1]; s->z[i] = x[2];
-        s->vx[i] = v[0]; s->vy[i] = v[1]; s->vz[i] = v[2];
+        s->x[i] = x[0];
+        s->y[i] = x[1];
+        s->z[i] = x[2];
+        s->vx[i] = v[0];
+        s->vy[i] = v[1];
+        s->vz[i] = v[2];
     }
     s->st.v_max = vmax;
     s->st.clamps += clamps;
@@ -205,7 +242,9 @@ int fs_sph_cpu_step(fs_sph *s, float dt)
 {
     fs_particles view = {0};
     view.n = s->nb + s->nf;
-    view.x = s->x; view.y = s->y; view.z = s->z;
+    view.x = s->x;
+    view.y = s->y;
+    view.z = s->z;
     fs_grid_free(&s->g);
     int rc = fs_grid_build(&s->g, &view, s->H);
     if (rc) return rc;

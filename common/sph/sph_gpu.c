@@ -23,9 +23,10 @@ typedef struct fs_sph_gpu {
     unsigned ncells, nblocks;
 } fs_sph_gpu;
 
-static const char *const prog_files[P_N] = {"sph/count.comp.glsl", "sph/block_sum.comp.glsl",
-    "sph/block_scan.comp.glsl", "sph/block_write.comp.glsl", "sph/scatter.comp.glsl", "sph/reorder.comp.glsl",
-    "sph/density.comp.glsl", "sph/boundary.comp.glsl", "sph/forces.comp.glsl"};
+static const char *const prog_files[P_N] = {
+    "sph/count.comp.glsl",       "sph/block_sum.comp.glsl", "sph/block_scan.comp.glsl",
+    "sph/block_write.comp.glsl", "sph/scatter.comp.glsl",   "sph/reorder.comp.glsl",
+    "sph/density.comp.glsl",     "sph/boundary.comp.glsl",  "sph/forces.comp.glsl"};
 
 void fs_sph_gpu_free(fs_sph *s)
 {
@@ -45,8 +46,14 @@ int fs_sph_gpu_upload(fs_sph *s, size_t first, size_t count)
     for (size_t i = 0; i < count; i++) {
         size_t o = first + i;
         float *p = v + 4 * i, *q = v + 4 * (count + i);
-        p[0] = s->x[o]; p[1] = s->y[o]; p[2] = s->z[o]; p[3] = s->m[o];
-        q[0] = s->vx[o]; q[1] = s->vy[o]; q[2] = s->vz[o]; q[3] = 0;
+        p[0] = s->x[o];
+        p[1] = s->y[o];
+        p[2] = s->z[o];
+        p[3] = s->m[o];
+        q[0] = s->vx[o];
+        q[1] = s->vy[o];
+        q[2] = s->vz[o];
+        q[3] = 0;
     }
     glNamedBufferSubData(s->gpu->buf[B_POS], (GLintptr)(first * 16), (GLsizeiptr)(count * 16), v);
     glNamedBufferSubData(s->gpu->buf[B_VEL], (GLintptr)(first * 16), (GLsizeiptr)(count * 16), v + 4 * count);
@@ -63,8 +70,12 @@ int fs_sph_gpu_read(fs_sph *s)
     glGetNamedBufferSubData(s->gpu->buf[B_VEL], (GLintptr)(o * 16), (GLsizeiptr)(n * 16), v + 4 * n);
     for (size_t i = 0; i < n; i++) {
         const float *p = v + 4 * i, *q = v + 4 * (n + i);
-        s->x[o + i] = p[0]; s->y[o + i] = p[1]; s->z[o + i] = p[2];
-        s->vx[o + i] = q[0]; s->vy[o + i] = q[1]; s->vz[o + i] = q[2];
+        s->x[o + i] = p[0];
+        s->y[o + i] = p[1];
+        s->z[o + i] = p[2];
+        s->vx[o + i] = q[0];
+        s->vy[o + i] = q[1];
+        s->vz[o + i] = q[2];
     }
     free(v);
     s->dirty = 0;
@@ -80,8 +91,10 @@ int fs_sph_gpu_init(fs_sph *s)
     GLint maxssbo = 0;
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxssbo);
     if ((double)n * 16 > (double)(unsigned)maxssbo)
-        return fs_fail(FS_ERR_INPUT, "sph: %zu particles (boundary included) exceed one shader storage buffer "
-                       "(%d bytes) on the GPU path", n, maxssbo);
+        return fs_fail(FS_ERR_INPUT,
+                       "sph: %zu particles (boundary included) exceed one shader storage buffer "
+                       "(%d bytes) on the GPU path",
+                       n, maxssbo);
     for (int p = 0; p < P_N; p++) {
         const char *st[] = {prog_files[p], NULL};
         if (!(G->prog[p] = fs_program_build(st, NULL))) return FS_ERR_RUNTIME;
@@ -91,7 +104,10 @@ int fs_sph_gpu_init(fs_sph *s)
     float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < s->nb + s->nf; i++) {
         float p[3] = {s->x[i], s->y[i], s->z[i]};
-        for (int a = 0; a < 3; a++) { lo[a] = fminf(lo[a], p[a]); hi[a] = fmaxf(hi[a], p[a]); }
+        for (int a = 0; a < 3; a++) {
+            lo[a] = fminf(lo[a], p[a]);
+            hi[a] = fmaxf(hi[a], p[a]);
+        }
     }
     double cells = 1;
     for (int a = 0; a < 3; a++) {
@@ -106,16 +122,27 @@ int fs_sph_gpu_init(fs_sph *s)
     GLint maxgroups = 0;
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxgroups);
     if ((n + 127) / 128 > (size_t)maxgroups || ceil(cells / 64) > maxgroups)
-        return fs_fail(FS_ERR_INPUT, "sph: %zu particles (boundary included) or %.0f grid cells need more than "
-                       "GL_MAX_COMPUTE_WORK_GROUP_COUNT[x] = %d work groups on the GPU path", n, cells, maxgroups);
+        return fs_fail(FS_ERR_INPUT,
+                       "sph: %zu particles (boundary included) or %.0f grid cells need more than "
+                       "GL_MAX_COMPUTE_WORK_GROUP_COUNT[x] = %d work groups on the GPU path",
+                       n, cells, maxgroups);
     if ((cells + 1) * 4 > (double)(unsigned)maxssbo)
         return fs_fail(FS_ERR_INPUT, "sph: %.0f grid cells exceed one shader storage buffer (%d bytes) on the GPU path",
                        cells, maxssbo);
     G->ncells = (unsigned)cells;
     G->nblocks = (G->ncells + SPH_BLOCK - 1) / SPH_BLOCK;
     glCreateBuffers(B_N, G->buf);
-    size_t bytes[B_N] = {n * 16, n * 16, n * 4, (size_t)G->ncells * 4, ((size_t)G->ncells + 1) * 4,
-                         (size_t)G->nblocks * 4, n * 4, n * 16, n * 16, n * 8, 16};
+    size_t bytes[B_N] = {n * 16,
+                         n * 16,
+                         n * 4,
+                         (size_t)G->ncells * 4,
+                         ((size_t)G->ncells + 1) * 4,
+                         (size_t)G->nblocks * 4,
+                         n * 4,
+                         n * 16,
+                         n * 16,
+                         n * 8,
+                         16};
     for (int b = 0; b < B_N; b++) glNamedBufferData(G->buf[b], (GLsizeiptr)bytes[b], NULL, GL_DYNAMIC_DRAW);
     if (glGetError() != GL_NO_ERROR) return fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate the SPH buffers");
     return fs_sph_gpu_upload(s, 0, s->nb + s->nf);

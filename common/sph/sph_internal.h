@@ -13,32 +13,32 @@
 typedef struct fs_sph_spout {
     float pos[3], dir[3]; /* nozzle centre and unit direction */
     float speed;
-    int width;            /* nozzle is width x width particles */
+    int width; /* nozzle is width x width particles */
     int phase;
-    double next;          /* time of the next emitted layer */
+    double next; /* time of the next emitted layer */
 } fs_sph_spout;
 
 struct fs_sph_gpu;
 
 struct fs_sph {
     fs_sph_params prm;
-    float H, mass, B, k;        /* support, fluid mass, Tait B, ideal k */
+    float H, mass, B, k; /* support, fluid mass, Tait B, ideal k */
     float box_lo[3], box_hi[3];
     size_t nb, cap, nf;
     float *x, *y, *z, *vx, *vy, *vz, *m; /* m: mass (fluid) or Psi (boundary) */
-    int32_t *phase;             /* per particle (boundary: -1) */
-    int ncolors;                /* > 1: write colour and phase */
+    int32_t *phase;                      /* per particle (boundary: -1) */
+    int ncolors;                         /* > 1: write colour and phase */
     float colors[8][3];
     int nspouts;
     fs_sph_spout spout[FS_SPH_MAX_SPOUTS];
-    fs_obstacles obstacles;     /* the static solids at the scene's scale (their boundary particles are in [0, nb)) */
+    fs_obstacles obstacles; /* the static solids at the scene's scale (their boundary particles are in [0, nb)) */
     fs_sph_stats st;
     /* CPU path scratch */
     fs_grid g;
-    float *vel4, *rho, *prs;    /* sorted velocity, density, pressure per slot */
+    float *vel4, *rho, *prs; /* sorted velocity, density, pressure per slot */
     /* GPU path */
     struct fs_sph_gpu *gpu;
-    int dirty;                  /* GPU path: CPU arrays stale */
+    int dirty; /* GPU path: CPU arrays stale */
 };
 
 /* sph_scenes.c: fills box, particles, obstacles, colours and spouts; sets prm.c when 0. */

@@ -24,11 +24,11 @@ typedef struct region {
 
 typedef struct scene_def {
     const char *name;
-    float box[3];        /* container size at scale 1 */
+    float box[3]; /* container size at scale 1 */
     int nreg;
     region reg[8];
     int nspouts;
-    float fill;          /* spouts: fraction of the particles in the initial pool */
+    float fill; /* spouts: fraction of the particles in the initial pool */
     size_t default_n;
     int ncolors;
 } scene_def;
@@ -37,19 +37,37 @@ static const scene_def scenes[] = {
     /* A 1 m cube of water at one end of a 2.4 m tank (8000 particles at r = 0.025). */
     {"dam_break", {2.4f, 1.6f, 1.0f}, 1, {{{0, 0, 0}, {1.0f, 1.0f, 1.0f}, {0}, 0, 0}}, 0, 1, 8000, 1},
     /* Two columns at both ends meet in the middle. */
-    {"double_dam_break", {2.4f, 1.6f, 1.0f}, 2,
-     {{{0, 0, 0}, {0.5f, 1.0f, 1.0f}, {0}, 0, 0}, {{1.9f, 0, 0}, {2.4f, 1.0f, 1.0f}, {0}, 0, 1}}, 0, 1, 8000, 2},
+    {"double_dam_break",
+     {2.4f, 1.6f, 1.0f},
+     2,
+     {{{0, 0, 0}, {0.5f, 1.0f, 1.0f}, {0}, 0, 0}, {{1.9f, 0, 0}, {2.4f, 1.0f, 1.0f}, {0}, 0, 1}},
+     0,
+     1,
+     8000,
+     2},
     /* A ball of 0.3 m radius 0.6 m above a 0.25 m deep pool. */
-    {"drop", {1.6f, 1.6f, 1.6f}, 2,
-     {{{0, 0, 0}, {1.6f, 0.25f, 1.6f}, {0}, 0, 0}, {{0}, {0}, {0.8f, 1.0f, 0.8f}, 0.3f, 1}}, 0, 1, 6000, 2},
+    {"drop",
+     {1.6f, 1.6f, 1.6f},
+     2,
+     {{{0, 0, 0}, {1.6f, 0.25f, 1.6f}, {0}, 0, 0}, {{0}, {0}, {0.8f, 1.0f, 0.8f}, 0.3f, 1}},
+     0,
+     1,
+     6000,
+     2},
     /* Four nozzles in the corners, 1.2 m up, pour inwards into a shallow pool. */
     {"spouts", {1.6f, 1.6f, 1.6f}, 1, {{{0, 0, 0}, {1.6f, 0.15f, 1.6f}, {0}, 0, 0}}, 4, 0.35f, 12000, 5},
     /* Water at rest filling the floor half way up: density and depth checks. */
     {"pool", {1.0f, 1.0f, 1.0f}, 1, {{{0, 0, 0}, {1.0f, 0.5f, 1.0f}, {0}, 0, 0}}, 0, 1, 4000, 1},
 };
 
-static const float palette[8][3] = {{0.20f, 0.45f, 0.90f}, {0.90f, 0.20f, 0.15f}, {0.20f, 0.80f, 0.25f},
-                                    {0.95f, 0.85f, 0.20f}, {0.80f, 0.30f, 0.85f}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+static const float palette[8][3] = {{0.20f, 0.45f, 0.90f},
+                                    {0.90f, 0.20f, 0.15f},
+                                    {0.20f, 0.80f, 0.25f},
+                                    {0.95f, 0.85f, 0.20f},
+                                    {0.80f, 0.30f, 0.85f},
+                                    {1, 1, 1},
+                                    {1, 1, 1},
+                                    {1, 1, 1}};
 
 static double region_volume(const region *g)
 {
@@ -75,7 +93,8 @@ int fs_sph_alloc(fs_sph *s, size_t nb, size_t cap)
     s->cap = cap;
     float **f[] = {&s->x, &s->y, &s->z, &s->vx, &s->vy, &s->vz, &s->m};
     for (size_t i = 0; i < sizeof f / sizeof *f; i++)
-        if (!(*f[i] = calloc(n, sizeof(float)))) return fs_fail(FS_ERR_RUNTIME, "sph: out of memory for %zu particles", n);
+        if (!(*f[i] = calloc(n, sizeof(float))))
+            return fs_fail(FS_ERR_RUNTIME, "sph: out of memory for %zu particles", n);
     if (!(s->phase = calloc(n, sizeof *s->phase)))
         return fs_fail(FS_ERR_RUNTIME, "sph: out of memory for %zu particles", n);
     return FS_OK;
@@ -108,19 +127,30 @@ static int json_scene(const char *path, scene_def *d, fs_obstacles *ob, float r)
     text[len] = 0;
     cJSON *root = cJSON_Parse(text);
     free(text);
-    if (!root || !cJSON_IsObject(root)) { cJSON_Delete(root); return fs_fail(FS_ERR_INPUT, "%s: malformed JSON", path); }
+    if (!root || !cJSON_IsObject(root)) {
+        cJSON_Delete(root);
+        return fs_fail(FS_ERR_INPUT, "%s: malformed JSON", path);
+    }
     memset(d, 0, sizeof *d);
     d->name = path;
     d->fill = 1;
     int rc = FS_OK;
     const cJSON *it;
-    cJSON_ArrayForEach(it, root) {
+    cJSON_ArrayForEach(it, root)
+    {
         if (!strcmp(it->string, "box")) {
-            if (!json_vec(it, 3, d->box, 1)) { rc = fs_fail(FS_ERR_INPUT, "%s: box: expected [x, y, z] > 0", path); break; }
+            if (!json_vec(it, 3, d->box, 1)) {
+                rc = fs_fail(FS_ERR_INPUT, "%s: box: expected [x, y, z] > 0", path);
+                break;
+            }
         } else if (!strcmp(it->string, "fluid") && cJSON_IsArray(it)) {
             const cJSON *g;
-            cJSON_ArrayForEach(g, it) {
-                if (d->nreg == 8) { rc = fs_fail(FS_ERR_INPUT, "%s: fluid: at most 8 regions", path); break; }
+            cJSON_ArrayForEach(g, it)
+            {
+                if (d->nreg == 8) {
+                    rc = fs_fail(FS_ERR_INPUT, "%s: fluid: at most 8 regions", path);
+                    break;
+                }
                 region *q = &d->reg[d->nreg++];
                 const cJSON *mn = cJSON_GetObjectItem(g, "min"), *mx = cJSON_GetObjectItem(g, "max"),
                             *c = cJSON_GetObjectItem(g, "centre"), *rad = cJSON_GetObjectItem(g, "radius"),
@@ -131,13 +161,15 @@ static int json_scene(const char *path, scene_def *d, fs_obstacles *ob, float r)
                 if (rad) q->rad = (float)rad->valuedouble;
                 if (col) {
                     ok = ok && cJSON_IsNumber(col) && col->valuedouble >= 0 && col->valuedouble <= 4 &&
-                         col->valuedouble == (int)col->valuedouble;
+                        col->valuedouble == (int)col->valuedouble;
                     q->phase = ok ? (int)col->valuedouble : 0;
                     if (q->phase + 1 > d->ncolors) d->ncolors = q->phase + 1;
                 }
                 if (!ok) {
-                    rc = fs_fail(FS_ERR_INPUT, "%s: fluid region %d: expected {\"min\", \"max\"} (min < max) or "
-                                 "{\"centre\", \"radius\" > 0}, optional \"color\" 0..4", path, d->nreg - 1);
+                    rc = fs_fail(FS_ERR_INPUT,
+                                 "%s: fluid region %d: expected {\"min\", \"max\"} (min < max) or "
+                                 "{\"centre\", \"radius\" > 0}, optional \"color\" 0..4",
+                                 path, d->nreg - 1);
                     break;
                 }
             }
@@ -174,7 +206,8 @@ static int find_scene(fs_sph *s, const char *name, scene_def *js, const scene_de
     for (size_t i = 0; !*d && i < sizeof scenes / sizeof *scenes; i++)
         if (!strcmp(scenes[i].name, name)) *d = &scenes[i];
     if (!*d)
-        return fs_fail(FS_ERR_INPUT, "%s: unknown scene (dam_break, double_dam_break, drop, spouts, pool, or a .json)", name);
+        return fs_fail(FS_ERR_INPUT, "%s: unknown scene (dam_break, double_dam_break, drop, spouts, pool, or a .json)",
+                       name);
     return FS_OK;
 }
 
@@ -202,7 +235,8 @@ static int scale_tank(fs_sph *s, const scene_def *d, const char *name, size_t pa
         s->box_lo[a] = 0;
         s->box_hi[a] = l->nc[a] * dx;
     }
-    if ((double)l->nc[0] * l->nc[1] * l->nc[2] > 4e8) return fs_fail(FS_ERR_INPUT, "%s: %zu particles: too many", name, particles);
+    if ((double)l->nc[0] * l->nc[1] * l->nc[2] > 4e8)
+        return fs_fail(FS_ERR_INPUT, "%s: %zu particles: too many", name, particles);
     return FS_OK;
 }
 
@@ -296,7 +330,9 @@ static float place_particles(fs_sph *s, const scene_def *d, const lattice *l)
                     s->m[o] = s->mass;
                     if (p[1] > top) top = p[1];
                 }
-                s->x[o] = p[0]; s->y[o] = p[1]; s->z[o] = p[2];
+                s->x[o] = p[0];
+                s->y[o] = p[1];
+                s->z[o] = p[2];
             }
     return top;
 }
@@ -310,7 +346,9 @@ static float place_spouts(fs_sph *s, const scene_def *d, float sc, float top)
     for (int q = 0; q < d->nspouts; q++) {
         fs_sph_spout *sp = &s->spout[q];
         float cx = (q & 1) ? 1.3f : 0.3f, cz = (q & 2) ? 1.3f : 0.3f;
-        sp->pos[0] = cx * sc; sp->pos[1] = 1.2f * sc; sp->pos[2] = cz * sc;
+        sp->pos[0] = cx * sc;
+        sp->pos[1] = 1.2f * sc;
+        sp->pos[2] = cz * sc;
         float dir[3] = {0.8f - cx, -0.3f, 0.8f - cz}, l = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
         for (int a = 0; a < 3; a++) sp->dir[a] = dir[a] / l;
         sp->speed = 2.0f;

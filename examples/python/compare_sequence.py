@@ -46,23 +46,22 @@ else:
 if not files:
     raise SystemExit("compare_sequence: no frames found")
 
-# 2. Every frame: the reference once, each method against it. One camera for
-#    the whole sequence (framed on the first frame), as compare does.
-rows, camera = [], None
-for f, path in enumerate(files):
-    frame = fluidsurf.read_particles(path)
-    r = frame.get("radius")
-    ref = fluidsurf.render(frame["positions"], r, method="reference", width=args.size, height=args.size, camera=camera)
-    camera = ref["camera"]
-    for m in methods:
-        out = fluidsurf.render(frame["positions"], r, method=m, width=args.size, height=args.size, camera=camera)
-        e = fluidsurf.metrics(out, ref)
-        ms = sum(t["ms"] for t in out["timings"])
-        rows.append({"frame": f, "method": m, "mask_iou": e["mask_iou"], "normal_mean_deg": e["normal_mean_deg"],
-                     "depth_rmse_r": e["depth_rmse_r"], "total_ms": ms,
-                     "renderer": out["provenance"].get("fluidsurf:gl_renderer", "CPU")})
-    print(f"frame {f + 1}/{len(files)}: " + ", ".join(
-        f"{x['method']} {x['normal_mean_deg']:.1f} deg" for x in rows[-len(methods):]))
+# 2. The study, through the engine of `fluidsurf compare` (fluidsurf.compare with a
+#    list of frames): the reference once per frame, each method against it, one
+#    camera for the whole sequence (framed on the first frame), 3 timed renders
+#    per frame after a warm-up. The metrics table has metrics.csv's columns.
+frames = [fluidsurf.read_particles(path) for path in files]
+table = fluidsurf.compare([f["positions"] for f in frames], frames[0].get("radius"), methods=methods,
+                          width=args.size, height=args.size, tables=True)
+metrics = table["metrics"].to_dict("records") if hasattr(table["metrics"], "to_dict") else table["metrics"]
+renderer = {r["method"]: r["renderer"] for r in (table["timings"].to_dict("records")
+                                                 if hasattr(table["timings"], "to_dict") else table["timings"])}
+rows = [{"frame": r["frame"], "method": r["method"], "mask_iou": r["mask_iou"], "normal_mean_deg": r["normal_mean_deg"],
+         "depth_rmse_r": r["depth_rmse_r"], "frame_ms": r["frame_ms"], "renderer": renderer[r["method"]]}
+        for r in metrics]
+for m in methods:
+    mine = [x["normal_mean_deg"] for x in rows if x["method"] == m]
+    print(f"{m}: mean normal error {sum(mine) / len(mine):.2f} deg over {len(mine)} frames")
 if tmp:
     shutil.rmtree(tmp)
 

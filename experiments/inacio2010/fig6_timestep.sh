@@ -34,9 +34,8 @@ run() { # EOS STIFFNESS_ARGS LABEL SUBSTEPS DT PATH
   local rc=$?
   [ -s "$st" ] || missing=$((missing + 1))
   local ms=$(awk -F, '$1 ~ /^[0-9]+$/ && $1 > 0 {print $18}' "$st" | median)
-  awk -F, -v eos=$eos -v stiff="${stiff:-default c}" -v lab="${sub}x$dt" -v path=$path -v rc=$rc -v ms="$ms" -v err="$(head -c 200 "$T/err" | tr ',\n' '; ')" '
-    /^# / { if (match($0, /renderer [^;]*/)) renderer = substr($0, RSTART + 9, RLENGTH - 9);
-            if (match($0, / [0-9]+ fluid/)) n = substr($0, RSTART + 1, RLENGTH - 7); next }
+  awk -F, -v renderer="$(prov "$st" gl_renderer)" -v n="$(prov "$st" fluid_particles)" -v eos=$eos -v stiff="${stiff:-default c}" -v lab="${sub}x$dt" -v path=$path -v rc=$rc -v ms="$ms" -v err="$(head -c 200 "$T/err" | tr ',\n' '; ')" '
+    /^# / { next }
     $1 == "frame" { next }
     $1 == 0 { next }
     { steps += $4; last = $0; if ($9 > vpk) vpk = $9; if ($10 > 0 && fc == "") fc = $2; if ($11 > out) out = $11; if (b0 == "") b0 = $7; frames = $1 }

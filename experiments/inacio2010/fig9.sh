@@ -52,7 +52,7 @@ for n in $COUNTS; do
     echo "fig9: $n: simulation rc $rc after $wall s" >&2
     continue
   fi
-  read -r np nb <<< "$(awk '/^# / && match($0, / [0-9]+ fluid \+ [0-9]+ boundary/) { split(substr($0, RSTART + 1, RLENGTH - 1), w, " "); print w[1], w[4]; exit }' "$T/stats_$n.csv")"
+  np=$(prov "$T/stats_$n.csv" fluid_particles) nb=$(prov "$T/stats_$n.csv" boundary_particles)
   steps=$(awk -F, '$1 ~ /^[0-9]+$/ { s += $4; t = $2 } END { print s "," t }' "$T/stats_$n.csv")
   img=$T/fig9_$n.png
   "$BIN" render "$T/dam_${n}_0010.bgeo" --method volume_raycast --radius "$r" --set volume_raycast.grid_res="$GRID" \

@@ -45,12 +45,10 @@ fi
 # The volume of the water is its mass over rho0 (N m / rho0, m from the lattice
 # calibration); depth_rel_err_lattice compares with N (2r)^3 instead.
 for path in cpu gpu; do
-  awk -F, -v path=$path -v frames=$FRAMES '
-    /^# / { if (match($0, /renderer [^;]*/)) renderer = substr($0, RSTART + 9, RLENGTH - 9);
-            if (match($0, /\+ [0-9]+ boundary/)) nb = substr($0, RSTART + 2, RLENGTH - 11);
-            if (match($0, /; mass [0-9.e-]+/)) mass = substr($0, RSTART + 7, RLENGTH - 7);
-            if (match($0, /; rho0 [0-9.e-]+/)) rho0 = substr($0, RSTART + 7, RLENGTH - 7);
-            if (match($0, /; r [0-9.e-]+/)) r = substr($0, RSTART + 4, RLENGTH - 4); next }
+  st=$OUT/sim_bar_${path}_frames.csv
+  awk -F, -v path=$path -v frames=$FRAMES -v renderer="$(prov "$st" gl_renderer)" -v nb="$(prov "$st" boundary_particles)" \
+      -v mass="$(prov "$st" mass)" -v rho0="$(prov "$st" rho0)" -v r="$(prov "$st" r)" '
+    /^# / { next }
     $1 == "frame" { next }
     { steps += $4; ms += $17; if ($11 > out) out = $11; last = $0; if ($5 != "inf" && ($5 < dtmin || dtmin == "")) dtmin = $5; if ($6 > dtmax) dtmax = $6 }
     END {
@@ -65,7 +63,7 @@ for path in cpu gpu; do
       printf "%s,\"%s\",%s,%s,%s,%s,%d,%.1f,%.3f,%.1f,%s,%d,%s,%s,%s,%s,%s,%s,%.5f,%.5f,%.4f,%.5f,%.4f,%s,%s\n",
         path, renderer, f[3], nb, f[1], f[2], steps, ms / 1000, ms / steps, steps / (ms / 1000), done ? "no" : "yes",
         out, f[10], f[8], dtmin, dtmax, f[12], f[13], f[14], dm, relm, f[15], rell, f[16], ok ? "yes" : "no" }' \
-    "$OUT/sim_bar_${path}_frames.csv" >> "$tmp"
+    "$st" >> "$tmp"
 done
 mv "$tmp" "$csv"
 stamp_csv "$csv" "$OUT"/sim_bar_{cpu,gpu}_frames.csv

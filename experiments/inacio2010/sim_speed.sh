@@ -23,10 +23,9 @@ echo "particles_requested,particles,boundary,path,renderer,threads,steps,step_ms
 for n in $COUNTS; do
   for path in cpu gpu; do
     "$BIN" simulate dam_break --particles "$n" --frames "$FRAMES" --$path -q --stats "$T/s.csv" || continue
-    awk -F, -v req=$n -v path=$path '
-      /^# / { if (match($0, /renderer [^;]*/)) renderer = substr($0, RSTART + 9, RLENGTH - 9);
-              if (match($0, /threads [0-9]+/)) th = substr($0, RSTART + 8, RLENGTH - 8);
-              if (match($0, / [0-9]+ fluid \+ [0-9]+ boundary/)) { split(substr($0, RSTART + 1, RLENGTH - 1), w, " "); n = w[1]; nb = w[4] } next }
+    awk -F, -v req=$n -v path=$path -v renderer="$(prov "$T/s.csv" gl_renderer)" -v th="$(prov "$T/s.csv" threads)" \
+        -v n="$(prov "$T/s.csv" fluid_particles)" -v nb="$(prov "$T/s.csv" boundary_particles)" '
+      /^# / { next }
       $1 == "frame" || $1 == 0 { next }
       { steps += $4; ms += $17; t = $2 }
       END { printf "%s,%s,%s,%s,\"%s\",%s,%d,%.1f,%.3f,%.1f,%.4f\n", req, n, nb, path, renderer, th, steps, ms, ms / steps,

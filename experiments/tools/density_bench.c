@@ -39,14 +39,20 @@ int main(int argc, char **argv)
     fs_particles p;
     int rc = fs_scene_load(&sc, argv[1]);
     if (!rc) rc = fs_scene_load_frame(&sc, 0, &p);
-    if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
+    if (rc) {
+        fprintf(stderr, "density_bench: %s\n", fs_error_message());
+        return rc;
+    }
     fs_particles_bounds(&p);
     fs_field f = {sc.radius, sc.volume_scale * 8 * sc.radius * sc.radius * sc.radius, sc.kernel,
                   sc.support_r * sc.radius, sc.iso};
     fs_density_grid ex, cur;
     rc = fs_density_grid_init(&ex, p.bmin, p.bmax, f.H, res);
     if (!rc) rc = fs_density_grid_init(&cur, p.bmin, p.bmax, f.H, res);
-    if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
+    if (rc) {
+        fprintf(stderr, "density_bench: %s\n", fs_error_message());
+        return rc;
+    }
     char dims[64];
     snprintf(dims, sizeof dims, "%dx%dx%d", ex.dim[0], ex.dim[1], ex.dim[2]);
     int threads = omp_get_max_threads();
@@ -62,7 +68,10 @@ int main(int argc, char **argv)
         if (!rc) rc = fs_density_grid_exact(g, &p, &ng, &f);
         double ms = fs_now_ms() - t0;
         fs_grid_free(&ng);
-        if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
+        if (rc) {
+            fprintf(stderr, "density_bench: %s\n", fs_error_message());
+            return rc;
+        }
         printf("%s,%zu,%d,%s,exact_cpu,%d,%.2f,%.3g,,CPU (C + OpenMP),%d,,\n", label, p.n, res, dims, r + 1, ms,
                fs_density_grid_rel_l2(g, &ex), threads);
         fflush(stdout);
@@ -74,14 +83,20 @@ int main(int argc, char **argv)
         return 1;
     }
     fs_slice_splat *ss = fs_slice_splat_create();
-    if (!ss) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return 1; }
+    if (!ss) {
+        fprintf(stderr, "density_bench: %s\n", fs_error_message());
+        return 1;
+    }
     for (int r = 0; r < runs + 1; r++) { /* run 0 warms up (shader JIT, first allocation), not printed */
         fs_stages st = {0};
         double t0 = fs_gl_stage_start();
         rc = fs_slice_splat_run(ss, &cur, &p, &f, sc.up_axis, clusters);
         fs_gl_stage_end(&st, "slice_splat", t0); /* the run ends with a read back: nothing left in flight */
         double ms = st.ms[0];
-        if (rc) { fprintf(stderr, "density_bench: %s\n", fs_error_message()); return rc; }
+        if (rc) {
+            fprintf(stderr, "density_bench: %s\n", fs_error_message());
+            return rc;
+        }
         if (r == 0) continue;
         char gpu[32] = ""; /* empty when the context has no GL clock */
         if (!isnan(st.gpu_ms[0])) snprintf(gpu, sizeof gpu, "%.2f", st.gpu_ms[0]);

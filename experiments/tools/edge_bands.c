@@ -102,8 +102,16 @@ static void classify(const fs_gbuffer *g, const fs_camera *cam, const double lo[
             int face = 0, face_hi = 0;
             double best = INFINITY;
             for (int a = 0; a < 3; a++) {
-                if (fabs(p[a] - lo[a]) < best) { best = fabs(p[a] - lo[a]); face = a; face_hi = 0; }
-                if (fabs(p[a] - hi[a]) < best) { best = fabs(p[a] - hi[a]); face = a; face_hi = 1; }
+                if (fabs(p[a] - lo[a]) < best) {
+                    best = fabs(p[a] - lo[a]);
+                    face = a;
+                    face_hi = 0;
+                }
+                if (fabs(p[a] - hi[a]) < best) {
+                    best = fabs(p[a] - hi[a]);
+                    face = a;
+                    face_hi = 1;
+                }
             }
             double d = INFINITY;
             for (int b = 0; b < 3; b++)
@@ -176,7 +184,10 @@ static int report(const char *path, const fs_gbuffer *ana, const fs_camera *cam,
         unsigned char *pix = calloc(n * 3, 1);
         if (pix) {
             for (size_t i = 0; i < n; i++) {
-                if (isnan(deg[i])) { pix[3 * i] = pix[3 * i + 1] = 60, pix[3 * i + 2] = 90; continue; }
+                if (isnan(deg[i])) {
+                    pix[3 * i] = pix[3 * i + 1] = 60, pix[3 * i + 2] = 90;
+                    continue;
+                }
                 float v = 1.0f - fminf(deg[i] / 10.0f, 1.0f);
                 unsigned char c = (unsigned char)(255 * v);
                 int edge = edge_dist[i] < band;
@@ -217,7 +228,9 @@ int main(int argc, char **argv)
         }
     }
     if (argc - a < 3) {
-        fprintf(stderr, "usage: edge_bands [--band R_MULT] [--profile] [--map OUT.png] SCENE.json ANALYTIC.exr METHOD.exr...\n");
+        fprintf(
+            stderr,
+            "usage: edge_bands [--band R_MULT] [--profile] [--map OUT.png] SCENE.json ANALYTIC.exr METHOD.exr...\n");
         return FS_ERR_INPUT;
     }
     fs_scene s;

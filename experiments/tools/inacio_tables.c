@@ -139,9 +139,13 @@ int main(int argc, char **argv)
     const char *table[NR] = {"I", "II", "I_slice"};
     for (int k = 0; k < NR; k++) {
         rr[k].m = fs_method_find(names[k]);
-        if (!rr[k].m) { fprintf(stderr, "inacio_tables: method %s not registered\n", names[k]); return 1; }
+        if (!rr[k].m) {
+            fprintf(stderr, "inacio_tables: method %s not registered\n", names[k]);
+            return 1;
+        }
         rr[k].scene = sc;
-        if (k == 2 && fs_scene_add_set(&rr[k].scene, "volume_raycast.build=slice")) return die("scene"); /* its volume stage */
+        if (k == 2 && fs_scene_add_set(&rr[k].scene, "volume_raycast.build=slice"))
+            return die("scene"); /* its volume stage */
         if (fs_run_open(&rr[k].run, rr[k].m, &rr[k].scene, NULL, &ctx)) return die(rr[k].m->name);
     }
 
@@ -153,7 +157,8 @@ int main(int argc, char **argv)
         double ms = fs_now_ms() - t0;
         fprintf(stderr, "inacio_tables: %ld %s: settle frame %d/%d: %.0f ms\n", want, argv[2], f, settle, ms);
         if (f == 1 && ms > limit_s * 1000) {
-            row(f, fs_sph_get_stats(sim)->t, fs_sph_get_stats(sim)->steps, "sim", "skipped_first_frame_over_limit", ms, NAN);
+            row(f, fs_sph_get_stats(sim)->t, fs_sph_get_stats(sim)->steps, "sim", "skipped_first_frame_over_limit", ms,
+                NAN);
             return 0;
         }
     }

@@ -29,6 +29,7 @@
 #include "method.h"
 #include "registry.h"
 #include "run.h"
+#include "study.h"
 #include "scene.h"
 #include "timing.h"
 #include <math.h>
@@ -75,7 +76,7 @@ static int write_png(fs_run *run, const fs_camera *cam, fs_run_image *im, const 
     return rc ? rc : fs_write_png(path, &img);
 }
 
-/* One size: a warm-up render, then runs timed ones. */
+/* One size: a warm-up render, then runs timed ones (fs_study_time_renders), one row per run and stage. */
 static int bench_size(const bench *b, fs_run *run, const fs_scene *base, int size, int runs)
 {
     static fs_scene s; /* large: not on the stack */
@@ -84,12 +85,10 @@ static int bench_size(const bench *b, fs_run *run, const fs_scene *base, int siz
     char note[1024];
     fs_scene_adopt_frame(&s, b->p, 0, note, sizeof note);
     fs_run_image im = {0};
-    int rc = fs_run_render(run, &s.camera, &im, NULL);
-    for (int r = 1; !rc && r <= runs; r++) {
-        fs_stages st = {0};
-        rc = fs_run_render(run, &s.camera, &im, &st);
-        if (!rc) rows(b, run, size, r, &st);
-    }
+    static fs_stages st[FS_STUDY_MAX_RUNS];
+    double median;
+    int rc = fs_study_time_renders(run, &s.camera, &im, runs, st, &median); /* the study's protocol */
+    for (int r = 1; !rc && r <= runs; r++) rows(b, run, size, r, &st[r - 1]);
     if (!rc) rc = write_png(run, &s.camera, &im, b->variant, size);
     fs_run_image_free(&im);
     return rc;

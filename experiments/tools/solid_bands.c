@@ -38,7 +38,8 @@ static void solid_distance(const fs_scene *s, const fs_camera *cam, const fs_gbu
             fs_camera_ray(cam, x + 0.5f, y + 0.5f, dir);
             float t = ref->depth[i] / (dir[0] * fwd[0] + dir[1] * fwd[1] + dir[2] * fwd[2]), p[3];
             for (int a = 0; a < 3; a++) p[a] = cam->eye[a] + t * dir[a];
-            for (int k = 0; k < s->obstacles.n; k++) dist[i] = fminf(dist[i], fabsf(fs_obstacle_distance(&s->obstacles.o[k], p)));
+            for (int k = 0; k < s->obstacles.n; k++)
+                dist[i] = fminf(dist[i], fabsf(fs_obstacle_distance(&s->obstacles.o[k], p)));
         }
 }
 
@@ -124,10 +125,12 @@ int main(int argc, char **argv)
     size_t n = (size_t)ref.w * ref.h;
     float *dist = malloc(n * sizeof *dist);
     unsigned char *hidden = malloc(n);
-    rc = dist && hidden ? fs_obstacle_hidden_mask(&s, &s.camera, &ref, hidden) : fs_fail(FS_ERR_RUNTIME, "out of memory");
+    rc = dist && hidden ? fs_obstacle_hidden_mask(&s, &s.camera, &ref, hidden)
+                        : fs_fail(FS_ERR_RUNTIME, "out of memory");
     if (!rc) {
         solid_distance(&s, &s.camera, &ref, dist);
-        printf("# solid_bands: scene %s, reference %s, band %g r (%g)\n", argv[a], argv[a + 1], band_r, band_r * s.radius);
+        printf("# solid_bands: scene %s, reference %s, band %g r (%g)\n", argv[a], argv[a + 1], band_r,
+               band_r * s.radius);
         printf("file,region,pixels,mean_deg,p95_deg,depth_mean_r\n");
     }
     for (int i = a + 2; i < argc && !rc; i++) rc = report(argv[i], &ref, dist, hidden, band_r * s.radius, s.radius);

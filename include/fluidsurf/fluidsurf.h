@@ -31,7 +31,9 @@
  * Version 2 added fluidsurf_depth_metrics and fluidsurf_metrics_compute2.
  * Version 3 added fluidsurf_mesh (fluidsurf_mesh_build and its accessors), and
  * messages that name settings as written ("raycast_pca.normals=x: ...") and list
- * the valid methods or parameters, with no command-line flags in them. */
+ * the valid methods or parameters, with no command-line flags in them.
+ * Version 4 added fluidsurf_compare (a study through compare's engine) and its
+ * tables, and fluidsurf_image_set_solid_depth. */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -44,7 +46,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 3 };
+enum { FLUIDSURF_API_VERSION = 4 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -85,8 +87,8 @@ typedef struct fluidsurf_field {
 
 typedef struct fluidsurf_camera {
     double eye[3], target[3], up[3];
-    double fov_deg;      /* vertical field of view */
-    int width, height;   /* pixels */
+    double fov_deg;    /* vertical field of view */
+    int width, height; /* pixels */
 } fluidsurf_camera;
 
 /* The defaults of a scene built from a bare particle file (README.md, "Scenes");
@@ -110,7 +112,8 @@ int fluidsurf_scene_get_camera(const fluidsurf_scene *s, fluidsurf_camera *c, in
 int fluidsurf_scene_set_camera(fluidsurf_scene *s, const fluidsurf_camera *c);
 /* The image size; the camera stays framed or placed. */
 int fluidsurf_scene_set_size(fluidsurf_scene *s, int width, int height);
-/* A method parameter, "method.param=value", as --set on the command line. */
+/* A method parameter, "method.param=value", as --set on the command line; parsed and checked
+ * against the method's parameters here (FLUIDSURF_ERR_INPUT, nothing stored, when it is bad). */
 int fluidsurf_scene_set(fluidsurf_scene *s, const char *setting);
 /* A scene with a particle source: its frames are first..last (0..0 for one file). */
 int fluidsurf_scene_frames(const fluidsurf_scene *s, int *first, int *last);
@@ -119,7 +122,7 @@ int fluidsurf_scene_read_frame(const fluidsurf_scene *s, int frame, fluidsurf_pa
 /* ---- methods ------------------------------------------------------------ */
 typedef struct fluidsurf_param {
     const char *name;
-    const char *type;    /* "float", "int", "bool", "enum" */
+    const char *type; /* "float", "int", "bool", "enum" */
     double default_value, min, max;
     const char *choices; /* enum: "a|b|c" (the value is the index), else "" */
     const char *help;    /* one line, with units */
@@ -156,6 +159,10 @@ int fluidsurf_image_read(const char *path, fluidsurf_image **out);
  * your own renderer. */
 int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *normal, const float *thickness,
                                 const float *coverage, const float *rgba, double radius, fluidsurf_image **out);
+/* Since version 4: the solids' depth at each pixel (w x h floats, 0 or INFINITY
+ * where no solid is hit), copied into the layer "solid_depth", so that metrics
+ * of an image made from arrays leave out what the solids hide, as compare does. */
+int fluidsurf_image_set_solid_depth(fluidsurf_image *im, const float *solid_depth);
 void fluidsurf_image_free(fluidsurf_image *im);
 int fluidsurf_image_width(const fluidsurf_image *im);
 int fluidsurf_image_height(const fluidsurf_image *im);
@@ -183,11 +190,11 @@ const char *fluidsurf_image_provenance_value(const fluidsurf_image *im, int i);
 
 /* ---- metrics ------------------------------------------------------------ */
 typedef struct fluidsurf_metrics {
-    double mask_iou;                 /* coverage IoU (1 when both are empty) */
-    double depth_bias_r;             /* mean depth difference where both cover, in r */
-    double depth_rmse_r;             /* RMS of the difference around the bias, in r */
-    double depth_p95_r;              /* 95th percentile of |difference - bias|: around the mean */
-    double normal_mean_deg;          /* mean normal angle where both cover */
+    double mask_iou;        /* coverage IoU (1 when both are empty) */
+    double depth_bias_r;    /* mean depth difference where both cover, in r */
+    double depth_rmse_r;    /* RMS of the difference around the bias, in r */
+    double depth_p95_r;     /* 95th percentile of |difference - bias|: around the mean */
+    double normal_mean_deg; /* mean normal angle where both cover */
     double normal_p95_deg;
     double interior_normal_mean_deg; /* >= 3 px from either silhouette */
     double psnr_db;                  /* shaded luminance; INFINITY when equal */
@@ -206,8 +213,8 @@ int fluidsurf_metrics_compute(const fluidsurf_image *method, const fluidsurf_ima
 /* Since version 2: the depth difference e (method - reference, in r, where both
  * cover) itself rather than around its mean, which a few far outliers pull. */
 typedef struct fluidsurf_depth_metrics {
-    double depth_median_r;     /* median of e (signed) */
-    double depth_abs_p50_r;    /* 50th, 95th, 99th percentiles of |e| (nearest rank) */
+    double depth_median_r;  /* median of e (signed) */
+    double depth_abs_p50_r; /* 50th, 95th, 99th percentiles of |e| (nearest rank) */
     double depth_abs_p95_r;
     double depth_abs_p99_r;
     double depth_over_1r_frac; /* share of the pixels both cover with |e| > 1 */
@@ -239,6 +246,31 @@ const uint32_t *fluidsurf_mesh_triangles(const fluidsurf_mesh *m);
 /* The radius r it was built with. */
 double fluidsurf_mesh_radius(const fluidsurf_mesh *m);
 void fluidsurf_mesh_free(fluidsurf_mesh *m);
+/* ---- studies (since version 4) ---------------------------------------- */
+typedef struct fluidsurf_study fluidsurf_study;
+enum { FLUIDSURF_STUDY_COUNTERS = 1 };
+
+/* Every method variant against every reference on every frame, through the
+ * engine of `fluidsurf compare` (common/study): the same metrics (in the scene,
+ * solids left out), the same timing protocol (one upload, a warm-up, `repeat`
+ * timed renders, their median; 0: 3), the same tables.
+ * frames: nframes particle sets (a sequence, framed and r settled on the
+ * first), or NULL for the scene's own particle source (a scene file's frames).
+ * methods: a comma list, NULL for every registered method. sets: nsets
+ * "method.param=value" settings; a comma list of values sweeps the parameter
+ * ("spheres.radius_scale=0.8,1.2"), as --set. references: nreferences of
+ * "reference", "reference:param=value,...", "analytic" (0: "reference").
+ * flags: FLUIDSURF_STUDY_COUNTERS adds a counting render per item. Writes no
+ * file. */
+int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes,
+                      const char *methods, const char *const *sets, int nsets, const char *const *references,
+                      int nreferences, int repeat, int flags, fluidsurf_study **out);
+/* A table as the CSV text compare writes into NAME.csv: "metrics", "timings",
+ * "temporal" (a sequence) or "counters" (with FLUIDSURF_STUDY_COUNTERS); its
+ * first line is the provenance ("# fluidsurf:..."). NULL when the study has no
+ * such table. Owned by the study. */
+const char *fluidsurf_study_table(const fluidsurf_study *st, const char *name);
+void fluidsurf_study_free(fluidsurf_study *st);
 /* cffi:end */
 
 #pragma GCC visibility pop

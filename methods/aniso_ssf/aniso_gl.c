@@ -57,17 +57,23 @@ int aniso_gl_run(aniso_gl *a, const fs_gl_grid *gg, size_t n, const fs_aniso_par
         glDispatchCompute((unsigned)((cnt + 63) / 64), 1, 1);
     }
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "aniso_ssf: OpenGL error in the anisotropy pass");
+    return glGetError() == GL_NO_ERROR ? FS_OK
+                                       : fs_fail(FS_ERR_RUNTIME, "aniso_ssf: OpenGL error in the anisotropy pass");
 }
 
 int aniso_gl_read(const aniso_gl *a, size_t s, float centre[3], float A[9], int *neighbours)
 {
-    if (!a->chunk || s / a->chunk >= (size_t)a->nbufs) return fs_fail(FS_ERR_RUNTIME, "aniso_ssf: slot %zu not computed", s);
+    if (!a->chunk || s / a->chunk >= (size_t)a->nbufs)
+        return fs_fail(FS_ERR_RUNTIME, "aniso_ssf: slot %zu not computed", s);
     float v[12];
     glGetNamedBufferSubData(a->bufs[s / a->chunk], (GLintptr)((s % a->chunk) * sizeof v), sizeof v, v);
     memcpy(centre, v, 3 * sizeof *v);
-    A[0] = v[4]; A[1] = A[3] = v[5]; A[2] = A[6] = v[6]; A[4] = v[7];
-    A[5] = A[7] = v[8]; A[8] = v[9];
+    A[0] = v[4];
+    A[1] = A[3] = v[5];
+    A[2] = A[6] = v[6];
+    A[4] = v[7];
+    A[5] = A[7] = v[8];
+    A[8] = v[9];
     if (neighbours) *neighbours = (int)v[10];
     return FS_OK;
 }

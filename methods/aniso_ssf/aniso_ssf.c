@@ -16,13 +16,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { F_NONE, F_GAUSSIAN, F_BILATERAL, F_CURVATURE, F_NARROW };
+typedef enum { F_NONE, F_GAUSSIAN, F_BILATERAL, F_CURVATURE, F_NARROW } ssf_filter;
 
 typedef struct aniso_ssf_params {
-    double anisotropy, filter, iterations, sigma, sigma_depth, range, narrow_threshold, narrow_clamp;
-    double max_radius_px;
+    bool anisotropy;
+    ssf_filter filter;
+    int iterations;
+    double sigma, sigma_depth, range, narrow_threshold, narrow_clamp;
+    int max_radius_px;
     fs_aniso_param_values aniso;
-    double thickness;
+    bool thickness;
 } aniso_ssf_params;
 
 #define FIELD(f) FS_PARAM_FIELD(aniso_ssf_params, f)
@@ -30,9 +33,11 @@ static const fs_param_def params[] = {
     {FIELD(anisotropy), FS_PARAM_BOOL, 1, 0, 1, NULL, "WPCA ellipsoid sprites (on) or spheres of radius r (off)"},
     {FIELD(filter), FS_PARAM_ENUM, F_NARROW, 0, 4, "none|gaussian|bilateral|curvature|narrow", "depth filter"},
     {FIELD(iterations), FS_PARAM_INT, 0, 0, 1000, NULL, "filter iterations; 0: the paper's (2, curvature flow 80)"},
-    {FIELD(sigma), FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL, "spatial Gaussian sigma of every filter kernel, multiples of r"},
+    {FIELD(sigma), FS_PARAM_FLOAT, 1.5, 0.05, 20.0, NULL,
+     "spatial Gaussian sigma of every filter kernel, multiples of r"},
     {FIELD(sigma_depth), FS_PARAM_FLOAT, 1.0, 0.01, 100.0, NULL, "bilateral range sigma on depth, multiples of r"},
-    {FIELD(range), FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL, "curvature flow: depth jump treated as a discontinuity, multiples of r"},
+    {FIELD(range), FS_PARAM_FLOAT, 2.0, 0.01, 100.0, NULL,
+     "curvature flow: depth jump treated as a discontinuity, multiples of r"},
     {FIELD(narrow_threshold), FS_PARAM_FLOAT, 10.0, 0.01, 1000.0, NULL,
      "narrow-range filter: depth range delta around the pixel (grows with kept samples), multiples of r"},
     {FIELD(narrow_clamp), FS_PARAM_FLOAT, 1.0, 0.0, 100.0, NULL,
@@ -69,8 +74,8 @@ static void destroy(void *self)
 {
     assf *s = self;
     if (!s) return;
-    unsigned progs[] = {s->prog_sph, s->prog_sph_thick, s->prog_ell, s->prog_ell_thick, s->prog_gauss,
-                        s->prog_bilat, s->prog_curv, s->prog_narrow, s->prog_normals};
+    unsigned progs[] = {s->prog_sph,   s->prog_sph_thick, s->prog_ell,    s->prog_ell_thick, s->prog_gauss,
+                        s->prog_bilat, s->prog_curv,      s->prog_narrow, s->prog_normals};
     for (size_t i = 0; i < sizeof progs / sizeof *progs; i++)
         if (progs[i]) glDeleteProgram(progs[i]);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
@@ -95,14 +100,22 @@ static void *create(const fs_method_setup *setup)
         return NULL;
     }
     assf *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "aniso_ssf: out of memory");
+        return NULL;
+    }
     s->f = *f;
-    if (fs_method_params_copy("aniso_ssf", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
+    if (fs_method_params_copy("aniso_ssf", setup, &s->params, sizeof s->params)) {
+        free(s);
+        return NULL;
+    }
     fs_aniso_params_set(&s->ap, &s->params.aniso, f->kernel, f->r);
     const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
-    if (!(s->prog_sph = fs_program_build(sph, NULL)) || !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||
-        !(s->prog_ell = fs_program_build(ell, NULL)) || !(s->prog_ell_thick = fs_program_build(ell, "MODE_THICKNESS 1")) ||
+    if (!(s->prog_sph = fs_program_build(sph, NULL)) ||
+        !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||
+        !(s->prog_ell = fs_program_build(ell, NULL)) ||
+        !(s->prog_ell_thick = fs_program_build(ell, "MODE_THICKNESS 1")) ||
         !(s->prog_gauss = comp("aniso_ssf/gaussian.comp.glsl")) ||
         !(s->prog_bilat = comp("aniso_ssf/bilateral.comp.glsl")) ||
         !(s->prog_curv = comp("aniso_ssf/curvature.comp.glsl")) ||
@@ -118,7 +131,10 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     assf *s = self;
-    if (s->has_own) { fs_grid_free(&s->own); s->has_own = 0; }
+    if (s->has_own) {
+        fs_grid_free(&s->own);
+        s->has_own = 0;
+    }
     if (!g || g->n != p->n || !(g->cell >= s->f.H)) {
         int rc = fs_grid_build(&s->own, p, s->f.H);
         if (rc) return rc;
@@ -163,7 +179,7 @@ static void pass(const assf *s, unsigned prog, unsigned src, unsigned dst, const
     glUseProgram(prog);
     glUniform1f(glGetUniformLocation(prog, "u_focal_px"), focal_px);
     glUniform1f(glGetUniformLocation(prog, "u_sigma"), (float)s->params.sigma * s->f.r);
-    glUniform1i(glGetUniformLocation(prog, "u_max_radius"), (int)s->params.max_radius_px);
+    glUniform1i(glGetUniformLocation(prog, "u_max_radius"), s->params.max_radius_px);
     glBindImageTexture(0, src, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, dst, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute((unsigned)(cam->width + 7) / 8, (unsigned)(cam->height + 7) / 8, 1);
@@ -173,12 +189,17 @@ static void pass(const assf *s, unsigned prog, unsigned src, unsigned dst, const
 /* Runs the chosen filter; returns the texture holding the filtered depth. */
 static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
 {
-    int filter = (int)s->params.filter, iters = (int)s->params.iterations;
+    int filter = s->params.filter, iters = s->params.iterations;
     if (iters == 0) iters = filter == F_CURVATURE ? 80 : 2;
     unsigned cur = s->target.tex[FS_TARGET_DEPTH];
     if (filter == F_NONE) return cur;
     int k = 0; /* next ping-pong texture */
-#define STEP(prog) do { pass(s, prog, cur, s->tex[k], cam, focal_px); cur = s->tex[k]; k ^= 1; } while (0)
+#define STEP(prog)                                                                                                     \
+    do {                                                                                                               \
+        pass(s, prog, cur, s->tex[k], cam, focal_px);                                                                  \
+        cur = s->tex[k];                                                                                               \
+        k ^= 1;                                                                                                        \
+    } while (0)
     float range = (float)s->params.range * s->f.r;
     for (int it = 0; it < iters; it++) {
         switch (filter) {
@@ -203,7 +224,8 @@ static unsigned run_filter(assf *s, const fs_camera *cam, float focal_px)
             break;
         default: /* narrow-range: 1D passes each iteration */
             glUseProgram(s->prog_narrow);
-            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_threshold"), (float)s->params.narrow_threshold * s->f.r);
+            glUniform1f(glGetUniformLocation(s->prog_narrow, "u_threshold"),
+                        (float)s->params.narrow_threshold * s->f.r);
             glUniform1f(glGetUniformLocation(s->prog_narrow, "u_clamp"), (float)s->params.narrow_clamp * s->f.r);
             glUniform1i(glGetUniformLocation(s->prog_narrow, "u_axis"), 0);
             STEP(s->prog_narrow);
@@ -227,7 +249,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (!s->gg.start) return fs_fail(FS_ERR_RUNTIME, "aniso_ssf: render before upload");
     int rc = ensure_targets(s, cam->width, cam->height);
     if (rc) return rc;
-    int aniso = s->params.anisotropy != 0;
+    int aniso = s->params.anisotropy;
     float proj[16], r = s->f.r;
     fs_camera_proj_matrix(cam, proj);
     float focal_px = proj[5] * 0.5f * (float)cam->height;
@@ -261,7 +283,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
     double t4 = fs_gl_stage_end(t, "normals", t3);
 
-    if (s->params.thickness != 0) {
+    if (s->params.thickness) {
         fs_gl_target_begin_thickness(&s->target);
         camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
         draw_sprites(s, aniso);
@@ -280,7 +302,7 @@ const fs_method fs_method_aniso_ssf = {
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
     .counters = FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) |
-                FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_TEXELS),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(aniso_ssf_params),

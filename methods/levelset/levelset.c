@@ -1,5 +1,6 @@
 /* levelset: OpenVDB's union-of-spheres narrow-band level set of the particles
- * (ParticlesToLevelSet, as `vdb_tool -points2ls`), optionally dilated, smoothed
+ * (ParticlesToLevelSet, as `vdb_tool -points2ls`; or points::rasterizeSpheres,
+ * or points::rasterizeSmoothSpheres' Zhu & Bridson surface), optionally dilated, smoothed
  * and eroded (LevelSetFilter), ray traced on the CPU with OpenVDB's level-set
  * ray intersector, one ray per pixel (OpenMP over rows). A baseline users pick
  * instead of the papers' methods (Museth 2013, OpenVDB). The OpenVDB calls live
@@ -16,12 +17,19 @@
 #include <stdlib.h>
 
 typedef struct levelset_params {
-    double radius, voxel, half_width, dilate, smooth, smooth_iters, erode, thickness;
+    double radius, voxel, half_width;
+    int dilate;
+    fs_ls_smoothing smooth;
+    int smooth_iters, erode;
+    bool thickness;
+    fs_ls_rasterizer rasterizer;
+    double search;
 } levelset_params;
 
 #define FIELD(f) FS_PARAM_FIELD(levelset_params, f)
 static const fs_param_def params[] = {
-    {FIELD(radius), FS_PARAM_FLOAT, 2.0, 0.01, 64.0, NULL, "sphere radius of each particle, in multiples of r (>= 1.5 voxels)"},
+    {FIELD(radius), FS_PARAM_FLOAT, 2.0, 0.01, 64.0, NULL,
+     "sphere radius of each particle, in multiples of r (>= 1.5 voxels)"},
     {FIELD(voxel), FS_PARAM_FLOAT, 0.5, 0.01, 16.0, NULL, "voxel size of the level set, in multiples of r"},
     {FIELD(half_width), FS_PARAM_FLOAT, 3.0, 1.0, 32.0, NULL, "narrow-band half width, in voxels"},
     {FIELD(dilate), FS_PARAM_INT, 0, 0, 16, NULL, "recipe: dilate the level set by this many voxels first (0: off)"},
@@ -30,6 +38,10 @@ static const fs_param_def params[] = {
     {FIELD(smooth_iters), FS_PARAM_INT, 1, 0, 64, NULL, "recipe: iterations of the smoothing filter"},
     {FIELD(erode), FS_PARAM_INT, 0, 0, 16, NULL, "recipe: erode by this many voxels last (0: off)"},
     {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "march on through every layer for the thickness (on/off)"},
+    {FIELD(rasterizer), FS_PARAM_ENUM, FS_LS_RASTER_PARTICLES, 0, 2, "particles|spheres|smooth",
+     "tools::ParticlesToLevelSet, points::rasterizeSpheres or points::rasterizeSmoothSpheres (Zhu & Bridson)"},
+    {FIELD(search), FS_PARAM_FLOAT, 4.0, 0.01, 64.0, NULL,
+     "smooth: Zhu & Bridson's kernel (search) radius, in multiples of r (>= radius)"},
 };
 #undef FIELD
 
@@ -53,19 +65,35 @@ static void *create(const fs_method_setup *setup)
     levelset_params p;
     if (fs_method_check_field("levelset", &setup->field)) return NULL;
     if (fs_method_params_copy("levelset", setup, &p, sizeof p)) return NULL;
-    if (p.radius < 1.5 * p.voxel) {
-        fs_fail(FS_ERR_INPUT, "levelset: radius %g r is under 1.5 voxels (voxel %g r): OpenVDB's rasteriser drops such particles",
+    if (p.rasterizer == FS_LS_RASTER_PARTICLES && p.radius < 1.5 * p.voxel) {
+        fs_fail(FS_ERR_INPUT,
+                "levelset: radius %g r is under 1.5 voxels (voxel %g r): OpenVDB's rasteriser drops such particles",
                 p.radius, p.voxel);
         return NULL;
     }
+    if (p.rasterizer == FS_LS_RASTER_SMOOTH && p.search < p.radius) {
+        fs_fail(FS_ERR_INPUT,
+                "levelset: search %g r is under the radius %g r: rasterizeSmoothSpheres needs search >= radius",
+                p.search, p.radius);
+        return NULL;
+    }
     levelset *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "out of memory");
+        return NULL;
+    }
     s->field = setup->field;
     double r = setup->field.r;
-    s->b = (fs_ls_build){.voxel = p.voxel * r, .radius = p.radius * r, .half_width = p.half_width,
-                         .dilate = (int)p.dilate, .smooth = (int)p.smooth, .smooth_iters = (int)p.smooth_iters,
-                         .erode = (int)p.erode};
-    s->thickness = p.thickness != 0;
+    s->b = (fs_ls_build){.voxel = p.voxel * r,
+                         .radius = p.radius * r,
+                         .half_width = p.half_width,
+                         .dilate = p.dilate,
+                         .smooth = p.smooth,
+                         .smooth_iters = p.smooth_iters,
+                         .erode = p.erode,
+                         .rasterizer = p.rasterizer,
+                         .search = p.search * r};
+    s->thickness = p.thickness;
     return s;
 }
 
@@ -117,7 +145,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
                 fs_camera_to_view_dir(cam, nw, nv);
                 fs_camera_to_view_dir(cam, d, dv);
                 float len = sqrtf(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
-                if (!(len > 0)) { nv[0] = nv[1] = 0; nv[2] = len = 1; } /* a flat SDF spot: face the eye */
+                if (!(len > 0)) {
+                    nv[0] = nv[1] = 0;
+                    nv[2] = len = 1;
+                } /* a flat SDF spot: face the eye */
                 float sg = nv[0] * dv[0] + nv[1] * dv[1] + nv[2] * dv[2] > 0 ? -1.0f : 1.0f; /* face the camera */
                 for (int a = 0; a < 3; a++) out->normal[3 * id + a] = sg * nv[a] / len;
                 out->depth[id] = (float)h.t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
@@ -137,7 +168,8 @@ static int export_file(void *self, const char *path)
 {
     levelset *s = self;
     if (!s->grid) return fs_fail(FS_ERR_RUNTIME, "levelset: export before upload");
-    if (!fs_path_ends_with(path, ".vdb")) return fs_fail(FS_ERR_INPUT, "%s: levelset exports .vdb (the level set)", path);
+    if (!fs_path_ends_with(path, ".vdb"))
+        return fs_fail(FS_ERR_INPUT, "%s: levelset exports .vdb (the level set)", path);
     return fs_ls_grid_write(s->grid, path);
 }
 

@@ -1,7 +1,9 @@
 // Thin OpenVDB adapter of the levelset method (levelset_vdb.h). Only level-set
-// tools here (no PointDataGrid headers, which compile slowly).
+// tools here (no PointDataGrid headers, which compile slowly: the point
+// rasterisers are in levelset_points.cpp).
 #include "levelset_vdb.h"
 #include "fs_error.h"
+#include "levelset_points.hpp"
 #include "output_file.h"
 
 #include <openvdb/openvdb.h>
@@ -24,7 +26,8 @@ struct fs_ls_tracer {
     double voxel;
 };
 
-namespace {
+namespace
+{
 
 // The particle-list adaptor ParticlesToLevelSet reads (as vdb_tool -points2ls).
 struct ParticleList {
@@ -41,14 +44,23 @@ struct ParticleList {
     }
 };
 
-openvdb::FloatGrid::Ptr build(const float *x, const float *y, const float *z, size_t n, const fs_ls_build *b)
+// tools::ParticlesToLevelSet (as vdb_tool -points2ls): the default rasteriser.
+openvdb::FloatGrid::Ptr particles_to_level_set(const float *x, const float *y, const float *z, size_t n,
+                                               const fs_ls_build *b)
 {
     openvdb::FloatGrid::Ptr grid = openvdb::createLevelSet<openvdb::FloatGrid>(b->voxel, b->half_width);
-    grid->setName("surface");
     ParticleList pl{x, y, z, n, b->radius};
     openvdb::tools::ParticlesToLevelSet<openvdb::FloatGrid> raster(*grid);
     raster.rasterizeSpheres(pl, b->radius);
     raster.finalize(true);
+    return grid;
+}
+
+openvdb::FloatGrid::Ptr build(const float *x, const float *y, const float *z, size_t n, const fs_ls_build *b)
+{
+    openvdb::FloatGrid::Ptr grid = b->rasterizer == FS_LS_RASTER_PARTICLES ? particles_to_level_set(x, y, z, n, b)
+                                                                           : fs_ls_points_rasterize(x, y, z, n, b);
+    grid->setName("surface");
     if (b->dilate > 0 || b->smooth != FS_LS_SMOOTH_OFF || b->erode > 0) {
         openvdb::tools::LevelSetFilter<openvdb::FloatGrid> filter(*grid);
         if (b->dilate > 0) filter.offset(-b->dilate * b->voxel); // a negative offset grows the surface

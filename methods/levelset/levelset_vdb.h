@@ -1,6 +1,7 @@
 /* Thin OpenVDB adapter of the levelset method (docs/DESIGN.md, "Layers": C++ only
  * behind extern "C"): particles -> narrow-band SDF by openvdb::tools::
- * ParticlesToLevelSet, the optional LevelSetFilter recipe, per-thread ray tracers
+ * ParticlesToLevelSet or by openvdb::points::rasterizeSpheres /
+ * rasterizeSmoothSpheres (levelset_points.cpp), the optional LevelSetFilter recipe, per-thread ray tracers
  * (openvdb::tools::LevelSetRayIntersector) and the .vdb writer. Built only with
  * FS_WITH_OPENVDB=ON. */
 #ifndef FS_LEVELSET_VDB_H
@@ -11,16 +12,20 @@
 extern "C" {
 #endif
 
-enum { FS_LS_SMOOTH_OFF = 0, FS_LS_SMOOTH_GAUSSIAN = 1, FS_LS_SMOOTH_MEANCURV = 2 };
+typedef enum { FS_LS_SMOOTH_OFF = 0, FS_LS_SMOOTH_GAUSSIAN = 1, FS_LS_SMOOTH_MEANCURV = 2 } fs_ls_smoothing;
+/* tools::ParticlesToLevelSet, points::rasterizeSpheres, points::rasterizeSmoothSpheres */
+typedef enum { FS_LS_RASTER_PARTICLES = 0, FS_LS_RASTER_SPHERES = 1, FS_LS_RASTER_SMOOTH = 2 } fs_ls_rasterizer;
 
 typedef struct fs_ls_build {
-    double voxel;      /* voxel size, scene units */
-    double radius;     /* sphere radius, scene units (>= 1.5 voxels) */
-    double half_width; /* narrow-band half width, voxels */
+    double voxel;                            /* voxel size, scene units */
+    double radius;                           /* sphere radius, scene units (>= 1.5 voxels) */
+    double half_width;                       /* narrow-band half width, voxels */
     int dilate, smooth, smooth_iters, erode; /* the recipe: dilate/erode in voxels */
+    int rasterizer;                          /* FS_LS_RASTER_* */
+    double search; /* smooth: Zhu & Bridson's kernel (search) radius, scene units (>= radius) */
 } fs_ls_build;
 
-typedef struct fs_ls_grid fs_ls_grid; /* the level set (openvdb::FloatGrid) */
+typedef struct fs_ls_grid fs_ls_grid;     /* the level set (openvdb::FloatGrid) */
 typedef struct fs_ls_tracer fs_ls_tracer; /* one thread's ray intersector */
 
 /* Builds the level set of n particles; NULL with fs_fail set on failure. */
@@ -36,9 +41,9 @@ void fs_ls_tracer_free(fs_ls_tracer *t);
 
 typedef struct fs_ls_hit {
     int hit;
-    double t;        /* distance from eye to the first entry (dir is unit) */
-    double n[3];     /* unit world normal (outward SDF gradient) at the entry */
-    double thick;    /* sum of inside path lengths over every layer (0 when off) */
+    double t;         /* distance from eye to the first entry (dir is unit) */
+    double n[3];      /* unit world normal (outward SDF gradient) at the entry */
+    double thick;     /* sum of inside path lengths over every layer (0 when off) */
     uint64_t queries; /* intersector queries made for this ray */
 } fs_ls_hit;
 /* One ray from eye along unit dir. thickness: march on through the layers. */

@@ -11,25 +11,49 @@
 #include "mesh.h"
 #include "mesh_export.h"
 #include "mesh_gl.h"
+#include "mesh_normals.h"
 #include "mesh_smooth.h"
+#include "mesh_weights.h"
 #include "method.h"
+#include "zhu_bridson.h"
 #include <stdlib.h>
 
 typedef struct mesh_params {
-    double cube, smooth, smooth_iters, thickness, field;
+    double cube;
+    fs_mesh_smoothing smooth;
+    int smooth_iters;
+    bool thickness;
+    fs_field_choice field;
     fs_aniso_param_values aniso;
+    double weights_norm;
+    int normal_iters;
+    bool attributes;
+    double zb_radius;
 } mesh_params;
 
 extern const fs_method fs_method_mesh;
 
 #define FIELD(f) FS_PARAM_FIELD(mesh_params, f)
 static const fs_param_def params[] = {
-    {FIELD(cube), FS_PARAM_FLOAT, 0.5, 0.01, 16.0, NULL, "voxel (marching cube) size of the sampled field, in multiples of r"},
-    {FIELD(smooth), FS_PARAM_ENUM, FS_MESH_SMOOTH_OFF, 0, 2, "off|laplacian|taubin", "mesh smoothing after meshing"},
-    {FIELD(smooth_iters), FS_PARAM_INT, 10, 0, 1000, NULL, "smoothing iterations (a Taubin one is a lambda and a mu pass)"},
-    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "signed additive thickness pass over front and back faces (on/off)"},
-    {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
+    {FIELD(cube), FS_PARAM_FLOAT, 0.5, 0.01, 16.0, NULL,
+     "voxel (marching cube) size of the sampled field, in multiples of r"},
+    {FIELD(smooth), FS_PARAM_ENUM, FS_MESH_SMOOTH_OFF, 0, 3, "off|laplacian|taubin|weighted",
+     "mesh smoothing after meshing (weighted: splashsurf's, Loeschner et al. 2023)"},
+    {FIELD(smooth_iters), FS_PARAM_INT, 10, 0, 1000, NULL,
+     "smoothing iterations (a Taubin one is a lambda and a mu pass)"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL,
+     "signed additive thickness pass over front and back faces (on/off)"},
+    {FIELD(field), FS_PARAM_ENUM, 0, 0, 2, "isotropic|anisotropic|zhu_bridson",
+     "SPH kernel, Yu & Turk's anisotropic kernel, or Zhu & Bridson's |x - xbar| - r (meshed at 0)"},
     FS_ANISO_PARAM_DEFS(mesh_params),
+    {FIELD(weights_norm), FS_PARAM_FLOAT, FS_MESH_WEIGHTS_NORM, 0.01, 1000.0, NULL,
+     "weighted: weighted neighbour count that gets weight 1 (splashsurf's normalization)"},
+    {FIELD(normal_iters), FS_PARAM_INT, FS_MESH_NORMAL_ITERS, 0, 1000, NULL,
+     "weighted: smoothing passes of the area-weighted vertex normals"},
+    {FIELD(attributes), FS_PARAM_BOOL, 0, 0, 1, NULL,
+     "interpolate the particles' velocity and colour onto the vertices, for the .ply/.vtk/.vtp export (on/off)"},
+    {FIELD(zb_radius), FS_PARAM_FLOAT, FS_ZB_RADIUS, 1.0, 40.0, NULL,
+     "zhu_bridson: kernel radius R, multiples of r (the paper's twice the particle spacing: 4)"},
 };
 #undef FIELD
 
@@ -52,8 +76,15 @@ static void destroy(void *self)
 
 static void opts_of(const mesh_params *p, const fs_field *f, fs_mesh_opts *o)
 {
-    *o = (fs_mesh_opts){.cube = p->cube * f->r, .smooth = (int)p->smooth, .smooth_iters = (int)p->smooth_iters,
-                        .aniso = p->field != 0};
+    *o = (fs_mesh_opts){.cube = p->cube * f->r,
+                        .smooth = p->smooth,
+                        .smooth_iters = p->smooth_iters,
+                        .aniso = p->field == FS_FIELD_ANISOTROPIC,
+                        .zb = p->field == FS_FIELD_ZHU_BRIDSON,
+                        .zb_radius = p->zb_radius * f->r,
+                        .weights_norm = p->weights_norm,
+                        .normal_iters = p->normal_iters,
+                        .attributes = p->attributes};
     fs_aniso_params_set(&o->ap, &p->aniso, f->kernel, f->r);
 }
 
@@ -71,11 +102,17 @@ static void *create(const fs_method_setup *setup)
     if (fs_method_check_field("mesh", &setup->field)) return NULL;
     if (fs_method_params_copy("mesh", setup, &p, sizeof p)) return NULL;
     mesh *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "out of memory");
+        return NULL;
+    }
     s->field = setup->field;
     opts_of(&p, &setup->field, &s->opts);
-    s->thickness = p.thickness != 0;
-    if (fs_mesh_gl_init(&s->gl)) { free(s); return NULL; }
+    s->thickness = p.thickness;
+    if (fs_mesh_gl_init(&s->gl)) {
+        free(s);
+        return NULL;
+    }
     return s;
 }
 

@@ -6,8 +6,11 @@
 #include "fs_error.h"
 #include "memory.h"
 #include "mesh_sample.h"
+#include "mesh_attributes.h"
+#include "mesh_normals.h"
 #include "mesh_smooth.h"
 #include "mesh_vdb.h"
+#include "mesh_weights.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,8 +33,10 @@ static int check_memory(const fs_grid *g, double cube, double limit)
     double est = (double)near * per_cell * per_cell * per_cell * FS_MESH_INDEX_BYTES;
     if (est <= limit) return FS_OK;
     double fit = cube * cbrt(est / limit) * 1.05;
-    return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs about %.3g GB for its sample volume, %.3g GB are available: use cube >= %.3g (scene units)",
-                   cube, est / 1e9, limit / 1e9, fit);
+    return fs_fail(
+        FS_ERR_INPUT,
+        "mesh: cube %g needs about %.3g GB for its sample volume, %.3g GB are available: use cube >= %.3g (scene units)",
+        cube, est / 1e9, limit / 1e9, fit);
 }
 
 /* Vertex normals -grad phi / |grad phi| at each vertex (0 where the gradient
@@ -48,6 +53,60 @@ static int vertex_normals(fs_trimesh *m, const fs_field_eval *e, fs_mesh_work *w
         terms += fs_field_eval_at(e, m->pos + 3 * v, &phi, g);
         float len = sqrtf(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
         for (int a = 0; a < 3; a++) n[a] = len > 0 ? -g[a] / len : 0;
+    }
+    w->voxels += (uint64_t)m->nv;
+    w->terms += terms;
+    return FS_OK;
+}
+
+/* The smoothing; weighted: splashsurf's weights from the unsmoothed vertices
+ * (its order), their particle terms counted as neighbours visited. */
+static int smooth(fs_trimesh *m, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o)
+{
+    if (o->smooth != FS_MESH_SMOOTH_WEIGHTED) return fs_mesh_smooth(m, o->smooth, o->smooth_iters, NULL);
+    float *wt = malloc((m->nv ? m->nv : 1) * sizeof *wt);
+    if (!wt) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for the smoothing weights");
+    uint64_t terms = 0;
+    int rc = fs_mesh_weights(m, g, f, o->weights_norm > 0 ? o->weights_norm : FS_MESH_WEIGHTS_NORM, wt, &terms);
+    fs_count_add(FS_CNT_NEIGHBOURS, terms);
+    if (!rc) rc = fs_mesh_smooth(m, o->smooth, o->smooth_iters, wt);
+    free(wt);
+    return rc;
+}
+
+/* field=zhu_bridson: R - phi on the volume (meshed at iso = R: phi = 0), over a
+ * grid of cell >= R. */
+static int sample_zb(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o, double R,
+                     fs_mesh_volume **vol, fs_mesh_work *w)
+{
+    double limit = o->mem_limit > 0 ? o->mem_limit : (double)fs_memory_available();
+    size_t need = 0;
+    int rc = check_memory(g, o->cube, limit);
+    if (rc) return rc;
+    *vol = fs_mesh_volume_create(p->x, p->y, p->z, p->n, o->cube, R, R, o->keep_all, limit, &need);
+    if (!*vol && need)
+        return fs_fail(FS_ERR_INPUT,
+                       "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g", o->cube,
+                       need, (double)need * FS_MESH_INDEX_BYTES / 1e9, limit / 1e9,
+                       o->cube * cbrt((double)need * FS_MESH_INDEX_BYTES / limit) * 1.05);
+    if (!*vol) return FS_ERR_RUNTIME;
+    return fs_mesh_sample_zb(*vol, o->cube, R, f->r, g, w);
+}
+
+/* field=zhu_bridson: vertex normals grad phi / |grad phi| (outward). */
+static int vertex_normals_zb(fs_trimesh *m, const fs_grid *g, double R, double r, fs_mesh_work *w)
+{
+    m->nrm = malloc((m->nv ? m->nv : 1) * 3 * sizeof *m->nrm);
+    if (!m->nrm) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu normals", m->nv);
+    long nv = (long)m->nv;
+    uint64_t terms = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : terms)
+    for (long v = 0; v < nv; v++) {
+        double phi;
+        float gr[3], *n = m->nrm + 3 * v;
+        terms += fs_zb_eval(g, R, r, m->pos + 3 * v, &phi, gr);
+        float len = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
+        for (int a = 0; a < 3; a++) n[a] = len > 0 ? gr[a] / len : 0;
     }
     w->voxels += (uint64_t)m->nv;
     w->terms += terms;
@@ -77,8 +136,9 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
     *vol = fs_mesh_volume_create(x, y, z, cg->n, o->cube, reach, f->iso, o->keep_all, limit, &need);
     free(cx);
     if (!*vol && need)
-        return fs_fail(FS_ERR_INPUT, "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g",
-                       o->cube, need, (double)need * FS_MESH_INDEX_BYTES / 1e9, limit / 1e9,
+        return fs_fail(FS_ERR_INPUT,
+                       "mesh: cube %g needs %zu leaves (%.3g GB), %.3g GB are available: use cube >= %.3g", o->cube,
+                       need, (double)need * FS_MESH_INDEX_BYTES / 1e9, limit / 1e9,
                        o->cube * cbrt((double)need * FS_MESH_INDEX_BYTES / limit) * 1.05);
     if (!*vol) return FS_ERR_RUNTIME;
     return fs_mesh_sample(*vol, o->cube, f, g, ak, w);
@@ -93,29 +153,44 @@ int fs_mesh_build(const fs_particles *p, const fs_grid *g, const fs_field *f, co
     fs_mesh_volume *vol = NULL;
     fs_mesh_work w = {0, 0};
     double t0 = fs_now_ms();
+    double zr = o->zb_radius > 0 ? o->zb_radius : FS_ZB_RADIUS * f->r, iso = o->zb ? zr : f->iso;
+    fs_grid zg;
+    int zg_own = 0;
+    const fs_grid *zgp = g;
     int rc = o->aniso ? fs_aniso_kernels_build(&ak, p, g, &o->ap, f->H) : FS_OK;
-    if (!rc) rc = sample(p, g, f, o, o->aniso ? &ak : NULL, &vol, &w);
+    if (!rc && o->zb) rc = fs_grid_fit(g, p, (float)zr, &zg, &zg_own, &zgp);
+    if (!rc) rc = o->zb ? sample_zb(p, zgp, f, o, zr, &vol, &w) : sample(p, g, f, o, o->aniso ? &ak : NULL, &vol, &w);
     fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
     fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
     if (!rc) stage(st, "field", t0);
     double t1 = fs_now_ms();
-    if (!rc) rc = fs_mesh_volume_mesh(vol, f->iso, out);
+    if (!rc) rc = fs_mesh_volume_mesh(vol, iso, out);
     fs_mesh_volume_free(vol);
     if (!rc && fs_trimesh_volume6(out) < 0) fs_trimesh_flip(out); /* wound outward, whatever the library does */
     if (!rc) stage(st, "mesh", t1);
     double t2 = fs_now_ms();
+    int weighted = o->smooth == FS_MESH_SMOOTH_WEIGHTED;
     if (!rc && o->smooth && o->smooth_iters > 0) {
-        rc = fs_mesh_smooth(out, o->smooth, o->smooth_iters);
+        rc = smooth(out, g, f, o);
         if (!rc) stage(st, "smooth", t2);
     }
     double t3 = fs_now_ms();
     fs_field_eval e = {*f, g, o->aniso ? &ak : NULL};
     w = (fs_mesh_work){0, 0};
-    if (!rc) rc = vertex_normals(out, &e, &w);
+    if (!rc)
+        rc = weighted ? fs_mesh_normals_smoothed(out, o->normal_iters)
+            : o->zb   ? vertex_normals_zb(out, zgp, zr, f->r, &w)
+                      : vertex_normals(out, &e, &w);
     fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
     fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
     if (!rc) stage(st, "normals", t3);
+    double t4 = fs_now_ms();
+    if (!rc && o->attributes) {
+        rc = fs_mesh_attributes(out, p, g, f);
+        if (!rc) stage(st, "attributes", t4);
+    }
     fs_aniso_kernels_free(&ak);
+    if (zg_own) fs_grid_free(&zg);
     if (rc) fs_trimesh_free(out);
     return rc;
 }

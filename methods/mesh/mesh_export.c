@@ -10,22 +10,29 @@
 int fs_mesh_export_known(const char *path)
 {
     return fs_path_ends_with(path, ".ply") || fs_path_ends_with(path, ".obj") || fs_path_ends_with(path, ".vtk") ||
-           fs_path_ends_with(path, ".vtp");
+        fs_path_ends_with(path, ".vtp");
 }
 
-/* Binary little-endian PLY: vertex x y z nx ny nz (float), face uchar count +
- * uint indices, as MeshLab, Blender and ParaView read it. */
+/* Binary little-endian PLY: vertex x y z nx ny nz (float), then vx vy vz and
+ * red green blue (float, linear, as fluidsurf's particle PLYs) when the mesh
+ * has them, face uchar count + uint indices, as MeshLab, Blender and ParaView
+ * read it. */
 static int write_ply(FILE *f, const fs_trimesh *m)
 {
     fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment fluidsurf mesh %s\n", fs_version);
     fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", m->nv);
     fprintf(f, "property float nx\nproperty float ny\nproperty float nz\n");
+    if (m->vel) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n");
+    if (m->col) fprintf(f, "property float red\nproperty float green\nproperty float blue\n");
     fprintf(f, "element face %zu\nproperty list uchar uint vertex_indices\nend_header\n", m->nt);
     for (size_t v = 0; v < m->nv; v++) {
-        float rec[6];
+        float rec[12];
+        size_t k = 6;
         memcpy(rec, m->pos + 3 * v, 3 * sizeof *rec);
         memcpy(rec + 3, m->nrm + 3 * v, 3 * sizeof *rec);
-        if (fwrite(rec, sizeof rec, 1, f) != 1) return -1;
+        if (m->vel) memcpy(rec + k, m->vel + 3 * v, 3 * sizeof *rec), k += 3;
+        if (m->col) memcpy(rec + k, m->col + 3 * v, 3 * sizeof *rec), k += 3;
+        if (fwrite(rec, sizeof *rec, k, f) != k) return -1;
     }
     for (size_t t = 0; t < m->nt; t++) {
         unsigned char rec[13];
@@ -36,7 +43,7 @@ static int write_ply(FILE *f, const fs_trimesh *m)
     return 0;
 }
 
-/* OBJ: v, vn with the same index, f v//vn (1-based). */
+/* OBJ: v, vn with the same index, f v//vn (1-based); no vertex attributes (OBJ has none). */
 static int write_obj(FILE *f, const fs_trimesh *m)
 {
     fprintf(f, "# fluidsurf mesh %s\n", fs_version);

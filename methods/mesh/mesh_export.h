@@ -13,7 +13,8 @@ extern "C" {
 #define FS_MESH_EXPORTS ".ply, .obj, .vtk, .vtp"
 /* 1 when path's extension is one of them. */
 int fs_mesh_export_known(const char *path);
-/* Writes m (positions, normals, triangles) to path by its extension;
+/* Writes m (positions, normals, triangles; velocity and colour when m has them,
+ * except to .obj) to path by its extension;
  * FS_ERR_INPUT for an unknown one or a folder that cannot be written. */
 int fs_mesh_export(const fs_trimesh *m, const char *path);
 /* .vtk (xml 0) or .vtp (xml 1) through VTK, to the temporary path tmp

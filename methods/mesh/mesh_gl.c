@@ -14,7 +14,10 @@ int fs_mesh_gl_init(fs_mesh_gl *G)
     const char *st[] = {"mesh/mesh.vert.glsl", "mesh/mesh.frag.glsl", NULL};
     G->prog_surface = fs_program_build(st, NULL);
     if (G->prog_surface) G->prog_thickness = fs_program_build(st, "MODE_THICKNESS 1");
-    if (!G->prog_thickness) { fs_mesh_gl_free(G); return FS_ERR_RUNTIME; }
+    if (!G->prog_thickness) {
+        fs_mesh_gl_free(G);
+        return FS_ERR_RUNTIME;
+    }
     glCreateVertexArrays(1, &G->vao);
     for (unsigned a = 0; a < 2; a++) {
         glEnableVertexArrayAttrib(G->vao, a);

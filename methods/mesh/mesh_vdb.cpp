@@ -26,18 +26,19 @@ using LeafMins = std::array<float, 7>;
 
 struct fs_mesh_volume {
     openvdb::FloatGrid::Ptr grid;
-    std::vector<int> origin;         // 3 per leaf, sorted by x, then y, then z
-    std::vector<size_t> slab;        // slab s: leaves slab[s] .. slab[s + 1] - 1
-    std::vector<LeafMins> mins;      // per leaf, once its slab is filled
+    std::vector<int> origin;                    // 3 per leaf, sorted by x, then y, then z
+    std::vector<size_t> slab;                   // slab s: leaves slab[s] .. slab[s + 1] - 1
+    std::vector<LeafMins> mins;                 // per leaf, once its slab is filled
     std::unordered_map<uint64_t, size_t> index; // leaf lattice position -> leaf
-    std::vector<std::vector<float>> buf; // per slab, alive while it or its neighbour is undecided
+    std::vector<std::vector<float>> buf;        // per slab, alive while it or its neighbour is undecided
     float iso;
     bool keep_all;
     double cube, mem_limit;
     size_t kept = 0;
 };
 
-namespace {
+namespace
+{
 
 // Touches, for every point, the leaves of its box grown by reach (one mask
 // tree per task, joined by topology union).
@@ -46,7 +47,9 @@ struct TouchLeaves {
     double cube, reach;
     openvdb::MaskTree tree;
     TouchLeaves(const float *x_, const float *y_, const float *z_, double c, double r)
-        : x(x_), y(y_), z(z_), cube(c), reach(r) {}
+        : x(x_), y(y_), z(z_), cube(c), reach(r)
+    {
+    }
     TouchLeaves(TouchLeaves &o, tbb::split) : x(o.x), y(o.y), z(o.z), cube(o.cube), reach(o.reach) {}
     void operator()(const tbb::blocked_range<size_t> &r)
     {
@@ -70,7 +73,8 @@ struct TouchLeaves {
 
 } // namespace
 
-namespace {
+namespace
+{
 
 uint64_t lattice_key(const int *o)
 {
@@ -136,9 +140,8 @@ void decide(fs_mesh_volume *v, size_t s)
 
 } // namespace
 
-extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n,
-                                                 double cube, double reach, double iso, int keep_all,
-                                                 double mem_limit, size_t *need)
+extern "C" fs_mesh_volume *fs_mesh_volume_create(const float *x, const float *y, const float *z, size_t n, double cube,
+                                                 double reach, double iso, int keep_all, double mem_limit, size_t *need)
 {
     fs_mesh_volume *v = nullptr;
     try {
@@ -195,14 +198,16 @@ extern "C" float *fs_mesh_volume_slab(fs_mesh_volume *v, size_t s, size_t *count
     *origins = &v->origin[3 * v->slab[s]];
     size_t leaves = fs_mesh_volume_leaves(v), before = s ? v->slab[s] - v->slab[s - 1] : 0;
     double held = (double)leaves * FS_MESH_INDEX_BYTES + (double)v->kept * FS_MESH_LEAF_BYTES +
-                  (double)(*count + before) * FS_MESH_LEAF3 * sizeof(float);
+        (double)(*count + before) * FS_MESH_LEAF3 * sizeof(float);
     if (v->mem_limit > 0 && held > v->mem_limit) {
         // the kept surface grows about as 1 / cube^2: extrapolate it to the whole volume
         double total = (double)leaves * FS_MESH_INDEX_BYTES +
-                       (double)v->kept * FS_MESH_LEAF_BYTES * (double)fs_mesh_volume_slabs(v) / (double)(s ? s : 1);
-        fs_fail(FS_ERR_INPUT, "mesh: cube %g: the surface needs more than the %.3g GB available (%zu leaves kept after %zu of %zu slabs): use cube >= %.3g",
-                v->cube, v->mem_limit / 1e9, v->kept, s, fs_mesh_volume_slabs(v),
-                v->cube * std::sqrt(std::max(total, held) / v->mem_limit) * 1.1);
+            (double)v->kept * FS_MESH_LEAF_BYTES * (double)fs_mesh_volume_slabs(v) / (double)(s ? s : 1);
+        fs_fail(
+            FS_ERR_INPUT,
+            "mesh: cube %g: the surface needs more than the %.3g GB available (%zu leaves kept after %zu of %zu slabs): use cube >= %.3g",
+            v->cube, v->mem_limit / 1e9, v->kept, s, fs_mesh_volume_slabs(v),
+            v->cube * std::sqrt(std::max(total, held) / v->mem_limit) * 1.1);
         return nullptr;
     }
     try {

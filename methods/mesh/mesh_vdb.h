@@ -14,7 +14,7 @@ extern "C" {
 #define FS_MESH_LEAF 8 /* voxels per leaf edge (OpenVDB's LeafNode<float, 3>) */
 #define FS_MESH_LEAF3 (FS_MESH_LEAF * FS_MESH_LEAF * FS_MESH_LEAF)
 #define FS_MESH_LEAF_BYTES (FS_MESH_LEAF3 * 4 + 256) /* a leaf with its voxels, and the tree above it */
-#define FS_MESH_INDEX_BYTES 160 /* every leaf's bookkeeping: mask, origin, minima, index entry */
+#define FS_MESH_INDEX_BYTES 160                      /* every leaf's bookkeeping: mask, origin, minima, index entry */
 
 typedef struct fs_mesh_volume fs_mesh_volume;
 

@@ -1,5 +1,6 @@
 // Thin VTK 9 adapter of the mesh export (mesh_export.h): the mesh as
-// vtkPolyData (float points, triangle cells, point normals) written by
+// vtkPolyData (float points, triangle cells, point normals, and the point
+// arrays "velocity" and "color" when the mesh has them) written by
 // vtkPolyDataWriter (legacy binary .vtk) or vtkXMLPolyDataWriter (.vtp,
 // appended binary, zlib).
 #include "mesh_export.h"
@@ -18,7 +19,19 @@
 #include <exception>
 #include <new>
 
-namespace {
+namespace
+{
+
+// A 3-component point array named name (a is 3 nv floats).
+void add_array(vtkPolyData *pd, const fs_trimesh *m, const float *a, const char *name)
+{
+    vtkNew<vtkFloatArray> arr;
+    arr->SetNumberOfComponents(3);
+    arr->SetName(name);
+    arr->SetNumberOfTuples((vtkIdType)m->nv);
+    for (size_t i = 0; i < 3 * m->nv; i++) arr->SetValue((vtkIdType)i, a[i]);
+    pd->GetPointData()->AddArray(arr);
+}
 
 void fill(vtkPolyData *pd, const fs_trimesh *m)
 {
@@ -44,6 +57,8 @@ void fill(vtkPolyData *pd, const fs_trimesh *m)
     pd->SetPoints(pts);
     pd->SetPolys(polys);
     pd->GetPointData()->SetNormals(nrm);
+    if (m->vel) add_array(pd, m, m->vel, "velocity");
+    if (m->col) add_array(pd, m, m->col, "color");
 }
 
 } // namespace

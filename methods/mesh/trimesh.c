@@ -8,12 +8,9 @@ void fs_trimesh_free(fs_trimesh *m)
     free(m->pos);
     free(m->nrm);
     free(m->tri);
+    free(m->vel);
+    free(m->col);
     memset(m, 0, sizeof *m);
-}
-
-size_t fs_trimesh_bytes(const fs_trimesh *m)
-{
-    return m->nv * 3 * sizeof(float) * (m->nrm ? 2 : 1) + m->nt * 3 * sizeof(uint32_t);
 }
 
 double fs_trimesh_volume6(const fs_trimesh *m)
@@ -25,8 +22,8 @@ double fs_trimesh_volume6(const fs_trimesh *m)
         const float *a = m->pos + 3 * (size_t)m->tri[3 * t], *b = m->pos + 3 * (size_t)m->tri[3 * t + 1],
                     *c = m->pos + 3 * (size_t)m->tri[3 * t + 2];
         v += (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) +
-             (double)a[1] * ((double)b[2] * c[0] - (double)b[0] * c[2]) +
-             (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
+            (double)a[1] * ((double)b[2] * c[0] - (double)b[0] * c[2]) +
+            (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
     }
     return v;
 }

@@ -13,11 +13,11 @@ typedef struct fs_trimesh {
     float *pos;    /* 3 nv */
     float *nrm;    /* 3 nv, NULL until normals are computed */
     uint32_t *tri; /* 3 nt vertex indices */
+    float *vel;    /* 3 nv particle velocity interpolated at the vertices, or NULL (mesh_attributes.h) */
+    float *col;    /* 3 nv particle colour (linear RGB) interpolated at the vertices, or NULL */
 } fs_trimesh;
 
 void fs_trimesh_free(fs_trimesh *m);
-/* Bytes held by the mesh's arrays. */
-size_t fs_trimesh_bytes(const fs_trimesh *m);
 /* Six times the signed volume enclosed (positive: wound outward). */
 double fs_trimesh_volume6(const fs_trimesh *m);
 /* Reverses the winding of every triangle. */

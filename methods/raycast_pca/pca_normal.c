@@ -1,15 +1,8 @@
 #include "pca_normal.h"
 #include "eigen3.h"
 #include "kernels.h"
+#include "vec3.h"
 #include <math.h>
-
-static int normalize3(float v[3])
-{
-    float l = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(l > 0)) return 0;
-    for (int a = 0; a < 3; a++) v[a] /= l;
-    return 1;
-}
 
 int rpca_basic_normal(const float x[3], const float *pts, int n, float R, float out[3])
 {
@@ -21,7 +14,7 @@ int rpca_basic_normal(const float x[3], const float *pts, int n, float R, float 
         float g = fs_spiky_dw(d, R) / d; /* grad_x W = W'(d) e / d, pointing inwards */
         for (int a = 0; a < 3; a++) out[a] -= g * e[a];
     }
-    return normalize3(out);
+    return fs_v3_normalize(out);
 }
 
 int rpca_pca_normal(const float x[3], const float *pts, int n, float R, int min_n, float out[3])
@@ -57,7 +50,7 @@ int rpca_pca_normal(const float x[3], const float *pts, int n, float R, int min_
     /* Rank < 2: the middle eigenvalue vanishes next to the largest. */
     if (!(ev[2] > 0) || ev[1] <= 1e-4 * ev[2]) return 0;
     for (int a = 0; a < 3; a++) out[a] = (float)vec[a];
-    return normalize3(out);
+    return fs_v3_normalize(out);
 }
 
 float rpca_blend_weight(const rpca_normal_opts *o, const float b[3], const float p[3])
@@ -87,7 +80,7 @@ int rpca_normal(const float x[3], const float *pts, int n, const rpca_normal_opt
     }
     float w = rpca_blend_weight(o, b, p);
     for (int a = 0; a < 3; a++) out[a] = (1 - w) * b[a] + w * p[a];
-    if (!normalize3(out))
+    if (!fs_v3_normalize(out))
         for (int a = 0; a < 3; a++) out[a] = b[a];
     return 1;
 }

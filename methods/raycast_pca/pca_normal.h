@@ -8,7 +8,7 @@
 extern "C" {
 #endif
 
-enum { RPCA_NORMALS_BASIC = 0, RPCA_NORMALS_PCA, RPCA_NORMALS_BLEND };
+typedef enum { RPCA_NORMALS_BASIC = 0, RPCA_NORMALS_PCA, RPCA_NORMALS_BLEND } rpca_normals;
 
 typedef struct rpca_normal_opts {
     int mode;            /* RPCA_NORMALS_* */

@@ -15,18 +15,33 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef enum { RPCA_BLEND_ADAPTIVE, RPCA_BLEND_FIXED } rpca_blend_kind;
+typedef enum { RPCA_THICK_VOLUME, RPCA_THICK_CHORD } rpca_thick_weight;
+
 typedef struct rpca_params {
-    double splat_radius, step, max_steps, refine, step_back, normals, pca_radius, min_neighbors, blend_weight;
-    double w, blend_d, blend_k, normal_filter, filter_sigma, filter_sigma_n, thickness;
+    double splat_radius, step;
+    int max_steps, refine;
+    double step_back;
+    rpca_normals normals;
+    double pca_radius;
+    int min_neighbors;
+    rpca_blend_kind blend_weight;
+    double w, blend_d, blend_k;
+    bool normal_filter;
+    double filter_sigma, filter_sigma_n;
+    bool thickness;
+    double thick_radius;
+    rpca_thick_weight thick_weight;
 } rpca_params;
 
 #define FIELD(f) FS_PARAM_FIELD(rpca_params, f)
 static const fs_param_def params[] = {
-    {FIELD(splat_radius), FS_PARAM_FLOAT, 1.0, 0.1, 4.0, NULL, "radius of the entry (and thickness) spheres, multiples of r"},
+    {FIELD(splat_radius), FS_PARAM_FLOAT, 1.0, 0.1, 4.0, NULL, "radius of the entry spheres, multiples of r"},
     {FIELD(step), FS_PARAM_FLOAT, 0.5, 0.01, 4.0, NULL, "ray-march step, multiples of r"},
     {FIELD(max_steps), FS_PARAM_INT, 512, 1, 1e6, NULL, "most density samples per ray before it stops without a hit"},
     {FIELD(refine), FS_PARAM_INT, 12, 0, 40, NULL, "bisection iterations refining a crossing"},
-    {FIELD(step_back), FS_PARAM_FLOAT, 8.0, 0.0, 1000.0, NULL, "how far an entry inside the fluid steps back, multiples of r"},
+    {FIELD(step_back), FS_PARAM_FLOAT, 8.0, 0.0, 1000.0, NULL,
+     "how far an entry inside the fluid steps back, multiples of r"},
     {FIELD(normals), FS_PARAM_ENUM, RPCA_NORMALS_BLEND, 0, 2, "basic|pca|blend", "normal estimate (3.3)"},
     {FIELD(pca_radius), FS_PARAM_FLOAT, 4.0, 0.5, 40.0, NULL, "R of eqs. 2-4 (spiky gradient and PCA), multiples of r"},
     {FIELD(min_neighbors), FS_PARAM_INT, 10, 3, 1e6, NULL, "fewer particles within R: use the basic normal"},
@@ -35,13 +50,18 @@ static const fs_param_def params[] = {
     {FIELD(blend_d), FS_PARAM_FLOAT, 10.0, 0.0, 1000.0, NULL, "d of eq. 6"},
     {FIELD(blend_k), FS_PARAM_FLOAT, 0.998, -1.0, 1.0, NULL, "k of eq. 6"},
     {FIELD(normal_filter), FS_PARAM_BOOL, 1, 0, 1, NULL, "bilateral Gaussian filter of the normal map (on/off)"},
-    {FIELD(filter_sigma), FS_PARAM_FLOAT, 1.0, 0.01, 20.0, NULL, "spatial sigma of the filter, multiples of r at the pixel's depth"},
+    {FIELD(filter_sigma), FS_PARAM_FLOAT, 1.0, 0.01, 20.0, NULL,
+     "spatial sigma of the filter, multiples of r at the pixel's depth"},
     {FIELD(filter_sigma_n), FS_PARAM_FLOAT, 0.3, 0.01, 4.0, NULL, "range sigma of the filter on |n_p - n_q|"},
     {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive sphere-splatting thickness pass (on/off)"},
+    {FIELD(thick_radius), FS_PARAM_FLOAT, 2.5, 0.1, 8.0, NULL,
+     "radius of the thickness spheres, multiples of r (the paper: the entry spheres' 1 r)"},
+    {FIELD(thick_weight), FS_PARAM_ENUM, RPCA_THICK_VOLUME, 0, 1, "volume|chord",
+     "what a thickness sphere adds: its chord times V / sphere volume (volume) or the bare chord"},
 };
 #undef FIELD
 
-#define FILTER_MAX_RADIUS 12 /* pixels: bounds the filter's cost at close range */
+#define FILTER_MAX_RADIUS 12   /* pixels: bounds the filter's cost at close range */
 #define FILTER_DEPTH_GATE 2.0f /* multiples of r */
 
 typedef struct rpca {
@@ -50,7 +70,7 @@ typedef struct rpca {
     unsigned prog_splat, prog_thick, prog_march, prog_normals, prog_filter, vao;
     unsigned tex_hit, tex_raw; /* world hit point; unfiltered view normal */
     int tex_w, tex_h;
-    fs_grid own;        /* built when the caller's grid is missing or too fine; upload only */
+    fs_grid own; /* built when the caller's grid is missing or too fine; upload only */
     int has_own, use_color;
     size_t n;
     fs_gl_grid gg;
@@ -84,14 +104,21 @@ static void *create(const fs_method_setup *setup)
     const fs_field *f = &setup->field;
     if (fs_method_check_field("raycast_pca", f)) return NULL;
     rpca *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "raycast_pca: out of memory");
+        return NULL;
+    }
     s->f = *f;
-    if (fs_method_params_copy("raycast_pca", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
+    if (fs_method_params_copy("raycast_pca", setup, &s->params, sizeof s->params)) {
+        free(s);
+        return NULL;
+    }
     const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *march[] = {"raycast_pca/march.comp.glsl", NULL};
     const char *normals[] = {"raycast_pca/normals.comp.glsl", NULL};
     const char *filter[] = {"raycast_pca/filter.comp.glsl", NULL};
-    if (!(s->prog_splat = fs_program_build(spr, NULL)) || !(s->prog_thick = fs_program_build(spr, "MODE_THICKNESS 1")) ||
+    if (!(s->prog_splat = fs_program_build(spr, NULL)) ||
+        !(s->prog_thick = fs_program_build(spr, "MODE_THICKNESS 1")) ||
         !(s->prog_march = fs_program_build(march, NULL)) || !(s->prog_normals = fs_program_build(normals, NULL)) ||
         !(s->prog_filter = fs_program_build(filter, NULL))) {
         destroy(s);
@@ -133,7 +160,10 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     return rc;
 }
 
-static void draw_spheres(const rpca *s) { fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n, 4 * sizeof(float)); }
+static void draw_spheres(const rpca *s)
+{
+    fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n, 4 * sizeof(float));
+}
 
 static int ensure_targets(rpca *s, int w, int h)
 {
@@ -159,7 +189,7 @@ static void entry_pass(rpca *s, const fs_camera *cam, float splat_r);
 static void march_pass(rpca *s, const fs_camera *cam);
 static void normals_pass(rpca *s, const fs_camera *cam);
 static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16]);
-static void thickness_pass(rpca *s, const fs_camera *cam, float splat_r, fs_stages *t, double start);
+static void thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start);
 
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
@@ -181,7 +211,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     double t3 = fs_gl_stage_end(t, "normals", t2);
     filter_pass(s, cam, proj);
     double t4 = fs_gl_stage_end(t, "filter", t3);
-    thickness_pass(s, cam, splat_r, t, t4);
+    thickness_pass(s, cam, t, t4);
     return fs_gl_target_read_timed(&s->target, out, t);
 }
 
@@ -211,8 +241,8 @@ static void march_pass(rpca *s, const fs_camera *cam)
     glUniform1f(glGetUniformLocation(P, "u_iso"), f->iso);
     glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->params.step * r);
     glUniform1f(glGetUniformLocation(P, "u_step_back"), (float)s->params.step_back * r);
-    glUniform1i(glGetUniformLocation(P, "u_max_steps"), (int)s->params.max_steps);
-    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->params.refine);
+    glUniform1i(glGetUniformLocation(P, "u_max_steps"), s->params.max_steps);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), s->params.refine);
     glBindImageTexture(0, s->target.tex[FS_TARGET_DEPTH], 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(1, s->target.tex[FS_TARGET_NORMAL], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(2, s->tex_hit, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -230,9 +260,9 @@ static void normals_pass(rpca *s, const fs_camera *cam)
     glUniform1i(glGetUniformLocation(P, "u_kernel"), (int)f->kernel);
     glUniform1f(glGetUniformLocation(P, "u_H"), f->H);
     glUniform1f(glGetUniformLocation(P, "u_R"), (float)s->params.pca_radius * r);
-    glUniform1i(glGetUniformLocation(P, "u_mode"), (int)s->params.normals);
-    glUniform1i(glGetUniformLocation(P, "u_min_neighbors"), (int)s->params.min_neighbors);
-    glUniform1i(glGetUniformLocation(P, "u_fixed_weight"), (int)s->params.blend_weight);
+    glUniform1i(glGetUniformLocation(P, "u_mode"), s->params.normals);
+    glUniform1i(glGetUniformLocation(P, "u_min_neighbors"), s->params.min_neighbors);
+    glUniform1i(glGetUniformLocation(P, "u_fixed_weight"), s->params.blend_weight == RPCA_BLEND_FIXED);
     glUniform1f(glGetUniformLocation(P, "u_w"), (float)s->params.w);
     glUniform1f(glGetUniformLocation(P, "u_blend_d"), (float)s->params.blend_d);
     glUniform1f(glGetUniformLocation(P, "u_blend_k"), (float)s->params.blend_k);
@@ -250,7 +280,7 @@ static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16])
     const float r = s->f.r;
     unsigned P = s->prog_filter;
     glUseProgram(P);
-    glUniform1i(glGetUniformLocation(P, "u_enable"), s->params.normal_filter != 0);
+    glUniform1i(glGetUniformLocation(P, "u_enable"), s->params.normal_filter);
     glUniform1f(glGetUniformLocation(P, "u_focal_px"), proj[5] * 0.5f * (float)cam->height);
     glUniform1f(glGetUniformLocation(P, "u_sigma"), (float)s->params.filter_sigma * r);
     glUniform1f(glGetUniformLocation(P, "u_sigma_n"), (float)s->params.filter_sigma_n);
@@ -262,13 +292,25 @@ static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16])
     dispatch(cam);
 }
 
-static void thickness_pass(rpca *s, const fs_camera *cam, float splat_r, fs_stages *t, double start)
+/* The factor on each thickness sphere's chord: with `volume`, V over the sphere's
+ * volume, so that the map integrates to the particles' volume (spheres of r on a
+ * 2r lattice fill only pi/6 of it); 1 with `chord`. */
+static float rpca_thickness_weight(rpca_thick_weight weight, float V, float radius)
 {
-    /* 3.4 thickness: additive sphere splatting (chord lengths). */
-    if (s->params.thickness != 0) {
+    if (weight == RPCA_THICK_CHORD) return 1.0f;
+    return V / (4.18879020f * radius * radius * radius);
+}
+
+static void thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start)
+{
+    /* 3.4 thickness: additive sphere splatting (weighted chord lengths). */
+    if (s->params.thickness) {
+        float radius = (float)s->params.thick_radius * s->f.r;
         fs_gl_target_begin_thickness(&s->target);
         fs_gl_camera_uniforms(s->prog_thick, cam);
-        glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), splat_r);
+        glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), radius);
+        glUniform1f(glGetUniformLocation(s->prog_thick, "u_thickness_weight"),
+                    rpca_thickness_weight(s->params.thick_weight, s->f.volume, radius));
         draw_spheres(s);
         fs_gl_target_end_pass();
         fs_gl_stage_end(t, "thickness", start);
@@ -286,7 +328,7 @@ const fs_method fs_method_raycast_pca = {
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
     .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
-                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) | FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

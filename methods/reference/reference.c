@@ -6,6 +6,7 @@
  * field=anisotropic: Yu & Turk's kernel W(|A_j^-1 (x - c_j)|, H) / det A_j with
  * the centres c_j and stretches A_j of common/field/anisotropy.c. */
 #include "reference.h"
+#include "zhu_bridson.h"
 #include "aniso_params.h"
 #include "fs_error.h"
 #include "method.h"
@@ -15,9 +16,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef enum { REF_INTERIOR_AUTO, REF_INTERIOR_ON, REF_INTERIOR_OFF } ref_interior;
+
 typedef struct reference_params {
-    double step_min, thickness, max_layers, accel, interior, field, supersample;
+    double step_min;
+    bool thickness;
+    int max_layers;
+    bool accel;
+    ref_interior interior;
+    fs_field_choice field;
+    int supersample;
     fs_aniso_param_values aniso;
+    double zb_radius;
 } reference_params;
 
 #define FIELD(f) FS_PARAM_FIELD(reference_params, f)
@@ -30,10 +40,13 @@ static const fs_param_def params[] = {
      "sub-cell bounds, gathered arrays and vectorised sums (on); off: the plain march, for comparison"},
     {FIELD(interior), FS_PARAM_ENUM, 0, 0, 2, "auto|on|off",
      "accel, thickness on: fine interior bounds; auto builds them when the rays per cell pay for them"},
-    {FIELD(field), FS_PARAM_ENUM, 0, 0, 1, "isotropic|anisotropic", "SPH kernel, or Yu & Turk's anisotropic kernel"},
+    {FIELD(field), FS_PARAM_ENUM, 0, 0, 2, "isotropic|anisotropic|zhu_bridson",
+     "SPH kernel, Yu & Turk's anisotropic kernel, or Zhu & Bridson's |x - xbar| - r (own march, accel ignored)"},
     {FIELD(supersample), FS_PARAM_INT, 1, 1, FS_REF_MAX_SUPERSAMPLE, NULL,
      "N x N rays per pixel, depth, normal, coverage and thickness averaged (against moire where r is about a pixel)"},
     FS_ANISO_PARAM_DEFS(reference_params),
+    {FIELD(zb_radius), FS_PARAM_FLOAT, FS_ZB_RADIUS, 1.0, 40.0, NULL,
+     "zhu_bridson: kernel radius R, multiples of r (the paper's twice the particle spacing: 4)"},
 };
 #undef FIELD
 
@@ -48,6 +61,7 @@ static void destroy(void *self)
     fs_ref_bounds_free(R);
     fs_ref_interior_free(R);
     fs_aniso_kernels_free(&R->ak);
+    if (R->zgrid_own) fs_grid_free(&R->zgrid);
     free(R);
 }
 
@@ -58,17 +72,22 @@ static void *create(const fs_method_setup *setup)
     reference_params p;
     if (fs_method_params_copy("reference", setup, &p, sizeof p)) return NULL;
     reference *R = calloc(1, sizeof *R);
-    if (!R) { fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); return NULL; }
+    if (!R) {
+        fs_fail(FS_ERR_RUNTIME, "reference: out of memory");
+        return NULL;
+    }
     R->f = *f;
-    R->aniso = p.field != 0;
+    R->aniso = p.field == FS_FIELD_ANISOTROPIC;
+    R->zb = p.field == FS_FIELD_ZHU_BRIDSON;
+    R->zb_radius = p.zb_radius * f->r;
     fs_aniso_params_set(&R->ap, &p.aniso, f->kernel, f->r);
-    R->reach = f->H;
+    R->reach = R->zb ? (float)R->zb_radius : f->H;
     R->step_min = (float)p.step_min * f->r;
-    R->thickness = p.thickness != 0;
-    R->accel = p.accel != 0;
-    R->interior = (int)p.interior;
-    R->max_layers = (int)p.max_layers;
-    R->supersample = (int)p.supersample;
+    R->thickness = p.thickness;
+    R->accel = p.accel;
+    R->interior = p.interior;
+    R->max_layers = p.max_layers;
+    R->supersample = p.supersample;
     R->lip_unit = f->volume * fs_kernel_max_dw(f->kernel, f->H);
     return R;
 }
@@ -149,13 +168,19 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     R->g = NULL;
     for (int a = 0; a < 3; a++) R->centre[a] = 0.5f * (g->bulk_lo[a] + g->bulk_hi[a]);
     if (R->aniso) {
-        if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
+        if (g->n != p->n)
+            return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
         int rc = upload_aniso(R, p, g);
         if (rc) return rc;
         g = &R->ak.grid;
     }
+    if (R->zb) { /* its own reach R: a grid of cell >= R (the given one when it is) */
+        int rc = fs_grid_fit(g, p, R->reach, &R->zgrid, &R->zgrid_own, &g);
+        if (rc) return rc;
+    }
     if (!(g->cell >= R->reach))
-        return fs_fail(FS_ERR_INPUT, "reference: grid cell %g is smaller than the kernel support H = %g", g->cell, R->f.H);
+        return fs_fail(FS_ERR_INPUT, "reference: grid cell %g is smaller than the kernel support %g", g->cell,
+                       R->reach);
     if (g->n != p->n) return fs_fail(FS_ERR_RUNTIME, "reference: grid holds %zu particles, the set %zu", g->n, p->n);
     int rc = count_neighbours(R, g);
     if (!rc) rc = sorted_soa(R, g);
@@ -188,7 +213,8 @@ static void cast(const reference *R, const fs_camera *cam, const float fwd[3], f
     float d[3];
     ray_result res;
     fs_camera_ray(cam, fx, fy, d);
-    if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
+    if (R->zb) fs_ref_cast_zb(R, cam->eye, d, buf, &res);
+    else if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
     fs_ref_work_add(&w[FS_REF_FIRST], &res.w[FS_REF_FIRST]);
     fs_ref_work_add(&w[FS_REF_AFTER], &res.w[FS_REF_AFTER]);
@@ -285,8 +311,8 @@ static void note_small_radius(reference *R, const fs_camera *cam, const float fw
  * crosses about cbrt(cells) of the nwant cells that may hold inside sub-cells. */
 static int want_interior(const reference *R, const fs_camera *cam)
 {
-    if (!R->accel || !R->thickness || !R->sub || !R->nwant || R->interior == 2) return 0;
-    if (R->interior == 1) return 1;
+    if (!R->accel || !R->thickness || !R->sub || !R->nwant || R->interior == REF_INTERIOR_OFF) return 0;
+    if (R->interior == REF_INTERIOR_ON) return 1;
     double cells = (double)R->nwant;
     return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS;
 }
@@ -302,12 +328,17 @@ static int prepare_bounds(reference *R, const fs_camera *cam, fs_stages *st)
     if (R->bounds_done) return FS_OK;
     R->bounds_done = 1;
     double n = (double)R->nnear;
-    if (!R->accel || !n || (double)cam->width * cam->height * cbrt(n) / n < FS_REF_BOUNDS_VISITS) return FS_OK;
+    if (!R->accel || R->zb || !n || (double)cam->width * cam->height * cbrt(n) / n < FS_REF_BOUNDS_VISITS) return FS_OK;
     double t0 = fs_now_ms();
     int rc = fs_ref_bounds_build(R);
     R->nwant = rc ? 0 : fs_ref_interior_cells(R);
     if (!rc && R->sub) rc = fs_ref_cell_classes(R);
-    if (rc) { fs_ref_bounds_free(R); R->sub = 0; R->g = NULL; return rc; }
+    if (rc) {
+        fs_ref_bounds_free(R);
+        R->sub = 0;
+        R->g = NULL;
+        return rc;
+    }
     if (st) fs_stages_add(st, "bounds", fs_now_ms() - t0);
     return FS_OK;
 }
@@ -323,7 +354,11 @@ static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
     double t0 = fs_now_ms();
     rc = fs_ref_interior_build(R);
     if (!rc) rc = fs_ref_cell_classes(R);
-    if (rc) { fs_ref_interior_free(R); R->g = NULL; return rc; }
+    if (rc) {
+        fs_ref_interior_free(R);
+        R->g = NULL;
+        return rc;
+    }
     if (st) fs_stages_add(st, "interior", fs_now_ms() - t0);
     return FS_OK;
 }
@@ -355,7 +390,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (rc) return rc;
     double t0 = fs_now_ms();
     int nth = omp_get_max_threads();
-    size_t per = R->accel ? fs_ref_fast_buf_size(R) : fs_ref_plain_buf_size(R);
+    size_t per = R->zb ? fs_ref_zb_buf_size(R) : R->accel ? fs_ref_fast_buf_size(R) : fs_ref_plain_buf_size(R);
     per = (per + 63) & ~(size_t)63;
     char *bufs = malloc((size_t)nth * per);
     if (!bufs) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %d ray buffers", nth);
@@ -402,10 +437,9 @@ const fs_method fs_method_reference = {
     .paper = "",
     .needs_gl = 0,
     .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
-                FS_CNT_BIT(FS_CNT_CROSSINGS) | FS_CNT_BIT(FS_CNT_CELLS_WALKED) | FS_CNT_BIT(FS_CNT_CELLS_MARCHED) |
-                FS_CNT_BIT(FS_CNT_CELLS_MARCHED_INSIDE) | FS_CNT_BIT(FS_CNT_CELLS_PROVEN_INSIDE) |
-                FS_CNT_BIT(FS_CNT_CELLS_PROVEN_OUTSIDE) | FS_CNT_BIT(FS_CNT_REFINE_EVALS) |
-                FS_CNT_BIT(FS_CNT_INSIDE_EVALS),
+        FS_CNT_BIT(FS_CNT_CROSSINGS) | FS_CNT_BIT(FS_CNT_CELLS_WALKED) | FS_CNT_BIT(FS_CNT_CELLS_MARCHED) |
+        FS_CNT_BIT(FS_CNT_CELLS_MARCHED_INSIDE) | FS_CNT_BIT(FS_CNT_CELLS_PROVEN_INSIDE) |
+        FS_CNT_BIT(FS_CNT_CELLS_PROVEN_OUTSIDE) | FS_CNT_BIT(FS_CNT_REFINE_EVALS) | FS_CNT_BIT(FS_CNT_INSIDE_EVALS),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(reference_params),

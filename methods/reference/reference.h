@@ -11,28 +11,31 @@
 #include "kernels.h"
 #include <stdint.h>
 
-
 /* Sub-cell classes of reference_bounds.c: phi < iso on the whole sub-cell,
  * phi >= iso on the whole sub-cell, or neither proven. */
 enum { FS_REF_OUT = 0, FS_REF_IN = 1, FS_REF_EDGE = 2 };
 
 typedef struct reference {
     fs_field f;
-    float step_min;      /* scene units */
+    float step_min; /* scene units */
     int thickness, max_layers, accel;
-    int supersample;     /* N x N rays per pixel (1: the pixel centre) */
-    int noted_small;     /* the note of a radius under FS_REF_SMALL_R_PX was given */
-    float centre[3];     /* the centre of the particles' bulk box (the grid's), for that note */
-    int interior;        /* 0 auto, 1 on, 2 off: the fine interior bits (reference_interior.c) */
-    int interior_done;   /* the interior decision was taken for the current upload */
-    int bounds_done;     /* the sub-cell bounds decision was taken for the current upload */
-    size_t nnear;        /* cell slots with a particle in their 27 neighbours */
-    size_t nwant;        /* cells that may hold inside sub-cells */
+    int supersample;   /* N x N rays per pixel (1: the pixel centre) */
+    int noted_small;   /* the note of a radius under FS_REF_SMALL_R_PX was given */
+    float centre[3];   /* the centre of the particles' bulk box (the grid's), for that note */
+    int interior;      /* reference.c's ref_interior (auto, on, off): the fine interior bits (reference_interior.c) */
+    int interior_done; /* the interior decision was taken for the current upload */
+    int bounds_done;   /* the sub-cell bounds decision was taken for the current upload */
+    size_t nnear;      /* cell slots with a particle in their 27 neighbours */
+    size_t nwant;      /* cells that may hold inside sub-cells */
     const fs_grid *g;
-    uint32_t *count27;   /* per cell slot: particles in the 27 cells around it */
+    uint32_t *count27; /* per cell slot: particles in the 27 cells around it */
     uint32_t max27;
-    float lip_unit;      /* V max|W'|: a cell's Lipschitz bound is lip_unit * count27 */
+    float lip_unit; /* V max|W'|: a cell's Lipschitz bound is lip_unit * count27 */
     int aniso;
+    int zb;           /* field=zhu_bridson: reference_zb.c's march of Zhu & Bridson's phi */
+    double zb_radius; /* zhu_bridson: the kernel radius R, scene units */
+    fs_grid zgrid;    /* zhu_bridson: a grid of cell >= R when the given one's cells are smaller */
+    int zgrid_own;
     fs_aniso_params ap;
     float reach;         /* largest distance at which a particle's kernel is nonzero: H (times the largest axis) */
     fs_aniso_kernels ak; /* anisotropic: the kernels, on a grid of their centres (cell >= reach) */
@@ -65,12 +68,12 @@ typedef struct reference {
  * (crossings, cells ...) only in a counting render (fs_counting, read once a ray). */
 typedef struct ray_work {
     uint64_t evals, samples, nbrs;
-    uint64_t crossings;              /* sign changes of phi - iso located */
-    uint64_t cells, marched;         /* near cells walked; those where phi was summed */
-    uint64_t marched_in;             /* ... with the ray inside all along (no crossing) */
-    uint64_t proven_in, proven_out;  /* near cells crossed whole on proven bounds, by class */
-    uint64_t refine_evals;           /* evals that refine a bracketed crossing */
-    uint64_t inside_evals;           /* evals in the marched_in cells */
+    uint64_t crossings;             /* sign changes of phi - iso located */
+    uint64_t cells, marched;        /* near cells walked; those where phi was summed */
+    uint64_t marched_in;            /* ... with the ray inside all along (no crossing) */
+    uint64_t proven_in, proven_out; /* near cells crossed whole on proven bounds, by class */
+    uint64_t refine_evals;          /* evals that refine a bracketed crossing */
+    uint64_t inside_evals;          /* evals in the marched_in cells */
 } ray_work;
 
 /* The work of one ray's two phases: before and with its first hit (the first-hit
@@ -79,10 +82,10 @@ typedef struct ray_work {
 enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1 };
 
 typedef struct ray_result {
-    ray_work w[2];  /* [hit]: the phase the ray is in */
+    ray_work w[2]; /* [hit]: the phase the ray is in */
     int hit;
-    float t;        /* ray distance of the first hit */
-    float n[3];     /* world normal, -grad phi normalised */
+    float t;    /* ray distance of the first hit */
+    float n[3]; /* world normal, -grad phi normalised */
     float thick;
 } ray_result;
 
@@ -112,12 +115,12 @@ void fs_ref_taylor_steps(const reference *R, float g, float g1, float M, float *
 
 /* The march state carried from cell to cell along one ray. */
 typedef struct march {
-    int started;       /* phi has been sampled once */
-    int inside;        /* phi >= iso at the current point */
-    int counting;      /* the inside interval was entered from outside */
+    int started;  /* phi has been sampled once */
+    int inside;   /* phi >= iso at the current point */
+    int counting; /* the inside interval was entered from outside */
     int layers;
-    float g;           /* phi - iso at the current point (or a bound of it with the same sign) */
-    float t_enter;     /* ray distance where the current inside interval began */
+    float g;       /* phi - iso at the current point (or a bound of it with the same sign) */
+    float t_enter; /* ray distance where the current inside interval began */
     float s_prev;
 } march;
 
@@ -128,12 +131,16 @@ typedef int (*fs_ref_visit)(void *ctx, const int c[3], uint32_t slot, float t0, 
 /* Walks the ray o + t d (t >= 0) through the cells of R's grid that can see a
  * particle, in order, calling visit for each; cells whose block is not stored
  * and clusters the ray misses are skipped. *t_last gets where the walk ended. */
-void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx,
-                 float *t_last);
-
+void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx, float *t_last);
 
 /* The march's state changes shared by both paths. */
 void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R);
+/* A crossing of the iso-surface at ray distance t, written once for every march:
+ * entering (from outside) records the first hit, its normal the unit vector of
+ * outward (read only then; -d where it is 0), and opens a thickness layer;
+ * leaving closes it. 1 when the ray is finished (a first hit without thickness,
+ * or the last layer). */
+int fs_ref_cross(const reference *R, march *m, ray_result *res, float t, const float outward[3], const float d[3]);
 
 /* dst += src, counter by counter. */
 void fs_ref_work_add(ray_work *dst, const ray_work *src);
@@ -157,6 +164,10 @@ size_t fs_ref_plain_buf_size(const reference *R);
 /* accel=on. */
 void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);
 size_t fs_ref_fast_buf_size(const reference *R);
+
+/* field=zhu_bridson (reference_zb.c): one ray, whatever accel says. buf holds max27 entries. */
+void fs_ref_cast_zb(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);
+size_t fs_ref_zb_buf_size(const reference *R);
 
 /* Builds R->lo/hi for every near cell slot (R->sub set); frees them first. */
 int fs_ref_bounds_build(reference *R);

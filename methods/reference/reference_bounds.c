@@ -107,7 +107,10 @@ static uint64_t cell_bounds(reference *R, const int c[3], uint32_t slot, float *
             float p[3] = {R->sx[s], R->sy[s], R->sz[s]}, n2, f2;
             box_dist2(p, corner, g->cell, &n2, &f2);
             visits++;
-            if (n2 < H2) { add_bounds(f, p, b, nsub, e, up, dn); visits += (uint64_t)nsub; } /* else it cannot reach the cell */
+            if (n2 < H2) {
+                add_bounds(f, p, b, nsub, e, up, dn);
+                visits += (uint64_t)nsub;
+            } /* else it cannot reach the cell */
         }
     float q = f->iso / FS_REF_Q;
     size_t base = (size_t)slot * (size_t)nsub;

@@ -19,8 +19,8 @@ typedef struct fast_ray {
     near_soa N;
     march m;
     ray_result *res;
-    int count; /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
-    int ran;   /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
+    int count;  /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
+    int ran;    /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
     int taylor; /* the second-order inside step applies (fs_ref_taylor_applies) */
 } fast_ray;
 
@@ -39,7 +39,11 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
     size_t cap = R->max27 ? R->max27 : 1;
     cap = (cap + 15) & ~(size_t)15;
     float *f = buf;
-    N->a = f; N->b = f + cap; N->k = f + 2 * cap; N->ws = f + 3 * cap; N->keep = f + 4 * cap;
+    N->a = f;
+    N->b = f + cap;
+    N->k = f + 2 * cap;
+    N->ws = f + 3 * cap;
+    N->keep = f + 4 * cap;
     N->slot = (uint32_t *)(f + 5 * cap);
     N->n = 0;
 }
@@ -47,31 +51,39 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
 /* Distance along the ray from particle foot u (relative to t) to: the point
  * t (AT), the nearest point of [t, t+s] (NEAR), its farther end (FAR). */
 #define FS_REF_AT(u, s) (u)
-#define FS_REF_NEAR(u, s) ((u) - fs_minf(fs_maxf((u), 0.0f), (s)))
+#define FS_REF_NEAR(u, s) ((u)-fs_minf(fs_maxf((u), 0.0f), (s)))
 #define FS_REF_FAR(u, s) fs_maxf(fabsf(u), fabsf((u) - (s)))
 
 /* sum_j ws_j shape(sqrt(b_j + k_j e_j^2) / H): a loop the compiler vectorises. */
-#define FS_REF_SUM(SHAPE, E)                                                                       \
-    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                             \
-    {                                                                                              \
-        float u = a[j] - t, e = E(u, s);                                                           \
-        sum += ws[j] * SHAPE(sqrtf(b[j] + k[j] * (e * e)) * inv_h);                                \
+#define FS_REF_SUM(SHAPE, E)                                                                                           \
+    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                                                 \
+    {                                                                                                                  \
+        float u = a[j] - t, e = E(u, s);                                                                               \
+        sum += ws[j] * SHAPE(sqrtf(b[j] + k[j] * (e * e)) * inv_h);                                                    \
     }
 /* The isotropic kernel: k = ws = 1. */
-#define FS_REF_SUM_ISO(SHAPE, E)                                                                   \
-    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                             \
-    {                                                                                              \
-        float u = a[j] - t, e = E(u, s);                                                           \
-        sum += SHAPE(sqrtf(b[j] + e * e) * inv_h);                                                 \
+#define FS_REF_SUM_ISO(SHAPE, E)                                                                                       \
+    _Pragma("omp simd reduction(+ : sum)") for (int j = 0; j < n; j++)                                                 \
+    {                                                                                                                  \
+        float u = a[j] - t, e = E(u, s);                                                                               \
+        sum += SHAPE(sqrtf(b[j] + e * e) * inv_h);                                                                     \
     }
-#define FS_REF_SUMS(SHAPE)                                                                         \
-    if (!aniso) {                                                                                  \
-        if (mode == 0) { FS_REF_SUM_ISO(SHAPE, FS_REF_AT) }                                        \
-        else if (mode == 1) { FS_REF_SUM_ISO(SHAPE, FS_REF_NEAR) }                                 \
-        else { FS_REF_SUM_ISO(SHAPE, FS_REF_FAR) }                                                 \
-    } else if (mode == 0) { FS_REF_SUM(SHAPE, FS_REF_AT) }                                         \
-    else if (mode == 1) { FS_REF_SUM(SHAPE, FS_REF_NEAR) }                                         \
-    else { FS_REF_SUM(SHAPE, FS_REF_FAR) }
+#define FS_REF_SUMS(SHAPE)                                                                                             \
+    if (!aniso) {                                                                                                      \
+        if (mode == 0) {                                                                                               \
+            FS_REF_SUM_ISO(SHAPE, FS_REF_AT)                                                                           \
+        } else if (mode == 1) {                                                                                        \
+            FS_REF_SUM_ISO(SHAPE, FS_REF_NEAR)                                                                         \
+        } else {                                                                                                       \
+            FS_REF_SUM_ISO(SHAPE, FS_REF_FAR)                                                                          \
+        }                                                                                                              \
+    } else if (mode == 0) {                                                                                            \
+        FS_REF_SUM(SHAPE, FS_REF_AT)                                                                                   \
+    } else if (mode == 1) {                                                                                            \
+        FS_REF_SUM(SHAPE, FS_REF_NEAR)                                                                                 \
+    } else {                                                                                                           \
+        FS_REF_SUM(SHAPE, FS_REF_FAR)                                                                                  \
+    }
 
 /* phi at local t (mode 0), or its upper (1) or lower (2) monotone-kernel
  * bound on [t, t+s]: every kernel decreases with distance. */
@@ -79,7 +91,8 @@ static void soa_bind(near_soa *N, void *buf, const reference *R)
 #if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-static float field_sum(const reference *R, const near_soa *N, float t, float s, int mode)
+static float
+field_sum(const reference *R, const near_soa *N, float t, float s, int mode)
 {
     const fs_field *f = &R->f;
     const float *restrict a = N->a, *restrict b = N->b, *restrict k = N->k, *restrict ws = N->ws;
@@ -134,8 +147,7 @@ static void grad_at(const reference *R, const near_soa *N, const float d[3], flo
 /* Isotropic: the particles of slots [s0, s1) within H of the stretch, appended
  * to N. The distances are computed in a vectorised loop; the survivors are
  * then packed without branches. */
-static int gather_run_iso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len, near_soa *N,
-                          int n)
+static int gather_run_iso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len, near_soa *N, int n)
 {
     const float *restrict x = R->sx + s0, *restrict y = R->sy + s0, *restrict z = R->sz + s0;
     float *restrict a = N->a + n, *restrict b = N->b + n, *restrict keep = N->keep;
@@ -161,8 +173,8 @@ static int gather_run_iso(const reference *R, uint32_t s0, uint32_t s1, const fl
 }
 
 /* Anisotropic: the metric |A^-1 (o + u d - q)|^2 = k (u - a)^2 + b per particle. */
-static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len,
-                            near_soa *N, int n)
+static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const float d[3], float len, near_soa *N,
+                            int n)
 {
     float H2 = R->f.H * R->f.H;
     for (uint32_t s = s0; s < s1; s++) {
@@ -177,7 +189,10 @@ static int gather_run_aniso(const reference *R, uint32_t s0, uint32_t s1, const 
         float b = fs_maxf(mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a, 0.0f);
         float e = a < 0 ? a : (a > len ? a - len : 0);
         if (b + k * (e * e) >= H2) continue;
-        N->a[n] = a; N->b[n] = b; N->k[n] = k; N->ws[n] = R->wscale[s];
+        N->a[n] = a;
+        N->b[n] = b;
+        N->k[n] = k;
+        N->ws[n] = R->wscale[s];
         N->slot[n++] = s;
     }
     return n;
@@ -209,8 +224,8 @@ static void gather(const reference *R, const int c[3], const float o[3], const f
 }
 
 /* As reference_plain.c's safe_step, on the gathered arrays. */
-static int safe_step(const reference *R, const near_soa *N, const march *m, float t, float rem, float lip,
-                     float *s_out, float *g_end, ray_work *w)
+static int safe_step(const reference *R, const near_soa *N, const march *m, float t, float rem, float lip, float *s_out,
+                     float *g_end, ray_work *w)
 {
     float s_lip = fabsf(m->g) / lip, floor_s = s_lip > R->step_min ? s_lip : R->step_min;
     float s = 2.0f * m->s_prev > floor_s ? 2.0f * m->s_prev : floor_s;
@@ -235,29 +250,14 @@ static int crossing(fast_ray *F, float t0, float tc)
     march *m = &F->m;
     ray_result *res = F->res;
     work(F)->crossings++;
-    if (!m->inside) {
-        if (!res->hit) {
-            float gr[3];
-            grad_at(R, &F->N, F->d, tc, gr);
-            work(F)->evals++; /* the first hit's normal: still its phase */
-            work(F)->nbrs += (uint64_t)F->N.n;
-            float l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
-            for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -F->d[a];
-            res->hit = 1;
-            res->t = t0 + tc;
-            if (!R->thickness) return 1;
-        }
-        m->t_enter = t0 + tc;
-        m->counting = 1;
-        m->layers++;
-    } else {
-        if (m->counting) res->thick += t0 + tc - m->t_enter;
-        m->counting = 0;
-        if (m->layers >= R->max_layers) return 1;
+    float out[3] = {0, 0, 0};
+    if (!m->inside && !res->hit) { /* the first hit's normal, -grad phi: still its phase */
+        grad_at(R, &F->N, F->d, tc, out);
+        work(F)->evals++;
+        work(F)->nbrs += (uint64_t)F->N.n;
+        for (int a = 0; a < 3; a++) out[a] = -out[a];
     }
-    m->inside = !m->inside;
-    m->s_prev = R->step_min;
-    return 0;
+    return fs_ref_cross(R, m, res, t0 + tc, out, F->d);
 }
 
 /* Shrinks the bracket [*lo, *hi] of a sign change of phi - iso (g_lo on the
@@ -280,16 +280,18 @@ static void locate(fast_ray *F, float *lo, float *hi, float g_lo, float g_hi, fl
         float q = 0.25f * tol; /* stay inside the bracket */
         t = t < a + q ? a + q : (t > b - q ? b - q : t);
         if (t <= a || t >= b) t = 0.5f * (a + b); /* a + q rounded to a: tol is below the floats' spacing here */
-        if (t <= a || t >= b) break;             /* the bracket is two adjacent floats: as tight as it gets */
+        if (t <= a || t >= b) break;              /* the bracket is two adjacent floats: as tight as it gets */
         float g = field_counted(R, &F->N, t, 0, 0, work(F)) - R->f.iso;
         work(F)->samples++;
         work(F)->refine_evals++;
         if ((g >= 0) == inside) {
-            a = t; g_lo = g;
+            a = t;
+            g_lo = g;
             if (keep == 1) g_hi *= 0.5f;
             keep = 1;
         } else {
-            b = t; g_hi = g;
+            b = t;
+            g_hi = g;
             if (keep == -1) g_lo *= 0.5f;
             keep = -1;
         }
@@ -362,7 +364,12 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
         }
         float tn = s >= rem ? u1 : t + s;
         w->samples++; /* the step's end, sampled or proven */
-        if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
+        if (m->inside == (gn >= 0)) {
+            m->s_prev = s;
+            t = tn;
+            m->g = gn;
+            continue;
+        }
         float hi = tn;
         locate(F, &lo, &hi, g_lo, gn, tol);
         if (crossing(F, t0, 0.5f * (lo + hi))) return 1;
@@ -381,7 +388,11 @@ static int skip_proven(march *m, int cls, float v)
     if (cls == FS_REF_EDGE) return 0;
     int in = cls == FS_REF_IN;
     if (m->started && m->inside != in) return 0; /* a crossing lies before: find it by sampling */
-    if (!m->started) { m->started = 1; m->inside = in; m->counting = 0; }
+    if (!m->started) {
+        m->started = 1;
+        m->inside = in;
+        m->counting = 0;
+    }
     m->g = v;
     return 1;
 }
@@ -393,8 +404,14 @@ static int sub_class(const reference *R, uint32_t slot, int res, const int c[3],
     int f = res / R->sub;
     size_t s = ((size_t)slot * R->sub + c[2] / f) * R->sub * R->sub + (size_t)(c[1] / f) * R->sub + c[0] / f;
     float q = R->f.iso / FS_REF_Q;
-    if (R->hi[s] < FS_REF_Q) { *v = (float)R->hi[s] * q - R->f.iso; return FS_REF_OUT; }
-    if (R->lo[s] >= FS_REF_Q) { *v = (float)R->lo[s] * q - R->f.iso; return FS_REF_IN; }
+    if (R->hi[s] < FS_REF_Q) {
+        *v = (float)R->hi[s] * q - R->f.iso;
+        return FS_REF_OUT;
+    }
+    if (R->lo[s] >= FS_REF_Q) {
+        *v = (float)R->lo[s] * q - R->f.iso;
+        return FS_REF_IN;
+    }
     *v = 0;
     if (res == R->sub) return FS_REF_EDGE;
     size_t k = ((size_t)c[2] * FS_REF_FINE + c[1]) * FS_REF_FINE + c[0];
@@ -456,7 +473,10 @@ static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, f
             if (last || next_cls != FS_REF_EDGE) { /* the run of marched sub-cells ends here */
                 float end = last ? t_out : te;
                 F->ran = 1;
-                if (!gathered) { gather(R, c, o_loc, d, t_out - t, &F->N, work(F)); gathered = 1; }
+                if (!gathered) {
+                    gather(R, c, o_loc, d, t_out - t, &F->N, work(F));
+                    gathered = 1;
+                }
                 if (F->N.n) {
                     if (march_range(F, t, edge0 - t, end - t, lip)) return 1;
                 } else {
@@ -514,8 +534,7 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
 void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res)
 {
     memset(res, 0, sizeof *res);
-    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0,
-                  fs_ref_taylor_applies(R)};
+    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0, fs_ref_taylor_applies(R)};
     soa_bind(&F.N, buf, R);
     float t_last;
     fs_ref_walk(R, o, d, fast_visit, &F, &t_last);

@@ -31,17 +31,23 @@ void fs_ref_interior_free(reference *R)
 }
 
 /* Candidate particles of one cell, relative to its corner (capacity cap). */
-typedef struct fine_cand { float *x, *y, *z; int n, cap; } fine_cand;
+typedef struct fine_cand {
+    float *x, *y, *z;
+    int n, cap;
+} fine_cand;
 
 /* Constants of the bound: phi = kw sum shape, grad = kg sum wd (x - p), M = km sum (1 - d_near/H). */
-typedef struct fine_k { float e, hd, H, kw, kg, km, iso; } fine_k;
+typedef struct fine_k {
+    float e, hd, H, kw, kg, km, iso;
+} fine_k;
 
 /* Proves the FS_REF_FINE boxes of the row at (y, z) inside or not, over the
  * candidates c; the sums of a row stay in registers. Sets bits of row `row`. */
 #if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default"))) /* one AVX2 vector a row */
 #endif
-static uint64_t row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint8_t *bits, int row)
+static uint64_t
+row_bits(const fine_cand *c, float y, float z, const fine_k *K, uint8_t *bits, int row)
 {
     uint64_t reach = 0; /* candidates within reach of the row: FS_REF_FINE distances each */
     float ph[FS_REF_FINE] = {0}, gx[FS_REF_FINE] = {0}, gy[FS_REF_FINE] = {0}, gz[FS_REF_FINE] = {0};
@@ -83,8 +89,13 @@ static uint64_t cell_interior(const reference *R, const int c[3], fine_cand *all
     const fs_grid *g = R->g;
     const fs_field *f = &R->f;
     double s = 8.0 / FS_PI / ((double)f->H * f->H * f->H), H2 = (double)f->H * f->H;
-    fine_k K = {g->cell / FS_REF_FINE, 0, f->H, (float)(f->volume * s), (float)(f->volume * s / H2),
-                (float)(f->volume * 12.0 * s / H2), f->iso};
+    fine_k K = {g->cell / FS_REF_FINE,
+                0,
+                f->H,
+                (float)(f->volume * s),
+                (float)(f->volume * s / H2),
+                (float)(f->volume * 12.0 * s / H2),
+                f->iso};
     K.hd = 0.5f * K.e * sqrtf(3.0f);
     float corner[3], reach = K.H + K.hd;
     int lo[3], hi[3];
@@ -174,13 +185,17 @@ int fs_ref_interior_build(reference *R)
 {
     fs_ref_interior_free(R);
     const fs_grid *g = R->g;
-    if (R->aniso || R->f.kernel != FS_KERNEL_CUBIC || !R->sub || !R->thickness) return FS_OK; /* only thickness walks the inside */
+    if (R->aniso || R->f.kernel != FS_KERNEL_CUBIC || !R->sub || !R->thickness)
+        return FS_OK; /* only thickness walks the inside */
     R->fine_off = malloc((g->ncells ? g->ncells : 1) * sizeof *R->fine_off);
     if (!R->fine_off) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     size_t n = 0;
     for (size_t c = 0; c < g->ncells; c++) R->fine_off[c] = wants_fine(R, (uint32_t)c) ? (uint32_t)n++ : FS_GRID_NONE;
     R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8));
-    if (!R->fine) { fs_ref_interior_free(R); return fs_fail(FS_ERR_RUNTIME, "reference: out of memory"); }
+    if (!R->fine) {
+        fs_ref_interior_free(R);
+        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory");
+    }
     long nb = (long)g->nblocks;
     uint64_t visits = 0, cells = 0;
 #pragma omp parallel reduction(+ : visits, cells)
@@ -193,7 +208,10 @@ int fs_ref_interior_build(reference *R)
                 uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l, off = R->fine_off[slot];
                 if (off == FS_GRID_NONE) continue;
                 uint8_t *bits = R->fine + (size_t)off * (FS_REF_FINE3 / 8);
-                if (!ok) { memset(bits, 0, FS_REF_FINE3 / 8); continue; } /* nothing proven: still exact */
+                if (!ok) {
+                    memset(bits, 0, FS_REF_FINE3 / 8);
+                    continue;
+                } /* nothing proven: still exact */
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};

@@ -10,7 +10,10 @@
 /* A particle near the current cell's stretch of the ray, relative to the
  * stretch's start point o: the ray reaches its foot at local t = a, b is the
  * squared distance from the ray line, rel = p - o. */
-typedef struct near_particle { float a, b, k, ws, rel[3]; uint32_t slot; } near_particle;
+typedef struct near_particle {
+    float a, b, k, ws, rel[3];
+    uint32_t slot;
+} near_particle;
 
 typedef struct stretch {
     const reference *R;
@@ -112,37 +115,37 @@ static int gather(const reference *R, const int c[3], const float o[3], const fl
     int nr = fs_grid_box_runs(g, lo, hi, runs), n = 0;
     for (int r = 0; w && r < nr; r++) w->nbrs += runs[r][1] - runs[r][0];
     for (int r = 0; r < nr; r++)
-            for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
-                const float *q = g->pos4 + 4 * (size_t)s;
-                float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
-                float a, b, k = 1, ws = 1;
-                if (R->inv) {
-                    /* Metric |A^-1 (o + t d - q)|^2 = k (t - a)^2 + b: the same form as the isotropic one. */
-                    const float *M = R->inv + 9 * (size_t)s;
-                    float md[3], mr[3];
-                    for (int x = 0; x < 3; x++) {
-                        md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
-                        mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
-                    }
-                    k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
-                    a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
-                    b = mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a;
-                    ws = R->wscale[s];
-                } else {
-                    a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
-                    b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
+        for (uint32_t s = runs[r][0]; s < runs[r][1]; s++) {
+            const float *q = g->pos4 + 4 * (size_t)s;
+            float rel[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
+            float a, b, k = 1, ws = 1;
+            if (R->inv) {
+                /* Metric |A^-1 (o + t d - q)|^2 = k (t - a)^2 + b: the same form as the isotropic one. */
+                const float *M = R->inv + 9 * (size_t)s;
+                float md[3], mr[3];
+                for (int x = 0; x < 3; x++) {
+                    md[x] = M[3 * x] * d[0] + M[3 * x + 1] * d[1] + M[3 * x + 2] * d[2];
+                    mr[x] = M[3 * x] * rel[0] + M[3 * x + 1] * rel[1] + M[3 * x + 2] * rel[2];
                 }
-                float e = a < 0 ? a : (a > len ? a - len : 0); /* foot outside the stretch */
-                b = b > 0 ? b : 0;
-                if (b + k * (e * e) >= H2) continue;
-                near_particle *p = &out[n++];
-                p->a = a;
-                p->b = b;
-                p->k = k;
-                p->ws = ws;
-                p->slot = s;
-                memcpy(p->rel, rel, sizeof rel);
+                k = md[0] * md[0] + md[1] * md[1] + md[2] * md[2];
+                a = (md[0] * mr[0] + md[1] * mr[1] + md[2] * mr[2]) / k;
+                b = mr[0] * mr[0] + mr[1] * mr[1] + mr[2] * mr[2] - k * a * a;
+                ws = R->wscale[s];
+            } else {
+                a = rel[0] * d[0] + rel[1] * d[1] + rel[2] * d[2];
+                b = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2] - a * a;
             }
+            float e = a < 0 ? a : (a > len ? a - len : 0); /* foot outside the stretch */
+            b = b > 0 ? b : 0;
+            if (b + k * (e * e) >= H2) continue;
+            near_particle *p = &out[n++];
+            p->a = a;
+            p->b = b;
+            p->k = k;
+            p->ws = ws;
+            p->slot = s;
+            memcpy(p->rel, rel, sizeof rel);
+        }
     return n;
 }
 
@@ -190,7 +193,12 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
         float tn = s >= rem ? len : t + s;
         if (!proven) gn = phi_at(S, tn) - iso;
         if (S->cnt) work(S)->samples++; /* the step's end, sampled or proven */
-        if (m->inside == (gn >= 0)) { m->s_prev = s; t = tn; m->g = gn; continue; }
+        if (m->inside == (gn >= 0)) {
+            m->s_prev = s;
+            t = tn;
+            m->g = gn;
+            continue;
+        }
         /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
         float lo = t, hi = tn;
         while (hi - lo > tol) {
@@ -200,30 +208,17 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
                 work(S)->samples++;
                 work(S)->refine_evals++;
             }
-            if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid; else hi = mid;
+            if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid;
+            else hi = mid;
         }
         float tc = 0.5f * (lo + hi);
         if (S->cnt) work(S)->crossings++;
-        if (!m->inside) {
-            if (!res->hit) {
-                float gr[3], l;
-                grad_at(S, tc, gr);
-                l = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
-                for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? -gr[a] / l : -S->d[a];
-                res->hit = 1;
-                res->t = t0 + tc;
-                if (!R->thickness) return 1;
-            }
-            m->t_enter = t0 + tc;
-            m->counting = 1;
-            m->layers++;
-        } else {
-            if (m->counting) res->thick += t0 + tc - m->t_enter;
-            m->counting = 0;
-            if (m->layers >= R->max_layers) return 1;
+        float out[3] = {0, 0, 0};
+        if (!m->inside && !res->hit) { /* the first hit's normal: -grad phi */
+            grad_at(S, tc, out);
+            for (int a = 0; a < 3; a++) out[a] = -out[a];
         }
-        m->inside = !m->inside;
-        m->s_prev = R->step_min;
+        if (fs_ref_cross(R, m, res, t0 + tc, out, S->d)) return 1;
         t = tn;
         m->g = gn;
     }

@@ -22,10 +22,7 @@
  * they only shorten the proven step and lengthen the bracket. */
 #define FS_TAYLOR_EPS 2e-4f
 
-int fs_ref_taylor_applies(const reference *R)
-{
-    return R->inv == NULL && R->f.kernel == FS_KERNEL_CUBIC;
-}
+int fs_ref_taylor_applies(const reference *R) { return R->inv == NULL && R->f.kernel == FS_KERNEL_CUBIC; }
 
 /* One build for AVX2 machines, one for any x86-64, as reference_fast.c's field_sum. */
 #if defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)

@@ -11,8 +11,13 @@
 /* Boxes tested per ray; the clusters beyond these share one box. */
 #define FS_REF_MAX_BOXES 16
 
-typedef struct cell_box { int lo[3], hi[3]; } cell_box;
-typedef struct span { float te, tx; int box; } span;
+typedef struct cell_box {
+    int lo[3], hi[3];
+} cell_box;
+typedef struct span {
+    float te, tx;
+    int box;
+} span;
 
 /* Entry and exit distances of the ray in a box of cells; 0 when it misses. */
 static int clip_box(const fs_grid *g, const cell_box *b, const float o[3], const float d[3], float *te, float *tx)
@@ -25,7 +30,11 @@ static int clip_box(const fs_grid *g, const cell_box *b, const float o[3], const
             continue;
         }
         float u = (lo - o[a]) / d[a], v = (hi - o[a]) / d[a];
-        if (u > v) { float w = u; u = v; v = w; }
+        if (u > v) {
+            float w = u;
+            u = v;
+            v = w;
+        }
         t0 = fs_maxf(t0, u);
         t1 = fs_minf(t1, v);
     }
@@ -115,8 +124,7 @@ static int walk_box(const reference *R, const cell_box *b, const float o[3], con
     }
 }
 
-void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx,
-                 float *t_last)
+void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_visit visit, void *ctx, float *t_last)
 {
     const fs_grid *g = R->g;
     cell_box boxes[FS_REF_MAX_BOXES];
@@ -127,7 +135,10 @@ void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_
         float te, tx;
         if (!clip_box(g, &boxes[i], o, d, &te, &tx)) continue;
         int k = ns++; /* insertion by entry distance */
-        while (k > 0 && sp[k - 1].te > te) { sp[k] = sp[k - 1]; k--; }
+        while (k > 0 && sp[k - 1].te > te) {
+            sp[k] = sp[k - 1];
+            k--;
+        }
         sp[k] = (span){te, tx, i};
     }
     /* Two clusters' boxes may overlap; the walk of the first already visited
@@ -137,8 +148,14 @@ void fs_ref_walk(const reference *R, const float o[3], const float d[3], fs_ref_
     for (int i = 0; i < ns; i++) {
         float te = sp[i].te > done ? sp[i].te : done;
         if (te >= sp[i].tx) continue;
-        if (i > 0 && visit(ctx, NULL, FS_GRID_NONE, done, te)) { *t_last = te; return; }
-        if (walk_box(R, &boxes[sp[i].box], o, d, te, sp[i].tx, visit, ctx)) { *t_last = sp[i].tx; return; }
+        if (i > 0 && visit(ctx, NULL, FS_GRID_NONE, done, te)) {
+            *t_last = te;
+            return;
+        }
+        if (walk_box(R, &boxes[sp[i].box], o, d, te, sp[i].tx, visit, ctx)) {
+            *t_last = sp[i].tx;
+            return;
+        }
         done = sp[i].tx;
     }
     *t_last = done;
@@ -152,6 +169,28 @@ void fs_ref_leave_fluid(march *m, ray_result *res, float t, const reference *R)
     m->started = 1;
 }
 
+int fs_ref_cross(const reference *R, march *m, ray_result *res, float t, const float outward[3], const float d[3])
+{
+    if (!m->inside) {
+        if (!res->hit) {
+            float l = sqrtf(outward[0] * outward[0] + outward[1] * outward[1] + outward[2] * outward[2]);
+            for (int a = 0; a < 3; a++) res->n[a] = l > 0 ? outward[a] / l : -d[a];
+            res->hit = 1;
+            res->t = t;
+            if (!R->thickness) return 1;
+        }
+        m->t_enter = t;
+        m->counting = 1;
+        m->layers++;
+    } else {
+        if (m->counting) res->thick += t - m->t_enter;
+        m->counting = 0;
+        if (m->layers >= R->max_layers) return 1;
+    }
+    m->inside = !m->inside;
+    m->s_prev = R->step_min;
+    return 0;
+}
 
 void fs_ref_work_add(ray_work *dst, const ray_work *src)
 {

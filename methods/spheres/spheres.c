@@ -14,7 +14,8 @@
 #define MAX_CHUNKS 16
 
 typedef struct spheres_params {
-    double radius_scale, thickness;
+    double radius_scale;
+    bool thickness;
 } spheres_params;
 
 #define FIELD(f) FS_PARAM_FIELD(spheres_params, f)
@@ -52,14 +53,20 @@ static void *create(const fs_method_setup *setup)
     spheres_params p;
     if (fs_method_params_copy("spheres", setup, &p, sizeof p)) return NULL;
     spheres *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "out of memory");
+        return NULL;
+    }
     s->field = setup->field;
     s->radius = (float)p.radius_scale * setup->field.r;
-    s->thickness = p.thickness != 0;
+    s->thickness = p.thickness;
     const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     s->prog_surface = fs_program_build(surf, "POS_PACKED3 1");
     if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "POS_PACKED3 1\nMODE_THICKNESS 1");
-    if (!s->prog_thickness) { destroy(s); return NULL; }
+    if (!s->prog_thickness) {
+        destroy(s);
+        return NULL;
+    }
     glCreateVertexArrays(1, &s->vao);
     return s;
 }

@@ -5,14 +5,15 @@
 #include "gl.h"
 #include "gl_target.h"
 #include "shader.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define TRI_VEC4 5           /* vec4s per plane triangle (caustic_accum.vert.glsl) */
-#define SQ_MIN 1e-4f         /* texel^2: smaller plane triangles go whole to one texel */
-#define W_MIN 1e-4f          /* screen pixels with less summed weight are uncovered */
+#define TRI_VEC4 5   /* vec4s per plane triangle (caustic_accum.vert.glsl) */
+#define SQ_MIN 1e-4f /* texel^2: smaller plane triangles go whole to one texel */
+#define W_MIN 1e-4f  /* screen pixels with less summed weight are uncovered */
 
 struct fs_caustics {
     unsigned prog_depth, prog_splat, prog_norm, prog_accum;
@@ -28,9 +29,9 @@ struct fs_caustics {
     unsigned tri_buf;
     size_t tri_buf_bytes;
     /* CPU work arrays */
-    double *vtx;        /* per screen pixel (VTX): s[3], refracted t[3], cos(theta_i) T, depth d, valid */
-    float *tris;        /* plane triangles, TRI_VEC4 vec4 each */
-    size_t tris_cap;    /* in triangles */
+    double *vtx;     /* per screen pixel (VTX): s[3], refracted t[3], cos(theta_i) T, depth d, valid */
+    float *tris;     /* plane triangles, TRI_VEC4 vec4 each */
+    size_t tris_cap; /* in triangles */
     size_t ntri;
     double flux_in, flux_plane[FS_CAUSTICS_MAX_PLANES];
     float eps_radii, max_jump_px;
@@ -40,7 +41,10 @@ struct fs_caustics {
 fs_caustics *fs_caustics_create(void)
 {
     fs_caustics *c = calloc(1, sizeof *c);
-    if (!c) { fs_fail(FS_ERR_RUNTIME, "out of memory"); return NULL; }
+    if (!c) {
+        fs_fail(FS_ERR_RUNTIME, "out of memory");
+        return NULL;
+    }
     c->eps_radii = 1.0f;
     c->max_jump_px = 4.0f;
     const char *scr[] = {"surfels/caustic_screen.vert.glsl", "surfels/caustic_screen.frag.glsl", NULL};
@@ -93,7 +97,6 @@ void fs_caustics_destroy(fs_caustics *c)
     free(c);
 }
 
-void fs_caustics_set_epsilon(fs_caustics *c, float radii) { c->eps_radii = radii; }
 void fs_caustics_set_max_jump(fs_caustics *c, float pixels) { c->max_jump_px = pixels; }
 
 static int ensure_screen(fs_caustics *c, int res)
@@ -103,7 +106,10 @@ static int ensure_screen(fs_caustics *c, int res)
     size_t n = (size_t)res * res;
     c->screen = malloc(n * 4 * sizeof *c->screen);
     c->vtx = malloc(n * VTX * sizeof *c->vtx);
-    if (!c->screen || !c->vtx) { free_screen(c); return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (screen %d^2)", res); }
+    if (!c->screen || !c->vtx) {
+        free_screen(c);
+        return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory (screen %d^2)", res);
+    }
     c->screen_acc = fs_gl_texture_2d(GL_RGBA32F, res, res);
     c->screen_dacc = fs_gl_texture_2d(GL_R32F, res, res);
     c->screen_zbuf = fs_gl_texture_2d(GL_DEPTH_COMPONENT32F, res, res);
@@ -142,12 +148,14 @@ static int ensure_planes(fs_caustics *c, int res, int np)
 
 static int check_setup(const fs_caustics_setup *s)
 {
-    if (s->up_axis < 0 || s->up_axis > 2) return fs_fail(FS_ERR_INPUT, "caustics: up_axis %d is not 0, 1 or 2", s->up_axis);
+    if (s->up_axis < 0 || s->up_axis > 2)
+        return fs_fail(FS_ERR_INPUT, "caustics: up_axis %d is not 0, 1 or 2", s->up_axis);
     const float *L = s->light_dir;
     float len = sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
     if (!(len > 0.0f) || !isfinite(len)) return fs_fail(FS_ERR_INPUT, "caustics: light_dir has no direction");
     if (!(L[s->up_axis] / len > 0.01f))
-        return fs_fail(FS_ERR_INPUT, "caustics: the light must come from above (light_dir along up %g)", L[s->up_axis] / len);
+        return fs_fail(FS_ERR_INPUT, "caustics: the light must come from above (light_dir along up %g)",
+                       L[s->up_axis] / len);
     if (!(s->ior >= 1.0f && s->ior < 10.0f)) return fs_fail(FS_ERR_INPUT, "caustics: ior %g out of range", s->ior);
     for (int k = 0; k < 3; k++)
         if (!(s->extinction[k] >= 0.0f) || !(s->light_color[k] >= 0.0f) || !isfinite(s->light_color[k]) ||
@@ -201,7 +209,8 @@ static void draw_chunked(unsigned buf, size_t n, size_t stride)
     for (size_t first = 0; first < n; first += chunk) {
         size_t cnt = n - first < chunk ? n - first : chunk;
         if (first == 0 && cnt == n) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf);
-        else glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, buf, (GLintptr)(first * stride), (GLsizeiptr)(cnt * stride));
+        else
+            glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, buf, (GLintptr)(first * stride), (GLsizeiptr)(cnt * stride));
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)cnt);
     }
 }
@@ -240,8 +249,6 @@ static double cell_size(const fs_caustics_setup *s, int axis, int res)
     return ((double)s->rect_max[axis] - s->rect_min[axis]) / res;
 }
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 /* Checks the setup and copies it to s with light_dir made unit; sizes the
  * virtual screen and the sample planes. */
 static int begin_run(fs_caustics *c, const fs_caustics_setup *setup, fs_caustics_setup *s)
@@ -249,7 +256,8 @@ static int begin_run(fs_caustics *c, const fs_caustics_setup *setup, fs_caustics
     int rc = check_setup(setup);
     if (rc) return rc;
     *s = *setup;
-    float len = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] + s->light_dir[2] * s->light_dir[2]);
+    float len = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] +
+                      s->light_dir[2] * s->light_dir[2]);
     for (int k = 0; k < 3; k++) s->light_dir[k] /= len;
     if ((rc = ensure_screen(c, s->screen_res)) || (rc = ensure_planes(c, s->plane_res, s->nplanes))) return rc;
     return FS_OK;
@@ -357,11 +365,11 @@ static void surface_point(const float px[4], const double P[3], const double L[3
     if (!(px[3] >= 0.0f) || !isfinite(px[0] + px[1] + px[2] + px[3])) return;
     const double eta = 1.0 / ior;
     double nrm[3] = {px[0], px[1], px[2]}, d = px[3];
-    double ci = dot3(nrm, L);
+    double ci = fs_v3d_dot(nrm, L);
     if (ci < 0) ci = 0;
     double st2 = eta * eta * (1.0 - ci * ci), ct = sqrt(1.0 - st2);
     for (int k = 0; k < 3; k++) {
-        v[k] = P[k] - d * L[k];                             /* s */
+        v[k] = P[k] - d * L[k];                            /* s */
         v[3 + k] = -eta * L[k] + (eta * ci - ct) * nrm[k]; /* refracted, unit */
     }
     v[6] = ci * fresnel_t(ci, ct, ior);
@@ -399,11 +407,12 @@ static int is_water_triangle(const double *v0, const double *v1, const double *v
 static double triangle_area(const double *v0, const double *v1, const double *v2)
 {
     double e1[3], e2[3], cr[3];
-    for (int k = 0; k < 3; k++) { e1[k] = v1[k] - v0[k]; e2[k] = v2[k] - v0[k]; }
-    cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    return 0.5 * sqrt(dot3(cr, cr));
+    for (int k = 0; k < 3; k++) {
+        e1[k] = v1[k] - v0[k];
+        e2[k] = v2[k] - v0[k];
+    }
+    fs_v3d_cross(e1, e2, cr);
+    return 0.5 * sqrt(fs_v3d_dot(cr, cr));
 }
 
 /* Step 2 (5.2): the illumination volumes, swept from the water triangles
@@ -419,7 +428,11 @@ static int illumination_volumes(fs_caustics *c, const fs_caustics_setup *s, wate
     if (rc) return rc;
     w->idx = malloc(maxtri * 3 * sizeof *w->idx);
     w->area = malloc(maxtri * sizeof *w->area);
-    if (!w->idx || !w->area) { free(w->idx); free(w->area); return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory"); }
+    if (!w->idx || !w->area) {
+        free(w->idx);
+        free(w->area);
+        return fs_fail(FS_ERR_RUNTIME, "caustics: out of memory");
+    }
     w->n = 0;
     double flux_in = 0;
     for (int j = 0; j + 1 < res; j++)
@@ -428,7 +441,8 @@ static int illumination_volumes(fs_caustics *c, const fs_caustics_setup *s, wate
                              (uint32_t)((j + 1) * res + i + 1)};
             const uint32_t tri[2][3] = {{q[0], q[1], q[2]}, {q[3], q[1], q[2]}};
             for (int h = 0; h < 2; h++) {
-                const double *v0 = c->vtx + VTX * tri[h][0], *v1 = c->vtx + VTX * tri[h][1], *v2 = c->vtx + VTX * tri[h][2];
+                const double *v0 = c->vtx + VTX * tri[h][0], *v1 = c->vtx + VTX * tri[h][1],
+                             *v2 = c->vtx + VTX * tri[h][2];
                 if (!is_water_triangle(v0, v1, v2, jump)) continue;
                 memcpy(w->idx + 3 * w->n, tri[h], sizeof tri[h]);
                 w->area[w->n] = triangle_area(v0, v1, v2);
@@ -592,4 +606,3 @@ double fs_caustics_flux_plane(const fs_caustics *c, int plane)
 {
     return plane >= 0 && plane < c->nplanes ? c->flux_plane[plane] : 0.0;
 }
-const float *fs_caustics_screen(const fs_caustics *c) { return c->screen; }

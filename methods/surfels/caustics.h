@@ -37,15 +37,15 @@
 #define FS_CAUSTICS_MAX_PLANES 16
 
 typedef struct fs_caustics_setup {
-    int up_axis;               /* 0 x, 1 y, 2 z: vertical axis; the horizontal axes are (up+1)%3, (up+2)%3 */
-    float light_dir[3];        /* towards the light (world; made unit); its up component must exceed 0.01 of its length */
-    float light_color[3];      /* L_i per RGB channel */
-    float ior;                 /* water's index of refraction (1.33) */
-    float extinction[3];       /* c(lambda), per scene unit of path in water */
+    int up_axis;          /* 0 x, 1 y, 2 z: vertical axis; the horizontal axes are (up+1)%3, (up+2)%3 */
+    float light_dir[3];   /* towards the light (world; made unit); its up component must exceed 0.01 of its length */
+    float light_color[3]; /* L_i per RGB channel */
+    float ior;            /* water's index of refraction (1.33) */
+    float extinction[3];  /* c(lambda), per scene unit of path in water */
     float rect_min[2], rect_max[2]; /* horizontal extent (axes a, b above) of screen and planes */
-    float top;                 /* height of the virtual screen (above all water; surfels above it are ignored) */
-    int screen_res;            /* virtual screen pixels per side (the paper: 128) */
-    int plane_res;             /* sample plane texels per side */
+    float top;                      /* height of the virtual screen (above all water; surfels above it are ignored) */
+    int screen_res;                 /* virtual screen pixels per side (the paper: 128) */
+    int plane_res;                  /* sample plane texels per side */
     int nplanes;
     float plane_height[FS_CAUSTICS_MAX_PLANES]; /* along up; plane 0 is the floor */
 } fs_caustics_setup;
@@ -78,17 +78,11 @@ size_t fs_caustics_triangles(const fs_caustics *c);
 double fs_caustics_flux_in(const fs_caustics *c);
 double fs_caustics_flux_plane(const fs_caustics *c, int plane);
 
-/* Tuning (kept across runs). epsilon: the depth-pass offset in surfel radii
- * (surfels whose depth along the light is within epsilon R of the first
- * surface are blended; default 1). max_jump: in screen pixel sizes, the largest
- * depth difference inside one water triangle (default 4). */
-void fs_caustics_set_epsilon(fs_caustics *c, float radii);
+/* Tuning (kept across runs). max_jump: in screen pixel sizes, the largest
+ * depth difference inside one water triangle (default 4). The depth-pass offset
+ * epsilon stays at its default, 1 surfel radius (surfels whose depth along the
+ * light is within epsilon R of the first surface are blended). */
 void fs_caustics_set_max_jump(fs_caustics *c, float pixels);
-/* After a run: the normalised virtual screen, screen_res^2 x (n(x,y), d(x,y)),
- * row y = 0 first, d = distance from the screen along the light, -1 where no
- * surfel covers the pixel. Pixel (i,j) is centred at rect_min + (i+0.5, j+0.5)
- * pixel sizes on the screen. */
-const float *fs_caustics_screen(const fs_caustics *c);
 /* Unpolarised Fresnel transmittance from air into a medium of index ior at
  * incidence cosine cos_i (0 for cos_i <= 0). */
 double fs_caustics_transmittance(double cos_i, double ior);

@@ -40,7 +40,7 @@ static void grad_at(const fs_density_grid *g, const float x[3], float out[3])
     for (int corner = 0; corner < 8; corner++) {
         int c[3] = {c0[0] + (corner & 1), c0[1] + ((corner >> 1) & 1), c0[2] + ((corner >> 2) & 1)};
         float w = ((corner & 1) ? u[0] : 1 - u[0]) * (((corner >> 1) & 1) ? u[1] : 1 - u[1]) *
-                  (((corner >> 2) & 1) ? u[2] : 1 - u[2]);
+            (((corner >> 2) & 1) ? u[2] : 1 - u[2]);
         float gp[3];
         grad_point(g, c, gp);
         for (int a = 0; a < 3; a++) out[a] += w * gp[a];
@@ -121,8 +121,7 @@ static int fill_gap(const fs_density_grid *g, const int c[3], const fs_surfel_ex
     return fs_surfel_push(out, ctr, nrm, radius);
 }
 
-int fs_surfels_extract(const fs_density_grid *g, const fs_surfel_extract_opts *o, fs_surfel_set *out,
-                       size_t *gap_added)
+int fs_surfels_extract(const fs_density_grid *g, const fs_surfel_extract_opts *o, fs_surfel_set *out, size_t *gap_added)
 {
     out->n = 0;
     if (gap_added) *gap_added = 0;

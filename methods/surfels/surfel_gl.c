@@ -100,8 +100,8 @@ static void inverse_view(const fs_camera *cam, float inv[16])
     float r[3], u[3], f[3];
     fs_camera_basis(cam, r, u, f);
     /* columns: right, up, -forward, eye */
-    float m[16] = {r[0], r[1], r[2], 0, u[0], u[1], u[2], 0, -f[0], -f[1], -f[2], 0, cam->eye[0], cam->eye[1],
-                   cam->eye[2], 1};
+    float m[16] = {r[0],  r[1],  r[2],  0, u[0],        u[1],        u[2],        0,
+                   -f[0], -f[1], -f[2], 0, cam->eye[0], cam->eye[1], cam->eye[2], 1};
     memcpy(inv, m, sizeof m);
 }
 

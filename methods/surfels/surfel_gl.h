@@ -19,9 +19,9 @@ typedef struct surfel_look {
     float floor_h, check;
     unsigned caustic_tex; /* GL_TEXTURE_2D_ARRAY or 0 */
     float rect_min[2], rect_max[2];
-    unsigned slice_tex;   /* GL_TEXTURE_2D_ARRAY of sliced object images, or 0 */
+    unsigned slice_tex; /* GL_TEXTURE_2D_ARRAY of sliced object images, or 0 */
     int nslices;
-    float slice_h[9];     /* nslices + 1 plane heights */
+    float slice_h[9]; /* nslices + 1 plane heights */
 } surfel_look;
 
 typedef struct surfel_gl {

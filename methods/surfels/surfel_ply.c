@@ -15,13 +15,11 @@ static unsigned char *put_f32(unsigned char *b, float f)
 
 int fs_surfels_write_ply(const fs_surfel_set *set, const char *path)
 {
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
+    fs_output out;
+    int rc = fs_output_open(&out, path);
     if (rc) return rc;
-    FILE *f = fopen(tmp, "wb");
-    int ok = f != NULL;
-    if (ok)
-        ok = fprintf(f,
+    FILE *f = out.f;
+    int ok = fprintf(f,
                      "ply\nformat binary_little_endian 1.0\ncomment surfels written by fluidsurf (iwasaki2006)\n"
                      "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n"
                      "property float nx\nproperty float ny\nproperty float nz\nproperty float radius\nend_header\n",
@@ -35,10 +33,5 @@ int fs_surfels_write_ply(const fs_surfel_set *set, const char *path)
         put_f32(w, s->radius);
         ok = fwrite(rec, 1, sizeof rec, f) == sizeof rec;
     }
-    if (f && fclose(f) != 0) ok = 0;
-    if (!ok) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: error writing PLY data", path);
-    }
-    return fs_output_end(path, tmp, 1);
+    return fs_output_close(&out, ok);
 }

@@ -20,26 +20,44 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef enum { GRID_SPLAT, GRID_EXACT } surfels_grid_build;
+typedef enum { OBJECT_NONE, OBJECT_BOX } surfels_object;
+
 typedef struct surfels_params {
-    double grid_res, grid_build, clusters, radius_scale, gap, epsilon, gauss, caustics, caustic_screen;
-    double caustic_map, thickness, object, object_slices;
+    int grid_res;
+    surfels_grid_build grid_build;
+    int clusters;
+    double radius_scale, gap, epsilon, gauss;
+    bool caustics;
+    int caustic_screen, caustic_map;
+    bool thickness;
+    surfels_object object;
+    int object_slices;
 } surfels_params;
 
 #define FIELD(f) FS_PARAM_FIELD(surfels_params, f)
 static const fs_param_def params[] = {
-    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL, "density grid points along the longest axis of the particles' box (paper: 256)"},
-    {FIELD(grid_build), FS_PARAM_ENUM, 0, 0, 1, "splat|exact", "density grid: slice splatting on GL (the paper) or the exact CPU sum"},
+    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL,
+     "density grid points along the longest axis of the particles' box (paper: 256)"},
+    {FIELD(grid_build), FS_PARAM_ENUM, 0, 0, 1, "splat|exact",
+     "density grid: slice splatting on GL (the paper) or the exact CPU sum"},
     {FIELD(clusters), FS_PARAM_INT, 16, 1, 4096, NULL, "N_c, height clusters of particles for the slice splatting"},
     {FIELD(radius_scale), FS_PARAM_FLOAT, 1.0, 0.1, 8.0, NULL, "surfel radius R in grid spacings"},
-    {FIELD(gap), FS_PARAM_FLOAT, 0.75, 0.0, 4.0, NULL, "gap filling: a cell whose crossings spread wider than this (grid spacings) gets a surfel at their centre; 0 = off"},
+    {FIELD(gap), FS_PARAM_FLOAT, 0.75, 0.0, 4.0, NULL,
+     "gap filling: a cell whose crossings spread wider than this (grid spacings) gets a surfel at their centre; 0 = off"},
     {FIELD(epsilon), FS_PARAM_FLOAT, 0.5, 0.0, 16.0, NULL, "visibility-pass depth offset epsilon, multiples of r"},
-    {FIELD(gauss), FS_PARAM_FLOAT, 2.0, 0.0, 20.0, NULL, "surfel blending weight g(t) = exp(-gauss t^2), t = distance / R"},
+    {FIELD(gauss), FS_PARAM_FLOAT, 2.0, 0.0, 20.0, NULL,
+     "surfel blending weight g(t) = exp(-gauss t^2), t = distance / R"},
     {FIELD(caustics), FS_PARAM_BOOL, 1, 0, 1, NULL, "caustics from illumination volumes (on/off)"},
-    {FIELD(caustic_screen), FS_PARAM_INT, 128, 8, 2048, NULL, "virtual screen pixels per side for the illumination volumes (paper: 128)"},
+    {FIELD(caustic_screen), FS_PARAM_INT, 128, 8, 2048, NULL,
+     "virtual screen pixels per side for the illumination volumes (paper: 128)"},
     {FIELD(caustic_map), FS_PARAM_INT, 256, 8, 4096, NULL, "sample plane texels per side"},
-    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading by a march through the grid (on/off)"},
-    {FIELD(object), FS_PARAM_ENUM, 1, 0, 1, "none|box", "an opaque box under the water, seen by refraction mapping of sliced object images (own appearance only)"},
-    {FIELD(object_slices), FS_PARAM_INT, 3, 1, OBJECT_MAX_SLICES, NULL, "slabs (sample planes - 1) the object is sliced into"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL,
+     "thickness for the shared shading by a march through the grid (on/off)"},
+    {FIELD(object), FS_PARAM_ENUM, 1, 0, 1, "none|box",
+     "an opaque box under the water, seen by refraction mapping of sliced object images (own appearance only)"},
+    {FIELD(object_slices), FS_PARAM_INT, 3, 1, OBJECT_MAX_SLICES, NULL,
+     "slabs (sample planes - 1) the object is sliced into"},
 };
 #undef FIELD
 
@@ -56,7 +74,7 @@ typedef struct surfels {
     const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
     const fs_particles *all;
     fs_particles bulk;
-    size_t dropped;      /* far strays left out of the density grid; bulk is then a copy */
+    size_t dropped; /* far strays left out of the density grid; bulk is then a copy */
     float floor_h;
     const fs_grid *ng;
     fs_grid own;
@@ -94,14 +112,26 @@ static void *create(const fs_method_setup *setup)
     const fs_field *f = &setup->field;
     if (fs_method_check_field("surfels", f)) return NULL;
     surfels *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "surfels: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "surfels: out of memory");
+        return NULL;
+    }
     s->f = *f;
-    if (fs_method_params_copy("surfels", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
+    if (fs_method_params_copy("surfels", setup, &s->params, sizeof s->params)) {
+        free(s);
+        return NULL;
+    }
     if (setup->scene) s->scene = *setup->scene;
     else fs_scene_defaults(&s->scene);
-    if (surfel_gl_create(&s->gl)) { destroy(s); return NULL; }
+    if (surfel_gl_create(&s->gl)) {
+        destroy(s);
+        return NULL;
+    }
     s->gl_ready = 1;
-    if (!(s->splat = fs_slice_splat_create()) || !(s->caustics = fs_caustics_create())) { destroy(s); return NULL; }
+    if (!(s->splat = fs_slice_splat_create()) || !(s->caustics = fs_caustics_create())) {
+        destroy(s);
+        return NULL;
+    }
     return s;
 }
 
@@ -111,8 +141,12 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     if (s->dropped) fs_particles_free(&s->bulk);
     s->p = s->all = NULL;
     int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
-    if (rc) { s->dropped = 0; return rc; }
-    if (s->dropped) fs_note("surfels: %zu far stray particle(s) outside the bulk are left out of the density grid", s->dropped);
+    if (rc) {
+        s->dropped = 0;
+        return rc;
+    }
+    if (s->dropped)
+        fs_note("surfels: %zu far stray particle(s) outside the bulk are left out of the density grid", s->dropped);
     s->p = &s->bulk;
     s->all = p;
     s->floor_h = fs_scene_floor(&s->scene, g);
@@ -125,16 +159,15 @@ static int build_surface(surfels *s, fs_stages *t)
 {
     const fs_particles *p = s->p;
     fs_density_grid_free(&s->dg);
-    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->params.grid_res);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, s->params.grid_res);
     if (rc) return rc;
     double t0 = fs_gl_stage_start();
-    if (s->params.grid_build == 0)
-        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters);
-    else
-        rc = fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
+    if (s->params.grid_build == GRID_SPLAT)
+        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, s->params.clusters);
+    else rc = fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
     if (rc) return rc;
     double t1;
-    if (s->params.grid_build == 0) { /* slice splatting: a GL stage */
+    if (s->params.grid_build == GRID_SPLAT) { /* slice splatting: a GL stage */
         t1 = fs_gl_stage_end(t, "density_grid", t0);
     } else { /* the exact CPU sum: the GL clock would time the CPU */
         t1 = fs_now_ms();
@@ -143,7 +176,7 @@ static int build_surface(surfels *s, fs_stages *t)
     fs_surfel_extract_opts eo = {s->f.iso, (float)s->params.radius_scale, (float)s->params.gap};
     if ((rc = fs_surfels_extract(&s->dg, &eo, &s->set, &s->gap_added))) return rc;
     if ((rc = surfel_gl_upload(&s->gl, &s->set))) return rc;
-    if (s->params.thickness != 0 && (rc = surfel_gl_upload_grid(&s->gl, &s->dg))) return rc;
+    if (s->params.thickness && (rc = surfel_gl_upload_grid(&s->gl, &s->dg))) return rc;
     glFinish();
     fs_stages_add(t, "extract", fs_now_ms() - t1);
     return FS_OK;
@@ -200,7 +233,8 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     int up = sc->up_axis, a = (up + 1) % 3, b = (up + 2) % 3;
     memset(l, 0, sizeof *l);
     memcpy(l->light_dir, sc->light_dir, sizeof l->light_dir);
-    float ln = sqrtf(l->light_dir[0] * l->light_dir[0] + l->light_dir[1] * l->light_dir[1] + l->light_dir[2] * l->light_dir[2]);
+    float ln = sqrtf(l->light_dir[0] * l->light_dir[0] + l->light_dir[1] * l->light_dir[1] +
+                     l->light_dir[2] * l->light_dir[2]);
     for (int i = 0; i < 3; i++) l->light_dir[i] = ln > 0 ? l->light_dir[i] / ln : (i == up);
     memcpy(l->light_color, sc->light_color, sizeof l->light_color);
     l->ambient = sc->ambient;
@@ -229,27 +263,27 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     cs.rect_max[0] = g->origin[a] + (g->dim[a] - 1) * g->spacing + reach;
     cs.rect_max[1] = g->origin[b] + (g->dim[b] - 1) * g->spacing + reach;
     cs.top = top + g->spacing;
-    cs.screen_res = (int)s->params.caustic_screen;
-    cs.plane_res = (int)s->params.caustic_map;
+    cs.screen_res = s->params.caustic_screen;
+    cs.plane_res = s->params.caustic_map;
     cs.nplanes = 1;
     cs.plane_height[0] = l->floor_h;
     memcpy(l->rect_min, cs.rect_min, sizeof l->rect_min);
     memcpy(l->rect_max, cs.rect_max, sizeof l->rect_max);
     object_box box;
-    int object = s->params.object != 0;
+    int object = s->params.object == OBJECT_BOX;
     if (object) {
         box = place_object(s->p, up, l->floor_h);
         object = box.top > box.bottom;
     }
     if (object) { /* sample planes evenly from the floor to the box's top */
-        int n = (int)s->params.object_slices;
+        int n = s->params.object_slices;
         cs.nplanes = n + 1;
         for (int k = 0; k <= n; k++) cs.plane_height[k] = box.bottom + (box.top - box.bottom) * k / n;
         l->nslices = n;
         memcpy(l->slice_h, cs.plane_height, (size_t)(n + 1) * sizeof(float));
     }
     const float *maps = NULL;
-    if (s->params.caustics != 0) {
+    if (s->params.caustics) {
         double t0 = fs_gl_stage_start();
         int rc = fs_caustics_run(s->caustics, &cs, s->gl.buf, s->gl.n);
         if (rc) return rc;
@@ -276,7 +310,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     surfel_draw_opts o = {
         .epsilon = (float)s->params.epsilon * s->f.r,
         .gauss = (float)s->params.gauss,
-        .thickness = s->params.thickness != 0,
+        .thickness = s->params.thickness,
         .step = s->dg.spacing,
         .iso = s->f.iso,
         .grid_spacing = s->dg.spacing,
@@ -303,13 +337,14 @@ static const fs_aov_def aovs[] = {{FS_AOV_OWN, 4, 0}, {FS_AOV_CAUSTICS, 1, 0}};
 const fs_method fs_method_surfels = {
     .name = "surfels",
     .cost = 19, /* results/demo/timings.csv at 16904c2 (docs/DESIGN.md, "Sharded studies") */
-    .description = "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
+    .description =
+        "slice-splat density grid, iso-surface surfels, 3-pass splatting with reflection, refraction, caustics",
     .paper = "iwasaki2006",
     .appearance = "environment reflection, refraction of the floor and a sunken box, caustics (iwasaki2006)",
     .exports = ".vdb density grid (OpenVDB FloatGrid), .ply surfels",
     .needs_gl = 1,
     .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
-                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

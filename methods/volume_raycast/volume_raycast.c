@@ -21,26 +21,39 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT } vr_build;
+typedef enum { MODE_SURFACE, MODE_TRANSLUCENT } vr_mode;
+
 typedef struct volume_raycast_params {
-    double grid_res, build, clusters, step, refine, mode, opacity, absorption, termination, thickness;
+    int grid_res;
+    vr_build build;
+    int clusters;
+    double step;
+    int refine;
+    vr_mode mode;
+    double opacity, absorption, termination;
+    bool thickness;
 } volume_raycast_params;
 
 #define FIELD(f) FS_PARAM_FIELD(volume_raycast_params, f)
 static const fs_param_def params[] = {
-    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL, "volume points along the longest axis of the particles' box + H (paper: 128^3 CPU path, 128x512x512 GPU path)"},
-    {FIELD(build), FS_PARAM_ENUM, 0, 0, 2, "layered|slice|exact", "volume generation: single-pass layered splatting (the paper), iwasaki2006 slice splatting, or the exact CPU grid"},
+    {FIELD(grid_res), FS_PARAM_INT, 256, 8, 1024, NULL,
+     "volume points along the longest axis of the particles' box + H (paper: 128^3 CPU path, 128x512x512 GPU path)"},
+    {FIELD(build), FS_PARAM_ENUM, 0, 0, 2, "layered|slice|exact",
+     "volume generation: single-pass layered splatting (the paper), iwasaki2006 slice splatting, or the exact CPU grid"},
     {FIELD(clusters), FS_PARAM_INT, 16, 1, 4096, NULL, "height clusters for build=slice"},
     {FIELD(step), FS_PARAM_FLOAT, 0.5, 0.05, 4.0, NULL, "ray-march step, grid spacings"},
     {FIELD(refine), FS_PARAM_INT, 8, 0, 30, NULL, "bisection steps refining the iso crossing"},
-    {FIELD(mode), FS_PARAM_ENUM, 0, 0, 1, "surface|translucent", "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
+    {FIELD(mode), FS_PARAM_ENUM, 0, 0, 1, "surface|translucent",
+     "transfer function of the own image: opaque iso-surface, or translucent (Fig. 8) with early ray termination"},
     {FIELD(opacity), FS_PARAM_FLOAT, 0.35, 0.0, 1.0, NULL, "translucent: opacity of the iso-surface at each crossing"},
     {FIELD(absorption), FS_PARAM_FLOAT, 0.01, 0.0, 1.0, NULL, "translucent: opacity of the inside per grid spacing"},
-    {FIELD(termination), FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL, "translucent: early ray termination once the accumulated opacity reaches this"},
-    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
+    {FIELD(termination), FS_PARAM_FLOAT, 0.95, 0.5, 1.0, NULL,
+     "translucent: early ray termination once the accumulated opacity reaches this"},
+    {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL,
+     "thickness for the shared shading: march the whole ray (off: stop at the surface)"},
 };
 #undef FIELD
-
-enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT };
 
 typedef struct vr {
     fs_field f;
@@ -49,7 +62,7 @@ typedef struct vr {
     const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
     const fs_particles *all;
     fs_particles bulk;
-    size_t dropped;      /* far strays left out of the volume; bulk is then a copy */
+    size_t dropped; /* far strays left out of the volume; bulk is then a copy */
     float floor_h;
     const fs_grid *ng;
     fs_grid own_ng;
@@ -116,9 +129,15 @@ static void *create(const fs_method_setup *setup)
     const fs_field *f = &setup->field;
     if (fs_method_check_field("volume_raycast", f)) return NULL;
     vr *s = calloc(1, sizeof *s);
-    if (!s) { fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory"); return NULL; }
+    if (!s) {
+        fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory");
+        return NULL;
+    }
     s->f = *f;
-    if (fs_method_params_copy("volume_raycast", setup, &s->params, sizeof s->params)) { free(s); return NULL; }
+    if (fs_method_params_copy("volume_raycast", setup, &s->params, sizeof s->params)) {
+        free(s);
+        return NULL;
+    }
     if (setup->scene) s->scene = *setup->scene;
     else fs_scene_defaults(&s->scene);
     const char *faces[] = {"volume_raycast/faces.vert.glsl", "volume_raycast/faces.frag.glsl", NULL};
@@ -127,7 +146,7 @@ static void *create(const fs_method_setup *setup)
         destroy(s);
         return NULL;
     }
-    int b = (int)s->params.build;
+    int b = s->params.build;
     if ((b == BUILD_LAYERED && !(s->layered = fs_layered_splat_create())) ||
         (b == BUILD_SLICE && !(s->slice = fs_slice_splat_create()))) {
         destroy(s);
@@ -147,7 +166,10 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     if (s->dropped) fs_particles_free(&s->bulk);
     s->p = s->all = NULL;
     int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
-    if (rc) { s->dropped = 0; return rc; }
+    if (rc) {
+        s->dropped = 0;
+        return rc;
+    }
     if (s->dropped)
         fs_note("volume_raycast: %zu far stray particle(s) outside the bulk are left out of the volume", s->dropped);
     s->p = &s->bulk;
@@ -162,9 +184,9 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
 static int build_volume(vr *s, fs_stages *t)
 {
     const fs_particles *p = s->p;
-    int b = (int)s->params.build;
+    int b = s->params.build;
     fs_density_grid_free(&s->dg);
-    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, (int)s->params.grid_res);
+    int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, s->params.grid_res);
     if (rc) return rc;
     if (!s->tex3d || memcmp(s->tex_dim, s->dg.dim, sizeof s->tex_dim)) {
         if (s->tex3d) glDeleteTextures(1, &s->tex3d);
@@ -176,7 +198,7 @@ static int build_volume(vr *s, fs_stages *t)
         rc = fs_layered_splat_run(s->layered, &s->dg, p, &s->f, s->tex3d);
     } else {
         /* the CPU-side builds end in main memory: the upload is part of their cost */
-        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, (int)s->params.clusters)
+        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, s->params.clusters)
                               : fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
         if (!rc) rc = fs_density_texture_upload(s->tex3d, &s->dg);
     }
@@ -261,10 +283,10 @@ static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
     glUniform1f(glGetUniformLocation(P, "u_spacing"), s->dg.spacing);
     glUniform1f(glGetUniformLocation(P, "u_step"), (float)s->params.step * s->dg.spacing);
     glUniform1f(glGetUniformLocation(P, "u_iso"), s->f.iso);
-    glUniform1i(glGetUniformLocation(P, "u_refine"), (int)s->params.refine);
-    glUniform1i(glGetUniformLocation(P, "u_thick"), s->params.thickness != 0);
+    glUniform1i(glGetUniformLocation(P, "u_refine"), s->params.refine);
+    glUniform1i(glGetUniformLocation(P, "u_thick"), s->params.thickness);
     /* no own image wanted: the translucent compositing would only cost time */
-    glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->params.mode == 1);
+    glUniform1i(glGetUniformLocation(P, "u_translucent"), own && s->params.mode == MODE_TRANSLUCENT);
     glUniform1i(glGetUniformLocation(P, "u_own_on"), own);
     glUniform1f(glGetUniformLocation(P, "u_opacity"), (float)s->params.opacity);
     glUniform1f(glGetUniformLocation(P, "u_absorption"), (float)s->params.absorption);
@@ -346,7 +368,8 @@ static int export_file(void *self, const char *path)
 {
     vr *s = self;
     if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
-    if (!fs_path_ends_with(path, ".vdb")) return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
+    if (!fs_path_ends_with(path, ".vdb"))
+        return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
     int rc = build_volume(s, NULL);
     if (!rc) rc = fs_density_texture_read(s->tex3d, &s->dg);
     return rc ? rc : fs_density_grid_write_vdb(&s->dg, path, "density");
@@ -365,7 +388,7 @@ const fs_method fs_method_volume_raycast = {
     .exports = ".vdb density volume (OpenVDB FloatGrid)",
     .needs_gl = 1,
     .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
-                FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,

@@ -438,7 +438,11 @@ def _image_from_dict(d, name):
     ptr = [ffi.from_buffer("float[]", a) if a is not None else ffi.NULL for a in keep]
     out = ffi.new("fluidsurf_image **")
     _check(lib.fluidsurf_image_from_arrays(w, h, ptr[0], ptr[1], ptr[3], ptr[2], ptr[4], float(d.get("radius") or 0), out))
-    return ffi.gc(out[0], lib.fluidsurf_image_free)
+    im = ffi.gc(out[0], lib.fluidsurf_image_free)
+    solids = _arrays.image_array(d.get("solid_depth"), (h, w), f"{name}['solid_depth']", required=False)
+    if solids is not None:  # a render in a scene with solids: metrics leave out what they hide
+        _check(lib.fluidsurf_image_set_solid_depth(im, ffi.from_buffer("float[]", solids)))
+    return im
 
 
 def metrics(image, reference, radius=None):
@@ -446,34 +450,117 @@ def metrics(image, reference, radius=None):
     same size): IoU; depth bias, RMSE and p95 around the bias (in r); the depth
     error's median, the 50th/95th/99th percentiles of its magnitude and the share
     of pixels over 1 r, which a few far outliers do not move; normal error in
-    degrees, PSNR, SSIM (docs/DESIGN.md, "Metrics")."""
+    degrees, PSNR, SSIM (docs/DESIGN.md, "Metrics"). Where a dict carries
+    "solid_depth" (render() in a scene with solids), the pixels a solid hides are
+    left out, as compare leaves them out."""
     a, b = _image_from_dict(image, "image"), _image_from_dict(reference, "reference")
     return _metrics(a, b, 0 if radius is None else _arrays.positive(radius, "radius"))
 
 
-def compare(positions, radius=None, methods=("raycast_pca",), width=512, height=512, camera=None, params=None,
-            reference="reference", scene=None, colors=None, up=None, field=None):
-    """Each method against the reference on one particle set: a list of dicts
-    (method, the metrics, total_ms), or a pandas DataFrame when pandas is there.
-    radius, up, field, scene as render().
-    params: {method: {parameter: value}} or {'method.parameter': value}, for the
-    methods and the reference; every method and parameter is checked before the
-    first render (ValueError naming it)."""
+def _table(text):
+    """A study table (CSV text after its provenance line) as a list of dicts:
+    integers and numbers as such, an empty cell of a numeric column as NaN."""
+    import csv
+    import io
+    lines = text.splitlines()
+    rows = list(csv.DictReader(io.StringIO("\n".join(lines[1:]))))
+
+    def number(v):
+        for kind in (int, float):
+            try:
+                return kind(v)
+            except ValueError:
+                pass
+        return None
+
+    numeric = {k for r in rows for k, v in r.items() if v != "" and number(v) is not None}
+    numeric -= {k for r in rows for k, v in r.items() if v != "" and number(v) is None}
+    return [{k: (number(v) if v != "" else float("nan")) if k in numeric else v for k, v in r.items()} for r in rows]
+
+
+def _frames(positions, colors):
+    """positions: one N x 3 array, or a list of them (a sequence); None: the scene's own frames."""
+    if positions is None:
+        return []
+    if isinstance(positions, (list, tuple)):
+        if not positions:
+            raise ValueError("positions: an empty list of frames")
+        return [_Particles(p, c) for p, c in zip(positions, colors if colors is not None else [None] * len(positions))]
+    return [_Particles(positions, colors)]
+
+
+def _sweep_sets(sweep, names):
+    """sweep {'method.param': [v1, v2, ...]} as compare's --set M.P=v1,v2 texts, every value checked."""
+    sets = []
+    for key, values in (sweep or {}).items():
+        m, param, _, where = _split(key, values, "sweep")
+        if m is None or m not in names:
+            raise ValueError(f"{where}: expected 'method.parameter' of a method of this comparison ({', '.join(names)})")
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or len(values) < 2:
+            raise ValueError(f"{where}: expected a list of two or more values")
+        texts = [_setting(m, param, v, where).split("=", 1)[1] for v in values]
+        sets.append(f"{m}.{param}={','.join(texts)}")
+    return sets
+
+
+def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, height=None, camera=None,
+            params=None, reference="reference", scene=None, colors=None, up=None, field=None, sweep=None,
+            repeat=3, counters=False, tables=False):
+    """Each method variant against the reference on a particle set or a sequence,
+    through the engine of `fluidsurf compare` (common/study, fluidsurf_compare):
+    the same metrics, the same timing protocol (a warm-up, then `repeat` timed
+    renders, their median as frame_ms), the same tables.
+    positions: an N x 3 array, a list of them (a sequence), or None with scene=
+    (the scene file's own particle source, as `fluidsurf compare s.json`).
+    radius, up, field, scene as render(); width and height default to 512 (a
+    scene file's own size with scene=). params: {method: {parameter: value}} or
+    {'method.parameter': value}; sweep: {'method.parameter': [v1, v2, ...]}, as
+    --set M.P=v1,v2. reference: a spec or a list of them ("reference",
+    "reference:param=value,...", "analytic"). Every method and parameter is
+    checked before the first render (ValueError naming it).
+    Returns the metrics table (the columns of metrics.csv, one row per variant,
+    reference and frame): a pandas DataFrame when pandas is there, else a list of
+    dicts; tables=True returns {"metrics", "timings", "temporal" (a sequence),
+    "counters" (counters=True)}, each such a table."""
     if isinstance(methods, str) or not all(isinstance(m, str) for m in methods):
         raise ValueError(f"methods: expected a list of method names, got {methods!r}")
     for name in methods:
         _method(name, "methods")
-    reference = _method(reference, "reference")
-    settings = _study_settings(params, [*methods, reference] if reference not in methods else list(methods))
-    p = _Particles(positions, colors)
-    s = _view(_scene(scene, radius, up, field), width, height, camera)
-    ref = _render_handle(s, p, reference, settings.get(reference, []))
-    _warn_estimated(_provenance(ref))
-    rows = []
-    for name in methods:
-        im = _render_handle(s, p, name, settings.get(name, []))
-        total = sum(lib.fluidsurf_image_stage_ms(im, i) for i in range(lib.fluidsurf_image_stage_count(im)))
-        rows.append({"method": name, **_metrics(im, ref, 0), "total_ms": total})
+    refs = [reference] if isinstance(reference, str) else list(reference)
+    for spec in refs:
+        if spec != "analytic":
+            _method(spec.split(":", 1)[0], "reference")
+    names = list(dict.fromkeys([*methods, "reference"]))
+    settings = _study_settings(params, names)
+    sets = [f"{m}.{t}" for m, texts in settings.items() for t in texts] + _sweep_sets(sweep, names)
+    frames = _frames(positions, colors)
+    if not frames and scene is None:
+        raise ValueError("positions: give particles, or scene= a scene file with its own particle source")
+    s = _scene(scene, radius, up, field)
+    if width is not None or height is not None or scene is None:
+        _view(s, width or 512, height or 512, camera)
+    elif camera is not None:
+        raise ValueError("camera: give width and height with it")
+    c_sets, nsets, _keep = _c_settings(sets)
+    c_refs, nrefs, _keep_refs = _c_settings(refs)
+    handles = ffi.new("fluidsurf_particles *[]", [f.handle for f in frames]) if frames else ffi.NULL
+    out = ffi.new("fluidsurf_study **")
+    _check(lib.fluidsurf_compare(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs, nrefs,
+                                 int(repeat), lib.FLUIDSURF_STUDY_COUNTERS if counters else 0, out))
+    study = ffi.gc(out[0], lib.fluidsurf_study_free)
+    texts = {}
+    for name in ("metrics", "timings", "temporal", "counters"):
+        t = lib.fluidsurf_study_table(study, name.encode())
+        if t != ffi.NULL:
+            texts[name] = _text(t)
+    if "r_source=estimated" in texts["metrics"].splitlines()[0]:
+        warnings.warn("no radius given: r estimated from the particle spacing (a few percent low on compressed SPH "
+                      "output; pass radius=)", stacklevel=2)
+    result = {name: _frame_table(_table(t)) for name, t in texts.items()}
+    return result if tables else result["metrics"]
+
+
+def _frame_table(rows):
     try:
         import pandas
     except ImportError:

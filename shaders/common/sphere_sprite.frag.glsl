@@ -3,12 +3,14 @@
 #include "common/counters.glsl"
 // Exact ray-sphere intersection per fragment; depth replaced by the hit.
 // MODE_DEPTH: eye depth + view normal (depth-tested). MODE_THICKNESS: the chord
-// length of the view ray through the sphere, added up by the blender.
+// length of the view ray through the sphere times u_thickness_weight (1 unless a
+// method sets it), added up by the blender.
 uniform mat4 u_proj;
 uniform float u_radius;
 uniform vec2 u_viewport;
 in flat vec3 v_center;
 #ifdef MODE_THICKNESS
+uniform float u_thickness_weight = 1.0;
 layout(location = 0) out float o_thickness;
 #else
 layout(location = 0) out float o_depth;
@@ -25,7 +27,7 @@ void main()
     FS_COUNT(FS_CNT_TEXELS, 1);
     float s = sqrt(h);
 #ifdef MODE_THICKNESS
-    o_thickness = 2.0 * s;
+    o_thickness = 2.0 * s * u_thickness_weight;
 #else
     vec3 hit = dir * (b - s);
     vec4 clip = u_proj * vec4(hit, 1.0);

@@ -16,7 +16,9 @@ size_t LLVMFuzzerMutate(uint8_t *data, size_t size, size_t max_size);
 static unsigned mu_next(unsigned *s)
 {
     unsigned x = *s ? *s : 0x9e3779b9u;
-    x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
     return *s = x;
 }
 static unsigned mu_below(unsigned *s, unsigned n) { return n ? mu_next(s) % n : 0; }
@@ -24,12 +26,51 @@ static unsigned mu_below(unsigned *s, unsigned n) { return n ? mu_next(s) % n : 
 
 /* Numbers a reader must check before it sizes, casts or loops on them */
 static const char *const mu_numbers[] = {
-    "0", "-0", "1", "-1", "2", "3", "0.5", "-0.5", "1e308", "-1e308", "1e309", "-1e309",
-    "1e-320", "nan", "NaN", "-nan", "inf", "Infinity", "-Infinity", "127", "255", "256",
-    "65535", "65536", "16777217", "2147483647", "2147483648", "-2147483648", "-2147483649",
-    "4294967295", "4294967296", "4294967297", "1e9", "1e10", "-1e9", "9007199254740993",
-    "9223372036854775807", "9223372036854775808", "18446744073709551615",
-    "18446744073709551616", "1e19", "0x10", "1.5e", "--1", "",
+    "0",
+    "-0",
+    "1",
+    "-1",
+    "2",
+    "3",
+    "0.5",
+    "-0.5",
+    "1e308",
+    "-1e308",
+    "1e309",
+    "-1e309",
+    "1e-320",
+    "nan",
+    "NaN",
+    "-nan",
+    "inf",
+    "Infinity",
+    "-Infinity",
+    "127",
+    "255",
+    "256",
+    "65535",
+    "65536",
+    "16777217",
+    "2147483647",
+    "2147483648",
+    "-2147483648",
+    "-2147483649",
+    "4294967295",
+    "4294967296",
+    "4294967297",
+    "1e9",
+    "1e10",
+    "-1e9",
+    "9007199254740993",
+    "9223372036854775807",
+    "9223372036854775808",
+    "18446744073709551615",
+    "18446744073709551616",
+    "1e19",
+    "0x10",
+    "1.5e",
+    "--1",
+    "",
 };
 
 /* A number near the old one (its negative, one more, a million times, a tiny part), or
@@ -52,8 +93,8 @@ static void mu_number(unsigned *s, const uint8_t *old, size_t len, char *out, si
 
 /* Replaces data[at, at + len) by rep (rep_len bytes); 0 when the result would exceed
  * max_size (the caller falls back to LLVMFuzzerMutate) */
-static size_t mu_splice(uint8_t *data, size_t size, size_t max_size, size_t at, size_t len,
-                        const char *rep, size_t rep_len)
+static size_t mu_splice(uint8_t *data, size_t size, size_t max_size, size_t at, size_t len, const char *rep,
+                        size_t rep_len)
 {
     if (size - len + rep_len > max_size) return 0;
     memmove(data + at + rep_len, data + at + len, size - at - len);
@@ -66,8 +107,21 @@ static size_t mu_splice(uint8_t *data, size_t size, size_t max_size, size_t at, 
 static size_t mu_string(unsigned *s, char *rep, size_t cap)
 {
     static const char *const odd[] = {
-        "", "a", "../../../../../../etc/passwd", "/dev/zero", "/proc/self/mem", "\\u0000",
-        "\xff\xfe", "\xc3\x28", "%s%s%n", "\\n\\r\\t", "\x01\x7f", " ", ".", "nan", "-1",
+        "",
+        "a",
+        "../../../../../../etc/passwd",
+        "/dev/zero",
+        "/proc/self/mem",
+        "\\u0000",
+        "\xff\xfe",
+        "\xc3\x28",
+        "%s%s%n",
+        "\\n\\r\\t",
+        "\x01\x7f",
+        " ",
+        ".",
+        "nan",
+        "-1",
     };
     if (mu_below(s, 4) == 0) { /* long: up to cap - 1 bytes */
         size_t n = 64u << mu_below(s, 6);

@@ -17,7 +17,8 @@ __attribute__((weak)) int LLVMFuzzerInitialize(int *argc, char ***argv);
 
 size_t LLVMFuzzerMutate(uint8_t *data, size_t size, size_t max_size)
 {
-    (void)data; (void)max_size;
+    (void)data;
+    (void)max_size;
     return size / 2;
 }
 
@@ -45,7 +46,10 @@ static int same_structure(int json, const uint8_t *in, size_t in_n, const uint8_
 
 int main(int argc, char **argv)
 {
-    if (argc < 3) { fprintf(stderr, "usage: mutator_check json|xml FOLDER [DICT]\n"); return 2; }
+    if (argc < 3) {
+        fprintf(stderr, "usage: mutator_check json|xml FOLDER [DICT]\n");
+        return 2;
+    }
     int json = !strcmp(argv[1], "json");
     char dict[4096];
     snprintf(dict, sizeof dict, "-dict=%s", argc > 3 ? argv[3] : "");
@@ -67,16 +71,29 @@ int main(int argc, char **argv)
         for (unsigned r = 1; r <= ROUNDS; r++) {
             memcpy(buf, seed, n);
             size_t m = LLVMFuzzerCustomMutator(buf, n, MAX, r);
-            if (m > MAX) { fprintf(stderr, "mutator_check: %s, seed %u: %zu bytes > max %d\n", path, r, m, MAX); return 1; }
+            if (m > MAX) {
+                fprintf(stderr, "mutator_check: %s, seed %u: %zu bytes > max %d\n", path, r, m, MAX);
+                return 1;
+            }
             total++;
             differ += m != n || memcmp(buf, seed, n) != 0;
             kept += same_structure(json, seed, n, buf, m);
         }
     }
     if (d) closedir(d);
-    printf("mutator_check %s: %zu mutations, %zu differ from the seed, %zu keep its structure\n", argv[2], total, differ, kept);
-    if (total == 0) { fprintf(stderr, "mutator_check: no seeds in %s\n", argv[2]); return 1; }
-    if (differ * 10 < total * 9) { fprintf(stderr, "mutator_check: under nine in ten mutations change the input\n"); return 1; }
-    if (kept * 2 < total) { fprintf(stderr, "mutator_check: under half the mutations keep the structure\n"); return 1; }
+    printf("mutator_check %s: %zu mutations, %zu differ from the seed, %zu keep its structure\n", argv[2], total,
+           differ, kept);
+    if (total == 0) {
+        fprintf(stderr, "mutator_check: no seeds in %s\n", argv[2]);
+        return 1;
+    }
+    if (differ * 10 < total * 9) {
+        fprintf(stderr, "mutator_check: under nine in ten mutations change the input\n");
+        return 1;
+    }
+    if (kept * 2 < total) {
+        fprintf(stderr, "mutator_check: under half the mutations keep the structure\n");
+        return 1;
+    }
     return 0;
 }

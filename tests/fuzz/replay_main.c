@@ -14,14 +14,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 static int replay_file(const char *path)
 {
     FILE *f = fopen(path, "rb");
-    if (!f) { fprintf(stderr, "replay: cannot open %s\n", path); return 1; }
+    if (!f) {
+        fprintf(stderr, "replay: cannot open %s\n", path);
+        return 1;
+    }
     fseek(f, 0, SEEK_END);
     long n = ftell(f);
     fseek(f, 0, SEEK_SET);
     uint8_t *buf = malloc(n > 0 ? (size_t)n : 1);
     size_t got = buf ? fread(buf, 1, (size_t)(n > 0 ? n : 0), f) : 0;
     fclose(f);
-    if (!buf || (long)got != n) { free(buf); fprintf(stderr, "replay: cannot read %s\n", path); return 1; }
+    if (!buf || (long)got != n) {
+        free(buf);
+        fprintf(stderr, "replay: cannot read %s\n", path);
+        return 1;
+    }
     LLVMFuzzerTestOneInput(buf, got);
     free(buf);
     printf("replayed %s (%ld bytes)\n", path, n);
@@ -34,7 +41,11 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         struct stat st;
         if (stat(argv[i], &st) != 0) continue; /* a target without regression files */
-        if (!S_ISDIR(st.st_mode)) { bad |= replay_file(argv[i]); files++; continue; }
+        if (!S_ISDIR(st.st_mode)) {
+            bad |= replay_file(argv[i]);
+            files++;
+            continue;
+        }
         DIR *d = opendir(argv[i]);
         for (struct dirent *e; d && (e = readdir(d));) {
             if (e->d_name[0] == '.') continue;

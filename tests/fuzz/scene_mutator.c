@@ -9,7 +9,10 @@
 #include "mutate_util.h"
 
 enum { TOK_NUM, TOK_STR, TOK_KEY, TOK_LIT };
-typedef struct { size_t at, len; int kind; } token;
+typedef struct {
+    size_t at, len;
+    int kind;
+} token;
 
 #define MAX_KEYS 128
 static char keys[MAX_KEYS][64]; /* each a JSON string literal, quotes included */
@@ -35,8 +38,9 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         if (!strncmp((*argv)[i], "-dict=", 6)) load_keys((*argv)[i] + 6);
     if (n_keys == 0) { /* run without -dict: a few keys of every scene */
         static const char *const builtin[] = {"\"particles\"", "\"radius\"", "\"camera\"", "\"width\"",
-                                              "\"synthetic\"", "\"frames\"", "\"set\"", "\"obstacles\""};
-        for (size_t i = 0; i < sizeof builtin / sizeof *builtin; i++) snprintf(keys[n_keys++], sizeof keys[0], "%s", builtin[i]);
+                                              "\"synthetic\"", "\"frames\"", "\"set\"",    "\"obstacles\""};
+        for (size_t i = 0; i < sizeof builtin / sizeof *builtin; i++)
+            snprintf(keys[n_keys++], sizeof keys[0], "%s", builtin[i]);
     }
     return 0;
 }
@@ -74,8 +78,9 @@ static size_t scan(const uint8_t *d, size_t size, token *t, size_t cap)
 
 size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsigned seed)
 {
-    static const char *const other_type[] = {"\"x\"", "null", "true", "false", "[]", "{}", "[1e308,-1e308,0]",
-                                             "[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]", "{\"\":{}}", "[-1,-1,-1]", "\"\""};
+    static const char *const other_type[] = {
+        "\"x\"",     "null",       "true", "false", "[]", "{}", "[1e308,-1e308,0]", "[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]",
+        "{\"\":{}}", "[-1,-1,-1]", "\"\""};
     static token tok[4096];
     static char rep[2048 + 2];
     unsigned s = seed;
@@ -84,16 +89,15 @@ size_t LLVMFuzzerCustomMutator(uint8_t *data, size_t size, size_t max_size, unsi
     token t = tok[mu_below(&s, (unsigned)n)];
     int confuse = mu_below(&s, 10) < 3;
     if (t.kind == TOK_KEY)
-        snprintf(rep, sizeof rep, "%.*s", (int)sizeof rep - 1, confuse ? "\"\"" : keys[mu_below(&s, (unsigned)n_keys)]); /* a long key: cut */
-    else if (confuse)
-        snprintf(rep, sizeof rep, "%s", MU_PICK(&s, other_type));
+        snprintf(rep, sizeof rep, "%.*s", (int)sizeof rep - 1,
+                 confuse ? "\"\"" : keys[mu_below(&s, (unsigned)n_keys)]); /* a long key: cut */
+    else if (confuse) snprintf(rep, sizeof rep, "%s", MU_PICK(&s, other_type));
     else if (t.kind == TOK_STR) {
         rep[0] = '"';
         size_t k = mu_string(&s, rep + 1, sizeof rep - 2);
         rep[k + 1] = '"';
         rep[k + 2] = 0;
-    } else
-        mu_number(&s, data + t.at, t.len, rep, sizeof rep);
+    } else mu_number(&s, data + t.at, t.len, rep, sizeof rep);
     size_t r = mu_splice(data, size, max_size, t.at, t.len, rep, strlen(rep));
     return r ? r : LLVMFuzzerMutate(data, size, max_size);
 }

@@ -10,16 +10,22 @@
  * instrumentation, so its code adds no features of its own. */
 #include "mutate_util.h"
 
-typedef struct { size_t name, name_len, at, len; } span; /* name_len 0: a number in text */
+typedef struct {
+    size_t name, name_len, at, len;
+} span; /* name_len 0: a number in text */
 
-static const char *const names[] = {"NumberOfPoints", "NumberOfCells", "NumberOfComponents", "NumberOfTuples",
-                                    "offset", "format", "type", "Name", "header_type", "byte_order",
-                                    "compressor", "encoding", "version", "RangeMin", "RangeMax"};
+static const char *const names[] = {
+    "NumberOfPoints", "NumberOfCells", "NumberOfComponents", "NumberOfTuples", "offset",  "format",   "type",    "Name",
+    "header_type",    "byte_order",    "compressor",         "encoding",       "version", "RangeMin", "RangeMax"};
 /* the values to try per attribute; a name not listed gets a number or an odd string */
-static const struct { const char *name; const char *values[20]; } choices[] = {
+static const struct {
+    const char *name;
+    const char *values[20];
+} choices[] = {
     {"format", {"ascii", "binary", "appended", "Ascii", "xml", ""}},
-    {"type", {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64", "Float32", "Float64",
-              "String", "Bit", "IdType", "UnstructuredGrid", "PolyData", "ImageData", "PUnstructuredGrid", ""}},
+    {"type",
+     {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64", "Float32", "Float64", "String", "Bit",
+      "IdType", "UnstructuredGrid", "PolyData", "ImageData", "PUnstructuredGrid", ""}},
     {"header_type", {"UInt32", "UInt64", "Int32", "Int64", "UInt8", ""}},
     {"byte_order", {"LittleEndian", "BigEndian", "Little", ""}},
     {"compressor", {"vtkZLibDataCompressor", "vtkLZ4DataCompressor", "vtkLZMADataCompressor", "vtkNoCompressor", ""}},
@@ -27,7 +33,10 @@ static const struct { const char *name; const char *values[20]; } choices[] = {
     {"version", {"0.1", "1.0", "2.2", "0.0", "99.9", "1", "-1"}},
 };
 
-static int name_char(uint8_t c) { return (c | 0x20) >= 'a' && (c | 0x20) <= 'z' ? 1 : (c >= '0' && c <= '9') || c == '_' || c == ':' || c == '-'; }
+static int name_char(uint8_t c)
+{
+    return (c | 0x20) >= 'a' && (c | 0x20) <= 'z' ? 1 : (c >= '0' && c <= '9') || c == '_' || c == ':' || c == '-';
+}
 static int digit(uint8_t c) { return c >= '0' && c <= '9'; }
 
 /* The attributes (inside a tag) and the numbers of the text between tags, at most cap */
@@ -36,7 +45,10 @@ static size_t scan(const uint8_t *d, size_t size, span *t, size_t cap)
     size_t n = 0;
     int in_tag = 0;
     for (size_t i = 0; i < size && n < cap; i++) {
-        if (d[i] == '<' || d[i] == '>') { in_tag = d[i] == '<'; continue; }
+        if (d[i] == '<' || d[i] == '>') {
+            in_tag = d[i] == '<';
+            continue;
+        }
         if (in_tag && (d[i] == '"' || d[i] == '\'') && i >= 2 && d[i - 1] == '=' && name_char(d[i - 2])) {
             size_t b = i - 1, e = i + 1;
             while (b > 0 && name_char(d[b - 1])) b--;
@@ -46,7 +58,8 @@ static size_t scan(const uint8_t *d, size_t size, span *t, size_t cap)
             i = e;
         } else if (!in_tag && (digit(d[i]) || (d[i] == '-' && i + 1 < size && digit(d[i + 1])))) {
             size_t e = i + 1;
-            while (e < size && (digit(d[e]) || d[e] == '.' || d[e] == 'e' || d[e] == 'E' || d[e] == '-' || d[e] == '+')) e++;
+            while (e < size && (digit(d[e]) || d[e] == '.' || d[e] == 'e' || d[e] == 'E' || d[e] == '-' || d[e] == '+'))
+                e++;
             t[n++] = (span){0, 0, i, e - i};
             i = e - 1;
         }

@@ -5,6 +5,7 @@
 #include "particle_io.h"
 #include "fs_error.h"
 #include "output_file.h"
+#include "bytes.h"
 #include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -24,7 +25,10 @@ static int load_gz(const char *path, unsigned char **out, size_t *out_size)
     while (!rc) {
         if (cap - size < (1u << 20)) {
             unsigned char *nb = cap > SIZE_MAX / 2 ? NULL : realloc(buf, cap * 2);
-            if (!nb) { rc = fs_fail(FS_ERR_RUNTIME, "%s: out of memory decompressing", path); break; }
+            if (!nb) {
+                rc = fs_fail(FS_ERR_RUNTIME, "%s: out of memory decompressing", path);
+                break;
+            }
             buf = nb;
             cap *= 2;
         }
@@ -39,13 +43,19 @@ static int load_gz(const char *path, unsigned char **out, size_t *out_size)
         size += (size_t)got;
     }
     if (gzclose(gz) != Z_OK && !rc) rc = fs_fail(FS_ERR_INPUT, "%s: truncated gzip data", path);
-    if (rc) { free(buf); return rc; }
+    if (rc) {
+        free(buf);
+        return rc;
+    }
     *out = buf;
     *out_size = size;
     return FS_OK;
 }
 
-typedef struct { const unsigned char *p; size_t left; } cursor;
+typedef struct {
+    const unsigned char *p;
+    size_t left;
+} cursor;
 
 static int take(cursor *c, size_t n, const unsigned char **at)
 {
@@ -55,12 +65,34 @@ static int take(cursor *c, size_t n, const unsigned char **at)
     c->left -= n;
     return 1;
 }
-static uint32_t be32(const unsigned char *b) { return (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3]; }
-static float be32f(const unsigned char *b) { uint32_t u = be32(b); float f; memcpy(&f, &u, 4); return f; }
-static int rd_u16(cursor *c, unsigned *v) { const unsigned char *b; if (!take(c, 2, &b)) return 0; *v = (unsigned)b[0] << 8 | b[1]; return 1; }
-static int rd_i32(cursor *c, int32_t *v) { const unsigned char *b; if (!take(c, 4, &b)) return 0; *v = (int32_t)be32(b); return 1; }
+static float be32f(const unsigned char *b)
+{
+    uint32_t u = fs_be32(b);
+    float f;
+    memcpy(&f, &u, 4);
+    return f;
+}
+static int rd_u16(cursor *c, unsigned *v)
+{
+    const unsigned char *b;
+    if (!take(c, 2, &b)) return 0;
+    *v = (unsigned)b[0] << 8 | b[1];
+    return 1;
+}
+static int rd_i32(cursor *c, int32_t *v)
+{
+    const unsigned char *b;
+    if (!take(c, 4, &b)) return 0;
+    *v = (int32_t)fs_be32(b);
+    return 1;
+}
 
-typedef struct { char name[64]; unsigned size; int32_t type; size_t offset; } bgeo_attr;
+typedef struct {
+    char name[64];
+    unsigned size;
+    int32_t type;
+    size_t offset;
+} bgeo_attr;
 
 /* Finds an attribute of `size` 4-byte float components by any of the given names; -1 if none. */
 static int find_attr(const bgeo_attr *a, int n, unsigned size, int want_int, const char *const *names)
@@ -81,7 +113,8 @@ static int read_header(cursor *c, const char *path, int32_t *npoints, int32_t *n
 {
     const unsigned char *b;
     if (c->left >= 4 && c->p[0] == 0x7f && c->p[1] == 'N')
-        return fs_fail(FS_ERR_INPUT, "%s: Houdini 12+ binary JSON geometry is not supported, only classic BGEO V5", path);
+        return fs_fail(FS_ERR_INPUT, "%s: Houdini 12+ binary JSON geometry is not supported, only classic BGEO V5",
+                       path);
     if (!take(c, 5, &b) || memcmp(b, "BgeoV", 5) != 0)
         return fs_fail(FS_ERR_INPUT, "%s: not a BGEO file (bad magic)", path);
     int32_t h[9]; /* version, points, prims, point groups, prim groups, point/vertex/prim/detail attribs */
@@ -96,7 +129,8 @@ static int read_header(cursor *c, const char *path, int32_t *npoints, int32_t *n
     if (h[6] != 0) return fs_fail(FS_ERR_INPUT, "%s: BGEO vertex attributes are not supported", path);
     /* Each definition takes at least 8 bytes: reject counts the file cannot hold before allocating. */
     if ((size_t)*nattr > c->left / 8)
-        return fs_fail(FS_ERR_INPUT, "%s: BGEO header claims %d point attributes, more than the file holds", path, (int)*nattr);
+        return fs_fail(FS_ERR_INPUT, "%s: BGEO header claims %d point attributes, more than the file holds", path,
+                       (int)*nattr);
     return FS_OK;
 }
 
@@ -169,7 +203,7 @@ static void read_point(fs_particles *p, size_t i, const unsigned char *r, const 
     }
     if (pa->cd >= 0)
         for (int k = 0; k < 3; k++) p->color[3 * i + k] = be32f(r + attrs[pa->cd].offset + 4 * k);
-    if (pa->phase >= 0) p->phase[i] = (int32_t)be32(r + attrs[pa->phase].offset);
+    if (pa->phase >= 0) p->phase[i] = (int32_t)fs_be32(r + attrs[pa->phase].offset);
     if (pa->pscale >= 0 && i == 0) p->radius = be32f(r + attrs[pa->pscale].offset);
 }
 
@@ -218,19 +252,29 @@ int fs_read_bgeo(fs_particles *p, const char *path)
 
 static unsigned char *put32(unsigned char *b, uint32_t v)
 {
-    b[0] = (unsigned char)(v >> 24); b[1] = (unsigned char)(v >> 16);
-    b[2] = (unsigned char)(v >> 8); b[3] = (unsigned char)v;
+    b[0] = (unsigned char)(v >> 24);
+    b[1] = (unsigned char)(v >> 16);
+    b[2] = (unsigned char)(v >> 8);
+    b[3] = (unsigned char)v;
     return b + 4;
 }
-static unsigned char *putf(unsigned char *b, float f) { uint32_t u; memcpy(&u, &f, 4); return put32(b, u); }
+static unsigned char *putf(unsigned char *b, float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, 4);
+    return put32(b, u);
+}
 
 /* Appends one attribute definition: name, component count, type, default values. */
 static unsigned char *put_attr(unsigned char *b, const char *name, unsigned size, int type, float def)
 {
     size_t len = strlen(name);
-    *b++ = (unsigned char)(len >> 8); *b++ = (unsigned char)len;
-    memcpy(b, name, len); b += len;
-    *b++ = 0; *b++ = (unsigned char)size;
+    *b++ = (unsigned char)(len >> 8);
+    *b++ = (unsigned char)len;
+    memcpy(b, name, len);
+    b += len;
+    *b++ = 0;
+    *b++ = (unsigned char)size;
     b = put32(b, (uint32_t)type);
     for (unsigned k = 0; k < size; k++) b = type == BGEO_INT ? put32(b, 0) : putf(b, def);
     return b;
@@ -248,7 +292,8 @@ int fs_write_bgeo(const fs_particles *p, const char *path)
     int nattr = !!has_v + !!has_c + !!has_ph + has_r;
 
     unsigned char head[256], *b = head;
-    memcpy(b, "BgeoV", 5); b += 5;
+    memcpy(b, "BgeoV", 5);
+    b += 5;
     int32_t counts[9] = {5, (int32_t)p->n, 0, 0, 0, nattr, 0, 0, 0};
     for (int i = 0; i < 9; i++) b = put32(b, (uint32_t)counts[i]);
     if (has_v) b = put_attr(b, "v", 3, BGEO_VECTOR, 0.0f);
@@ -261,9 +306,17 @@ int fs_write_bgeo(const fs_particles *p, const char *path)
     enum { CHUNK = 1024 };
     unsigned char buf[CHUNK * 48], *w = buf; /* 48 bytes: the largest record */
     for (size_t i = 0; ok && i < p->n; i++) {
-        w = putf(w, p->x[i]); w = putf(w, p->y[i]); w = putf(w, p->z[i]); w = putf(w, 1.0f);
-        if (has_v) { w = putf(w, p->vx[i]); w = putf(w, p->vy[i]); w = putf(w, p->vz[i]); }
-        if (has_c) for (int k = 0; k < 3; k++) w = putf(w, p->color[3 * i + k]);
+        w = putf(w, p->x[i]);
+        w = putf(w, p->y[i]);
+        w = putf(w, p->z[i]);
+        w = putf(w, 1.0f);
+        if (has_v) {
+            w = putf(w, p->vx[i]);
+            w = putf(w, p->vy[i]);
+            w = putf(w, p->vz[i]);
+        }
+        if (has_c)
+            for (int k = 0; k < 3; k++) w = putf(w, p->color[3 * i + k]);
         if (has_ph) w = put32(w, (uint32_t)p->phase[i]);
         if (has_r) w = putf(w, p->radius);
         if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {

@@ -16,11 +16,24 @@ enum { T_NONE, T_I8, T_U8, T_I16, T_U16, T_I32, T_U32, T_F32, T_F64 };
 enum { FMT_ASCII, FMT_LE, FMT_BE };
 enum { MAX_ELEMS = 16, MAX_PROPS = 64 };
 
-typedef struct { char name[32]; int type, count_type; /* count_type != T_NONE: a list */ } ply_prop;
-typedef struct { char name[32]; unsigned long long count; int nprops; ply_prop props[MAX_PROPS]; } ply_elem;
+typedef struct {
+    char name[32];
+    int type, count_type; /* count_type != T_NONE: a list */
+} ply_prop;
+typedef struct {
+    char name[32];
+    unsigned long long count;
+    int nprops;
+    ply_prop props[MAX_PROPS];
+} ply_elem;
 
 /* Buffered reader over a FILE: binary values and ascii tokens both come from here. */
-typedef struct { FILE *f; size_t pos, len; unsigned long long consumed; unsigned char buf[1 << 16]; } breader;
+typedef struct {
+    FILE *f;
+    size_t pos, len;
+    unsigned long long consumed;
+    unsigned char buf[1 << 16];
+} breader;
 
 static const unsigned char *br_need(breader *r, size_t n)
 {
@@ -83,11 +96,14 @@ static int br_token(breader *r, char *tok, size_t size)
 
 static int type_from_name(const char *s)
 {
-    static const struct { const char *name; int type; } t[] = {
-        {"char", T_I8},   {"int8", T_I8},     {"uchar", T_U8},  {"uint8", T_U8},    {"short", T_I16},
-        {"int16", T_I16}, {"ushort", T_U16},  {"uint16", T_U16}, {"int", T_I32},    {"int32", T_I32},
-        {"uint", T_U32},  {"uint32", T_U32},  {"float", T_F32}, {"float32", T_F32}, {"double", T_F64},
-        {"float64", T_F64},
+    static const struct {
+        const char *name;
+        int type;
+    } t[] = {
+        {"char", T_I8},   {"int8", T_I8},     {"uchar", T_U8},   {"uint8", T_U8},
+        {"short", T_I16}, {"int16", T_I16},   {"ushort", T_U16}, {"uint16", T_U16},
+        {"int", T_I32},   {"int32", T_I32},   {"uint", T_U32},   {"uint32", T_U32},
+        {"float", T_F32}, {"float32", T_F32}, {"double", T_F64}, {"float64", T_F64},
     };
     for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
         if (strcmp(s, t[i].name) == 0) return t[i].type;
@@ -123,8 +139,19 @@ static int read_value(breader *r, int fmt, int t, double *v)
     case T_U16: *v = (uint16_t)u; break;
     case T_I32: *v = (int32_t)u; break;
     case T_U32: *v = (uint32_t)u; break;
-    case T_F32: { uint32_t w = (uint32_t)u; float f; memcpy(&f, &w, 4); *v = f; break; }
-    default: { double d; memcpy(&d, &u, 8); *v = d; break; }
+    case T_F32: {
+        uint32_t w = (uint32_t)u;
+        float f;
+        memcpy(&f, &w, 4);
+        *v = f;
+        break;
+    }
+    default: {
+        double d;
+        memcpy(&d, &u, 8);
+        *v = d;
+        break;
+    }
     }
     return 1;
 }
@@ -159,8 +186,10 @@ static int parse_header(breader *r, const char *path, int *fmt, ply_elem *el, in
             if (k >= 3 && strcmp(b, "radius") == 0) *radius = strtof(c, NULL);
         } else if (strcmp(a, "obj_info") == 0) {
         } else if (strcmp(a, "format") == 0 && k >= 2) {
-            *fmt = strcmp(b, "ascii") == 0 ? FMT_ASCII : strcmp(b, "binary_little_endian") == 0 ? FMT_LE
-                 : strcmp(b, "binary_big_endian") == 0 ? FMT_BE : -1;
+            *fmt = strcmp(b, "ascii") == 0               ? FMT_ASCII
+                : strcmp(b, "binary_little_endian") == 0 ? FMT_LE
+                : strcmp(b, "binary_big_endian") == 0    ? FMT_BE
+                                                         : -1;
             if (*fmt < 0) return fs_fail(FS_ERR_INPUT, "%s: unknown PLY format '%s'", path, b);
         } else if (strcmp(a, "element") == 0 && k == 3) {
             if (*nel == MAX_ELEMS) return fs_fail(FS_ERR_INPUT, "%s: too many PLY elements", path);
@@ -169,8 +198,7 @@ static int parse_header(breader *r, const char *path, int *fmt, ply_elem *el, in
             char *end;
             errno = 0;
             e->count = strtoull(c, &end, 10);
-            if (*end || c[0] == '-' || errno)
-                return fs_fail(FS_ERR_INPUT, "%s: bad PLY element count '%s'", path, c);
+            if (*end || c[0] == '-' || errno) return fs_fail(FS_ERR_INPUT, "%s: bad PLY element count '%s'", path, c);
             snprintf(e->name, sizeof e->name, "%.31s", b);
         } else if (strcmp(a, "property") == 0 && k >= 3 && *nel > 0) {
             ply_elem *e = &el[*nel - 1];
@@ -201,8 +229,8 @@ static int find_prop(const ply_elem *e, const char *const *names)
 }
 
 /* Reads the vertex element into p; elements before it are skipped. */
-static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, int nel,
-                     unsigned long long file_size, fs_particles *p)
+static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, int nel, unsigned long long file_size,
+                     fs_particles *p)
 {
     int vi = -1;
     for (int i = 0; i < nel && vi < 0; i++)
@@ -210,9 +238,10 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
     if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
     const ply_elem *v = &el[vi];
     static const char *const nx[] = {"x", NULL}, *const ny[] = {"y", NULL}, *const nz[] = {"z", NULL},
-        *const nvx[] = {"vx", NULL}, *const nvy[] = {"vy", NULL}, *const nvz[] = {"vz", NULL},
-        *const nr[] = {"red", "r", "diffuse_red", NULL}, *const ng[] = {"green", "g", "diffuse_green", NULL},
-        *const nb[] = {"blue", "b", "diffuse_blue", NULL}, *const nph[] = {"phase", NULL};
+                             *const nvx[] = {"vx", NULL}, *const nvy[] = {"vy", NULL}, *const nvz[] = {"vz", NULL},
+                             *const nr[] = {"red", "r", "diffuse_red", NULL},
+                             *const ng[] = {"green", "g", "diffuse_green", NULL},
+                             *const nb[] = {"blue", "b", "diffuse_blue", NULL}, *const nph[] = {"phase", NULL};
     int ix = find_prop(v, nx), iy = find_prop(v, ny), iz = find_prop(v, nz);
     int ivx = find_prop(v, nvx), ivy = find_prop(v, nvy), ivz = find_prop(v, nvz);
     int ir = find_prop(v, nr), ig = find_prop(v, ng), ib = find_prop(v, nb), iph = find_prop(v, nph);
@@ -233,12 +262,14 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
     /* Refuse counts the rest of the file cannot hold before allocating for them. */
     unsigned long long left = file_size > r->consumed ? file_size - r->consumed : 0, min_record = 0;
     for (int k = 0; k < v->nprops; k++)
-        min_record += fmt == FMT_ASCII ? 2 : type_size(v->props[k].count_type ? v->props[k].count_type : v->props[k].type);
+        min_record +=
+            fmt == FMT_ASCII ? 2 : type_size(v->props[k].count_type ? v->props[k].count_type : v->props[k].type);
     if (v->count > (fmt == FMT_ASCII ? left + 1 : left) / min_record)
         return fs_fail(FS_ERR_INPUT, "%s: truncated PLY: header says %llu vertices but only %llu bytes of data follow",
                        path, v->count, left);
-    int rc = fs_particles_alloc(p, (size_t)v->count, (has_v ? FS_HAS_VELOCITY : 0) | (has_c ? FS_HAS_COLOR : 0) |
-                                                         (iph >= 0 ? FS_HAS_PHASE : 0));
+    int rc =
+        fs_particles_alloc(p, (size_t)v->count,
+                           (has_v ? FS_HAS_VELOCITY : 0) | (has_c ? FS_HAS_COLOR : 0) | (iph >= 0 ? FS_HAS_PHASE : 0));
     if (rc) return rc;
     double cscale[3] = {1, 1, 1};
     for (int k = 0; has_c && k < 3; k++) {
@@ -249,8 +280,14 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
         for (int k = 0; k < v->nprops; k++)
             if (!read_prop(r, fmt, &v->props[k], &val[k]))
                 return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
-        p->x[i] = (float)val[ix]; p->y[i] = (float)val[iy]; p->z[i] = (float)val[iz];
-        if (has_v) { p->vx[i] = (float)val[ivx]; p->vy[i] = (float)val[ivy]; p->vz[i] = (float)val[ivz]; }
+        p->x[i] = (float)val[ix];
+        p->y[i] = (float)val[iy];
+        p->z[i] = (float)val[iz];
+        if (has_v) {
+            p->vx[i] = (float)val[ivx];
+            p->vy[i] = (float)val[ivy];
+            p->vz[i] = (float)val[ivz];
+        }
         if (has_c) {
             p->color[3 * i] = (float)(val[ir] * cscale[0]);
             p->color[3 * i + 1] = (float)(val[ig] * cscale[1]);
@@ -295,37 +332,48 @@ static unsigned char *put_le32(unsigned char *b, float f)
 {
     uint32_t u;
     memcpy(&u, &f, 4);
-    b[0] = (unsigned char)u; b[1] = (unsigned char)(u >> 8); b[2] = (unsigned char)(u >> 16); b[3] = (unsigned char)(u >> 24);
+    b[0] = (unsigned char)u;
+    b[1] = (unsigned char)(u >> 8);
+    b[2] = (unsigned char)(u >> 16);
+    b[3] = (unsigned char)(u >> 24);
     return b + 4;
 }
 
 int fs_write_ply(const fs_particles *p, const char *path)
 {
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
+    fs_output out;
+    int rc = fs_output_open(&out, path);
     if (rc) return rc;
     unsigned fields = fs_particles_fields(p);
     int has_v = fields & FS_HAS_VELOCITY, has_c = fields & FS_HAS_COLOR, has_ph = fields & FS_HAS_PHASE;
-    FILE *f = fopen(tmp, "wb");
-    int ok = f != NULL;
-    if (ok) {
-        fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment written by fluidsurf\n");
-        if (p->radius > 0) fprintf(f, "comment radius %.9g\n", p->radius);
-        fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", p->n);
-        if (has_v) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n");
-        if (has_c) fprintf(f, "property float red\nproperty float green\nproperty float blue\n");
-        if (has_ph) fprintf(f, "property int phase\n");
-        fprintf(f, "end_header\n");
-    }
+    FILE *f = out.f;
+    int ok = 1;
+    fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment written by fluidsurf\n");
+    if (p->radius > 0) fprintf(f, "comment radius %.9g\n", p->radius);
+    fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", p->n);
+    if (has_v) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n");
+    if (has_c) fprintf(f, "property float red\nproperty float green\nproperty float blue\n");
+    if (has_ph) fprintf(f, "property int phase\n");
+    fprintf(f, "end_header\n");
     enum { CHUNK = 1024 };
     unsigned char buf[CHUNK * 40], *w = buf; /* 40 bytes: the largest record */
     for (size_t i = 0; ok && i < p->n; i++) {
-        w = put_le32(w, p->x[i]); w = put_le32(w, p->y[i]); w = put_le32(w, p->z[i]);
-        if (has_v) { w = put_le32(w, p->vx[i]); w = put_le32(w, p->vy[i]); w = put_le32(w, p->vz[i]); }
-        if (has_c) for (int k = 0; k < 3; k++) w = put_le32(w, p->color[3 * i + k]);
+        w = put_le32(w, p->x[i]);
+        w = put_le32(w, p->y[i]);
+        w = put_le32(w, p->z[i]);
+        if (has_v) {
+            w = put_le32(w, p->vx[i]);
+            w = put_le32(w, p->vy[i]);
+            w = put_le32(w, p->vz[i]);
+        }
+        if (has_c)
+            for (int k = 0; k < 3; k++) w = put_le32(w, p->color[3 * i + k]);
         if (has_ph) {
             uint32_t u = (uint32_t)p->phase[i];
-            w[0] = (unsigned char)u; w[1] = (unsigned char)(u >> 8); w[2] = (unsigned char)(u >> 16); w[3] = (unsigned char)(u >> 24);
+            w[0] = (unsigned char)u;
+            w[1] = (unsigned char)(u >> 8);
+            w[2] = (unsigned char)(u >> 16);
+            w[3] = (unsigned char)(u >> 24);
             w += 4;
         }
         if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {
@@ -333,10 +381,5 @@ int fs_write_ply(const fs_particles *p, const char *path)
             w = buf;
         }
     }
-    if (f && fclose(f) != 0) ok = 0;
-    if (!ok) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: error writing PLY data", path);
-    }
-    return fs_output_end(path, tmp, 1);
+    return fs_output_close(&out, ok);
 }

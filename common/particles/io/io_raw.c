@@ -5,6 +5,7 @@
  * one the first three columns are x y z. */
 #include "particle_io.h"
 #include "fs_error.h"
+#include "bytes.h"
 #include <ctype.h>
 #include <errno.h>
 #include <stdint.h>
@@ -36,10 +37,12 @@ int fs_read_raw(fs_particles *p, const char *path)
             float v[3];
             for (int c = 0; c < 3; c++) {
                 const unsigned char *b = buf + 12 * k + 4 * c;
-                uint32_t u = (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+                uint32_t u = fs_le32(b);
                 memcpy(&v[c], &u, 4);
             }
-            p->x[i + k] = v[0]; p->y[i + k] = v[1]; p->z[i + k] = v[2];
+            p->x[i + k] = v[0];
+            p->y[i + k] = v[1];
+            p->z[i + k] = v[2];
         }
     }
     fclose(f);
@@ -94,7 +97,10 @@ static int read_header(char **field, int n, int *col)
     for (int i = 0; i < n; i++) {
         char *name = field[i];
         size_t len = strlen(name);
-        if (len >= 2 && name[0] == '"' && name[len - 1] == '"') { name[len - 1] = 0; name++; }
+        if (len >= 2 && name[0] == '"' && name[len - 1] == '"') {
+            name[len - 1] = 0;
+            name++;
+        }
         for (int c = 0; c < C_COUNT; c++)
             for (int k = 0; k < 3 && names[c][k]; k++)
                 if (col[c] < 0 && strcasecmp(name, names[c][k]) == 0) col[c] = i;
@@ -114,9 +120,15 @@ static int load_text(const char *path, char **out, size_t *size)
     if (!rc && fread(text, 1, (size_t)st.st_size, f) != (size_t)st.st_size)
         rc = fs_fail(FS_ERR_INPUT, "%s: read error", path);
     fclose(f);
-    if (rc) { free(text); return rc; }
+    if (rc) {
+        free(text);
+        return rc;
+    }
     text[st.st_size] = 0;
-    if (memchr(text, 0, (size_t)st.st_size)) { free(text); return fs_fail(FS_ERR_INPUT, "%s: binary data in a CSV file", path); }
+    if (memchr(text, 0, (size_t)st.st_size)) {
+        free(text);
+        return fs_fail(FS_ERR_INPUT, "%s: binary data in a CSV file", path);
+    }
     *out = text;
     *size = (size_t)st.st_size;
     return FS_OK;
@@ -157,7 +169,8 @@ int fs_read_csv(fs_particles *p, const char *path)
             if (col[C_VX] >= 0 && col[C_VY] >= 0 && col[C_VZ] >= 0) fields |= FS_HAS_VELOCITY;
             if (col[C_R] >= 0 && col[C_G] >= 0 && col[C_B] >= 0) fields |= FS_HAS_COLOR;
             if (col[C_PHASE] >= 0) fields |= FS_HAS_PHASE;
-            for (int c = 0; c < C_COUNT; c++) if (col[c] + 1 > need) need = col[c] + 1;
+            for (int c = 0; c < C_COUNT; c++)
+                if (col[c] + 1 > need) need = col[c] + 1;
             rc = fs_particles_alloc(p, max_rows, fields);
             if (rc || is_header) continue;
         }
@@ -170,9 +183,16 @@ int fs_read_csv(fs_particles *p, const char *path)
             if (col[c] >= 0 && !parse_float(field[col[c]], &v[c]))
                 rc = fs_fail(FS_ERR_INPUT, "%s: line %zu: bad number '%.32s'", path, lineno, field[col[c]]);
         if (rc) break;
-        p->x[rows] = v[C_X]; p->y[rows] = v[C_Y]; p->z[rows] = v[C_Z];
-        if (fields & FS_HAS_VELOCITY) { p->vx[rows] = v[C_VX]; p->vy[rows] = v[C_VY]; p->vz[rows] = v[C_VZ]; }
-        if (fields & FS_HAS_COLOR) for (int k = 0; k < 3; k++) p->color[3 * rows + k] = v[C_R + k];
+        p->x[rows] = v[C_X];
+        p->y[rows] = v[C_Y];
+        p->z[rows] = v[C_Z];
+        if (fields & FS_HAS_VELOCITY) {
+            p->vx[rows] = v[C_VX];
+            p->vy[rows] = v[C_VY];
+            p->vz[rows] = v[C_VZ];
+        }
+        if (fields & FS_HAS_COLOR)
+            for (int k = 0; k < 3; k++) p->color[3 * rows + k] = v[C_R + k];
         if (fields & FS_HAS_PHASE) {
             if (!(v[C_PHASE] >= -2e9f && v[C_PHASE] <= 2e9f)) {
                 rc = fs_fail(FS_ERR_INPUT, "%s: line %zu: phase out of range", path, lineno);
@@ -183,7 +203,10 @@ int fs_read_csv(fs_particles *p, const char *path)
         rows++;
     }
     free(text);
-    if (rc) { fs_particles_free(p); return rc; }
+    if (rc) {
+        fs_particles_free(p);
+        return rc;
+    }
     p->n = rows; /* arrays were sized for every line; the unused tail is harmless */
     return FS_OK;
 }

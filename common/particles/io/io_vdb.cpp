@@ -24,7 +24,8 @@
 
 using openvdb::points::PointDataGrid;
 
-namespace {
+namespace
+{
 
 // Index of a Vec3f attribute named "v" or "velocity" in leaf, or INVALID_POS.
 size_t velocity_index(const openvdb::points::PointDataTree::LeafNodeType &leaf)
@@ -101,7 +102,8 @@ void write_grid(const fs_particles *p, const char *tmp)
     if (!(voxel > 0.0f) || !std::isfinite(voxel)) voxel = 0.1f;
     auto xform = openvdb::math::Transform::createLinearTransform(voxel);
     auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(wrapper, *xform);
-    auto grid = openvdb::points::createPointDataGrid<openvdb::points::NullCodec, PointDataGrid>(*index, wrapper, *xform);
+    auto grid =
+        openvdb::points::createPointDataGrid<openvdb::points::NullCodec, PointDataGrid>(*index, wrapper, *xform);
     if (fs_particles_fields(p) & FS_HAS_VELOCITY) {
         std::vector<openvdb::Vec3f> vel(p->n);
         for (size_t i = 0; i < p->n; i++) vel[i] = openvdb::Vec3f(p->vx[i], p->vy[i], p->vz[i]);
@@ -129,8 +131,8 @@ int read_here(fs_particles *p, const char *path)
         return fs_fail(FS_ERR_INPUT, "%s: truncated or damaged VDB file (a read past its end)", path);
     } catch (const std::bad_alloc &) {
         fs_particles_free(p);
-        return fs_fail(FS_ERR_INPUT, "%s: OpenVDB asked for a buffer larger than the file can fill (a damaged or forged size)",
-                       path);
+        return fs_fail(FS_ERR_INPUT,
+                       "%s: OpenVDB asked for a buffer larger than the file can fill (a damaged or forged size)", path);
     } catch (const std::exception &e) {
         fs_particles_free(p);
         return fs_fail(FS_ERR_INPUT, "%s: cannot read VDB points: %s", path, e.what());

@@ -37,7 +37,8 @@
 #include <strings.h>
 #include <sys/stat.h>
 
-namespace {
+namespace
+{
 
 // Keeps the first VTK error as one line, without VTK's "ERROR: In file, line" prefix.
 struct ErrorLog {
@@ -66,8 +67,9 @@ void on_error(vtkObject *, unsigned long, void *client, void *call)
 
 // Routes VTK errors and warnings of `reader` and of any helper object into `log`
 // while alive, and keeps them off stderr.
-class ErrorCapture {
-public:
+class ErrorCapture
+{
+  public:
     ErrorCapture(vtkAlgorithm *reader, ErrorLog *log) : reader_(reader)
     {
         cb_->SetCallback(on_error);
@@ -96,7 +98,7 @@ public:
     ErrorCapture(const ErrorCapture &) = delete;
     ErrorCapture &operator=(const ErrorCapture &) = delete;
 
-private:
+  private:
     vtkAlgorithm *reader_;
     vtkOutputWindow *window_;
     vtkNew<vtkCallbackCommand> cb_;
@@ -120,8 +122,7 @@ vtkDataArray *find_array(vtkDataSet *ds, const char *const *names, int comps, vt
     for (vtkFieldData *fd : sets) {
         for (int i = 0; fd && i < fd->GetNumberOfArrays(); i++) {
             vtkDataArray *a = fd->GetArray(i);
-            if (a && name_is(a->GetName(), names) && a->GetNumberOfComponents() == comps &&
-                a->GetNumberOfTuples() == n)
+            if (a && name_is(a->GetName(), names) && a->GetNumberOfComponents() == comps && a->GetNumberOfTuples() == n)
                 return a;
         }
     }
@@ -175,22 +176,32 @@ int fail_vtk(const char *path, const ErrorLog &log, const char *fallback)
     return fs_fail(FS_ERR_INPUT, "%s: %s", path, log.count ? log.first.c_str() : fallback);
 }
 
-// A forged VTU can declare far more points than its bytes hold; VTK would then
-// allocate for them. The declared NumberOfPoints of every Piece, at 12 bytes a
-// point, must fit in 1032 times the file's size (zlib's largest ratio; raw and
-// base64 data need at least the size itself). head: the file's start.
-int check_vtu_counts(const char *path, const std::string &head, double file_size)
+// A forged VTU can declare far more points or cells than its bytes hold; VTK would
+// then allocate for them (4294967296 cells: a 4 GB malloc for their types from a
+// 735-byte file, tests/fuzz/regress_vtu/cells_4294967296.vtu). The declared counts of
+// every Piece, at 12 bytes a point and 1 a cell (its type), must fit in 1032 times the
+// file's size (zlib's largest ratio; raw and base64 data need at least the size
+// itself), and each must be a number >= 0: VTK read NumberOfCells="-1e309" as -1 and
+// cleared SIZE_MAX bytes (regress_vtu/cells_minus_1e309.vtu). head: the file's start.
+int check_vtu_count(const char *path, const std::string &head, double file_size, const char *what, double bytes)
 {
+    std::string key = std::string(what) + "=\"";
     double declared = 0;
-    for (size_t at = head.find("NumberOfPoints=\""); at != std::string::npos; at = head.find("NumberOfPoints=\"", at + 1)) {
-        double n = strtod(head.c_str() + at + 16, nullptr);
-        if (!(n >= 0)) return fs_fail(FS_ERR_INPUT, "%s: bad NumberOfPoints in the VTU file", path);
+    for (size_t at = head.find(key); at != std::string::npos; at = head.find(key, at + 1)) {
+        double n = strtod(head.c_str() + at + key.size(), nullptr);
+        if (!(n >= 0)) return fs_fail(FS_ERR_INPUT, "%s: bad %s in the VTU file", path, what);
         declared += n;
     }
-    if (declared * 12 > 1032.0 * file_size)
-        return fs_fail(FS_ERR_INPUT, "%s: VTU file declares %.0f points, more than its %.0f bytes can hold", path, declared,
-                       file_size);
+    if (declared * bytes > 1032.0 * file_size)
+        return fs_fail(FS_ERR_INPUT, "%s: VTU file declares %.0f %s, more than its %.0f bytes can hold", path, declared,
+                       strcmp(what, "NumberOfPoints") ? "cells" : "points", file_size);
     return FS_OK;
+}
+
+int check_vtu_counts(const char *path, const std::string &head, double file_size)
+{
+    int rc = check_vtu_count(path, head, file_size, "NumberOfPoints", 12);
+    return rc ? rc : check_vtu_count(path, head, file_size, "NumberOfCells", 1);
 }
 
 // The value of attribute `name` in the tag that holds position at, or "".
@@ -221,7 +232,8 @@ int check_vtu_components(const char *path, const std::string &f)
         if (strtod(value.c_str(), nullptr) <= 1024) continue;
         std::string name = attr_in_tag(f, at, "Name").substr(0, 32);
         name = name.empty() ? "a VTU DataArray" : "VTU DataArray '" + name + "'";
-        return fs_fail(FS_ERR_INPUT, "%s: %s has NumberOfComponents '%.32s' (at most 1024)", path, name.c_str(), value.c_str());
+        return fs_fail(FS_ERR_INPUT, "%s: %s has NumberOfComponents '%.32s' (at most 1024)", path, name.c_str(),
+                       value.c_str());
     }
     return FS_OK;
 }
@@ -268,7 +280,8 @@ double header_word(const std::string &bytes, const Layout &l, size_t k)
 {
     uint64_t u = 0;
     for (int b = 0; b < l.hs; b++)
-        u |= static_cast<uint64_t>(static_cast<unsigned char>(bytes[k * l.hs + (l.little ? b : l.hs - 1 - b)])) << (8 * b);
+        u |= static_cast<uint64_t>(static_cast<unsigned char>(bytes[k * l.hs + (l.little ? b : l.hs - 1 - b)]))
+            << (8 * b);
     return static_cast<double>(u);
 }
 
@@ -325,8 +338,9 @@ int check_vtu_headers(const char *path, const std::string &f)
         size_t hi = f.find('>', at);
         if (hi == std::string::npos || f[hi - 1] == '/') continue; // no data: VTK refuses it
         if (!header_fits(f, hi + 1, true, l, &budget))
-            return fs_fail(FS_ERR_INPUT, "%s: VTU array header of inline binary DataArray '%.32s' does not fit the file",
-                           path, attr_in_tag(f, at, "Name").c_str());
+            return fs_fail(FS_ERR_INPUT,
+                           "%s: VTU array header of inline binary DataArray '%.32s' does not fit the file", path,
+                           attr_in_tag(f, at, "Name").c_str());
     }
     return FS_OK;
 }
@@ -364,7 +378,8 @@ int read_here(fs_particles *p, const char *path)
         reader->Update();
         ds = reader->GetOutput();
     } catch (const std::bad_alloc &) {
-        return fs_fail(FS_ERR_INPUT, "%s: VTK asked for a buffer larger than the file can fill (a damaged or forged size)", path);
+        return fs_fail(FS_ERR_INPUT,
+                       "%s: VTK asked for a buffer larger than the file can fill (a damaged or forged size)", path);
     } catch (const std::exception &e) {
         return fs_fail(FS_ERR_INPUT, "%s: VTK: %s", path, e.what());
     }

@@ -84,7 +84,8 @@ static void next_line(vtk_in *in)
 static int count(vtk_in *in, const char *what, long long *out)
 {
     char tok[64], *end;
-    if (!token(in, tok, sizeof tok)) return fs_fail(FS_ERR_INPUT, "%s: truncated VTK file: %s has no count", in->path, what);
+    if (!token(in, tok, sizeof tok))
+        return fs_fail(FS_ERR_INPUT, "%s: truncated VTK file: %s has no count", in->path, what);
     errno = 0;
     long long v = strtoll(tok, &end, 10);
     if (*end || errno || v < 0 || v > (1LL << 62))
@@ -95,11 +96,13 @@ static int count(vtk_in *in, const char *what, long long *out)
 
 static size_t type_size(const char *t)
 {
-    static const struct { const char *name; size_t size; } types[] = {
-        {"float", 4},         {"double", 8},          {"int", 4},   {"unsigned_int", 4},
-        {"short", 2},         {"unsigned_short", 2},  {"char", 1},  {"unsigned_char", 1},
-        {"long", 8},          {"unsigned_long", 8},   {"vtkIdType", 8}, {"vtktypeint64", 8},
-        {"vtktypeuint64", 8}, {"vtktypeint32", 4},    {"vtktypeuint32", 4},
+    static const struct {
+        const char *name;
+        size_t size;
+    } types[] = {
+        {"float", 4},          {"double", 8},       {"int", 4},           {"unsigned_int", 4}, {"short", 2},
+        {"unsigned_short", 2}, {"char", 1},         {"unsigned_char", 1}, {"long", 8},         {"unsigned_long", 8},
+        {"vtkIdType", 8},      {"vtktypeint64", 8}, {"vtktypeuint64", 8}, {"vtktypeint32", 4}, {"vtktypeuint32", 4},
     };
     for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
         if (strcasecmp(t, types[i].name) == 0) return types[i].size;
@@ -184,8 +187,8 @@ static vtk_array *slot_for(vtk_set *s, const char *name, int ncomp)
 
 /* An array of tuples x ncomp values; kept when tuples is the point count and its
  * name fills a slot. */
-static int array(vtk_in *in, vtk_set *s, const char *name, int ncomp, long long tuples, const char *t,
-                 const char *what, int points_data)
+static int array(vtk_in *in, vtk_set *s, const char *name, int ncomp, long long tuples, const char *t, const char *what,
+                 int points_data)
 {
     if (ncomp <= 0 || ncomp > 1024) return fs_fail(FS_ERR_INPUT, "%s: bad VTK component count in %s", in->path, what);
     if (tuples > (1LL << 62) / ncomp) return fs_fail(FS_ERR_INPUT, "%s: VTK %s is too large", in->path, what);
@@ -227,7 +230,8 @@ static int cells(vtk_in *in, const char *kw)
     if (token(in, tok, sizeof tok) && strcasecmp(tok, "OFFSETS") == 0) {
         if (!token(in, type, sizeof type)) return fs_fail(FS_ERR_INPUT, "%s: truncated VTK OFFSETS", in->path);
         rc = values(in, n, type, "OFFSETS", NULL);
-        if (!rc && !(token(in, tok, sizeof tok) && strcasecmp(tok, "CONNECTIVITY") == 0 && token(in, type, sizeof type)))
+        if (!rc &&
+            !(token(in, tok, sizeof tok) && strcasecmp(tok, "CONNECTIVITY") == 0 && token(in, type, sizeof type)))
             rc = fs_fail(FS_ERR_INPUT, "%s: VTK %s: OFFSETS without CONNECTIVITY", in->path, kw);
         return rc ? rc : values(in, size, type, "CONNECTIVITY", NULL);
     }
@@ -247,8 +251,9 @@ static int attribute(vtk_in *in, vtk_set *s, const char *kw, long long tuples, i
     }
     if (strcasecmp(kw, "COLOR_SCALARS") == 0) { /* name ncomp: floats in ASCII, bytes in binary */
         int rc = count(in, kw, &nc);
-        return rc ? rc : array(in, s, name, nc > 1024 ? -1 : (int)nc, tuples, in->binary ? "unsigned_char" : "float",
-                               kw, points_data);
+        return rc ? rc
+                  : array(in, s, name, nc > 1024 ? -1 : (int)nc, tuples, in->binary ? "unsigned_char" : "float", kw,
+                          points_data);
     }
     if (strcasecmp(kw, "TEXTURE_COORDINATES") == 0 && count(in, kw, &nc)) return FS_ERR_INPUT;
     if (!token(in, type, sizeof type)) return fs_fail(FS_ERR_INPUT, "%s: truncated VTK %s", in->path, kw);
@@ -304,8 +309,10 @@ static int sections(vtk_in *in, vtk_set *s)
         if (strcasecmp(kw, "POINTS") == 0) {
             if (s->pts.v) return fs_fail(FS_ERR_INPUT, "%s: VTK file has two POINTS sections", in->path);
             rc = count(in, "POINTS", &n);
-            if (!rc && !token(in, type, sizeof type)) rc = fs_fail(FS_ERR_INPUT, "%s: truncated VTK POINTS line", in->path);
-            if (!rc && n > (1LL << 60)) rc = fs_fail(FS_ERR_INPUT, "%s: VTK POINTS count %lld is too large", in->path, n);
+            if (!rc && !token(in, type, sizeof type))
+                rc = fs_fail(FS_ERR_INPUT, "%s: truncated VTK POINTS line", in->path);
+            if (!rc && n > (1LL << 60))
+                rc = fs_fail(FS_ERR_INPUT, "%s: VTK POINTS count %lld is too large", in->path, n);
             if (!rc) rc = values(in, 3 * n, type, "POINTS", &s->pts.v);
             s->pts.tuples = n, s->pts.ncomp = 3;
         } else if (strcasecmp(kw, "POINT_DATA") == 0 || strcasecmp(kw, "CELL_DATA") == 0) {
@@ -316,7 +323,8 @@ static int sections(vtk_in *in, vtk_set *s)
                              s->pts.v ? s->pts.tuples : 0);
         } else if (strcasecmp(kw, "FIELD") == 0) {
             rc = field(in, s);
-        } else if (name_is(kw, (const char *const[]){"VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS", NULL})) {
+        } else if (name_is(kw,
+                           (const char *const[]){"VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS", "CELLS", NULL})) {
             rc = cells(in, kw);
         } else if (strcasecmp(kw, "CELL_TYPES") == 0) {
             rc = count(in, kw, &n);
@@ -337,13 +345,16 @@ static int sections(vtk_in *in, vtk_set *s)
 /* Moves the kept arrays into p. */
 static int to_particles(const vtk_set *s, const char *path, fs_particles *p)
 {
-    unsigned fields = (s->vel.v ? FS_HAS_VELOCITY : 0) | (s->col.v ? FS_HAS_COLOR : 0) | (s->phase.v ? FS_HAS_PHASE : 0);
+    unsigned fields =
+        (s->vel.v ? FS_HAS_VELOCITY : 0) | (s->col.v ? FS_HAS_COLOR : 0) | (s->phase.v ? FS_HAS_PHASE : 0);
     int rc = fs_particles_alloc(p, (size_t)s->pts.tuples, fields);
     if (rc) return rc;
     double cs = s->col.scale_uchar ? 1.0 / 255.0 : 1.0;
     for (size_t i = 0; i < p->n; i++) {
         p->x[i] = (float)s->pts.v[3 * i], p->y[i] = (float)s->pts.v[3 * i + 1], p->z[i] = (float)s->pts.v[3 * i + 2];
-        if (s->vel.v) p->vx[i] = (float)s->vel.v[3 * i], p->vy[i] = (float)s->vel.v[3 * i + 1], p->vz[i] = (float)s->vel.v[3 * i + 2];
+        if (s->vel.v)
+            p->vx[i] = (float)s->vel.v[3 * i], p->vy[i] = (float)s->vel.v[3 * i + 1],
+            p->vz[i] = (float)s->vel.v[3 * i + 2];
         for (int k = 0; s->col.v && k < 3; k++) p->color[3 * i + k] = (float)(s->col.v[3 * i + k] * cs);
         if (s->phase.v) {
             double v = s->phase.v[i];
@@ -360,7 +371,8 @@ int fs_read_vtk(fs_particles *p, const char *path)
     int fd = open(path, O_RDONLY);
     if (fd < 0) return fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
     struct stat st;
-    int rc = fstat(fd, &st) == 0 && st.st_size > 0 ? FS_OK : fs_fail(FS_ERR_INPUT, "%s: empty or unreadable file", path);
+    int rc =
+        fstat(fd, &st) == 0 && st.st_size > 0 ? FS_OK : fs_fail(FS_ERR_INPUT, "%s: empty or unreadable file", path);
     void *map = rc ? MAP_FAILED : mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
     close(fd);
     if (!rc && map == MAP_FAILED) rc = fs_fail(FS_ERR_INPUT, "%s: cannot map: %s", path, strerror(errno));
@@ -417,7 +429,8 @@ static void write_body(be_writer *w, const fs_particles *p)
     size_t n = p->n;
     unsigned fields = fs_particles_fields(p);
     snprintf(line, sizeof line,
-             "# vtk DataFile Version 3.0\nfluidsurf particles\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS %zu float\n", n);
+             "# vtk DataFile Version 3.0\nfluidsurf particles\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS %zu float\n",
+             n);
     be_text(w, line);
     for (size_t i = 0; i < n; i++) be_f32(w, p->x[i]), be_f32(w, p->y[i]), be_f32(w, p->z[i]);
     snprintf(line, sizeof line, "\nCELLS %zu %zu\n", n, 2 * n);
@@ -452,24 +465,15 @@ static void write_body(be_writer *w, const fs_particles *p)
 int fs_write_vtk(const fs_particles *p, const char *path)
 {
     if (p->n > INT32_MAX / 2) return fs_fail(FS_ERR_INPUT, "%s: too many particles for legacy VTK (%zu)", path, p->n);
-    char tmp[4096];
-    int rc = fs_output_begin(path, tmp, sizeof tmp);
-    if (rc) return rc;
     be_writer *w = malloc(sizeof *w);
-    if (!w) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    if (!w) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    fs_output out;
+    int rc = fs_output_open(&out, path);
+    if (!rc) {
+        w->f = out.f, w->ok = 1, w->len = 0;
+        write_body(w, p);
+        rc = fs_output_close(&out, w->ok);
     }
-    w->f = fopen(tmp, "wb");
-    w->ok = w->f != NULL;
-    w->len = 0;
-    if (w->ok) write_body(w, p);
-    int ok = w->ok;
-    if (w->f && fclose(w->f) != 0) ok = 0;
     free(w);
-    if (!ok) {
-        fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: error writing VTK data", path);
-    }
-    return fs_output_end(path, tmp, 1);
+    return rc;
 }

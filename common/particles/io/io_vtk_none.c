@@ -9,4 +9,8 @@ static int refuse(const char *path, const char *what)
     return fs_fail(FS_ERR_INPUT, "%s: VTK %s needs a build with FS_WITH_VTK=ON", path, what);
 }
 
-int fs_read_vtu(fs_particles *p, const char *path) { (void)p; return refuse(path, "XML (.vtu) input"); }
+int fs_read_vtu(fs_particles *p, const char *path)
+{
+    (void)p;
+    return refuse(path, "XML (.vtu) input");
+}

@@ -12,10 +12,11 @@
 
 const char *fs_format_from_path(const char *path)
 {
-    static const struct { const char *ext, *format; } table[] = {
-        {".bgeo.gz", "bgeo"}, {".bgeo", "bgeo"}, {".vtk", "vtk"}, {".vtu", "vtu"},
-        {".ply", "ply"},      {".vdb", "vdb"},   {".raw", "raw"}, {".xyz", "raw"},
-        {".csv", "csv"},
+    static const struct {
+        const char *ext, *format;
+    } table[] = {
+        {".bgeo.gz", "bgeo"}, {".bgeo", "bgeo"}, {".vtk", "vtk"}, {".vtu", "vtu"}, {".ply", "ply"},
+        {".vdb", "vdb"},      {".raw", "raw"},   {".xyz", "raw"}, {".csv", "csv"},
     };
     if (!path) return NULL;
     for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
@@ -34,7 +35,8 @@ static int pick_format(const char *path, const char *format, const char **out)
     if (!*out)
         return fs_fail(FS_ERR_INPUT,
                        "%s: unknown particle file extension (known: .vtk .vtu .bgeo .bgeo.gz .ply "
-                       ".vdb .raw .xyz .csv)", path);
+                       ".vdb .raw .xyz .csv)",
+                       path);
     return FS_OK;
 }
 
@@ -69,7 +71,10 @@ int fs_particles_read(fs_particles *p, const char *path, const char *format)
     const char *fmt;
     int rc = pick_format(path, format, &fmt);
     if (rc) return rc;
-    static const struct { const char *name; int (*read)(fs_particles *, const char *); } readers[] = {
+    static const struct {
+        const char *name;
+        int (*read)(fs_particles *, const char *);
+    } readers[] = {
         {"vtk", fs_read_vtk}, {"vtu", fs_read_vtu}, {"bgeo", fs_read_bgeo}, {"ply", fs_read_ply},
         {"vdb", fs_read_vdb}, {"raw", fs_read_raw}, {"csv", fs_read_csv},
     };
@@ -77,8 +82,8 @@ int fs_particles_read(fs_particles *p, const char *path, const char *format)
     for (size_t i = 0; i < sizeof readers / sizeof readers[0]; i++)
         if (strcasecmp(fmt, readers[i].name) == 0) read = readers[i].read;
     if (!read)
-        return fs_fail(FS_ERR_INPUT, "%s: unknown particle format '%s' (known: vtk vtu bgeo ply vdb raw csv)",
-                       path, fmt);
+        return fs_fail(FS_ERR_INPUT, "%s: unknown particle format '%s' (known: vtk vtu bgeo ply vdb raw csv)", path,
+                       fmt);
     rc = check_input_file(path);
     if (!rc) rc = read(p, path);
     if (!rc) rc = fs_particles_validate(p, path);
@@ -95,8 +100,14 @@ int fs_particles_write(const fs_particles *p, const char *path, const char *form
     const char *fmt;
     int rc = pick_format(path, format, &fmt);
     if (rc) return rc;
-    static const struct { const char *name; int (*write)(const fs_particles *, const char *); } writers[] = {
-        {"vtk", fs_write_vtk}, {"bgeo", fs_write_bgeo}, {"ply", fs_write_ply}, {"vdb", fs_write_vdb},
+    static const struct {
+        const char *name;
+        int (*write)(const fs_particles *, const char *);
+    } writers[] = {
+        {"vtk", fs_write_vtk},
+        {"bgeo", fs_write_bgeo},
+        {"ply", fs_write_ply},
+        {"vdb", fs_write_vdb},
     };
     for (size_t i = 0; i < sizeof writers / sizeof writers[0]; i++) {
         if (strcasecmp(fmt, writers[i].name) != 0) continue;
@@ -123,24 +134,29 @@ int fs_frame_path(char *out, int size, const char *pattern, int frame)
     int conversions = 0;
     for (const char *s = pattern; *s; s++) {
         if (*s != '%') continue;
-        if (s[1] == '%') { s++; continue; }
+        if (s[1] == '%') {
+            s++;
+            continue;
+        }
         s++;
         while (*s && strchr("-+ 0", *s)) s++;
         while (isdigit((unsigned char)*s)) s++;
-        if (*s == '.') { s++; while (isdigit((unsigned char)*s)) s++; }
+        if (*s == '.') {
+            s++;
+            while (isdigit((unsigned char)*s)) s++;
+        }
         if (*s != 'd' && *s != 'i')
             return fs_fail(FS_ERR_INPUT, "%s: frame pattern may only contain a %%d-style conversion", pattern);
         conversions++;
     }
     if (conversions != 1)
-        return fs_fail(FS_ERR_INPUT, "%s: frame pattern needs exactly one %%d-style conversion (has %d)",
-                       pattern, conversions);
+        return fs_fail(FS_ERR_INPUT, "%s: frame pattern needs exactly one %%d-style conversion (has %d)", pattern,
+                       conversions);
     if (size <= 0) return fs_fail(FS_ERR_INPUT, "%s: no room for the frame path", pattern);
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wformat-nonliteral"
     int len = snprintf(out, (size_t)size, pattern, frame); /* checked above: one int conversion */
 #pragma GCC diagnostic pop
-    if (len < 0 || len >= size)
-        return fs_fail(FS_ERR_INPUT, "%s: frame path for frame %d is too long", pattern, frame);
+    if (len < 0 || len >= size) return fs_fail(FS_ERR_INPUT, "%s: frame path for frame %d is too long", pattern, frame);
     return FS_OK;
 }

@@ -22,11 +22,11 @@ int fs_frame_path(char *out, int size, const char *pattern, int frame);
 const char *fs_format_from_path(const char *path);
 
 /* Per-format entry points (one file each; the C++ ones are thin adapters). */
-int fs_read_vtk(fs_particles *p, const char *path);   /* legacy .vtk, our own (io_vtk_legacy.c) */
-int fs_read_vtu(fs_particles *p, const char *path);   /* XML .vtu, through VTK */
+int fs_read_vtk(fs_particles *p, const char *path); /* legacy .vtk, our own (io_vtk_legacy.c) */
+int fs_read_vtu(fs_particles *p, const char *path); /* XML .vtu, through VTK */
 int fs_read_bgeo(fs_particles *p, const char *path);
 int fs_read_ply(fs_particles *p, const char *path);
-int fs_read_vdb(fs_particles *p, const char *path);   /* OpenVDB point grids */
+int fs_read_vdb(fs_particles *p, const char *path); /* OpenVDB point grids */
 int fs_read_raw(fs_particles *p, const char *path);
 int fs_read_csv(fs_particles *p, const char *path);
 int fs_write_vtk(const fs_particles *p, const char *path);

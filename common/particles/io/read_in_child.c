@@ -5,8 +5,10 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -53,12 +55,31 @@ static int arrays_of(const fs_particles *p, void *ptr[8], size_t bytes[8])
     return 8;
 }
 
+/* The sanitizers' death callback (set by libFuzzer); absent outside sanitized builds. */
+extern void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
+
+/* A crash in the child is contained by design: the parent refuses the file. The
+ * parent's own crash handling must not run for it: a fuzzer's (libFuzzer's signal
+ * handlers, and the death callback it gives the sanitizers, which runs after a memory
+ * error's report) would save the input as the fuzzer's crash-* finding, and a host
+ * application's handler would report a crash of its own. So the child dies by the
+ * default action of each crash signal, or exits after a sanitizer's report. */
+static void child_crash_handling(void)
+{
+    static const int sigs[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+    for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) signal(sigs[i], SIG_DFL);
+    if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(NULL);
+}
+
 /* The child: reads, sends, and ends without the parent's exit handlers. Its stderr
  * goes to /dev/null: a library that corrupts its heap may print there, and the
- * parent owns the one error line. */
+ * parent owns the one error line. FLUIDSURF_CHILD_STDERR=1 keeps it, to see what the
+ * library printed or a sanitizer reported before the child died. */
 static void child_read(int fd, const char *path, int (*read_fn)(fs_particles *, const char *))
 {
-    int null = open("/dev/null", O_WRONLY);
+    child_crash_handling();
+    const char *keep = getenv("FLUIDSURF_CHILD_STDERR");
+    int null = keep && !strcmp(keep, "1") ? -1 : open("/dev/null", O_WRONLY);
     if (null >= 0) dup2(null, STDERR_FILENO);
     fs_particles p;
     memset(&p, 0, sizeof p);
@@ -94,8 +115,7 @@ static int receive(int fd, fs_particles *p, child_result *res)
     return -1;
 }
 
-int fs_read_in_child(fs_particles *p, const char *path, int (*read_fn)(fs_particles *, const char *),
-                     const char *what)
+int fs_read_in_child(fs_particles *p, const char *path, int (*read_fn)(fs_particles *, const char *), const char *what)
 {
     int fd[2];
     if (pipe(fd)) return read_fn(p, path); /* no pipe: read in place, unprotected */

@@ -5,13 +5,13 @@
 #include "timing.h"
 #include <stdio.h>
 
-#define CLI_COUNTERS_HEADER "method,variant,frame,stage,counter,value\n"
+#define FS_COUNTERS_HEADER "method,variant,frame,stage,counter,value\n"
 
 /* One row per stage and counter it counted (zero counts are left out), then a
  * "total" row for every counter in declared (FS_CNT_BIT mask), zero or not. */
-void cli_counters_rows(FILE *f, const char *method, const char *variant, int frame, const fs_stages *st,
-                       unsigned declared);
+void fs_counters_rows(FILE *f, const char *method, const char *variant, int frame, const fs_stages *st,
+                      unsigned declared);
 /* The sum of counter c over st's stages. */
-uint64_t cli_counters_total(const fs_stages *st, int c);
+uint64_t fs_counters_total(const fs_stages *st, int c);
 
 #endif

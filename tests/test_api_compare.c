@@ -1,0 +1,132 @@
+/* fluidsurf_compare (API version 4) as a program links it: a study of two
+ * methods, one of them swept, on two frames against the reference. Its tables
+ * have compare's columns and one row per variant, reference and frame; its
+ * metrics of the first frame equal fluidsurf_render + fluidsurf_metrics_compute2
+ * of the same item (one engine, one metrics function); its timings are
+ * `repeat` runs; the same study twice gives the same metrics. */
+#include "fluidsurf/fluidsurf.h"
+#include "fs_test.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define R 0.025f
+
+/* A slab of particles on a lattice of spacing 2r, shifted by dx (a moving frame). */
+static size_t slab(float *x, float *y, float *z, float dx)
+{
+    size_t n = 0;
+    for (int i = 0; i < 10; i++)
+        for (int j = 0; j < 4; j++)
+            for (int k = 0; k < 10; k++) x[n] = 2 * R * i + dx, y[n] = 2 * R * j, z[n] = 2 * R * k, n++;
+    return n;
+}
+
+/* Rows of a CSV table (the provenance line and the header left out). */
+static int rows(const char *csv)
+{
+    int n = 0;
+    for (const char *c = csv; c && *c; c++) n += *c == '\n';
+    return csv ? n - 2 : -1;
+}
+
+/* The value of column col in the first data row whose first cells are method,variant. */
+static double cell(const char *csv, const char *method, const char *variant, const char *col)
+{
+    const char *hdr = strchr(csv, '\n') + 1, *line = hdr;
+    int idx = 0;
+    for (const char *c = hdr; c < strstr(hdr, col); c++) idx += *c == ',';
+    char want[128];
+    snprintf(want, sizeof want, "%s,%s,", method, variant);
+    while ((line = strchr(line, '\n')) && *++line)
+        if (!strncmp(line, want, strlen(want))) {
+            const char *c = line;
+            for (int i = 0; i < idx; i++) c = strchr(c, ',') + 1;
+            return atof(c);
+        }
+    return NAN;
+}
+
+int main(void)
+{
+    static float x[2][400], y[2][400], z[2][400];
+    fluidsurf_particles *p[2];
+    fluidsurf_scene *s;
+    for (int f = 0; f < 2; f++)
+        CHECK(!fluidsurf_particles_wrap(slab(x[f], y[f], z[f], f * 0.5f * R), x[f], y[f], z[f], &p[f]), "wrap");
+    CHECK(!fluidsurf_scene_new(&s) && !fluidsurf_scene_set_radius(s, R) && !fluidsurf_scene_set_size(s, 48, 40),
+          "scene");
+    CHECK(FLUIDSURF_API_VERSION == 4 && fluidsurf_api_version() >= 4, "API version 4: %d", fluidsurf_api_version());
+
+    const char *sets[] = {"spheres.radius_scale=0.8,1.2"};
+    fluidsurf_study *st = NULL, *again = NULL;
+    int rc = fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres,reference", sets, 1, NULL, 0, 2, 0,
+                               &st);
+    CHECK(!rc, "fluidsurf_compare: %s", fluidsurf_last_error());
+    if (rc) TEST_DONE();
+    const char *m = fluidsurf_study_table(st, "metrics"), *t = fluidsurf_study_table(st, "timings");
+    CHECK(m && !strncmp(m, "# ", 2) && strstr(m, "; commit=") && strchr(m, 0x0a) > strstr(m, "commit="),
+          "metrics begins with the provenance");
+    CHECK(strstr(m, "\nmethod,variant,radius_scale,reference,frame,mask_iou,"), "metrics has compare's columns");
+    CHECK(rows(m) == 3 * 2, "3 variants x 1 reference x 2 frames: %d rows", rows(m));
+    CHECK(fluidsurf_study_table(st, "temporal") && rows(fluidsurf_study_table(st, "temporal")) == 3,
+          "temporal: one row per variant");
+    CHECK(!fluidsurf_study_table(st, "counters") && !fluidsurf_study_table(st, "nope"),
+          "no counters table without the flag");
+    CHECK(t && strstr(t, "spheres,radius_scale=0.8,total,") && strstr(t, ",2,"), "timings: 2 runs per variant");
+    CHECK_NEAR(cell(m, "reference", "", "mask_iou"), 1, 1e-12, "the reference against itself");
+
+    /* the same item through fluidsurf_render and the metrics of version 2 */
+    fluidsurf_image *a, *ref;
+    const char *par[] = {"radius_scale=0.8"};
+    CHECK(!fluidsurf_render(s, p[0], "spheres", par, 1, &a) && !fluidsurf_reference(s, p[0], &ref), "render: %s",
+          fluidsurf_last_error());
+    fluidsurf_metrics mt;
+    fluidsurf_depth_metrics dm;
+    CHECK(!fluidsurf_metrics_compute2(a, ref, 0, &mt, &dm), "metrics");
+    char v[16];
+    snprintf(v, sizeof v, "%.6g", mt.normal_mean_deg);
+    CHECK_NEAR(cell(m, "spheres", "radius_scale=0.8", "normal_mean_deg"), atof(v), 0,
+               "normal_mean_deg as fluidsurf_render gives it");
+    snprintf(v, sizeof v, "%.6g", mt.mask_iou);
+    CHECK_NEAR(cell(m, "spheres", "radius_scale=0.8", "mask_iou"), atof(v), 0, "mask_iou as fluidsurf_render gives it");
+
+    CHECK(!fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres,reference", sets, 1, NULL, 0, 1, 0,
+                             &again),
+          "again");
+    const char *m2 = fluidsurf_study_table(again, "metrics");
+    CHECK(m2 &&
+              cell(m2, "spheres", "radius_scale=1.2", "depth_rmse_r") ==
+                  cell(m, "spheres", "radius_scale=1.2", "depth_rmse_r"),
+          "the same study twice: the same metrics");
+
+    /* refusals: one line each, nothing returned */
+    fluidsurf_study *bad = (fluidsurf_study *)1;
+    CHECK(fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres,nosuch", NULL, 0, NULL, 0, 1, 0,
+                            &bad) == FLUIDSURF_ERR_INPUT &&
+              !bad && strstr(fluidsurf_last_error(), "nosuch"),
+          "unknown method: %s", fluidsurf_last_error());
+    const char *sweep_other[] = {"aniso_ssf.smoothing_iterations=1,2"};
+    CHECK(fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres", sweep_other, 1, NULL, 0, 1, 0,
+                            &bad) == FLUIDSURF_ERR_INPUT,
+          "a sweep of a method not compared: %s", fluidsurf_last_error());
+    /* a library message names the setting as written, with no command-line flag (the CLI says --set) */
+    const char *trailing[] = {"spheres.radius_scale=0.8,"};
+    CHECK(fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres", trailing, 1, NULL, 0, 1, 0, &bad) ==
+                  FLUIDSURF_ERR_INPUT &&
+              strstr(fluidsurf_last_error(), "spheres.radius_scale=0.8,") && !strstr(fluidsurf_last_error(), "--"),
+          "a bad sweep, in the library's words: %s", fluidsurf_last_error());
+    const char *badref[] = {"bogus"};
+    CHECK(fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 2, "spheres", NULL, 0, badref, 1, 1, 0, &bad) ==
+                  FLUIDSURF_ERR_INPUT &&
+              strstr(fluidsurf_last_error(), "bogus") && !strstr(fluidsurf_last_error(), "--"),
+          "a bad reference, in the library's words: %s", fluidsurf_last_error());
+    fluidsurf_image_free(a);
+    fluidsurf_image_free(ref);
+    fluidsurf_study_free(st);
+    fluidsurf_study_free(again);
+    fluidsurf_scene_free(s);
+    for (int f = 0; f < 2; f++) fluidsurf_particles_free(p[f]);
+    TEST_DONE();
+}
