@@ -4,6 +4,8 @@
 # provenance, or experiments/lib.sh: stamp_csv, csv_commit). A CSV assembled from other runs
 # names theirs ("sources=NAME@HASH:dirty=0,..."), and each of those must be clean too.
 # Lists every CSV that fails, with why.
+# Each named commit must also be in this history or listed, with why, in
+# experiments/tools/lost_commits.txt (commits of work whose landing was lost).
 # experiments/tools/rerun_pending.txt lists CSVs known to predate this rule and not yet
 # re-measured: each is reported as pending, not failed, and one that passes while still
 # listed fails (take it off the list), so the list only shrinks.
@@ -13,6 +15,20 @@ cd "${1:-$(dirname "$0")/../..}"
 source experiments/lib.sh # PROV_RE
 pending_list=experiments/tools/rerun_pending.txt
 pending() { [ -f $pending_list ] && grep -qxF "$1" $pending_list; }
+# Every commit a CSV names must be one a reader can check out: in this history, or listed
+# with why in lost_commits.txt. Not checked outside git or in a shallow clone.
+lost_list=experiments/tools/lost_commits.txt
+check_commits=0
+[ "$(git rev-parse --is-shallow-repository 2> /dev/null)" = false ] && check_commits=1
+unknown_commit() {
+  local h
+  [ $check_commits = 1 ] || return 1
+  for h in $(grep -oE '(commit=|@)[0-9a-f]{7,40}' <<< "$1" | grep -oE '[0-9a-f]{7,40}$'); do
+    git cat-file -e "$h^{commit}" 2> /dev/null && continue
+    grep -qE "^$h( |$)" $lost_list 2> /dev/null || { echo "$h"; return 0; }
+  done
+  return 1
+}
 bad=0 n=0 waiting=0
 while read -r f; do
   n=$((n + 1))
@@ -23,13 +39,15 @@ while read -r f; do
   elif grep -qE -- '-dirty|(^|[ ;])dirty=1' <<< "$first"; then why="made at a dirty tree"
   elif grep -qE 'sources=' <<< "$first" && grep -oE 'sources=[^ ;]*' <<< "$first" | tr ',' '\n' | grep -qv ':dirty=0$'; then
     why="assembled from a run at a dirty tree or without a commit"
+  elif h=$(unknown_commit "$first"); then
+    why="names commit $h, which this history does not hold (list it in $lost_list, with why, only if it is truly gone)"
   fi
   if [ -n "$why" ] && pending "$f"; then waiting=$((waiting + 1))
   elif [ -n "$why" ]; then echo "  $f: $why"; bad=$((bad + 1))
   elif pending "$f"; then echo "  $f: names a clean commit but is still in $pending_list: take it off"; bad=$((bad + 1)); fi
 done < <(git ls-files 'results/*.csv' 'results/**/*.csv' | sort -u)
 if [ $bad -gt 0 ]; then
-  echo "check_results: $bad of $n committed CSVs do not name a clean commit (re-run their study at a clean commit; never re-stamp)"
+  echo "check_results: $bad of $n committed CSVs do not name a clean commit in this history (re-run their study at a clean commit; never re-stamp)"
   exit 1
 fi
 if [ $waiting -gt 0 ]; then
