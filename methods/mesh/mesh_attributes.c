@@ -1,35 +1,32 @@
-/* Shepard interpolation of particle attributes at the vertices (mesh_attributes.h),
- * over the 27 grid cells around each vertex (the cell is at least H). */
+/* Shepard interpolation of particle attributes at the vertices (mesh_attributes.h). */
 #include "mesh_attributes.h"
+#include "mesh_shepard.h"
 #include "fs_error.h"
-#include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
-/* The attribute of original particle i, component a (vel or col per `which`). */
-static float attr(const fs_particles *p, int which, uint32_t i, int a)
+/* What the Shepard sum reads: the particles' velocity (which 0) or colour (1). */
+typedef struct {
+    const fs_particles *p;
+    const fs_grid *g;
+    int which;
+} attr_source;
+
+/* Component a of the attribute of the particle in sorted slot s. */
+static float attr(const void *ctx, uint32_t s, int a)
 {
-    if (which == 0) return (a == 0 ? p->vx : a == 1 ? p->vy : p->vz)[i];
-    return p->color[3 * (size_t)i + a];
+    const attr_source *src = ctx;
+    uint32_t i = src->g->index[s];
+    if (src->which == 0) return (a == 0 ? src->p->vx : a == 1 ? src->p->vy : src->p->vz)[i];
+    return src->p->color[3 * (size_t)i + a];
 }
 
 static void interpolate(const fs_grid *g, const fs_field *f, const fs_particles *p, int which, const float x[3],
                         float out[3])
 {
-    double num[3] = {0, 0, 0}, den = 0;
-    fs_grid_box b;
-    fs_grid_box_around(&b, g, x);
-    for (uint32_t s0, s1; fs_grid_box_next(&b, &s0, &s1);)
-        for (uint32_t s = s0; s < s1; s++) {
-            const float *y = g->pos4 + 4 * (size_t)s;
-            float d[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-            float r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (r >= f->H) continue;
-            double W = fs_kernel_w(f->kernel, r, f->H);
-            for (int a = 0; a < 3; a++) num[a] += W * attr(p, which, g->index[s], a);
-            den += W;
-        }
-    for (int a = 0; a < 3; a++) out[a] = den > 0 ? (float)(num[a] / den) : 0;
+    attr_source src = {p, g, which};
+    double mean[3];
+    fs_mesh_shepard(g, f, x, attr, &src, 3, mean, NULL);
+    for (int a = 0; a < 3; a++) out[a] = (float)mean[a];
 }
 
 static int fill(fs_trimesh *m, const fs_particles *p, const fs_grid *g, const fs_field *f, int which, float **dst)

@@ -1,8 +1,8 @@
 /* splashsurf's smoothing weights (mesh_weights.h), over the neighbour grid:
  * the 27 cells around a point hold every particle within H (cell >= H). */
 #include "mesh_weights.h"
+#include "mesh_shepard.h"
 #include "fs_error.h"
-#include <math.h>
 #include <stdlib.h>
 
 float fs_mesh_weight_of_count(double n, double norm)
@@ -44,25 +44,19 @@ static void particle_counts(const fs_grid *g, float H, float *n, uint64_t *terms
     *terms += t;
 }
 
+static float count_of(const void *n, uint32_t slot, int a)
+{
+    (void)a;
+    return ((const float *)n)[slot];
+}
+
 /* Shepard interpolation of the counts at x with the scene's kernel (0 where no
  * particle is within H). */
 static double interpolate(const fs_grid *g, const fs_field *f, const float *n, const float x[3], uint64_t *terms)
 {
-    double num = 0, den = 0;
-    fs_grid_box b;
-    fs_grid_box_around(&b, g, x);
-    for (uint32_t s0, s1; fs_grid_box_next(&b, &s0, &s1);)
-        for (uint32_t o = s0; o < s1; o++) {
-            const float *y = g->pos4 + 4 * (size_t)o;
-            float d[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-            float r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (r >= f->H) continue;
-            double W = fs_kernel_w(f->kernel, r, f->H);
-            num += W * n[o];
-            den += W;
-            (*terms)++;
-        }
-    return den > 0 ? num / den : 0;
+    double mean;
+    fs_mesh_shepard(g, f, x, count_of, n, 1, &mean, terms);
+    return mean;
 }
 
 int fs_mesh_weights(const fs_trimesh *m, const fs_grid *g, const fs_field *f, double norm, float *w, uint64_t *terms)
