@@ -11,8 +11,11 @@
 # at small sizes. First of all, the C style check (scripts/check_format.sh, .clang-format).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# each stage's end, in seconds since the start: where CI's time goes
-stage() { echo "== test.sh: $1 done at ${SECONDS} s"; }
+# each stage's end, in seconds since the start, and the disk this checkout takes and the
+# disk left: where CI's time and disk go (a CI run once ran out of disk)
+stage() {
+  echo "== test.sh: $1 done at ${SECONDS} s; $(du -sm . | cut -f1) MB here, $(df -Pm . | awk 'NR == 2 {print $4}') MB free"
+}
 # ctest -j2 on two cores: OpenMP threads that spin at a barrier take the core from the
 # other test (here, four CLI tests at -j2: 62 s wall spinning, 55 s passive)
 export OMP_WAIT_POLICY=passive
