@@ -1,5 +1,6 @@
 /* The metrics of `diff` as "name value" lines or one JSON object (diff.h). */
 #include "diff.h"
+#include "text_out.h"
 #include <math.h>
 
 /* The metrics in the order diff prints them, named as metrics.csv's columns. */
@@ -45,19 +46,6 @@ void diff_print_text(FILE *f, const char *const files[2], float r, long masked, 
     for (int i = 0; i < nfails; i++) fprintf(f, "FAIL %s\n", fails[i].text);
 }
 
-/* s as a JSON string: quotes, backslashes and control characters escaped. */
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') fprintf(f, "\\%c", c);
-        else if (c < 0x20) fprintf(f, "\\u%04x", c);
-        else fputc(c, f);
-    }
-    fputc('"', f);
-}
-
 /* fmt: "%.17g" for a double, "%.9g" for a float (the shortest that reads back) */
 static void json_number(FILE *f, double v, const char *fmt)
 {
@@ -72,9 +60,9 @@ void diff_print_json(FILE *f, const char *const files[2], float r, long masked, 
     named l[NMETRICS];
     metric_list(m, l);
     fputs("{\"a\": ", f);
-    json_string(f, files[0]);
+    fs_json_string(f, files[0]);
     fputs(", \"b\": ", f);
-    json_string(f, files[1]);
+    fs_json_string(f, files[1]);
     fputs(", \"r\": ", f);
     json_number(f, r, "%.9g");
     if (masked >= 0) fprintf(f, ", \"solids_masked_px\": %ld", masked);
@@ -85,7 +73,7 @@ void diff_print_json(FILE *f, const char *const files[2], float r, long masked, 
     fputs(", \"failed\": [", f);
     for (int i = 0; i < nfails; i++) {
         if (i) fputs(", ", f);
-        json_string(f, fails[i].text);
+        fs_json_string(f, fails[i].text);
     }
     fputs("]}\n", f);
 }

@@ -2,6 +2,7 @@
  * the files' text, embedded as one JSON object; the script parses it, so the
  * numbers shown are the CSVs' own. */
 #include "report_html.h"
+#include "text_out.h"
 #include "compare_outdir.h"
 #include "fs_error.h"
 #include "output_file.h"
@@ -55,19 +56,6 @@ static int has_provenance(const char *text)
     return text && !strncmp(text, "# ", 2) && strstr(text, "commit=") && strchr(text, '\n');
 }
 
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (const unsigned char *p = (const unsigned char *)s; p && *p; p++) {
-        if (*p == '"' || *p == '\\') fprintf(f, "\\%c", *p);
-        else if (*p == '\n') fputs("\\n", f);
-        else if (*p < 0x20) fprintf(f, "\\u%04x", *p);
-        else if (*p == '<' && p[1] == '/') fputs("<\\/", f); /* never "</script>" inside the data */
-        else fputc(*p, f);
-    }
-    fputc('"', f);
-}
-
 static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 /* The folder's PNG names, sorted, as a JSON array. */
@@ -100,7 +88,7 @@ static int write_png_list(FILE *f, const char *dir)
     for (int i = 0; i < n; i++) {
         if (!rc) {
             if (i) fputc(',', f);
-            json_string(f, names[i]);
+            fs_json_string(f, names[i]);
         }
         free(names[i]);
     }
@@ -127,12 +115,12 @@ static int write_page(FILE *f, const char *dir, char *const text[NTABLES], const
         f);
     for (int t = 0; t < NTABLES; t++) {
         fprintf(f, "\"%s\":", tables[t]);
-        if (text[t]) json_string(f, text[t]);
+        if (text[t]) fs_json_string(f, text[t]);
         else fputs("null", f);
         fputs(",\n", f);
     }
     fputs("\"report_md\":", f);
-    if (report_md) json_string(f, report_md);
+    if (report_md) fs_json_string(f, report_md);
     else fputs("null", f);
     fputs(",\n\"pngs\":", f);
     int rc = write_png_list(f, dir);

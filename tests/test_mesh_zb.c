@@ -25,19 +25,6 @@
 #define R_ ZB_R
 #define KR (4 * R_)
 
-static double indep_phi(const fs_particles *p, const double x[3])
-{
-    double K = 0, m[3] = {0, 0, 0};
-    for (size_t i = 0; i < p->n; i++) {
-        double e[3] = {p->x[i] - x[0], p->y[i] - x[1], p->z[i] - x[2]};
-        double s = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) / KR, k = s < 1 ? pow(1 - s * s, 3) : 0;
-        K += k, m[0] += k * p->x[i], m[1] += k * p->y[i], m[2] += k * p->z[i];
-    }
-    if (!(K > 0)) return KR - R_;
-    double e[3] = {x[0] - m[0] / K, x[1] - m[1] / K, x[2] - m[2] / K};
-    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) - R_;
-}
-
 static int build(const fs_particles *p, fs_trimesh *m)
 {
     fs_field f = {(float)R_, (float)(8 * R_ * R_ * R_), FS_KERNEL_CUBIC, (float)(4 * R_), 0.6f};
@@ -56,7 +43,7 @@ static double worst_phi(const fs_particles *p, const fs_trimesh *m)
     double w = 0;
     for (size_t v = 0; v < m->nv; v++) {
         double x[3] = {m->pos[3 * v], m->pos[3 * v + 1], m->pos[3 * v + 2]};
-        w = fmax(w, fabs(indep_phi(p, x)) / R_);
+        w = fmax(w, fabs(zb_indep_phi(p, x, KR)) / R_);
     }
     return w;
 }

@@ -24,30 +24,17 @@
 #define R_ ZB_R
 static double KR = 4 * R_; /* the kernel radius the independent sum uses */
 
-static double indep_phi(const fs_particles *p, const double x[3])
-{
-    double K = 0, m[3] = {0, 0, 0};
-    for (size_t i = 0; i < p->n; i++) {
-        double e[3] = {p->x[i] - x[0], p->y[i] - x[1], p->z[i] - x[2]};
-        double s = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) / KR, k = s < 1 ? pow(1 - s * s, 3) : 0;
-        K += k, m[0] += k * p->x[i], m[1] += k * p->y[i], m[2] += k * p->z[i];
-    }
-    if (!(K > 0)) return KR - R_;
-    double e[3] = {x[0] - m[0] / K, x[1] - m[1] / K, x[2] - m[2] / K};
-    return sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) - R_;
-}
-
 /* The first zero along o + t d for t in [t0, t1] (0.01 r steps, then bisection); -1 when none. */
 static double indep_hit(const fs_particles *p, const float o[3], const float d[3], double t0, double t1)
 {
     double h = 0.01 * R_, prev = t0;
     for (double t = t0 + h; t <= t1; prev = t, t += h) {
         double x[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-        if (indep_phi(p, x) >= 0) continue;
+        if (zb_indep_phi(p, x, KR) >= 0) continue;
         double lo = prev, hi = t;
         for (int i = 0; i < 40; i++) {
             double mid = 0.5 * (lo + hi), y[3] = {o[0] + mid * d[0], o[1] + mid * d[1], o[2] + mid * d[2]};
-            if (indep_phi(p, y) < 0) hi = mid;
+            if (zb_indep_phi(p, y, KR) < 0) hi = mid;
             else lo = mid;
         }
         return 0.5 * (lo + hi);

@@ -1,26 +1,13 @@
 #include "counters_csv.h"
+#include "text_out.h"
 #include <inttypes.h>
 #include <string.h>
 
-static void text(FILE *f, const char *s)
-{
-    if (!strpbrk(s, ",\"\n")) {
-        fputs(s, f);
-        return;
-    }
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"') fputc('"', f);
-        fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
 static void row(FILE *f, const char *method, const char *variant, int frame, const char *stage, int c, uint64_t v)
 {
-    text(f, method);
+    fs_csv_text(f, method);
     fputc(',', f);
-    text(f, variant);
+    fs_csv_text(f, variant);
     fprintf(f, ",%d,%s,%s,%" PRIu64 "\n", frame, stage, fs_counter_name(c), v);
 }
 

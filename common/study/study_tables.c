@@ -5,6 +5,7 @@
 #include "fs_error.h"
 #include "method_params.h"
 #include "stats.h"
+#include "text_out.h"
 #include <math.h>
 #include <string.h>
 
@@ -30,20 +31,6 @@ static void num(FILE *f, double v, const char *fmt)
     else fprintf(f, fmt, v);
 }
 
-static void csv_text(FILE *f, const char *s)
-{
-    if (!strpbrk(s, ",\"\n")) {
-        fputs(s, f);
-        return;
-    }
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"') fputc('"', f);
-        fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
 static void provenance_header(const fs_study *s, FILE *f)
 {
     char line[8192];
@@ -60,7 +47,7 @@ static void param_cells(const fs_study *s, const fs_study_entry *e, FILE *f)
             if (!strcmp(m->params[j].name, s->pcols[c])) {
                 char v[64];
                 fs_param_format(&m->params[j], e->v.params[j], v, sizeof v);
-                csv_text(f, v);
+                fs_csv_text(f, v);
             }
         fputc(',', f);
     }
@@ -82,12 +69,12 @@ static int write_metrics(const fs_study *s, FILE *f)
         for (int k = 0; k < s->nrefs; k++)
             for (int fr = 0; fr < nf; fr++) {
                 const fs_metrics *m = &e->metrics[k * s->nframes + fr];
-                csv_text(f, e->name);
+                fs_csv_text(f, e->name);
                 fputc(',', f);
-                csv_text(f, e->variant);
+                fs_csv_text(f, e->variant);
                 fputc(',', f);
                 param_cells(s, e, f);
-                csv_text(f, s->refs[k].spec);
+                fs_csv_text(f, s->refs[k].spec);
                 fputc(',', f);
                 if (s->sequence) fprintf(f, "%d", s->first_frame + fr);
                 double v[FS_STUDY_ROW_VALUES];
@@ -116,7 +103,7 @@ static void ref_timings(const fs_study_ref *ref, FILE *f)
     const fs_stages *st = &ref->stages;
     for (int s = 0; s <= st->n; s++) {
         double v = s < st->n ? st->ms[s] : fs_stages_total(st);
-        csv_text(f, ref->spec);
+        fs_csv_text(f, ref->spec);
         fprintf(f, ",ground truth,%s,%.3f,%.3f,%.3f,1,,CPU\n", s < st->n ? st->name[s] : "total", v, v, v);
     }
 }
@@ -155,13 +142,13 @@ static int write_timings(const fs_study *s, FILE *f)
             double v[FS_STUDY_MAX_RUNS], gpu;
             const char *name = j < e->runs[0].n ? e->runs[0].name[j] : "total";
             double med = stage_runs(e, name, j == e->runs[0].n, v, &gpu);
-            csv_text(f, e->name);
+            fs_csv_text(f, e->name);
             fputc(',', f);
-            csv_text(f, e->variant);
+            fs_csv_text(f, e->variant);
             fprintf(f, ",%s,%.3f,%.3f,%.3f,%d,", name, med, v[0], v[e->nruns - 1], e->nruns);
             if (!isnan(gpu)) fprintf(f, "%.3f", gpu);
             fputc(',', f);
-            csv_text(f, e->renderer);
+            fs_csv_text(f, e->renderer);
             fputc('\n', f);
         }
     }
@@ -177,9 +164,9 @@ static int write_temporal(const fs_study *s, FILE *f)
     for (int i = 0; i < s->nentries; i++) {
         const fs_study_entry *e = &s->entries[i];
         if (e->imported) continue;
-        csv_text(f, e->name);
+        fs_csv_text(f, e->name);
         fputc(',', f);
-        csv_text(f, e->variant);
+        fs_csv_text(f, e->variant);
         fprintf(f, ",%d,", s->nframes);
         num(f, e->temporal_deg, "%.4f");
         fputc(',', f);
