@@ -31,7 +31,13 @@ for f in "$R"/*.csv; do head -1 "$f" | grep -q '^# .*commit=[0-9a-f]\+; dirty=[0
   fail "xu2022 does not have 10 variants"
 python3 "$SRC/experiments/gpu/report.py" "$R" > "$R/README.md" && grep -q '^| 13824 | 192 | [0-9.]\+ | [0-9.]\+ |' "$R/README.md" ||
   fail "report.py: no xiao2017 row for 13824 particles at 192"
-python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null || fail "report.py --check rejects the README it just wrote"
+python3 "$SRC/experiments/gpu/report.py" --tables "$R" > "$R/tables.csv" &&
+  grep -q '^xiao2017_table1,13824,192,ours ms (GL clock),[0-9.]\+$' "$R/tables.csv" ||
+  fail "report.py --tables: no xiao2017 cell for 13824 particles at 192"
+python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null || fail "report.py --check rejects the README and tables.csv it just wrote"
 echo "| edited |" >> "$R/README.md"
 python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null 2>&1 && fail "report.py --check accepts an edited README"
+python3 "$SRC/experiments/gpu/report.py" "$R" > "$R/README.md"
+sed -i '$s/,[^,]*$/,-12345/' "$R/tables.csv"
+python3 "$SRC/experiments/gpu/report.py" --check "$R" > /dev/null 2>&1 && fail "report.py --check accepts an edited tables.csv"
 [ $fails = 0 ] && echo "gpu_quick: all checks passed" || { echo "gpu_quick: $fails failed"; exit 1; }

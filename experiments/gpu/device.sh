@@ -3,7 +3,7 @@
 # with only the NVIDIA driver, unpack the GL loaders carried as Debian packages (.gl/,
 # when there), run experiments/gpu/run.sh from the lean pack (.gpu/pack) on EGL, and
 # write into OUT: gpu.tar.gz (the run's folder: env.csv, status.csv, the CSVs, logs,
-# the demo's images, README.md from report.py), and beside it README.md, status.csv and run.log to read
+# the demo's images, README.md and tables.csv from report.py), and beside it README.md, status.csv and run.log to read
 # at once. A call returns at most 8 files, so the folder travels as one archive.
 #
 # usage: experiments/gpu/device.sh [--quick] [-o OUT]   (default OUT: $OUT, else out/device)
@@ -31,7 +31,9 @@ export FLUIDSURF_GL=egl BUDGET_S=${BUDGET_S:-290}
 bash experiments/gpu/run.sh "${quick[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
 rc=${PIPESTATUS[0]}
 # the README only when report.py succeeds (a failure is in run.log, and no empty README travels)
-if python3 experiments/gpu/report.py "$work/gpu" > "$work/README.tmp" 2>> "$out/run.log"; then
+if python3 experiments/gpu/report.py "$work/gpu" > "$work/README.tmp" 2>> "$out/run.log" &&
+  python3 experiments/gpu/report.py --tables "$work/gpu" > "$work/tables.tmp" 2>> "$out/run.log"; then
+  mv "$work/tables.tmp" "$work/gpu/tables.csv"
   mv "$work/README.tmp" "$work/gpu/README.md" && cp "$work/gpu/README.md" "$out/"
 else
   echo "device.sh: report.py failed (run.log)" | tee -a "$out/run.log" >&2

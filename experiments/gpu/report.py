@@ -4,14 +4,20 @@ as ratios and trends. Every number of ours comes from the folder's CSVs (medians
 timed runs); the papers' numbers are the ones their tables and text print.
 
     python3 experiments/gpu/report.py DIR > DIR/README.md
-    python3 experiments/gpu/report.py --check DIR      exit 1 when DIR/README.md is stale
+    python3 experiments/gpu/report.py --tables DIR > DIR/tables.csv
+    python3 experiments/gpu/report.py --check DIR      exit 1 when DIR/README.md or DIR/tables.csv is stale
+
+tables.csv holds every number of the README's tables, unrounded, one a row (table, the row's
+first one or two cells as key and sub, column, value), so that prose elsewhere can cite them
+(experiments/tools/check_numbers.py).
 
 Frame times are the sums of a method's own stages (no load, grid build or upload), as in
-experiments/xiao2017/table1.sh and experiments/xu2022/fig9.sh. The comparisons with the
-papers use the GL clock of the GL stages, without the read back of the G-buffer to the
-host: the papers draw to the screen and read nothing back. The wall time, read back
-included, is given beside it."""
+experiments/xiao2017/table1.sh and experiments/xu2022/fig9.sh; fluidsurf shades on the CPU
+after the read back of the G-buffer, and each table says which of its columns include the
+read back, the shading and, for the simulator, how many steps a frame takes. The papers draw
+and shade on their GPUs and read nothing back."""
 import csv
+import io
 import os
 import statistics
 import sys
@@ -75,17 +81,37 @@ def med(v):
     return statistics.median(v) if v else None
 
 
+class Num(str):
+    """A number as a table prints it that keeps its value, for tables.csv."""
+
+    def __new__(cls, text, value):
+        s = super().__new__(cls, text)
+        s.value = value
+        return s
+
+
 def fmt(x, p="%.1f"):
-    return "" if x is None or x != x else p % x
+    return "" if x is None or x != x else Num(p % x, x)
 
 
 def ratio(a, b, p="%.2f"):
     return fmt(a / b if a is not None and b else None, p)
 
 
-def table(head, body):
+CELLS = []  # (table, key, sub, column, value) of every number the README's tables print
+
+
+def table(head, body, name=None, keys=2):
+    """A Markdown table; with a name, its numbers go to CELLS, each under its row's first
+    `keys` cells (key and sub) and its column's head."""
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     out += ["| " + " | ".join(str(c) for c in row) + " |" for row in body]
+    for row in body if name else ():
+        sub = str(row[1]) if keys > 1 else ""
+        for col, c in zip(head[keys:], row[keys:]):
+            v = c.value if isinstance(c, Num) else c if isinstance(c, (int, float)) else None
+            if v is not None:
+                CELLS.append((name, str(row[0]), sub, col, v))
     return "\n".join(out) + "\n"
 
 
@@ -134,11 +160,19 @@ def xiao(d):
     for (n, size), (w, g) in sorted(fr.items()):
         p = paper_xiao(n, size)
         body.append((n, size, fmt(g), fmt(w), fmt(p * 1e3 if p else None), ratio(p * 1e3 if p else None, g)))
-    out = table(("particles", "size", "ours ms (GL clock)", "ours ms (wall, read back included)",
-                 "paper ms (GTX 970)", "paper / ours"), body)
+    out = XIAO_COLUMNS + table(("particles", "size", "ours ms (GL clock)", "ours ms (wall, + read back)",
+                                "paper ms (GTX 970)", "paper / ours (GL clock)"), body, "xiao2017_table1")
     return (out + "\n" + EXCLUDED % "xiao2017 builds a GPU hash grid for its neighbour searches (its implementation "
-            "notes) and does not say whether Table 1 includes it" + "\n" + setup_table(rs) + "\n" + xiao_trends(fr) + "\n"
-            + xiao_stages(rs))
+            "notes) and does not say whether Table 1 includes it" + "\n" + setup_table(rs, "xiao2017_setup") + "\n"
+            + xiao_trends(fr) + "\n" + xiao_stages(rs))
+
+
+XIAO_COLUMNS = ("Columns: *ours (GL clock)* is the sum of raycast_pca's GL stages (splat, march, normals, filter, "
+                "thickness) on the GL clock, without the read back of the G-buffer, the shading (on the CPU, not "
+                "timed here) and the once-per-set work below; *ours (wall)* adds the read back, on the wall clock. "
+                "*paper* is Table 1's rendering time of xiao2017's method, which ends in its shading on the GPU "
+                "(section 3.4). So *paper / ours* sets our frame without shading against the paper's with it: "
+                "below 1, ours is slower while doing less.\n\n")
 
 
 def xiao_trends(fr):
@@ -155,6 +189,12 @@ def xiao_trends(fr):
         lines.append("- **Image size** at %d particles: %.1fx the pixels (%d^2 to %d^2) cost %s the time here; the "
                      "paper: %s." % (n, (sizes[-1] / sizes[0]) ** 2, sizes[0], sizes[-1],
                                      times(g.get(b), g.get(a), "(a cell missing)"), times(p.get(b), p.get(a), "no cell")))
+    slower = [k for k in fr if g[k] and p[k] and p[k] * 1e3 < g[k]]
+    if slower:
+        worst = max(slower, key=lambda k: g[k] / (p[k] * 1e3))
+        lines.append("- **Against the paper's times**: ours is slower in %d of the %d cells the paper has, by up to "
+                     "%.1fx (%d particles at %d^2), without the shading the paper's frame includes." % (
+                         len(slower), sum(1 for k in fr if p[k] is not None), g[worst] / (p[worst] * 1e3), *worst))
     rt = [k for k in fr if g[k] is not None and g[k] <= 1000 / 30]
     prt = [k for k in fr if p[k] is not None and p[k] <= 1 / 30]
     lines.append("- **Real time** (at most 33.3 ms, 30 fps): %d of %d cells here, %d of the %d the paper has." % (
@@ -179,14 +219,14 @@ EXCLUDED = ("What the frame leaves out: the neighbour grid, built on the CPU onc
             "whose frame includes that work would be compared with more than our frame.\n")
 
 
-def setup_table(rs):
+def setup_table(rs, name):
     """The once-per-set stages (run 0) of a render_bench CSV, per particle count: median over variants."""
     per = defaultdict(lambda: defaultdict(list))
     for r in rs:
         if r["run"] == "0":
             per[int(r["particles"])][r["stage"]].append(num(r["ms"]))
     body = [(n, fmt(med(per[n]["load"])), fmt(med(per[n]["grid"])), fmt(med(per[n]["upload"]))) for n in sorted(per)]
-    return table(("particles", "load or generate ms", "neighbour grid ms (CPU)", "upload ms"), body)
+    return table(("particles", "load or generate ms", "neighbour grid ms (CPU)", "upload ms"), body, name, keys=1)
 
 
 def fps(t, unit_ms=1000):
@@ -208,7 +248,7 @@ def xiao_stages(rs):
     return ("Stages (GL clock, ms): the sprite splat and thickness passes (vertex and fragment work) against the "
             "march, normals and filter passes (compute shaders), and the read back (wall):\n\n"
             + table(("particles", "size", "splat + thickness", "march + normals + filter", "sprite share", "read back"),
-                    body))
+                    body, "xiao2017_stages"))
 
 
 def variant(v):
@@ -226,8 +266,21 @@ def xu(d):
     ns = sorted({k[0] for k in fr})
     body = [(n, f, fmt(g.get((n, "off", f))), fmt(g.get((n, "on", f))), ratio(g.get((n, "on", f)), g.get((n, "off", f))),
              fmt(fr.get((n, "on", f), (None,))[0])) for n in ns for f in FILTERS if (n, "on", f) in fr]
-    out = table(("particles", "filter", "anisotropy off ms (GL clock)", "on ms (GL clock)", "on / off",
-                 "on ms (wall, read back included)"), body)
+    out = XU_COLUMNS + table(("particles", "filter", "anisotropy off ms (GL clock)", "on ms (GL clock)", "on / off",
+                              "on ms (wall, + read back)"), body, "xu2022_fig9")
+    return (out + "\n" + EXCLUDED % "the anisotropy's neighbour search runs on the GPU in every frame (its pass is "
+            "in the frame), the grid it searches is built once per set" + "\n" + setup_table(rs, "xu2022_setup") + "\n"
+            + xu_statements(rs, g, ns))
+
+
+XU_COLUMNS = ("Columns: *off* and *on (GL clock)* are the sums of aniso_ssf's GL stages (the anisotropy pass when on, "
+              "splat, filter, normals, thickness) on the GL clock, without the read back of the G-buffer, the shading "
+              "(on the CPU, not timed here) and the once-per-set work below; *on (wall)* adds the read back, on the "
+              "wall clock. The paper's Fig. 9 plots the frame rate of its whole pipeline, shading included.\n\n")
+
+
+def xu_statements(rs, g, ns):
+    """The paper's three statements about Fig. 9 against our cells (GL clock)."""
     ratios = [g[(n, "on", f)] / g[(n, "off", f)] for n in ns for f in FILTERS
               if g.get((n, "on", f)) and g.get((n, "off", f))]
     st = stage_medians(rs, lambda r: (int(r["particles"]),) + variant(r["variant"]))
@@ -236,6 +289,8 @@ def xu(d):
     on, off = st.get((ns[-1], "on", "narrow"), {}), st.get((ns[-1], "off", "narrow"), {})
     extra = ", ".join("%s %s ms" % (x, fmt((on.get(x, (0, 0))[1] or 0) - (off.get(x, (0, 0))[1] or 0)))
                       for x in ("anisotropy", "splat", "thickness", "filter"))
+    last = {a: [g[(ns[-1], a, f)] for f in FILTERS if g.get((ns[-1], a, f))] for a in ("on", "off")}
+    spread = {a: 100 * (max(v) / min(v) - 1) if v else float("nan") for a, v in last.items()}
     lines = ["The paper (RTX 3060) gives Fig. 9 as a plot of frame rates without numbers in its text, so the comparison "
              "is with its three statements:", ""]
     if ratios:
@@ -253,14 +308,20 @@ def xu(d):
     if steps:
         lines.append("- *Narrow-range keeps the time almost linear in the particle count*: with anisotropy on, %s ms "
                      "from %d to %d particles; step by step %s. A fixed cost (the sprites' raster work at 1024^2) "
-                     "dominates the small sets." % (" -> ".join(fmt(x) for x in nr), ns[0], ns[-1], ", ".join(steps)))
-    cf = [ratio(g.get((n, "on", "curvature")), g.get((n, "on", "gaussian"))) for n in ns]
-    lines.append("- *Curvature flow's time grows with its iterations*: not swept here. At the shipped 80 iterations, "
-                 "with anisotropy on, it takes %s times the Gaussian's frame from %d to %d particles." % (
-                     ", ".join(cf), ns[0], ns[-1]))
-    return (out + "\n" + EXCLUDED % "the anisotropy's neighbour search runs on the GPU in every frame (its pass is "
-            "in the frame), the grid it searches is built once per set" + "\n" + setup_table(rs) + "\n"
-            + "\n".join(lines) + "\n")
+                     "dominates the small sets. At %d particles the five filters' frames are within %.1f%% of each "
+                     "other with anisotropy on (%.1f%% off): the growth is the sprites' and the anisotropy's, the "
+                     "same under every filter." % (
+                         " -> ".join(fmt(x) for x in nr), ns[0], ns[-1], ", ".join(steps), ns[-1], spread["on"],
+                         spread["off"]))
+    cf = [g[(n, "on", "curvature")] / g[(n, "on", "gaussian")] for n in ns
+          if g.get((n, "on", "curvature")) and g.get((n, "on", "gaussian"))]
+    if cf:
+        lines.append("- *Curvature flow's time grows with its iterations* (the paper calls it time-consuming): the "
+                     "iteration count was not swept here. At the shipped 80 iterations, with anisotropy on, it takes "
+                     "%s times the Gaussian's frame (2 iterations) from %d to %d particles: at most %.0f%% more, so "
+                     "on this GPU its iterations cost little." % (
+                         ", ".join("%.2f" % x for x in cf), ns[0], ns[-1], 100 * (max(cf) - 1)))
+    return "\n".join(lines) + "\n"
 
 
 def inacio_cells(rs):
@@ -290,29 +351,45 @@ def inacio(d):
     if not rs:
         return "No inacio2010 rows.\n"
     c = inacio_cells(rs)
+    return inacio_table1(c) + "\n" + inacio_table2(c) + "\n" + inacio_trends(c)
+
+
+def inacio_table1(c):
     body = []
     for (n, path), x in sorted(c.items()):
         tot = x["sim"] + x["volume"] + x["ray"] + x["render_I"]
         p = INACIO_I.get((n, path))
-        body.append((x["particles"], path, fmt(x["sim"]), fmt(x["steps"], "%.0f"), fmt(x["volume"]), fmt(x["ray"]),
-                     fmt(x["render_I"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"),
+        body.append((x["particles"], path, fmt(x["steps"], "%.0f"), fmt(x["sim"]), fmt(x["sim"] / x["steps"], "%.2f"),
+                     fmt(x["volume"]), fmt(x["ray"]), fmt(x["render_I"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"),
                      fmt(p[0] * 1e3 if p else None), fmt(100 * p[0] / sum(p) if p else None, "%.0f%%")))
-    out = ("Table I analogue (ray casting), ms per frame of 1/60 s (medians of the timed frames, wall clock). "
-           "*rendering* is the read back and the shared shading on the CPU; the paper's is its display of the "
-           "image. The paper simulates one step of 0.01 s per frame; ours takes *steps* adaptive steps.\n\n"
-           + table(("particles", "path", "simulation", "steps", "volume", "ray casting", "rendering", "total",
-                    "simulation share", "paper simulation (one step)", "paper simulation share"), body))
+    return ("Table I analogue (ray casting), ms per frame of 1/60 s, wall clock, medians of the timed frames. "
+            "Columns: *steps* is how many adaptive steps the simulator takes for the frame (one step of 0.01 s "
+            "explodes: results/inacio2010, Fig. 7), *simulation, frame* all of them and *simulation, one step* "
+            "their mean, which is what the paper's one step of 0.01 s per frame compares with. *read back + "
+            "shading* is the G-buffer's read back and the shared shading on the CPU, where the paper's rendering "
+            "column is the display of its image (0.5 to 5.6 ms). *total* and *simulation share* include every step "
+            "and the read back and shading, so the share is not the paper's like for like: that is the GL-clock "
+            "share of one step in the last table.\n\n"
+            + table(("particles", "path", "steps", "simulation, frame", "simulation, one step", "volume", "ray casting",
+                     "read back + shading", "total", "simulation share", "paper simulation (one step)",
+                     "paper simulation share"), body, "inacio2010_table1"))
+
+
+def inacio_table2(c):
     body = []
     for (n, path), x in sorted(c.items()):
         p = INACIO_II.get((n, path))
         tot = x["sim"] + x["spheres"]
-        body.append((x["particles"], path, fmt(x["sim"]), fmt(x["spheres"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"),
-                     fmt(p[0] * 1e3 if p else None), fmt(p[1] * 1e3 if p else None),
-                     fmt(100 * p[0] / sum(p) if p else None, "%.0f%%")))
-    out += ("\nTable II analogue (spheres): *rendering* is the particle upload, the sprite splat, the read back and "
-            "the shading.\n\n" + table(("particles", "path", "simulation", "rendering", "total", "simulation share",
-                                        "paper simulation", "paper rendering", "paper simulation share"), body))
-    return out + "\n" + inacio_trends(c)
+        body.append((x["particles"], path, fmt(x["steps"], "%.0f"), fmt(x["sim"]), fmt(x["sim"] / x["steps"], "%.2f"),
+                     fmt(x["spheres"]), fmt(tot), fmt(100 * x["sim"] / tot, "%.0f%%"), fmt(p[0] * 1e3 if p else None),
+                     fmt(p[1] * 1e3 if p else None), fmt(100 * p[0] / sum(p) if p else None, "%.0f%%")))
+    return ("Table II analogue (spheres), the same frames. Columns: *spheres* is the particle upload, the sprite "
+            "splat, the read back and the shared shading on the CPU (wall clock), where the paper's rendering is its "
+            "sphere drawing on the GPU; *total* and *simulation share* include every step of the frame, the "
+            "paper's one step.\n\n"
+            + table(("particles", "path", "steps", "simulation, frame", "simulation, one step", "spheres", "total",
+                     "simulation share", "paper simulation (one step)", "paper rendering", "paper simulation share"),
+                    body, "inacio2010_table2"))
 
 
 def inacio_trends(c):
@@ -330,18 +407,21 @@ def inacio_trends(c):
                      fmt(100 * pi[0] / sum(pi) if pi else None, "%.0f%%"), ratio(vis, gpu["splat_gl"], "%.1f"),
                      ratio(sum(pi[1:]), pg[1], "%.1f") if pi and pg else ""))
     return ("Ratios and trends. *CPU / GPU simulation*: the CPU path (C + OpenMP on the node's cores) against the GPU "
-            "path (compute shaders), per frame (both paths take the same steps); the paper's from Table II (Table I "
+            "path (compute shaders), wall clock, per frame, which is also per step (both paths take the same steps); "
+            "the paper's from Table II (Table I "
             "lacks its 8192 GPU row). The CPU path runs its loops on one thread below 16,384 particles, boundary "
             "included (FS_SPH_PARALLEL_MIN, common/sph/sph_cpu.c, set on a 2-core machine), so the smaller rows compare "
             "one CPU core with the GPU. *GPU-path simulation share* (Fig. 5): the simulation's GL-clock time over it "
             "plus volume and ray casting (GL clock), leaving out our read back and CPU shading; once for our frame of "
-            "1/60 s (all its steps) and once for one step per frame, as the paper's frame has; the paper's from "
-            "Table I. *Ray casting / spheres*, GPU path: volume + ray casting against the sphere splat, both on the GL "
+            "1/60 s (*frame*: all its steps) and once for one step per frame (*one step*), as the paper's frame has; "
+            "the paper's, of one step, from Table I, whose frame also holds its display (0.5 to 5.6 ms). *Ray "
+            "casting / spheres*, GPU path: volume + ray casting against the sphere splat, both on the GL "
             "clock; the paper's: volume + ray casting + rendering (Table I) against its whole sphere rendering (Table II), "
             "so ours leaves the spheres' upload, read back and shading out of the denominator. The paper's GPU-path "
             "volume is 128x512x512, ours 128 points along the longest axis on both paths.\n\n"
-            + table(("particles", "with boundary", "CPU / GPU simulation", "paper", "GPU-path simulation share",
-                     "one step", "paper", "ray casting / spheres", "paper"), body))
+            + table(("particles", "with boundary", "CPU / GPU simulation", "paper CPU / GPU",
+                     "GPU-path simulation share, frame", "share, one step", "paper share (one step)",
+                     "ray casting / spheres", "paper ray casting / spheres"), body, "inacio2010_trends", keys=1))
 
 
 def iwasaki(d):
@@ -367,7 +447,7 @@ def iwasaki(d):
             "whole stage, so the two clocks agree and neither isolates the GPU's share. CPU / GL sets the GPU against the CPU threads of the row: "
             "the paper's 88x is against one CPU core.\n\n"
             + table(("particles", "res", "CPU threads", "exact CPU ms", "slice splat ms (wall)",
-                     "slice splat ms (GL clock)", "CPU / GL", "rel. L2 against exact"), body))
+                     "slice splat ms (GL clock)", "CPU / GL", "rel. L2 against exact"), body, "iwasaki2006_density_grid"))
 
 
 SURFEL_RENDER = ("caustics", "visibility", "blend", "normalize", "thickness")
@@ -394,14 +474,23 @@ def demo(d):
         body.append((r["method"], r["variant"], fmt(sum(gl) if gl else None), fmt(num(r["ms_median"])),
                      fmt(rb[0] if rb else None), r["renderer"], m.get("mask_iou", ""), m.get("normal_mean_deg", "")))
     sr = [num(x["gpu_ms_median"]) for x in rs if x["method"] == "surfels" and x["stage"] in SURFEL_RENDER]
-    out = table(("method", "variant", "GL stages ms (GL clock)", "total ms (wall)", "read back ms", "renderer",
-                 "mask IoU", "normal error deg"), body)
-    if sr and None not in sr:
+    srb = [num(x["ms_median"]) for x in rs if x["method"] == "surfels" and x["stage"] == "readback"]
+    out = DEMO_COLUMNS + table(("method", "variant", "GL stages ms (GL clock)", "total ms (wall)", "read back ms",
+                                "renderer", "mask IoU", "normal error deg"), body, "demo")
+    if sr and None not in sr and srb:
         out += ("\nsurfels' rendering stages (%s; the density grid and the surfel extraction excluded, as the paper "
-                "times them apart) take %.1f ms on the GL clock here, on the bundled dam break at %s; iwasaki2006 "
-                "renders its 61,500-77,000 surfels at 512^2 in about 39 ms (25.5 fps, GeForce 6800 GT, Figs. 6 and "
-                "7).\n" % (", ".join(SURFEL_RENDER), sum(sr), demo_size(d)))
+                "times them apart) take %.1f ms on the GL clock here, on the bundled dam break at %s, and %.1f ms "
+                "with the read back of the G-buffer (%.1f ms), before the shading on the CPU, which is not timed; "
+                "iwasaki2006 renders its 61,500-77,000 surfels at 512^2 in about 39 ms (25.5 fps, GeForce 6800 GT, "
+                "Figs. 6 and 7), its shading on the GPU included.\n" % (
+                    ", ".join(SURFEL_RENDER), sum(sr), demo_size(d), sum(sr) + srb[0], srb[0]))
     return out
+
+
+DEMO_COLUMNS = ("Columns: *GL stages* is the sum of the method's stages that have a GL clock (surfels' density grid "
+                "included, its surfel extraction on the CPU not); *total* is every stage of the timed render on the "
+                "wall clock, the read back and the CPU stages included, without the shared shading, which compare "
+                "does not time; the reference's ground-truth row is one render (not a median), its shading included.\n\n")
 
 
 ABOUT_GPU = """## What this GPU is
@@ -413,8 +502,9 @@ these are timings on a real GPU through NVIDIA's GL driver, but not on a graphic
 papers' GTX 970, RTX 3060, GeForce 9800M GS or GeForce 6800 GT: a stage that rasterises (sprite
 splatting, the density slices, the layered volume) would be expected to run faster on one of
 those, by an amount this run cannot measure. %s
-The read back of the G-buffer to the host (fluidsurf shades on the CPU) is large on this node;
-the ratios and trends set beside a paper's leave it out.
+The read back of the G-buffer to the host (fluidsurf shades on the CPU, after it) is large on
+this node. The papers shade on their GPUs inside the frames they time; most frames here leave the
+shading out, and each table says which of its columns include the read back and the shading.
 """
 
 
@@ -452,7 +542,8 @@ def header(d):
             "`iwasaki2006_density_grid.csv`, `demo_timings.csv` and `demo_metrics.csv` of `fluidsurf compare` on "
             "the bundled dam break, cell %s), `logs/` (the steps' stderr), `run.log`, `demo_panel_small.png` (the "
             "demo's panel as the GPU drew it, scaled down; the lean build writes no labels: reference, spheres, "
-            "raycast_pca, aniso_ssf, surfels, volume_raycast, with the error maps under them). Each CSV starts with "
+            "raycast_pca, aniso_ssf, surfels, volume_raycast, with the error maps under them), `tables.csv` (every "
+            "number of this README's tables, unrounded, for prose that cites them). Each CSV starts with "
             "the provenance line of the commit the packed binaries were built from.\n\n" % (
                 env.get("mode", "?"), env.get("date", "?"), env.get("gl_renderer", "?").strip('"'),
                 env.get("gl_version", "?").strip('"'), env.get("gpu", "no nvidia-smi").strip('"'),
@@ -492,6 +583,7 @@ def repeat(d):
 
 
 def report(d):
+    del CELLS[:]
     out = [header(d), about(d)]
     for title, f in (("xiao2017 Table 1 (raycast_pca; also Fig. 9)", xiao), ("xu2022 Fig. 9 (aniso_ssf)", xu),
                      ("inacio2010 Tables I and II (the simulator, volume_raycast, spheres; also Fig. 5)", inacio),
@@ -508,25 +600,47 @@ def report(d):
     return "\n".join(out)
 
 
+def tables_csv(d):
+    """tables.csv: every number of report(d)'s tables, unrounded, under the run's provenance."""
+    report(d)
+    out = io.StringIO()
+    w = csv.writer(out, lineterminator="\n")
+    out.write("# experiments/gpu/report.py: the numbers of README.md's tables; %s\n" % provenance(d, "env.csv"))
+    w.writerow(("table", "key", "sub", "column", "value"))
+    w.writerows((t, k, s, c, "%.10g" % v) for t, k, s, c, v in CELLS)
+    return out.getvalue()
+
+
+def stale(d, name, text, how):
+    """An error when DIR/name is missing or differs from text, else None."""
+    path = os.path.join(d, name)
+    if not os.path.isfile(path):
+        return "report.py: %s: missing (write it with %s)" % (path, how)
+    with open(path) as f:
+        if f.read() != text:
+            return "report.py: %s is stale: regenerate it with %s" % (path, how)
+    return None
+
+
 def main():
     args = sys.argv[1:]
-    check = bool(args) and args[0] == "--check"
-    d = (args[1:] if check else args or ["results/gpu"])[0]
+    mode = args.pop(0) if args and args[0] in ("--check", "--tables") else None
+    d = (args or ["results/gpu"])[0]
     if not os.path.isfile(os.path.join(d, "env.csv")):
         sys.stderr.write("report.py: %s: no env.csv: not a folder of experiments/gpu/run.sh\n" % d)
         sys.exit(2)
-    if check and not os.path.isfile(os.path.join(d, "README.md")):
-        sys.stderr.write("report.py: %s/README.md: missing (write it with report.py %s)\n" % (d, d))
-        sys.exit(2)
-    text = report(d)
-    if not check:
-        sys.stdout.write(text)
+    if mode is None:
+        sys.stdout.write(report(d))
         return
-    with open(os.path.join(d, "README.md")) as f:
-        if f.read() != text:
-            sys.exit("report.py: %s/README.md is stale: regenerate it with "
-                     "python3 experiments/gpu/report.py %s > %s/README.md" % (d, d, d))
-    print("report.py: %s/README.md matches its CSVs" % d)
+    if mode == "--tables":
+        sys.stdout.write(tables_csv(d))
+        return
+    errs = [e for e in (stale(d, "README.md", report(d), "python3 experiments/gpu/report.py %s > %s/README.md" % (d, d)),
+                        stale(d, "tables.csv", tables_csv(d),
+                              "python3 experiments/gpu/report.py --tables %s > %s/tables.csv" % (d, d))) if e]
+    if errs:
+        sys.exit("\n".join(errs))
+    print("report.py: %s/README.md and tables.csv match its CSVs" % d)
 
 
 if __name__ == "__main__":

@@ -6,9 +6,10 @@ A measured number in prose carries, right after it, a comment that says where it
     +76%<!--n xiao2017/fig10.csv 100*[scene=dam_break&iso=0.9]frame_ms/[scene=dam_break&iso=0.6]frame_ms-100 %+.0f%%-->
 
 that is `<!--n CSV EXPR FORMAT-->`: CSV relative to the Markdown file's folder; EXPR arithmetic
-over lookups `[COL=VALUE&...]COLUMN` (the one row whose columns have those values; `[]COLUMN`
-when the CSV has one row), `min[...]COLUMN` or `max[...]COLUMN` (over every matching row);
-FORMAT a printf format. The text just before the comment must be what FORMAT makes of EXPR,
+over lookups `[COND&...]COLUMN` (the one row that meets every COND; `[]COLUMN` when the CSV has
+one row), `min[...]COLUMN`, `max[...]COLUMN`, `med[...]COLUMN` (the median) or `sum[...]COLUMN`
+over every matching row, or `count[...]COLUMN` (how many rows match); a COND is COL=VALUE (equal
+as text), COL<NUMBER or COL>NUMBER; FORMAT a printf format. The text just before the comment must be what FORMAT makes of EXPR,
 so a number that goes stale when its CSV is re-measured fails here.
 
 In results/README.md's verdict column, every number that looks measured (a decimal, a
@@ -25,10 +26,12 @@ import csv
 import glob
 import os
 import re
+import statistics
 import sys
 
 NOTE = re.compile(r"<!--n (\S+) (.+?) (%\S+)-->")
-LOOKUP = re.compile(r"(min|max)?\[([^\]]*)\]([A-Za-z_][A-Za-z0-9_.]*)")
+LOOKUP = re.compile(r"(min|max|med|sum|count)?\[([^\]]*)\]([A-Za-z_][A-Za-z0-9_.]*)")
+COND = re.compile(r"([^=<>]+)([=<>])(.*)$")
 MEASURED = re.compile(r"(?<![\w.=/-])[-+]?\d+(?:\.\d+)?(?:%|x(?![\w])|(?<=\.\d)\d*)")
 SAFE = re.compile(r"^[-+*/(). 0-9e]*$")
 
@@ -51,25 +54,43 @@ def read_csv(path, cache={}):
     return cache[path]
 
 
+def matches(row, conds):
+    """Whether a row meets every condition: COL=VALUE (as text), COL<NUMBER or COL>NUMBER."""
+    for col, op, want in conds:
+        have = row.get(col)
+        if op == "=":
+            if have != want:
+                return False
+            continue
+        try:
+            if not (float(have) < float(want) if op == "<" else float(have) > float(want)):
+                return False
+        except (TypeError, ValueError):
+            return False
+    return True
+
+
 def lookup(rows, agg, filt, col, path):
-    conds = [c.split("=", 1) for c in filt.split("&") if c]
-    if any(len(c) != 2 for c in conds):
+    conds = [COND.match(c) for c in filt.split("&") if c]
+    if not all(conds):
         raise Bad("%s: bad filter [%s]" % (path, filt))
-    hit = [r for r in rows if all(r.get(k) == v for k, v in conds)]
-    if not hit:
-        raise Bad("%s: no row [%s]" % (path, filt))
+    hit = [r for r in rows if matches(r, [c.groups() for c in conds])]
     if rows and col not in rows[0]:
         raise Bad("%s: no column %s" % (path, col))
+    if agg == "count":
+        return len(hit)
+    if not hit:
+        raise Bad("%s: no row [%s]" % (path, filt))
     try:
         vals = [float(r[col]) for r in hit]
     except ValueError:
         raise Bad("%s: [%s]%s is not a number" % (path, filt, col))
-    if agg == "min":
-        return min(vals)
-    if agg == "max":
-        return max(vals)
+    if agg in ("min", "max", "sum"):
+        return {"min": min, "max": max, "sum": sum}[agg](vals)
+    if agg == "med":
+        return statistics.median(vals)
     if len(vals) != 1:
-        raise Bad("%s: %d rows match [%s]: name one, or use min/max" % (path, len(vals), filt))
+        raise Bad("%s: %d rows match [%s]: name one, or use min/max/med/sum/count" % (path, len(vals), filt))
     return vals[0]
 
 
@@ -146,12 +167,15 @@ def check_bare(md, text):
     errs = []
     for item, cell in verdicts(text):
         cell = re.sub(r"\[[^\]]*\]\([^)]*\)|`[^`]*`", " ", cell)  # links and code name files
+        cell = re.sub(r"<!--n .*?-->", "<!--n -->", cell)  # a note's own expression is not prose
         for m in MEASURED.finditer(cell):
             rest = cell[m.end():]
             if rest.startswith("<!--n ") or rest.startswith("<!--paper-->"):
                 continue
             if re.search(r"=\s*$", cell[:m.start()]):
                 continue  # a parameter value
+            if re.search(r"\b(?:[Ss]ections?|[Ee]qs?\.)\s*$", cell[:m.start()]):
+                continue  # a reference to the paper's text
             errs.append("%s: %s: %s has no <!--n CSV ...--> or <!--paper--> note" % (rel(md), item, m.group(0)))
     return errs
 
