@@ -25,12 +25,19 @@ case "${1:-}" in
   *) echo "usage: $0 [--quick|--check]" >&2; exit 2 ;;
 esac
 
-# study NAME COMMAND...: runs one study, timed, with its log in out/run_all/NAME.log
+# the user + system ticks of this shell and of every child it has waited for
+cpu_ticks() { awk '{ print $14 + $15 + $16 + $17 }' "/proc/$$/stat"; }
+mkdir -p out/run_all
+echo "study,wall_s,cpu_s" > out/run_all/times.csv
+# study NAME COMMAND...: runs one study, timed (wall and CPU seconds also in
+# out/run_all/times.csv), with its log in out/run_all/NAME.log
 study() {
-  local name=$1 t0=$SECONDS; shift
-  mkdir -p out/run_all
+  local name=$1 t0=$SECONDS c0 cpu; shift
+  c0=$(cpu_ticks)
   if "$@" > "out/run_all/$name.log" 2>&1; then
-    echo "run_all: $name: ok ($((SECONDS - t0)) s)"
+    cpu=$((($(cpu_ticks) - c0) / $(getconf CLK_TCK)))
+    echo "$name,$((SECONDS - t0)),$cpu" >> out/run_all/times.csv
+    echo "run_all: $name: ok ($((SECONDS - t0)) s, CPU $cpu s)"
   else
     echo "run_all: $name FAILED ($((SECONDS - t0)) s); last lines of out/run_all/$name.log:" >&2
     tail -15 "out/run_all/$name.log" >&2

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Configures and builds fluidsurf into build/ (or $1), Release with debug info.
+# Configures and builds fluidsurf into build/ (or $1), Release with debug info; further
+# arguments go to cmake. Through ccache where it is installed (scripts/compiler_cache.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-build}
 shift || true
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+source scripts/compiler_cache.sh # FS_LAUNCHER
+cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${FS_LAUNCHER[@]}" "$@" >/dev/null
 cmake --build "$dir" -j"$(nproc)"

@@ -5,6 +5,7 @@
 #              frames 0-9, so every displayed frame uploads a new particle set)
 #              and a still one (dam_break.json, 24k SPlisHSPlasH particles);
 #   simulate:  --simulate dam_break --particles 2000 on the CPU path, playing.
+# VIEW_MODES (default all three) picks some (the sanitizer build: tests/view.cmake).
 # The methods come from `fluidsurf methods` (a line "NAME — description" per
 # method, in registry order), so a new method is covered without editing this
 # file; key N selects the N-th (--method NAME from the 10th on). Each run
@@ -69,16 +70,19 @@ shoot() {
   echo "$mode $m: $((SECONDS - t0)) s"
 }
 
+read -ra modes <<< "${VIEW_MODES:-sequence still simulate}"
+declare -A input=([sequence]="$scenes/slab_sequence.json" [still]="$scenes/dam_break.json"
+  [simulate]="--simulate dam_break --particles 2000")
 for i in "${!methods[@]}"; do
-  m=${methods[$i]}
-  shoot sequence $((i + 1)) "$m" "$scenes/slab_sequence.json"
-  shoot still $((i + 1)) "$m" "$scenes/dam_break.json"
-  shoot simulate $((i + 1)) "$m" --simulate dam_break --particles 2000
+  for mode in "${modes[@]}"; do
+    # shellcheck disable=SC2086 # the simulator's input is three words
+    shoot "$mode" $((i + 1)) "${methods[$i]}" ${input[$mode]}
+  done
 done
 
 # one python process reads every screenshot
 "$PY" "$SRC/tests/png_water.py" ./*.png > water.txt 2> water.err
-for mode in sequence still simulate; do
+for mode in "${modes[@]}"; do
   for m in "${methods[@]}"; do
     out=$mode-$m
     # the reason a run gave up, if any: its stderr minus the title bar and the banner

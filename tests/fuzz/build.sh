@@ -6,14 +6,13 @@
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 BUILD=${1:-build-fuzz}
+source scripts/compiler_cache.sh # FS_LAUNCHER, CCACHE_BASEDIR
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  launcher=()
-  command -v ccache > /dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   # -O1, as libFuzzer's documentation advises: OpenVDB's headers under the sanitizers
   # take minutes a file at -O2
   cmake -S . -B "$BUILD" -DFS_FUZZ=ON -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
-    "${launcher[@]}" > /dev/null || exit 1
+    "${FS_LAUNCHER[@]}" > /dev/null || exit 1
 fi
 cmake --build "$BUILD" --target fuzz_all -j"$(nproc)" > "$BUILD/fuzz_build.log" 2>&1 ||
   { tail -20 "$BUILD/fuzz_build.log"; echo "fuzz: the build failed ($BUILD/fuzz_build.log)" >&2; exit 1; }
