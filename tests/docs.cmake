@@ -11,6 +11,10 @@ add_test(NAME results_index COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tool
 # Every measured number typed in the READMEs' prose carries <!--n CSV EXPR FORMAT--> and equals
 # what that CSV gives; the index's verdicts have no measured number without one.
 add_test(NAME results_numbers COMMAND python3 ${CMAKE_SOURCE_DIR}/experiments/tools/check_numbers.py)
+# and on files made to fail: a wrong number in docs/DESIGN.md, a time or a verdict's integer
+# without a note, the aggregates (tests/check_numbers.sh)
+add_test(NAME check_numbers COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_numbers.sh ${CMAKE_SOURCE_DIR}
+         ${CMAKE_BINARY_DIR}/test-out/check_numbers)
 # Every committed CSV under results/ names a clean commit (or awaits a listed re-run).
 add_test(NAME results_clean COMMAND bash ${CMAKE_SOURCE_DIR}/experiments/tools/check_results.sh ${CMAKE_SOURCE_DIR})
 # The bounds that run_all.sh --quick checks each study's numbers against

@@ -12,12 +12,15 @@ over every matching row, or `count[...]COLUMN` (how many rows match); a COND is 
 as text), COL<NUMBER or COL>NUMBER; FORMAT a printf format. The text just before the comment must be what FORMAT makes of EXPR,
 so a number that goes stale when its CSV is re-measured fails here.
 
-In results/README.md's verdict column, every number that looks measured (a decimal, a
-percentage, a ratio such as 5.25x) must carry such a comment, or `<!--paper-->` when it is
-the paper's number; a parameter value written after "=" is left alone.
+Numbers that look measured need such a comment, `<!--paper-->` (the paper's number) or
+`<!--set-->` (a setting's value: a default, a limit, a budget): every time (12 ms) in the
+prose, and in verdict sentences (results/README.md's verdict column, a paragraph with a bold
+verdict) every decimal, percentage, ratio, integer and number written out; what is left
+alone (a parameter after "=", a reference, a size, a count of the setup) is in
+bare_numbers.py.
 
-    check_numbers.py [--fix] [FILE.md ...]   (default: results/README.md, results/*/*.md,
-                                              methods/*/README.md)
+    check_numbers.py [--fix] [FILE.md ...]   (default: docs/DESIGN.md, README.md, every .md
+                                              under results/, every README.md under methods/)
 --fix rewrites each annotated number to what its CSV gives now (after a study is re-run), and
 lists each one it changed, so the prose around it can be read again: a claim may have flipped.
 Exit 0 when every number agrees (or was fixed), 1 naming each that does not, 2 on bad input.
@@ -29,10 +32,11 @@ import re
 import statistics
 import sys
 
+import bare_numbers
+
 NOTE = re.compile(r"<!--n (\S+) (.+?) (%\S+)-->")
 LOOKUP = re.compile(r"(min|max|med|sum|count)?\[([^\]]*)\]([A-Za-z_][A-Za-z0-9_.]*)")
 COND = re.compile(r"([^=<>]+)([=<>])(.*)$")
-MEASURED = re.compile(r"(?<![\w.=/-])[-+]?\d+(?:\.\d+)?(?:%|x(?![\w])|(?<=\.\d)\d*)")
 SAFE = re.compile(r"^[-+*/(). 0-9e]*$")
 
 
@@ -153,31 +157,19 @@ def check_notes(md, text):
     return errs
 
 
-def verdicts(text):
-    """(item, verdict cell) of each row of results/README.md's index."""
-    for line in text.splitlines():
-        if line.startswith("| ") and not line.startswith("| item |"):
-            cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
-            if len(cells) == 5:
-                yield cells[0], cells[3]
-
-
 def check_bare(md, text):
-    """Errors for each measured-looking number of the index's verdicts without a note."""
-    errs = []
-    for item, cell in verdicts(text):
-        cell = re.sub(r"\[[^\]]*\]\([^)]*\)|`[^`]*`", " ", cell)  # links and code name files
-        cell = re.sub(r"<!--n .*?-->", "<!--n -->", cell)  # a note's own expression is not prose
-        for m in MEASURED.finditer(cell):
-            rest = cell[m.end():]
-            if rest.startswith("<!--n ") or rest.startswith("<!--paper-->"):
-                continue
-            if re.search(r"=\s*$", cell[:m.start()]):
-                continue  # a parameter value
-            if re.search(r"\b(?:[Ss]ections?|[Ee]qs?\.)\s*$", cell[:m.start()]):
-                continue  # a reference to the paper's text
-            errs.append("%s: %s: %s has no <!--n CSV ...--> or <!--paper--> note" % (rel(md), item, m.group(0)))
-    return errs
+    """Errors for each number bare_numbers.py wants a note for and that has none."""
+    where = rel(md)
+    is_index = os.path.basename(md) == "README.md" and os.path.basename(os.path.dirname(os.path.abspath(md))) == "results"
+    return ["%s:%d: %s%s has no <!--n CSV ...-->, <!--paper--> or <!--set--> note" % (where, ln, item + ": " if item else "", x)
+            for ln, item, x in bare_numbers.findings(text, is_index)]
+
+
+def default_files(root):
+    """docs/DESIGN.md, README.md and every Markdown file under results/ and README under methods/."""
+    return sorted([os.path.join(root, "docs/DESIGN.md"), os.path.join(root, "README.md")] +
+                  glob.glob(os.path.join(root, "results/**/*.md"), recursive=True) +
+                  glob.glob(os.path.join(root, "methods/**/README.md"), recursive=True))
 
 
 def main():
@@ -185,9 +177,7 @@ def main():
     args = sys.argv[1:]
     fix = "--fix" in args
     args = [a for a in args if a != "--fix"]
-    files = args or sorted(
-        [os.path.join(root, "results/README.md")] + glob.glob(os.path.join(root, "results/*/*.md")) +
-        glob.glob(os.path.join(root, "methods/*/README.md")))
+    files = args or default_files(root)
     errs, notes = [], 0
     for md in files:
         if not os.path.isfile(md):
@@ -203,8 +193,7 @@ def main():
                 text = fixed
         notes += len(NOTE.findall(text))
         errs += check_notes(md, text)
-        if os.path.basename(md) == "README.md" and os.path.basename(os.path.dirname(os.path.abspath(md))) == "results":
-            errs += check_bare(md, text)
+        errs += check_bare(md, text)
     for e in errs:
         print(e)
     if errs:
