@@ -4,6 +4,7 @@
  * plain path that the accelerated one is checked against. */
 #include "reference.h"
 #include "counters.h"
+#include "reference_bisect.h"
 #include <math.h>
 #include <string.h>
 
@@ -95,6 +96,19 @@ static void grad_at(const stretch *S, float t, float gr[3])
     for (int a = 0; a < 3; a++) gr[a] *= f->volume;
 }
 
+/* The bisection's field (reference_bisect.h): phi - iso, and -grad phi. */
+static inline double plain_side(const void *ctx, float t)
+{
+    const stretch *S = ctx;
+    return phi_at(S, t) - S->R->f.iso;
+}
+
+static inline void plain_outward(const void *ctx, float t, float out[3])
+{
+    grad_at(ctx, t, out);
+    for (int a = 0; a < 3; a++) out[a] = -out[a];
+}
+
 /* Collects the particles that can reach the stretch o + t d, t in [0, len]
  * (distance to the stretch below H). They lie in the 27 cells around cell c
  * because cell >= H; only the cells the stretch's box grown by H touches are read. */
@@ -178,7 +192,7 @@ static int safe_step(const stretch *S, const march *m, float t, float rem, float
 static int march_stretch(const stretch *S, march *m, float t0, float len, float lip, ray_result *res)
 {
     const reference *R = S->R;
-    float iso = R->f.iso, tol = 1e-4f * R->f.r;
+    float iso = R->f.iso;
     if (!m->started) {
         m->g = phi_at(S, 0) - iso;
         if (S->cnt) work(S)->samples++;
@@ -199,26 +213,8 @@ static int march_stretch(const stretch *S, march *m, float t0, float len, float 
             m->g = gn;
             continue;
         }
-        /* Sign change in [t, tn]: bisect, keeping lo on the current side. */
-        float lo = t, hi = tn;
-        while (hi - lo > tol) {
-            float mid = 0.5f * (lo + hi);
-            if (mid <= lo || mid >= hi) break; /* floats cannot split it further (far along a huge cell) */
-            if (S->cnt) {
-                work(S)->samples++;
-                work(S)->refine_evals++;
-            }
-            if ((phi_at(S, mid) - iso >= 0) == m->inside) lo = mid;
-            else hi = mid;
-        }
-        float tc = 0.5f * (lo + hi);
-        if (S->cnt) work(S)->crossings++;
-        float out[3] = {0, 0, 0};
-        if (!m->inside && !res->hit) { /* the first hit's normal: -grad phi */
-            grad_at(S, tc, out);
-            for (int a = 0; a < 3; a++) out[a] = -out[a];
-        }
-        if (fs_ref_cross(R, m, res, t0 + tc, out, S->d)) return 1;
+        /* Sign change in [t, tn]: bisect, keeping t on the current side. */
+        if (fs_ref_bisect_cross(R, m, res, plain_side, plain_outward, S, S->d, work(S), t0, t, tn)) return 1;
         t = tn;
         m->g = gn;
     }

@@ -21,6 +21,7 @@
  * L grows without bound, and there the march samples every step_min. */
 #include "reference.h"
 #include "counters.h"
+#include "reference_bisect.h"
 #include "zhu_bridson.h"
 #include <math.h>
 #include <string.h>
@@ -62,6 +63,11 @@ static double zb_phi_at(const zb_stretch *S, float t, float grad[3])
     }
     return fs_zb_phi(&s, R, S->R->f.r, grad);
 }
+
+/* The bisection's field (reference_bisect.h): -phi (>= 0 inside), and grad phi (outward). */
+static inline double zb_side(const void *ctx, float t) { return -zb_phi_at(ctx, t, NULL); }
+
+static inline void zb_outward(const void *ctx, float t, float out[3]) { zb_phi_at(ctx, t, out); }
 
 /* The Lipschitz bound of phi along the ray on local [t, t+s] (fs_zb_lipschitz); counted as a sum. */
 static double zb_lipschitz(const zb_stretch *S, float t, float s)
@@ -125,7 +131,6 @@ static int zb_step(const zb_stretch *S, const march *m, float t, float rem, floa
 static int zb_march(const zb_stretch *S, march *m, float t0, float len, ray_result *res)
 {
     const reference *R = S->R;
-    float tol = 1e-4f * R->f.r;
     if (!m->started) {
         m->g = (float)-zb_phi_at(S, 0, NULL);
         if (S->cnt) zb_work(S)->samples++;
@@ -145,19 +150,8 @@ static int zb_march(const zb_stretch *S, march *m, float t0, float len, ray_resu
             m->g = gn;
             continue;
         }
-        float lo = t, hi = tn; /* a sign change in [t, tn]: bisect, lo on the current side */
-        while (hi - lo > tol) {
-            float mid = 0.5f * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            if (S->cnt) zb_work(S)->samples++, zb_work(S)->refine_evals++;
-            if ((-zb_phi_at(S, mid, NULL) >= 0) == m->inside) lo = mid;
-            else hi = mid;
-        }
-        float tc = 0.5f * (lo + hi);
-        if (S->cnt) zb_work(S)->crossings++;
-        float out[3] = {0, 0, 0};
-        if (!m->inside && !res->hit) zb_phi_at(S, tc, out); /* grad phi points outward */
-        if (fs_ref_cross(R, m, res, t0 + tc, out, S->d)) return 1;
+        /* a sign change in [t, tn]: bisect, t on the current side */
+        if (fs_ref_bisect_cross(R, m, res, zb_side, zb_outward, S, S->d, zb_work(S), t0, t, tn)) return 1;
         t = tn;
         m->g = gn;
     }
