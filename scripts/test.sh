@@ -131,6 +131,7 @@ stage ctest run_ctest ctest build
 wait_behind studies
 cat "$TIMES/studies.log"
 stage builds_wait wait_behind builds
+[ -z "${behind_pid[builds]:-}" ] || wait_behind builds # (--only without builds_wait)
 lean_tests() {
   run_ctest lean_ctest build-lean FLUIDSURF_GL=egl
   bash tests/lean_vs_full.sh build/fluidsurf build-lean/fluidsurf build-lean/test-out/lean_vs_full

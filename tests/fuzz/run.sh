@@ -23,7 +23,7 @@ bash tests/fuzz/build.sh "$BUILD" || exit 1
 JOBS=${FS_FUZZ_JOBS:-2}
 # run_target EXE: one target, its verdict in out/fuzz/NAME/verdict.txt
 run_target() {
-  local exe=$1 name=${1##*/fuzz_} out corpus dict args cap rc runs regress=()
+  local exe=$1 name=${1##*/fuzz_} out corpus dict args search=() cap rc runs regress=()
   out=out/fuzz/$name
   corpus=$out/corpus
   mkdir -p "$corpus"
@@ -34,20 +34,20 @@ run_target() {
   if [ -n "${FS_FUZZ_SEED:-}" ]; then
     corpus=$out/smoke_corpus
     rm -rf "$corpus"; mkdir -p "$corpus"
-    args+=(-seed="$FS_FUZZ_SEED")
+    search=(-seed="$FS_FUZZ_SEED")
     cap=$(awk -v n="$name" '$1 == n { print $2 }' tests/fuzz/smoke_runs.txt 2> /dev/null)
-    [ -n "$cap" ] && args+=(-runs="$cap")
+    [ -n "$cap" ] && search+=(-runs="$cap")
     [ -d "tests/fuzz/regress_$name" ] && regress=("tests/fuzz/regress_$name"/*)
   fi
   export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:intercept_tls_get_addr=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
   : > "$out/log.txt"
   rc=0
-  # files (not folders) as arguments: libFuzzer runs each once
+  # files (not folders) as arguments: libFuzzer runs each once (-runs=N would run each N times)
   [ ${#regress[@]} -eq 0 ] || "$exe" "${args[@]}" "${regress[@]}" >> "$out/log.txt" 2>&1 || rc=$?
   # the first corpus folder receives new inputs: keep the committed seeds untouched
   if [ $rc -eq 0 ]; then
-    "$exe" "${args[@]}" "$corpus" "tests/fuzz/corpus_$name" >> "$out/log.txt" 2>&1 || rc=$?
+    "$exe" "${args[@]}" "${search[@]}" "$corpus" "tests/fuzz/corpus_$name" >> "$out/log.txt" 2>&1 || rc=$?
   fi
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/log.txt" | tail -1)
   if [ $rc -eq 0 ]; then
