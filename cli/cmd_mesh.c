@@ -92,7 +92,9 @@ static int mesh_frame(mesh_job *j, int frame)
         rc = is_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
                                 : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
     t = fs_now_ms();
-    if (!rc) rc = fs_mesh_export(&m, path);
+    fs_provenance prov;
+    fs_mesh_provenance(&prov, j->scene, j->params, frame);
+    if (!rc) rc = fs_mesh_export(&m, path, &prov);
     fs_stages_add(&st, "write", fs_now_ms() - t);
     if (!rc && j->timings) print_stages(frame, &st, &m);
     fs_trimesh_free(&m);

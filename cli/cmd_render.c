@@ -77,13 +77,13 @@ static int run_job(fs_run *run, const fs_scene *scene, const fs_particles *p, co
 {
     if (job->cache && job->cache->on) return run_cached(run, scene, p, job, st, counts);
     int rc = fs_run_upload(run, p, NULL, st);
-    for (int i = 0; !rc && i < job->nexports; i++) rc = fs_run_export(run, job->exports[i]);
-    if (rc || !job->out) return rc;
     fs_run_image im = {0};
     fs_provenance prov;
+    fs_run_provenance(run, NULL, job->frame, &prov);
+    for (int i = 0; !rc && i < job->nexports; i++) rc = fs_run_export(run, job->exports[i], &prov);
+    if (rc || !job->out) return rc;
     rc = fs_run_render(run, &scene->camera, &im, st);
     if (!rc) rc = fs_run_shade(run, &scene->camera, &im, job->look, st);
-    fs_run_provenance(run, NULL, job->frame, &prov);
     if (!rc) rc = fs_write_render_in_scene(job->out, scene, &scene->camera, &im.g, im.rgba, &prov);
     fs_run_image_free(&im);
     return rc;

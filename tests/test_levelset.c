@@ -306,8 +306,8 @@ static void export_vdb(void)
     char path[256], bad[256];
     snprintf(path, sizeof path, "%s/test_levelset_%d.vdb", P_tmpdir, (int)getpid());
     snprintf(bad, sizeof bad, "%s/test_levelset_%d.ply", P_tmpdir, (int)getpid());
-    CHECK(!rc && fs_run_export(run, path) == FS_OK, "export: %s", fs_error_message());
-    CHECK(fs_run_export(run, bad) == FS_ERR_INPUT && access(bad, F_OK) != 0, "a .ply export is refused, no file");
+    CHECK(!rc && fs_run_export(run, path, NULL) == FS_OK, "export: %s", fs_error_message());
+    CHECK(fs_run_export(run, bad, NULL) == FS_ERR_INPUT && access(bad, F_OK) != 0, "a .ply export is refused, no file");
     fs_density_grid g;
     CHECK(fs_density_grid_read_vdb(&g, path, "surface") == FS_OK, "read back: %s", fs_error_message());
     if (g.data) {

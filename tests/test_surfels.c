@@ -191,21 +191,21 @@ static void own_appearance_and_exports(void)
     const char *ply = FS_TEST_OUT "/surfels_export.ply", *vdb = FS_TEST_OUT "/surfels_export.vdb";
     unlink(ply);
     unlink(vdb);
-    CHECK(fs_run_export(run, ply) == FS_OK, "ply: %s", fs_error_message());
+    CHECK(fs_run_export(run, ply, NULL) == FS_OK, "ply: %s", fs_error_message());
     fs_particles q;
     CHECK(fs_particles_read(&q, ply, NULL) == FS_OK, "read ply back: %s", fs_error_message());
     CHECK(q.n > 1000, "only %zu surfels in the PLY", q.n);
     fs_particles_free(&q);
 #if FS_WITH_OPENVDB
-    CHECK(fs_run_export(run, vdb) == FS_OK, "vdb: %s", fs_error_message());
+    CHECK(fs_run_export(run, vdb, NULL) == FS_OK, "vdb: %s", fs_error_message());
     fs_density_grid d;
     CHECK(fs_density_grid_read_vdb(&d, vdb, "density") == FS_OK, "read vdb back: %s", fs_error_message());
     fs_density_grid_free(&d);
 #else
-    int vrc = fs_run_export(run, vdb);
+    int vrc = fs_run_export(run, vdb, NULL);
     CHECK_REFUSED(vrc, fs_error_message(), vdb, "FS_WITH_OPENVDB");
 #endif
-    CHECK(fs_run_export(run, FS_TEST_OUT "/surfels_export.txt") == FS_ERR_INPUT, "a .txt export must be refused");
+    CHECK(fs_run_export(run, FS_TEST_OUT "/surfels_export.txt", NULL) == FS_ERR_INPUT, "a .txt export must be refused");
     CHECK(access(FS_TEST_OUT "/surfels_export.txt", F_OK) != 0, "a refused export left a file");
     fs_run_close(run);
     fs_run_image_free(&im);

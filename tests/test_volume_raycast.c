@@ -224,10 +224,10 @@ static void transfer_and_export(void)
     const char *vdb = FS_TEST_OUT "/volume_raycast_export.vdb";
     unlink(vdb);
 #if !FS_WITH_OPENVDB
-    int vrc = fs_run_export(opaque, vdb);
+    int vrc = fs_run_export(opaque, vdb, NULL);
     CHECK_REFUSED(vrc, fs_error_message(), vdb, "FS_WITH_OPENVDB");
 #else
-    CHECK(fs_run_export(opaque, vdb) == FS_OK, "vdb: %s", fs_error_message());
+    CHECK(fs_run_export(opaque, vdb, NULL) == FS_OK, "vdb: %s", fs_error_message());
     fs_density_grid d, ex;
     fs_grid ng;
     fs_grid_build(&ng, &p, f.H);
@@ -253,7 +253,7 @@ static void transfer_and_export(void)
     fs_density_grid_free(&ex);
     fs_grid_free(&ng);
 #endif
-    CHECK(fs_run_export(opaque, FS_TEST_OUT "/volume_raycast_export.ply") == FS_ERR_INPUT,
+    CHECK(fs_run_export(opaque, FS_TEST_OUT "/volume_raycast_export.ply", NULL) == FS_ERR_INPUT,
           "a .ply export must be refused");
     for (int k = 0; k < 2; k++) {
         fs_run_close(runs[k]);

@@ -10,6 +10,7 @@
 #include "kernels.h"
 #include "params.h"
 #include "particles.h"
+#include "provenance.h"
 #include "timing.h"
 #ifdef __cplusplus
 extern "C" {
@@ -69,8 +70,9 @@ typedef struct fs_method {
     void (*destroy)(void *self);
     /* Optional (NULL when none): after upload, writes the method's intermediate
      * surface to path, its kind chosen by the extension (surfels: .vdb density
-     * grid, .ply surfels). FS_ERR_INPUT for an extension it does not write. */
-    int (*export_file)(void *self, const char *path);
+     * grid, .ply surfels). FS_ERR_INPUT for an extension it does not write.
+     * prov: the output's provenance, for the files that carry it (mesh). */
+    int (*export_file)(void *self, const char *path, const fs_provenance *prov);
 } fs_method;
 
 /* What upload() does with the grid it is given, so that the run layer builds

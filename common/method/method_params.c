@@ -135,3 +135,13 @@ int fs_method_params_copy(const char *method, const fs_method_setup *setup, void
     memcpy(dst, setup->params, size);
     return FS_OK;
 }
+
+void fs_method_provenance(fs_provenance *out, const fs_method *m, const double *values, int frame)
+{
+    char pstr[600], fstr[32];
+    fs_method_params_string(m, values, pstr, sizeof pstr);
+    fs_provenance_set(out, "method", m->name);
+    fs_provenance_set(out, "params", pstr);
+    snprintf(fstr, sizeof fstr, "%d", frame);
+    fs_provenance_set(out, "frame", fstr);
+}

@@ -3,6 +3,7 @@
 #ifndef FS_METHOD_PARAMS_H
 #define FS_METHOD_PARAMS_H
 #include "method.h"
+#include "provenance.h"
 #include "scene.h"
 #ifdef __cplusplus
 extern "C" {
@@ -35,6 +36,10 @@ int fs_method_setting_resolve(fs_scene_setting *set);
 int fs_method_params_resolve(const fs_method *m, const fs_scene *s, double values[FS_MAX_PARAMS]);
 /* "p=v;q=w" of every parameter (for provenance). */
 void fs_method_params_string(const fs_method *m, const double *values, char *buf, int size);
+/* Adds "method", "params" (fs_method_params_string) and "frame" to out: what
+ * every output of method m made with these values records beside the scene's
+ * provenance (renders, mesh files). */
+void fs_method_provenance(fs_provenance *out, const fs_method *m, const double *values, int frame);
 
 #ifdef __cplusplus
 }

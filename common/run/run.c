@@ -165,12 +165,14 @@ int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages 
     return FS_OK;
 }
 
-int fs_run_export(fs_run *r, const char *path)
+int fs_run_export(fs_run *r, const char *path, const fs_provenance *prov)
 {
     if (!r->m->export_file) return fs_fail(FS_ERR_INPUT, "%s: method '%s' exports nothing", path, r->m->name);
     if (r->cur < 0) return fs_fail(FS_ERR_RUNTIME, "%s", r->why);
     if (!r->frame[r->cur].n) return fs_fail(FS_ERR_INPUT, "%s: the frame holds no particles: nothing to export", path);
-    return r->m->export_file(r->self, path);
+    fs_provenance own;
+    if (!prov) fs_run_provenance(r, NULL, 0, &own);
+    return r->m->export_file(r->self, path, prov ? prov : &own);
 }
 
 /* 1 when g holds exactly the AOVs m writes for frame p, in its order. */
@@ -249,13 +251,8 @@ void fs_run_provenance(const fs_run *r, const fs_provenance *base, int frame, fs
             out->attr[i].value = out->value[i];
         }
     } else fs_provenance_init(out, r->scene, r->renderer, r->gl_version);
-    char pstr[600], fstr[32];
-    fs_method_params_string(r->m, r->values, pstr, sizeof pstr);
-    fs_provenance_set(out, "method", r->m->name);
-    fs_provenance_set(out, "params", pstr);
+    fs_method_provenance(out, r->m, r->values, frame);
     fs_provenance_set(out, "gl_renderer", r->renderer);
-    snprintf(fstr, sizeof fstr, "%d", frame);
-    fs_provenance_set(out, "frame", fstr);
 }
 
 const char *fs_run_stage_renderer(const fs_run *r, const char *stage)

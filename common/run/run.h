@@ -58,8 +58,9 @@ const char *fs_run_renderer(const fs_run *r);
  * build one; adds the stages "grid" and "upload" to st (may be NULL). */
 int fs_run_upload(fs_run *r, const fs_particles *p, const fs_grid *g, fs_stages *st);
 /* Writes the method's intermediate surface (after an upload); FS_ERR_INPUT when
- * the method exports nothing or not that kind of file. */
-int fs_run_export(fs_run *r, const char *path);
+ * the method exports nothing or not that kind of file. prov: the file's
+ * provenance (fs_run_provenance), or NULL for the run's own with frame 0. */
+int fs_run_export(fs_run *r, const char *path, const fs_provenance *prov);
 
 /* Renders the current frame: (re)allocates im->g to the camera size with the
  * layers the method writes, clears it, renders; adds the method's stages. On

@@ -238,8 +238,9 @@ size_t fluidsurf_mesh_vertex_count(const fluidsurf_mesh *m);
 size_t fluidsurf_mesh_triangle_count(const fluidsurf_mesh *m);
 /* 3 floats per vertex, scene units. */
 const float *fluidsurf_mesh_vertices(const fluidsurf_mesh *m);
-/* 3 floats per vertex: the unit outward normal -grad phi / |grad phi| (0, 0, 0
- * where the gradient vanishes). */
+/* 3 floats per vertex: the unit outward normal -grad phi / |grad phi| (with
+ * smooth=weighted splashsurf's smoothed face normals); where that has no length,
+ * its faces' or its largest face's normal (methods/mesh/README.md, step 5). */
 const float *fluidsurf_mesh_normals(const fluidsurf_mesh *m);
 /* 3 vertex indices per triangle, counter-clockwise seen from outside. */
 const uint32_t *fluidsurf_mesh_triangles(const fluidsurf_mesh *m);

@@ -164,8 +164,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return FS_OK;
 }
 
-static int export_file(void *self, const char *path)
+static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
+    (void)prov; /* its files carry none yet */
     levelset *s = self;
     if (!s->grid) return fs_fail(FS_ERR_RUNTIME, "levelset: export before upload");
     if (!fs_path_ends_with(path, ".vdb"))

@@ -15,6 +15,8 @@
 #include "mesh_smooth.h"
 #include "mesh_weights.h"
 #include "method.h"
+#include "method_params.h"
+#include "scene_provenance.h"
 #include "zhu_bridson.h"
 #include <stdlib.h>
 
@@ -96,6 +98,12 @@ int fs_mesh_opts_from_values(const double *values, const fs_field *f, fs_mesh_op
     return rc;
 }
 
+void fs_mesh_provenance(fs_provenance *out, const fs_scene *s, const double *values, int frame)
+{
+    fs_provenance_init(out, s, "CPU", NULL);
+    fs_method_provenance(out, &fs_method_mesh, values, frame);
+}
+
 static void *create(const fs_method_setup *setup)
 {
     mesh_params p;
@@ -134,11 +142,11 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return rc ? rc : fs_gl_target_read_timed(&s->gl.target, out, st);
 }
 
-static int export_file(void *self, const char *path)
+static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
     mesh *s = self;
     if (!s->tm.nrm) return fs_fail(FS_ERR_RUNTIME, "mesh: export before upload");
-    return fs_mesh_export(&s->tm, path);
+    return fs_mesh_export(&s->tm, path, prov);
 }
 
 const fs_method fs_method_mesh = {

@@ -7,6 +7,7 @@
 #include "memory.h"
 #include "mesh_sample.h"
 #include "mesh_attributes.h"
+#include "mesh_collapse.h"
 #include "mesh_normals.h"
 #include "mesh_smooth.h"
 #include "mesh_vdb.h"
@@ -39,21 +40,49 @@ static int check_memory(const fs_grid *g, double cube, double limit)
         cube, est / 1e9, limit / 1e9, fit);
 }
 
-/* Vertex normals -grad phi / |grad phi| at each vertex (0 where the gradient
- * vanishes: the raster falls back to the face normal there). */
-static int vertex_normals(fs_trimesh *m, const fs_field_eval *e, fs_mesh_work *w)
+/* Where a vertex's normal comes from the field: the SPH field's -grad phi, or
+ * field=zhu_bridson's grad phi (zg set). */
+typedef struct normal_src {
+    const fs_field_eval *e;
+    const fs_grid *zg;
+    double R, r;
+} normal_src;
+
+/* The field's outward unit normal at x (0 where the gradient vanishes); returns
+ * the particle terms summed. */
+static size_t field_normal_at(const normal_src *s, const float *x, float n[3])
+{
+    float g[3], sign = s->zg ? 1.0f : -1.0f;
+    size_t terms;
+    if (s->zg) {
+        double phi;
+        terms = fs_zb_eval(s->zg, s->R, s->r, x, &phi, g);
+    } else {
+        float phi;
+        terms = fs_field_eval_at(s->e, x, &phi, g);
+    }
+    float len = sqrtf(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    for (int a = 0; a < 3; a++) n[a] = len > 0 ? sign * g[a] / len : 0;
+    return terms;
+}
+
+/* fs_mesh_field_normal over a normal_src, for the repair of degenerate normals. */
+static int field_normal(const void *ctx, const float *x, float n[3])
+{
+    field_normal_at(ctx, x, n);
+    return n[0] != 0 || n[1] != 0 || n[2] != 0;
+}
+
+/* The field's normal at each vertex (0 where the gradient vanishes, repaired
+ * after: fs_mesh_normals_repair). */
+static int vertex_normals(fs_trimesh *m, const normal_src *s, fs_mesh_work *w)
 {
     m->nrm = malloc((m->nv ? m->nv : 1) * 3 * sizeof *m->nrm);
     if (!m->nrm) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu normals", m->nv);
     long nv = (long)m->nv;
     uint64_t terms = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : terms)
-    for (long v = 0; v < nv; v++) {
-        float phi, g[3], *n = m->nrm + 3 * v;
-        terms += fs_field_eval_at(e, m->pos + 3 * v, &phi, g);
-        float len = sqrtf(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        for (int a = 0; a < 3; a++) n[a] = len > 0 ? -g[a] / len : 0;
-    }
+    for (long v = 0; v < nv; v++) terms += field_normal_at(s, m->pos + 3 * v, m->nrm + 3 * v);
     w->voxels += (uint64_t)m->nv;
     w->terms += terms;
     return FS_OK;
@@ -93,26 +122,6 @@ static int sample_zb(const fs_particles *p, const fs_grid *g, const fs_field *f,
     return fs_mesh_sample_zb(*vol, o->cube, R, f->r, g, w);
 }
 
-/* field=zhu_bridson: vertex normals grad phi / |grad phi| (outward). */
-static int vertex_normals_zb(fs_trimesh *m, const fs_grid *g, double R, double r, fs_mesh_work *w)
-{
-    m->nrm = malloc((m->nv ? m->nv : 1) * 3 * sizeof *m->nrm);
-    if (!m->nrm) return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory for %zu normals", m->nv);
-    long nv = (long)m->nv;
-    uint64_t terms = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : terms)
-    for (long v = 0; v < nv; v++) {
-        double phi;
-        float gr[3], *n = m->nrm + 3 * v;
-        terms += fs_zb_eval(g, R, r, m->pos + 3 * v, &phi, gr);
-        float len = sqrtf(gr[0] * gr[0] + gr[1] * gr[1] + gr[2] * gr[2]);
-        for (int a = 0; a < 3; a++) n[a] = len > 0 ? gr[a] / len : 0;
-    }
-    w->voxels += (uint64_t)m->nv;
-    w->terms += terms;
-    return FS_OK;
-}
-
 /* The sample volume and its values. */
 static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o,
                   const fs_aniso_kernels *ak, fs_mesh_volume **vol, fs_mesh_work *w)
@@ -144,53 +153,83 @@ static int sample(const fs_particles *p, const fs_grid *g, const fs_field *f, co
     return fs_mesh_sample(*vol, o->cube, f, g, ak, w);
 }
 
-int fs_mesh_build(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o, fs_trimesh *out,
-                  fs_stages *st)
-{
-    memset(out, 0, sizeof *out);
+/* What the field stage leaves for the later ones: the anisotropic kernels
+ * and field=zhu_bridson's grid (zg, owned when zg_own). */
+typedef struct built_field {
     fs_aniso_kernels ak;
-    memset(&ak, 0, sizeof ak);
+    fs_grid zg;
+    const fs_grid *zgp;
+    int zg_own;
+    double zr; /* zhu_bridson's R */
+} built_field;
+
+/* Stages "field" and "mesh": the sampled volume meshed at iso, wound outward;
+ * unsmoothed, its degenerate faces (if any) collapsed there. */
+static int field_and_mesh(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o,
+                          built_field *b, fs_trimesh *out, fs_stages *st)
+{
     fs_mesh_volume *vol = NULL;
     fs_mesh_work w = {0, 0};
     double t0 = fs_now_ms();
-    double zr = o->zb_radius > 0 ? o->zb_radius : FS_ZB_RADIUS * f->r, iso = o->zb ? zr : f->iso;
-    fs_grid zg;
-    int zg_own = 0;
-    const fs_grid *zgp = g;
-    int rc = o->aniso ? fs_aniso_kernels_build(&ak, p, g, &o->ap, f->H) : FS_OK;
-    if (!rc && o->zb) rc = fs_grid_fit(g, p, (float)zr, &zg, &zg_own, &zgp);
-    if (!rc) rc = o->zb ? sample_zb(p, zgp, f, o, zr, &vol, &w) : sample(p, g, f, o, o->aniso ? &ak : NULL, &vol, &w);
+    b->zr = o->zb_radius > 0 ? o->zb_radius : FS_ZB_RADIUS * f->r;
+    b->zgp = g;
+    int rc = o->aniso ? fs_aniso_kernels_build(&b->ak, p, g, &o->ap, f->H) : FS_OK;
+    if (!rc && o->zb) rc = fs_grid_fit(g, p, (float)b->zr, &b->zg, &b->zg_own, &b->zgp);
+    if (!rc)
+        rc = o->zb ? sample_zb(p, b->zgp, f, o, b->zr, &vol, &w)
+                   : sample(p, g, f, o, o->aniso ? &b->ak : NULL, &vol, &w);
     fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
     fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
     if (!rc) stage(st, "field", t0);
     double t1 = fs_now_ms();
-    if (!rc) rc = fs_mesh_volume_mesh(vol, iso, out);
+    if (!rc) rc = fs_mesh_volume_mesh(vol, o->zb ? b->zr : f->iso, out);
     fs_mesh_volume_free(vol);
     if (!rc && fs_trimesh_volume6(out) < 0) fs_trimesh_flip(out); /* wound outward, whatever the library does */
+    int smoothed = o->smooth && o->smooth_iters > 0;
+    if (!rc && !smoothed) rc = fs_mesh_collapse_degenerate(out, FS_MESH_DEGENERATE_CUBE * o->cube, NULL);
     if (!rc) stage(st, "mesh", t1);
-    double t2 = fs_now_ms();
-    int weighted = o->smooth == FS_MESH_SMOOTH_WEIGHTED;
-    if (!rc && o->smooth && o->smooth_iters > 0) {
-        rc = smooth(out, g, f, o);
-        if (!rc) stage(st, "smooth", t2);
-    }
-    double t3 = fs_now_ms();
-    fs_field_eval e = {*f, g, o->aniso ? &ak : NULL};
-    w = (fs_mesh_work){0, 0};
-    if (!rc)
-        rc = weighted ? fs_mesh_normals_smoothed(out, o->normal_iters)
-            : o->zb   ? vertex_normals_zb(out, zgp, zr, f->r, &w)
-                      : vertex_normals(out, &e, &w);
+    return rc;
+}
+
+/* Stage "normals": the field's, or splashsurf's smoothed face normals
+ * (weighted); then every one that is not unit repaired. */
+static int normals(fs_trimesh *m, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o, const built_field *b,
+                   fs_stages *st)
+{
+    double t0 = fs_now_ms();
+    fs_field_eval e = {*f, g, o->aniso ? &b->ak : NULL};
+    normal_src src = {&e, o->zb ? b->zgp : NULL, b->zr, f->r};
+    fs_mesh_work w = {0, 0};
+    int rc = o->smooth == FS_MESH_SMOOTH_WEIGHTED ? fs_mesh_normals_smoothed(m, o->normal_iters)
+                                                  : vertex_normals(m, &src, &w);
     fs_count_add(FS_CNT_FIELD_EVALS, w.voxels);
     fs_count_add(FS_CNT_NEIGHBOURS, w.terms);
-    if (!rc) stage(st, "normals", t3);
-    double t4 = fs_now_ms();
+    if (!rc) rc = fs_mesh_normals_repair(m, field_normal, &src, NULL);
+    if (!rc) stage(st, "normals", t0);
+    return rc;
+}
+
+int fs_mesh_build(const fs_particles *p, const fs_grid *g, const fs_field *f, const fs_mesh_opts *o, fs_trimesh *out,
+                  fs_stages *st)
+{
+    memset(out, 0, sizeof *out);
+    built_field b;
+    memset(&b, 0, sizeof b);
+    int rc = field_and_mesh(p, g, f, o, &b, out, st);
+    double t0 = fs_now_ms();
+    if (!rc && o->smooth && o->smooth_iters > 0) {
+        rc = smooth(out, g, f, o);
+        if (!rc) rc = fs_mesh_collapse_degenerate(out, FS_MESH_DEGENERATE_CUBE * o->cube, NULL);
+        if (!rc) stage(st, "smooth", t0);
+    }
+    if (!rc) rc = normals(out, g, f, o, &b, st);
+    double t1 = fs_now_ms();
     if (!rc && o->attributes) {
         rc = fs_mesh_attributes(out, p, g, f);
-        if (!rc) stage(st, "attributes", t4);
+        if (!rc) stage(st, "attributes", t1);
     }
-    fs_aniso_kernels_free(&ak);
-    if (zg_own) fs_grid_free(&zg);
+    fs_aniso_kernels_free(&b.ak);
+    if (b.zg_own) fs_grid_free(&b.zg);
     if (rc) fs_trimesh_free(out);
     return rc;
 }

@@ -4,6 +4,7 @@
  * target only when all of it was written (output_file.h). */
 #ifndef FS_MESH_EXPORT_H
 #define FS_MESH_EXPORT_H
+#include "provenance.h"
 #include "trimesh.h"
 #ifdef __cplusplus
 extern "C" {
@@ -14,12 +15,15 @@ extern "C" {
 /* 1 when path's extension is one of them. */
 int fs_mesh_export_known(const char *path);
 /* Writes m (positions, normals, triangles; velocity and colour when m has them,
- * except to .obj) to path by its extension;
- * FS_ERR_INPUT for an unknown one or a folder that cannot be written. */
-int fs_mesh_export(const fs_trimesh *m, const char *path);
+ * except to .obj) to path by its extension, with the provenance prov (may be
+ * NULL) as EXRs carry it: PLY comments and OBJ comment lines
+ * "fluidsurf:NAME=VALUE", VTK field data (one string array per entry, named
+ * fluidsurf:NAME). FS_ERR_INPUT for an unknown extension or a folder that
+ * cannot be written. */
+int fs_mesh_export(const fs_trimesh *m, const char *path, const fs_provenance *prov);
 /* .vtk (xml 0) or .vtp (xml 1) through VTK, to the temporary path tmp
  * (messages name path). */
-int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml);
+int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml, const fs_provenance *prov);
 
 #ifdef __cplusplus
 }

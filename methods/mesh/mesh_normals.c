@@ -62,3 +62,67 @@ int fs_mesh_normals_smoothed(fs_trimesh *m, int iters)
     }
     return rc;
 }
+
+static int is_unit(const float *n)
+{
+    float len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    return fabsf(len2 - 1) < 1e-3f; /* false for NaN too */
+}
+
+/* A vertex whose normal needs repair: its faces' summed cross products and the
+ * largest one (twice a face's area times its unit normal). */
+typedef struct bad_vertex {
+    float sum[3], big[3], big_len2;
+} bad_vertex;
+
+/* slot[v]: v's entry in bad, or UINT32_MAX when its normal is sound. */
+static void gather_faces(const fs_trimesh *m, const uint32_t *slot, bad_vertex *bad)
+{
+    for (size_t t = 0; t < m->nt; t++) {
+        const uint32_t *c = m->tri + 3 * t;
+        if (slot[c[0]] == UINT32_MAX && slot[c[1]] == UINT32_MAX && slot[c[2]] == UINT32_MAX) continue;
+        const float *a = m->pos + 3 * (size_t)c[0], *b = m->pos + 3 * (size_t)c[1], *d = m->pos + 3 * (size_t)c[2];
+        float u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        float x[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        float len2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+        for (int k = 0; k < 3; k++) {
+            if (slot[c[k]] == UINT32_MAX) continue;
+            bad_vertex *e = bad + slot[c[k]];
+            for (int i = 0; i < 3; i++) e->sum[i] += x[i];
+            if (len2 > e->big_len2) memcpy(e->big, x, sizeof x), e->big_len2 = len2;
+        }
+    }
+}
+
+/* The faces' mean, else the field's, else the largest face's normal. */
+static void repair_one(const fs_trimesh *m, size_t v, const bad_vertex *e, fs_mesh_field_normal field, const void *ctx)
+{
+    float *n = m->nrm + 3 * v;
+    memcpy(n, e->sum, 3 * sizeof *n);
+    normalise(n);
+    if (is_unit(n)) return;
+    if (field && field(ctx, m->pos + 3 * v, n) && is_unit(n)) return;
+    memcpy(n, e->big, 3 * sizeof *n);
+    normalise(n);
+}
+
+int fs_mesh_normals_repair(fs_trimesh *m, fs_mesh_field_normal field, const void *ctx, size_t *repaired)
+{
+    size_t nbad = 0;
+    for (size_t v = 0; v < m->nv; v++) nbad += !is_unit(m->nrm + 3 * v);
+    if (repaired) *repaired = nbad;
+    if (!nbad) return FS_OK;
+    uint32_t *slot = malloc(m->nv * sizeof *slot);
+    bad_vertex *bad = calloc(nbad, sizeof *bad);
+    if (!slot || !bad) {
+        free(slot), free(bad);
+        return fs_fail(FS_ERR_RUNTIME, "mesh: out of memory repairing %zu normals", nbad);
+    }
+    size_t k = 0;
+    for (size_t v = 0; v < m->nv; v++) slot[v] = is_unit(m->nrm + 3 * v) ? UINT32_MAX : (uint32_t)k++;
+    gather_faces(m, slot, bad);
+    for (size_t v = 0; v < m->nv; v++)
+        if (slot[v] != UINT32_MAX) repair_one(m, v, bad + slot[v], field, ctx);
+    free(slot), free(bad);
+    return FS_OK;
+}

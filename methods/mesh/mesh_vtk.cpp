@@ -1,12 +1,14 @@
 // Thin VTK 9 adapter of the mesh export (mesh_export.h): the mesh as
 // vtkPolyData (float points, triangle cells, point normals, and the point
-// arrays "velocity" and "color" when the mesh has them) written by
+// arrays "velocity" and "color" when the mesh has them; the provenance as
+// field data) written by
 // vtkPolyDataWriter (legacy binary .vtk) or vtkXMLPolyDataWriter (.vtp,
 // appended binary, zlib).
 #include "mesh_export.h"
 #include "fs_error.h"
 
 #include <vtkCellArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
@@ -14,6 +16,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <exception>
@@ -61,13 +64,27 @@ void fill(vtkPolyData *pd, const fs_trimesh *m)
     if (m->col) add_array(pd, m, m->col, "color");
 }
 
+// The provenance as field data: one string array of one value per entry, named
+// as its EXR attribute (fluidsurf:NAME).
+void add_provenance(vtkPolyData *pd, const fs_provenance *prov)
+{
+    for (int i = 0; prov && i < prov->n; i++) {
+        vtkNew<vtkStringArray> a;
+        a->SetName(prov->name[i]);
+        a->InsertNextValue(prov->value[i]);
+        pd->GetFieldData()->AddArray(a);
+    }
+}
+
 } // namespace
 
-extern "C" int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml)
+extern "C" int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml,
+                                 const fs_provenance *prov)
 {
     try {
         vtkNew<vtkPolyData> pd;
         fill(pd, m);
+        add_provenance(pd, prov);
         int ok;
         if (xml) {
             vtkNew<vtkXMLPolyDataWriter> w;

@@ -319,8 +319,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     return surfel_gl_render(&s->gl, cam, &look, &o, out, t);
 }
 
-static int export_file(void *self, const char *path)
+static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
+    (void)prov; /* its files carry none yet */
     surfels *s = self;
     if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: export before upload");
     int vdb = fs_path_ends_with(path, ".vdb"), ply = fs_path_ends_with(path, ".ply");

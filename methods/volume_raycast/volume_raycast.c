@@ -364,8 +364,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 }
 
 /* .vdb: the volume, read back from its texture, as a FloatGrid "density". */
-static int export_file(void *self, const char *path)
+static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
+    (void)prov; /* its files carry none yet */
     vr *s = self;
     if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
     if (!fs_path_ends_with(path, ".vdb"))

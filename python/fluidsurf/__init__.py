@@ -574,9 +574,15 @@ def mesh(positions, radius=None, params=None, scene=None, field=None):
     methods/mesh/README.md), without rendering. Returns (vertices, faces,
     normals): N x 3 float32 in scene units, M x 3 int64 vertex indices wound
     counter-clockwise seen from outside, N x 3 float32 unit outward normals (the
-    field's gradient; 0 where it vanishes), as pysplashsurf's reconstruction
-    gives them. radius, field and scene as render() (a mesh has no up); params: {parameter: value} of the
-    method mesh (cube, the voxel size in r; smooth; smooth_iters; field; ...).
+    field's gradient; with smooth=weighted splashsurf's smoothed face normals),
+    as pysplashsurf's reconstruction gives them. radius, field and scene as
+    render() (a mesh has no up); params: {parameter: value} of the method mesh
+    (cube, the voxel size in r; smooth; smooth_iters; field; ...).
+    Unlike splashsurf, faces that smoothing leaves with no area are collapsed
+    (pieces shrunk to a point or a line are removed) and a normal that comes
+    out of length 0 is taken from its faces or the field's gradient, so every
+    normal is unit and every face has an area (methods/mesh/README.md,
+    "Deviations").
     A library built without OpenVDB refuses (ValueError naming the option)."""
     # without OpenVDB the method is not registered: the library's refusal says why
     settings = _settings("mesh", params) if "mesh" in _registry() else []

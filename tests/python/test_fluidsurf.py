@@ -408,6 +408,17 @@ def test_mesh_equals_the_command_line(tmp_path):
     assert (len(v), len(f)) == (int(total[0][3]), int(total[0][4]))
 
 
+def test_mesh_smoothed_has_no_degenerate_normal_or_face():
+    """splashsurf's recipe on the DualSPHysics crop (issue 53: it left 28 normals of
+    (0, 0, 0) and 52 faces of zero area): every normal unit, every face an area."""
+    crop = os.path.join(SRC, "experiments/data/dualsphysics/dambreak200k_t0.300_crop902.vtk")
+    v, f, n = fluidsurf.mesh(fluidsurf.read_particles(crop)["positions"], 0.00365,
+                             params={"smooth": "weighted", "smooth_iters": 25})
+    np.testing.assert_allclose(np.linalg.norm(n, axis=1), 1, atol=1e-5)
+    area2 = np.linalg.norm(np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]]), axis=1)
+    assert len(f) > 20000 and (area2 > 0).all(), (len(f), (area2 == 0).sum())
+
+
 def _lattice(nx, ny, nz, spacing=0.05):
     """A jittered lattice at spacing 2r, as the command line's tests build."""
     rng = np.random.default_rng(7)
