@@ -1,11 +1,14 @@
 /* fluidsurf_compare: a study through the same engine as `fluidsurf compare`
- * (common/study), its tables returned as the CSV text compare writes. */
+ * (common/study), its tables returned as the CSV text compare writes;
+ * fluidsurf_compare_to_dir: the same study run into its folder by the layer
+ * under compare (common/study_dir), which writes the same files. */
 #include "api_internal.h"
 #include "fs_error.h"
 #include "gl_context.h"
 #include "method_params.h"
 #include "scene_provenance.h"
 #include "study.h"
+#include "study_dir.h"
 #include "study_tables.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,20 +67,27 @@ static int take_frames(fluidsurf_study *st, const fluidsurf_particles *const *fr
     return FS_OK;
 }
 
-/* Every item rendered, with the render lock and (for GL methods) the shared context. */
-static int execute(fluidsurf_study *st, float radius)
+static int gl_acquire(void *user, const fs_gl_context **ctx)
 {
-    char note[1024];
-    fs_study *s = &st->s;
-    int rc = fs_study_load_first(s, radius, note, sizeof note);
-    if (rc) return rc;
+    (void)user;
+    int rc = fs_api_gl_acquire();
+    *ctx = rc ? NULL : fs_api_gl();
+    return rc;
+}
+
+/* Every item rendered (into dir when given), with the render lock and (for GL
+ * methods) the shared context. */
+static int execute(fluidsurf_study *st, float radius, const char *dir, int flags)
+{
+    fs_study_dir_opts o = {.dir = dir,
+                           .command = "fluidsurf_compare_to_dir (the C API: no command line)",
+                           .radius = radius,
+                           .resume = (flags & FLUIDSURF_STUDY_RESUME) != 0,
+                           .force = (flags & FLUIDSURF_STUDY_FORCE) != 0,
+                           .quiet = 1,
+                           .gl_acquire = gl_acquire};
     fs_api_lock(1);
-    int gl = fs_study_needs_gl(s, NULL);
-    if (gl) rc = fs_api_gl_acquire();
-    const fs_gl_context *ctx = gl && !rc ? fs_api_gl() : NULL;
-    fs_provenance_init(&s->prov, &s->scene, ctx ? ctx->renderer : NULL, ctx ? ctx->version : NULL);
-    if (!rc) rc = fs_study_alloc(s);
-    if (!rc) rc = fs_study_execute(s, NULL, ctx);
+    int rc = fs_study_dir_run(&st->s, &o);
     fs_api_lock(0);
     return rc;
 }
@@ -96,9 +106,10 @@ static int write_tables(fluidsurf_study *st)
     return FS_OK;
 }
 
-int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes,
-                      const char *methods, const char *const *sets, int nsets, const char *const *references,
-                      int nreferences, int repeat, int flags, fluidsurf_study **out)
+/* The study of fluidsurf_compare, into dir when it is given. */
+static int compare(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes, const char *methods,
+                   const char *const *sets, int nsets, const char *const *references, int nreferences, int repeat,
+                   int flags, const char *dir, fluidsurf_study **out)
 {
     int rc;
     if ((rc = fs_api_check(out, "out"))) return rc;
@@ -120,7 +131,7 @@ int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const
         rc = take_frames(st, frames, nframes);
     }
     if (!rc) rc = plan(st, methods, sweeps, nsweeps, references, nreferences);
-    if (!rc) rc = execute(st, s->radius_set ? (float)s->s.radius : 0);
+    if (!rc) rc = execute(st, s->radius_set ? (float)s->s.radius : 0, dir, flags);
     if (!rc) rc = write_tables(st);
     free(sc);
     if (rc) {
@@ -129,6 +140,22 @@ int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const
     }
     *out = st;
     return FLUIDSURF_OK;
+}
+
+int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes,
+                      const char *methods, const char *const *sets, int nsets, const char *const *references,
+                      int nreferences, int repeat, int flags, fluidsurf_study **out)
+{
+    return compare(s, frames, nframes, methods, sets, nsets, references, nreferences, repeat, flags, NULL, out);
+}
+
+int fluidsurf_compare_to_dir(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes,
+                             const char *methods, const char *const *sets, int nsets, const char *const *references,
+                             int nreferences, int repeat, int flags, const char *dir, fluidsurf_study **out)
+{
+    int rc = fs_api_check(dir, "dir");
+    return rc ? rc
+              : compare(s, frames, nframes, methods, sets, nsets, references, nreferences, repeat, flags, dir, out);
 }
 
 const char *fluidsurf_study_table(const fluidsurf_study *st, const char *name)

@@ -28,9 +28,9 @@ typedef struct render_job {
     const char *const *exports;
     int nexports;
     fs_appearance look;
-    int timings;      /* print the stage times */
-    int counters;     /* print the work counts of a counting render */
-    cli_cache *cache; /* --cache: the reference's view from it; NULL: none */
+    int timings;         /* print the stage times */
+    int counters;        /* print the work counts of a counting render */
+    fs_ref_cache *cache; /* --cache: the reference's view from it; NULL: none */
 } render_job;
 
 static void print_timings(const fs_run *run, const fs_stages *st)
@@ -60,8 +60,8 @@ static int run_cached(fs_run *run, const fs_scene *scene, const fs_particles *p,
 {
     fs_run_image im = {0};
     fs_provenance prov;
-    cli_cache_view made;
-    int rc = cli_cache_render(job->cache, run, scene, p, NULL, NULL, job->frame, &im, st, &made);
+    fs_study_made made;
+    int rc = fs_ref_cache_render(job->cache, run, scene, p, NULL, NULL, job->frame, &im, st, &made);
     if (!rc && job->counters) *counts = made.counts;
     fs_run_provenance(run, NULL, job->frame, &prov);
     if (!rc) rc = fs_write_render_in_scene(job->out, scene, &scene->camera, &im.g, im.rgba, &prov);
@@ -247,8 +247,8 @@ int cmd_render(int argc, char **argv)
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
     int first;
     if ((rc = frame_to_render(&scene, frame, &first))) return rc;
-    static cli_cache cache;
-    if (cache_dir) cli_cache_open(&cache, cache_dir, 0, quiet);
+    static fs_ref_cache cache;
+    if (cache_dir) fs_ref_cache_open(&cache, cache_dir, 0, quiet);
     cache.counters = counters;
     const render_job job = {m,
                             params,

@@ -26,7 +26,7 @@ int cmd_report(int argc, char **argv)
     if (!dir) return cli_usage("report", "no study folder given");
     struct stat st;
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) return cli_usage("report", "%s: not a folder", dir);
-    if ((rc = cmp_write_report_html(dir, 0))) return cli_error(rc);
+    if ((rc = fs_report_html_write(dir, 0))) return cli_error(rc);
     fs_note("wrote %s/report.html", dir);
     return 0;
 }

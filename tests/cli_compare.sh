@@ -91,7 +91,7 @@ check '[ $rc -eq 3 ] && grep -q "^FAIL normal" "$T/d2"' "diff beyond a threshold
 "$BIN" diff "$T/a/spheres.exr" "$T/a/reference.exr" > "$T/d3" 2>&1; rc=$?
 check '[ $rc -eq 0 ]' "diff without thresholds exits 0"
 
-# 5b. an output folder that holds another run's outputs (compare_outdir.h)
+# 5b. an output folder that holds another run's outputs (common/study_dir/outputs_list.h)
 snap() { (cd "$1" && find . -type f -printf '%p %s %T@\n' | sort); }
 before=$(snap "$T/a")
 "$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/a" 2> "$T/used.err"; rc=$?

@@ -3,13 +3,18 @@
  * have compare's columns and one row per variant, reference and frame; its
  * metrics of the first frame equal fluidsurf_render + fluidsurf_metrics_compute2
  * of the same item (one engine, one metrics function); its timings are
- * `repeat` runs; the same study twice gives the same metrics. */
+ * `repeat` runs; the same study twice gives the same metrics.
+ * fluidsurf_compare_to_dir (version 5) writes the study's folder, whose
+ * metrics.csv is the table returned; a used folder is refused unless forced.
+ * (tests/python/test_fluidsurf.py holds the folder against the command line's.) */
 #include "fluidsurf/fluidsurf.h"
 #include "fs_test.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define R 0.025f
 
@@ -48,6 +53,53 @@ static double cell(const char *csv, const char *method, const char *variant, con
     return NAN;
 }
 
+/* path's whole text (NULL when it cannot be read); the caller frees it. */
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = f ? calloc(1, 1 << 20) : NULL;
+    if (buf) fread(buf, 1, (1 << 20) - 1, f);
+    if (f) fclose(f);
+    return buf;
+}
+
+/* The study into a folder: the files compare writes, metrics.csv the table
+ * returned; the folder once used is refused, unless FLUIDSURF_STUDY_FORCE. */
+static void to_dir(const fluidsurf_scene *s, const fluidsurf_particles *const *p)
+{
+    char tmp[] = "/tmp/fs_api_compareXXXXXX", dir[64], path[128];
+    CHECK(mkdtemp(tmp) != NULL, "temporary folder");
+    snprintf(dir, sizeof dir, "%s/study", tmp);
+    fluidsurf_study *st = NULL, *bad = (fluidsurf_study *)1;
+    int rc = fluidsurf_compare_to_dir(s, p, 2, "spheres", NULL, 0, NULL, 0, 1, 0, dir, &st);
+    CHECK(!rc && st, "fluidsurf_compare_to_dir: %s", fluidsurf_last_error());
+    snprintf(path, sizeof path, "%s/metrics.csv", dir);
+    char *text = slurp(path);
+    CHECK(text && st && !strcmp(text, fluidsurf_study_table(st, "metrics")), "metrics.csv is the table returned");
+    free(text);
+    const char *files[] = {"timings.csv", "temporal.csv",      "panel.png",        "report.md",
+                           "report.html", "spheres_f0001.exr", "diff_spheres.png", "fluidsurf-outputs.txt"};
+    for (int i = 0; i < 8; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, files[i]);
+        CHECK(access(path, F_OK) == 0, "%s written", files[i]);
+    }
+    CHECK(fluidsurf_compare_to_dir(s, p, 2, "spheres", NULL, 0, NULL, 0, 1, 0, dir, &bad) == FLUIDSURF_ERR_INPUT &&
+              !bad && strstr(fluidsurf_last_error(), "holds another run's outputs"),
+          "a used folder is refused: %s", fluidsurf_last_error());
+    fluidsurf_study_free(st);
+    CHECK(!fluidsurf_compare_to_dir(s, p, 2, "spheres", NULL, 0, NULL, 0, 1, FLUIDSURF_STUDY_FORCE, dir, &st),
+          "FLUIDSURF_STUDY_FORCE: %s", fluidsurf_last_error());
+    CHECK(fluidsurf_compare_to_dir(s, p, 2, "spheres", NULL, 0, NULL, 0, 1, 0, path, &bad) == FLUIDSURF_ERR_INPUT &&
+              strstr(fluidsurf_last_error(), "not a folder"),
+          "a file as the folder: %s", fluidsurf_last_error());
+    CHECK(fluidsurf_compare_to_dir(s, p, 2, "spheres", NULL, 0, NULL, 0, 1, 0, NULL, &bad) == FLUIDSURF_ERR_INPUT,
+          "no folder: %s", fluidsurf_last_error());
+    fluidsurf_study_free(st);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp);
+    CHECK(system(cmd) == 0, "clean up");
+}
+
 int main(void)
 {
     static float x[2][400], y[2][400], z[2][400];
@@ -57,7 +109,8 @@ int main(void)
         CHECK(!fluidsurf_particles_wrap(slab(x[f], y[f], z[f], f * 0.5f * R), x[f], y[f], z[f], &p[f]), "wrap");
     CHECK(!fluidsurf_scene_new(&s) && !fluidsurf_scene_set_radius(s, R) && !fluidsurf_scene_set_size(s, 48, 40),
           "scene");
-    CHECK(FLUIDSURF_API_VERSION == 4 && fluidsurf_api_version() >= 4, "API version 4: %d", fluidsurf_api_version());
+    CHECK(FLUIDSURF_API_VERSION >= 5 && fluidsurf_api_version() >= 5, "API version 5 or later: %d",
+          fluidsurf_api_version());
 
     const char *sets[] = {"spheres.radius_scale=0.8,1.2"};
     fluidsurf_study *st = NULL, *again = NULL;
@@ -122,6 +175,7 @@ int main(void)
                   FLUIDSURF_ERR_INPUT &&
               strstr(fluidsurf_last_error(), "bogus") && !strstr(fluidsurf_last_error(), "--"),
           "a bad reference, in the library's words: %s", fluidsurf_last_error());
+    to_dir(s, (const fluidsurf_particles *const *)p);
     fluidsurf_image_free(a);
     fluidsurf_image_free(ref);
     fluidsurf_study_free(st);

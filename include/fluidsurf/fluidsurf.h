@@ -33,7 +33,9 @@
  * messages that name settings as written ("raycast_pca.normals=x: ...") and list
  * the valid methods or parameters, with no command-line flags in them.
  * Version 4 added fluidsurf_compare (a study through compare's engine) and its
- * tables, and fluidsurf_image_set_solid_depth. */
+ * tables, and fluidsurf_image_set_solid_depth.
+ * Version 5 added fluidsurf_compare_to_dir (the study's whole folder, as
+ * `fluidsurf compare -o DIR` writes it). */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -46,7 +48,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 4 };
+enum { FLUIDSURF_API_VERSION = 5 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -272,6 +274,20 @@ int fluidsurf_compare(const fluidsurf_scene *s, const fluidsurf_particles *const
  * such table. Owned by the study. */
 const char *fluidsurf_study_table(const fluidsurf_study *st, const char *name);
 void fluidsurf_study_free(fluidsurf_study *st);
+/* ---- study folders (since version 5) ---------------------------------- */
+enum { FLUIDSURF_STUDY_FORCE = 2, FLUIDSURF_STUDY_RESUME = 4 };
+/* fluidsurf_compare, with the study's folder written into dir (made if
+ * missing) as `fluidsurf compare -o DIR --no-cache` writes it: each view's PNG
+ * and EXR, the heatmaps, panel.png, the tables, report.md and report.html,
+ * listed in dir/fluidsurf-outputs.txt; the same files byte for byte but for the
+ * times and the command line report.md records. flags as fluidsurf_compare's,
+ * and FLUIDSURF_STUDY_FORCE (an earlier run's files in dir are removed first;
+ * without it such a dir is refused) or FLUIDSURF_STUDY_RESUME (the items an
+ * earlier run of the same study finished there are loaded, not rendered).
+ * On an error dir holds no half-written file. */
+int fluidsurf_compare_to_dir(const fluidsurf_scene *s, const fluidsurf_particles *const *frames, int nframes,
+                             const char *methods, const char *const *sets, int nsets, const char *const *references,
+                             int nreferences, int repeat, int flags, const char *dir, fluidsurf_study **out);
 /* cffi:end */
 
 #pragma GCC visibility pop

@@ -505,7 +505,7 @@ def _sweep_sets(sweep, names):
 
 def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, height=None, camera=None,
             params=None, reference="reference", scene=None, colors=None, up=None, field=None, sweep=None,
-            repeat=3, counters=False, tables=False):
+            repeat=3, counters=False, tables=False, out=None, force=False):
     """Each method variant against the reference on a particle set or a sequence,
     through the engine of `fluidsurf compare` (common/study, fluidsurf_compare):
     the same metrics, the same timing protocol (a warm-up, then `repeat` timed
@@ -521,7 +521,11 @@ def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, h
     Returns the metrics table (the columns of metrics.csv, one row per variant,
     reference and frame): a pandas DataFrame when pandas is there, else a list of
     dicts; tables=True returns {"metrics", "timings", "temporal" (a sequence),
-    "counters" (counters=True)}, each such a table."""
+    "counters" (counters=True)}, each such a table.
+    out: a folder to write the study into, as `fluidsurf compare -o DIR --no-cache`
+    writes it (images, heatmaps, panel.png, the tables, report.md, report.html;
+    fluidsurf_compare_to_dir); force=True removes an earlier run's files there
+    first (without it such a folder is refused)."""
     if isinstance(methods, str) or not all(isinstance(m, str) for m in methods):
         raise ValueError(f"methods: expected a list of method names, got {methods!r}")
     for name in methods:
@@ -544,10 +548,15 @@ def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, h
     c_sets, nsets, _keep = _c_settings(sets)
     c_refs, nrefs, _keep_refs = _c_settings(refs)
     handles = ffi.new("fluidsurf_particles *[]", [f.handle for f in frames]) if frames else ffi.NULL
-    out = ffi.new("fluidsurf_study **")
-    _check(lib.fluidsurf_compare(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs, nrefs,
-                                 int(repeat), lib.FLUIDSURF_STUDY_COUNTERS if counters else 0, out))
-    study = ffi.gc(out[0], lib.fluidsurf_study_free)
+    flags = (lib.FLUIDSURF_STUDY_COUNTERS if counters else 0) | (lib.FLUIDSURF_STUDY_FORCE if force else 0)
+    made = ffi.new("fluidsurf_study **")
+    if out is None:
+        _check(lib.fluidsurf_compare(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs, nrefs,
+                                     int(repeat), flags, made))
+    else:
+        _check(lib.fluidsurf_compare_to_dir(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs,
+                                            nrefs, int(repeat), flags, os.fspath(out).encode(), made))
+    study = ffi.gc(made[0], lib.fluidsurf_study_free)
     texts = {}
     for name in ("metrics", "timings", "temporal", "counters"):
         t = lib.fluidsurf_study_table(study, name.encode())

@@ -4,6 +4,7 @@ binary; FS_SRC: the source tree."""
 import os
 import re
 import resource
+import struct
 import subprocess
 import sys
 import threading
@@ -498,6 +499,37 @@ def test_compare_is_the_command_lines(dam, tmp_path):
     timings = t["timings"].to_dict("records") if hasattr(t["timings"], "to_dict") else t["timings"]
     assert {r["runs"] for r in timings if r["variant"] != "ground truth"} == {2}
     assert {r["runs"] for r in _csv_rows(out / "timings.csv") if r["variant"] != "ground truth"} == {"2"}
+
+
+def test_compare_out_writes_the_command_lines_folder(tmp_path):
+    """compare(out=DIR) writes the folder `fluidsurf compare -o DIR --no-cache`
+    writes (fluidsurf_compare_to_dir): file for file and byte for byte but for
+    the times and the command line report.md records (tests/same_study.py), a
+    sequence with a sweep, two references and counters; panel.png, whose
+    captions hold frame times, has the same height and a width within their
+    digits. A second run into the folder is refused unless force=True."""
+    sys.path.insert(0, os.path.join(SRC, "tests"))
+    import same_study
+    scene = tmp_path / "s.json"
+    scene.write_text('{"particles": {"synthetic": "slab", "first": 0, "last": 1, "moving": true}, "radius": 0.025, '
+                     '"camera": {"width": 40, "height": 32}}')
+    cli, py = tmp_path / "cli", tmp_path / "py"
+    subprocess.run([BIN, "compare", str(scene), "--methods", "spheres", "--set", "spheres.radius_scale=0.8,1.2",
+                    "--reference", "reference", "--reference", "analytic", "--repeat", "1", "--counters",
+                    "--no-cache", "-q", "-o", str(cli)], check=True)
+    args = dict(scene=str(scene), methods=["spheres"], sweep={"spheres.radius_scale": [0.8, 1.2]},
+                reference=["reference", "analytic"], repeat=1, counters=True)
+    rows = fluidsurf.compare(out=py, **args)
+    assert len(rows) == 8
+    assert same_study.main([str(cli), str(py), "--skip", "panel.png"]) == 0
+    size = lambda p: struct.unpack(">II", (p / "panel.png").read_bytes()[16:24])  # IHDR: width, height
+    (cw, ch), (pw, ph) = size(cli), size(py)
+    assert ch == ph and abs(cw - pw) <= 24, (size(cli), size(py))
+    assert "fluidsurf_compare_to_dir" in (py / "report.md").read_text()
+    with pytest.raises(ValueError, match="holds another run's outputs"):
+        fluidsurf.compare(out=py, **args)
+    fluidsurf.compare(out=py, force=True, **args)
+    assert same_study.main([str(cli), str(py), "--skip", "panel.png"]) == 0
 
 
 def test_compare_sequence_and_scene(tmp_path):

@@ -10,28 +10,28 @@
  *   entry ID LABEL FRAME FRAME_MS RUNS RENDERER COUNTS (each method view)
  *   end
  * "-" stands for an empty field; STAGES and RUNS are the first frame's timed
- * runs (compare_resume.h), COUNTS the work counts (stage_counts.h). The same
+ * runs (resume.h), COUNTS the work counts (stage_counts.h). The same
  * file without item lines and "end" is written when the shard starts, so a
  * shard that was killed still names itself. */
-#ifndef FS_COMPARE_SHARD_H
-#define FS_COMPARE_SHARD_H
-#include "compare.h"
+#ifndef FS_SHARD_H
+#define FS_SHARD_H
+#include "study_dir_state.h"
 
-#define CMP_MAX_SHARDS 1024
-#define CMP_SHARD_MANIFEST "shard.txt"
-#define CMP_SHARD_DONE "DONE"
+#define FS_MAX_SHARDS 1024
+#define FS_SHARD_MANIFEST "shard.txt"
+#define FS_SHARD_DONE "DONE"
 
-/* "K/N" with 1 <= K <= N <= CMP_MAX_SHARDS, else FS_ERR_INPUT naming the text. */
-int cmp_shard_parse(const char *text, int *k, int *n);
+/* "K/N" with 1 <= K <= N <= FS_MAX_SHARDS, else FS_ERR_INPUT naming the text. */
+int fs_shard_parse(const char *text, int *k, int *n);
 /* r->owner for every work item: the longest estimated first (pixels x frame
  * file size x the method's declared cost, fs_method.cost), each to the shard
  * with the least estimated work so far (ties: the lower id, the lower K).
  * FS_ERR_RUNTIME for a method that declares no cost. */
-int cmp_shard_plan(cmp_run *r);
+int fs_shard_plan(fs_study_dir *r);
 /* Before any work: removes DIR/DONE; refuses arguments the manifest cannot hold. */
-int cmp_shard_start(const cmp_run *r);
+int fs_shard_start(const fs_study_dir *r);
 /* The manifest: its header once the provenance is known; finished, after the
  * shard's last item, with every item's record, then DONE. */
-int cmp_shard_write(const cmp_run *r, int finished);
+int fs_shard_write(const fs_study_dir *r, int finished);
 
 #endif

@@ -1,10 +1,10 @@
-/* Where compare's work items come from and go to (study.h, fs_study_io): the
+/* Where a study's work items come from and go to (study.h, fs_study_io): the
  * shard plan, the reference cache, --resume, merge's shard folders, and the
  * output folder's PNGs and EXRs. */
-#include "compare.h"
-#include "compare_merge.h"
-#include "compare_outdir.h"
-#include "compare_resume.h"
+#include "study_dir_state.h"
+#include "merge.h"
+#include "outputs_list.h"
+#include "resume.h"
 #include "fs_error.h"
 #include "method_params.h"
 #include "progress.h"
@@ -14,18 +14,18 @@
 static fs_item_where io_where(void *user, const fs_study *s, int item)
 {
     (void)s;
-    const cmp_run *r = user;
+    const fs_study_dir *r = user;
     if (r->merge) return FS_ITEM_LOAD;
-    return cmp_renders(r, item) ? FS_ITEM_RENDER : FS_ITEM_SKIP;
+    return fs_study_dir_renders(r, item) ? FS_ITEM_RENDER : FS_ITEM_SKIP;
 }
 
 /* A reference view from the cache, or rendered and stored in it. */
 static int io_ref_view(void *user, fs_study *s, int k, int f, fs_run *run, const fs_particles *p, const fs_grid *g,
                        fs_run_image *v, fs_stages *st, fs_study_made *made)
 {
-    cmp_run *r = user;
+    fs_study_dir *r = user;
     int frame = s->first_frame + f;
-    int rc = cli_cache_render(&r->cache, run, &s->scene, p, g, &s->prov, frame, v, st, made);
+    int rc = fs_ref_cache_render(&r->cache, run, &s->scene, p, g, &s->prov, frame, v, st, made);
     if (!rc && made->hit) fs_note("%s, frame %d: from the cache, %s", s->refs[k].spec, frame, made->entry);
     return rc;
 }
@@ -34,36 +34,37 @@ static int io_ref_view(void *user, fs_study *s, int k, int f, fs_run *run, const
 static int io_load(void *user, fs_study *s, int is_ref, int index, int f, const fs_provenance *prov, fs_run_image *v,
                    int *got)
 {
-    cmp_run *r = user;
+    fs_study_dir *r = user;
     *got = 0;
     if (r->merge) {
-        int rc = is_ref ? cmp_merge_ref(r, index, f, v) : cmp_merge_entry(r, index, f, v);
+        int rc = is_ref ? fs_merge_ref(r, index, f, v) : fs_merge_entry(r, index, f, v);
         *got = !rc;
         return rc;
     }
-    if (!r->resume || is_ref) return FS_OK;
+    if (!r->o->resume || is_ref) return FS_OK;
     char exr[1400];
-    cmp_view_path(r, NULL, s->entries[index].label, s->first_frame + f, "", "exr", exr, sizeof exr);
-    *got = cmp_resume_load(&s->entries[index], f, s->repeat, prov, exr, v);
+    fs_study_dir_view_path(r, NULL, s->entries[index].label, s->first_frame + f, "", "exr", exr, sizeof exr);
+    *got = fs_resume_load(&s->entries[index], f, s->repeat, prov, exr, v);
     r->resumed += *got;
     return FS_OK;
 }
 
 /* The PNGs first and the EXR last: a complete EXR means a finished item (--resume). */
-static int write_view(const cmp_run *r, const char *label, int frame, const cmp_view *v, const fs_provenance *prov)
+static int write_view(const fs_study_dir *r, const char *label, int frame, const fs_run_image *v,
+                      const fs_provenance *prov)
 {
     char path[1400];
-    cmp_view_path(r, NULL, label, frame, "", "png", path, sizeof path);
-    int rc = cmp_outdir_record(path);
+    fs_study_dir_view_path(r, NULL, label, frame, "", "png", path, sizeof path);
+    int rc = fs_outputs_record(path);
     if (!rc) rc = fs_write_render(path, &v->g, v->rgba, prov);
     const float *own = fs_gbuffer_aov(&v->g, FS_AOV_OWN);
     if (!rc && own) { /* the method's own appearance beside the shared shading */
-        cmp_view_path(r, NULL, label, frame, "_own", "png", path, sizeof path);
-        if (!(rc = cmp_outdir_record(path))) rc = fs_write_render(path, &v->g, own, prov);
+        fs_study_dir_view_path(r, NULL, label, frame, "_own", "png", path, sizeof path);
+        if (!(rc = fs_outputs_record(path))) rc = fs_write_render(path, &v->g, own, prov);
     }
-    cmp_view_path(r, NULL, label, frame, "", "exr", path, sizeof path);
-    if (!rc) rc = cmp_outdir_record(path);
-    return rc ? rc : fs_write_render_in_scene(path, &r->s.scene, &r->s.scene.camera, &v->g, v->rgba, prov);
+    fs_study_dir_view_path(r, NULL, label, frame, "", "exr", path, sizeof path);
+    if (!rc) rc = fs_outputs_record(path);
+    return rc ? rc : fs_write_render_in_scene(path, &r->s->scene, &r->s->scene.camera, &v->g, v->rgba, prov);
 }
 
 /* A reference's provenance names its label and parameters; it ran on the CPU. */
@@ -80,9 +81,9 @@ static void ref_provenance(const fs_study_ref *ref, fs_provenance *prov)
 
 static int io_store(void *user, fs_study *s, int is_ref, int index, int f, const fs_run_image *v, fs_provenance *prov)
 {
-    cmp_run *r = user;
+    fs_study_dir *r = user;
     if (is_ref) ref_provenance(&s->refs[index], prov);
-    else cmp_resume_stamp(prov, &s->entries[index], f);
+    else fs_resume_stamp(prov, &s->entries[index], f);
     return write_view(r, is_ref ? s->refs[index].label : s->entries[index].label, s->first_frame + f, v, prov);
 }
 
@@ -102,7 +103,7 @@ static void io_note(void *user, const char *text)
     fs_note("%s", text);
 }
 
-fs_study_io cmp_io(cmp_run *r)
+fs_study_io fs_study_dir_io(fs_study_dir *r)
 {
     fs_study_io io = {r, io_where, io_ref_view, io_load, io_store, io_done, io_note};
     return io;

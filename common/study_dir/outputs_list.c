@@ -1,6 +1,6 @@
 /* compare's output folder: the list of the files it wrote, and the refusal of a
- * folder that holds another run's outputs (compare_outdir.h). */
-#include "compare_outdir.h"
+ * folder that holds another run's outputs (outputs_list.h). */
+#include "outputs_list.h"
 #include "fs_error.h"
 #include "image_io.h"
 #include <dirent.h>
@@ -57,7 +57,7 @@ static int read_manifest(const char *dir, found *out, int *rc)
     char path[4200], *line = NULL;
     size_t cap = 0;
     ssize_t len;
-    snprintf(path, sizeof path, "%s/%s", dir, CMP_OUTPUTS_MANIFEST);
+    snprintf(path, sizeof path, "%s/%s", dir, FS_OUTPUTS_LIST);
     FILE *f = fopen(path, "r");
     if (!f) return 0;
     int nline = 0, ours = 0;
@@ -69,7 +69,7 @@ static int read_manifest(const char *dir, found *out, int *rc)
             if (!ours) break;
             continue;
         }
-        if (plain_name(line) && strcmp(line, CMP_OUTPUTS_MANIFEST) && is_file(dir, line)) *rc = add(out, line);
+        if (plain_name(line) && strcmp(line, FS_OUTPUTS_LIST) && is_file(dir, line)) *rc = add(out, line);
     }
     free(line);
     fclose(f);
@@ -151,13 +151,13 @@ static int remove_found(const char *dir, const found *f, int manifest)
         if (unlink(path) != 0 && errno != ENOENT)
             return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
     }
-    snprintf(path, sizeof path, "%s/%s", dir, CMP_OUTPUTS_MANIFEST);
+    snprintf(path, sizeof path, "%s/%s", dir, FS_OUTPUTS_LIST);
     if (manifest && unlink(path) != 0 && errno != ENOENT)
         return fs_fail(FS_ERR_RUNTIME, "%s: cannot remove: %s", path, strerror(errno));
     return FS_OK;
 }
 
-int cmp_outdir_claim(const char *dir, const char *what, int resume, int force)
+int fs_outputs_claim(const char *dir, const char *what, int resume, int force)
 {
     found f = {0};
     int rc = FS_OK, manifest = read_manifest(dir, &f, &rc);
@@ -175,12 +175,12 @@ int cmp_outdir_claim(const char *dir, const char *what, int resume, int force)
     return rc;
 }
 
-int cmp_outdir_record(const char *path)
+int fs_outputs_record(const char *path)
 {
     char list[4200];
     const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
-    if (slash) snprintf(list, sizeof list, "%.*s/%s", (int)(slash - path), path, CMP_OUTPUTS_MANIFEST);
-    else snprintf(list, sizeof list, "%s", CMP_OUTPUTS_MANIFEST);
+    if (slash) snprintf(list, sizeof list, "%.*s/%s", (int)(slash - path), path, FS_OUTPUTS_LIST);
+    else snprintf(list, sizeof list, "%s", FS_OUTPUTS_LIST);
     int fresh = access(list, F_OK) != 0;
     FILE *f = fopen(list, "a");
     if (!f) return fs_fail(FS_ERR_RUNTIME, "%s: cannot write: %s", list, strerror(errno));

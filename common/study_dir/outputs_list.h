@@ -1,4 +1,4 @@
-/* compare's output folder (docs/DESIGN.md, "Output folders"): which files in it
+/* A study's output folder (docs/DESIGN.md, "Output folders"): which files in it
  * are fluidsurf's own, and the refusal of a folder that holds another run's.
  *
  * Every file compare (or merge) renames into the folder is recorded, as it is
@@ -8,18 +8,18 @@
  * recognised by their fixed names (metrics.csv, report.md, panel.png, ...), and
  * its images as the EXRs that carry fluidsurf's provenance with the PNGs named
  * after them (LABEL.png, LABEL_own.png, diff_LABEL.png). */
-#ifndef FS_COMPARE_OUTDIR_H
-#define FS_COMPARE_OUTDIR_H
+#ifndef FS_OUTPUTS_LIST_H
+#define FS_OUTPUTS_LIST_H
 
-#define CMP_OUTPUTS_MANIFEST "fluidsurf-outputs.txt"
+#define FS_OUTPUTS_LIST "fluidsurf-outputs.txt"
 
 /* Before anything is written into dir: FS_OK when it holds no output of an
  * earlier run (fresh, empty, only other files), or resume is set (what matches
- * is kept, compare_resume.h). Else FS_ERR_INPUT in one line naming dir and what
+ * is kept, resume.h). Else FS_ERR_INPUT in one line naming dir and what
  * it holds, unless force: then fluidsurf's own files are removed first, never
  * any other file. what: the command, for the message ("compare", "merge"). */
-int cmp_outdir_claim(const char *dir, const char *what, int resume, int force);
+int fs_outputs_claim(const char *dir, const char *what, int resume, int force);
 /* Records path ("DIR/NAME", a file just renamed into place) in DIR's list. */
-int cmp_outdir_record(const char *path);
+int fs_outputs_record(const char *path);
 
 #endif

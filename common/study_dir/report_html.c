@@ -3,7 +3,7 @@
  * numbers shown are the CSVs' own. */
 #include "report_html.h"
 #include "text_out.h"
-#include "compare_outdir.h"
+#include "outputs_list.h"
 #include "fs_error.h"
 #include "output_file.h"
 #include <dirent.h>
@@ -134,8 +134,8 @@ static int write_file(const char *dir, char *const text[NTABLES], const char *re
 {
     char final[4200], list[4200];
     snprintf(final, sizeof final, "%s/report.html", dir);
-    snprintf(list, sizeof list, "%s/%s", dir, CMP_OUTPUTS_MANIFEST);
-    int rc = record || access(list, F_OK) == 0 ? cmp_outdir_record(final) : FS_OK;
+    snprintf(list, sizeof list, "%s/%s", dir, FS_OUTPUTS_LIST);
+    int rc = record || access(list, F_OK) == 0 ? fs_outputs_record(final) : FS_OK;
     static fs_output out;
     if (rc || (rc = fs_output_open(&out, final))) return rc;
     rc = write_page(out.f, dir, text, report_md);
@@ -143,7 +143,7 @@ static int write_file(const char *dir, char *const text[NTABLES], const char *re
     return rc ? rc : crc;
 }
 
-int cmp_write_report_html(const char *dir, int record)
+int fs_report_html_write(const char *dir, int record)
 {
     char *text[NTABLES] = {0}, *md = NULL;
     int rc = FS_OK;

@@ -1,9 +1,9 @@
 /* fluidsurf merge: reading and checking the shards, loading their work items,
- * publishing the joined output (compare_merge.h). */
-#include "compare_merge.h"
-#include "compare_outdir.h"
-#include "compare_resume.h"
-#include "compare_shard.h"
+ * publishing the joined output (merge.h). */
+#include "merge.h"
+#include "outputs_list.h"
+#include "resume.h"
+#include "shard.h"
 #include "fs_error.h"
 #include "output_file.h"
 #include "provenance.h"
@@ -18,11 +18,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* Splits line at tabs in place into at most CMP_MERGE_MAX_FIELDS fields; their count. */
-int cmp_merge_split(char *line, char **field)
+/* Splits line at tabs in place into at most FS_MERGE_MAX_FIELDS fields; their count. */
+int fs_merge_split(char *line, char **field)
 {
     int n = 0;
-    for (char *s = line; n < CMP_MERGE_MAX_FIELDS;) {
+    for (char *s = line; n < FS_MERGE_MAX_FIELDS;) {
         field[n++] = s;
         char *tab = strchr(s, '\t');
         if (!tab) break;
@@ -42,8 +42,8 @@ static int push(char ***v, int *n, const char *s)
     return (grown[(*n)++] = dup_or_null(s)) != NULL;
 }
 
-/* One header record into d; the item lines are kept whole for cmp_merge_map. */
-static int header_record(cmp_shard_dir *d, char **fd, int nf, const char *raw)
+/* One header record into d; the item lines are kept whole for fs_merge_map. */
+static int header_record(fs_shard_dir *d, char **fd, int nf, const char *raw)
 {
     const char *key = fd[0];
     if (!strcmp(key, "shard") && nf == 3) d->k = atoi(fd[1]), d->n = atoi(fd[2]);
@@ -62,20 +62,20 @@ static int header_record(cmp_shard_dir *d, char **fd, int nf, const char *raw)
 
 /* DIR/shard.txt into d: 1 when complete (its last record is "end"), 0 when
  * the shard did not finish, else an error. */
-static int read_manifest(const char *dir, cmp_shard_dir *d)
+static int read_manifest(const char *dir, fs_shard_dir *d)
 {
     char path[1200], *line = NULL, raw[8192];
     size_t cap = 0;
-    snprintf(path, sizeof path, "%s/%s", dir, CMP_SHARD_MANIFEST);
+    snprintf(path, sizeof path, "%s/%s", dir, FS_SHARD_MANIFEST);
     FILE *f = fopen(path, "r");
-    if (!f) return -fs_fail(FS_ERR_INPUT, "%s: not a shard folder of compare --shard (no %s)", dir, CMP_SHARD_MANIFEST);
+    if (!f) return -fs_fail(FS_ERR_INPUT, "%s: not a shard folder of compare --shard (no %s)", dir, FS_SHARD_MANIFEST);
     int rc = FS_OK, complete = 0, nline = 0;
     ssize_t len;
     while (!rc && (len = getline(&line, &cap, f)) > 0) {
         if (line[len - 1] == '\n') line[--len] = 0;
-        char *fd[CMP_MERGE_MAX_FIELDS];
+        char *fd[FS_MERGE_MAX_FIELDS];
         snprintf(raw, sizeof raw, "%s", line);
-        int nf = cmp_merge_split(line, fd), ok = 1;
+        int nf = fs_merge_split(line, fd), ok = 1;
         if (complete) ok = -1; /* nothing follows "end" */
         else if (nline++ == 0) ok = !strcmp(fd[0], "fluidsurf-shard") && nf == 2 && !strcmp(fd[1], "1") ? 1 : -1;
         else if (!strcmp(fd[0], "end") && nf == 1) complete = 1;
@@ -91,7 +91,7 @@ static int read_manifest(const char *dir, cmp_shard_dir *d)
 }
 
 /* The first shard's value of a header field against another's: a refusal naming both. */
-static int same(const cmp_shard_dir *a, const cmp_shard_dir *b, const char *what, const char *va, const char *vb)
+static int same(const fs_shard_dir *a, const fs_shard_dir *b, const char *what, const char *va, const char *vb)
 {
     if (!strcmp(va, vb)) return FS_OK;
     return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: %s %s, not %s", b->dir, a->dir, what, vb,
@@ -118,7 +118,7 @@ static const char *next_study_arg(char **argv, int argc, int *i)
     return *i < argc ? argv[(*i)++] : NULL;
 }
 
-static int same_command(const cmp_shard_dir *a, const cmp_shard_dir *b)
+static int same_command(const fs_shard_dir *a, const fs_shard_dir *b)
 {
     int i = 0, j = 0;
     const char *x, *y;
@@ -133,7 +133,7 @@ static int same_command(const cmp_shard_dir *a, const cmp_shard_dir *b)
 }
 
 /* Belonging together: one shard count, commit, scene and command. */
-static int check_peer(const cmp_shard_dir *a, const cmp_shard_dir *b)
+static int check_peer(const fs_shard_dir *a, const fs_shard_dir *b)
 {
     if (a->n != b->n)
         return fs_fail(FS_ERR_INPUT, "%s: not a shard of the same study as %s: shard %d/%d, not of %d", b->dir, a->dir,
@@ -148,18 +148,18 @@ static int check_peer(const cmp_shard_dir *a, const cmp_shard_dir *b)
 }
 
 /* Each K once, none missing (all named), every shard finished. */
-static int check_set(cmp_merge *m, cmp_shard_dir *got, const int *complete, int ndirs)
+static int check_set(fs_merge *m, fs_shard_dir *got, const int *complete, int ndirs)
 {
     int n = got[0].n;
     m->shards = calloc(n, sizeof *m->shards);
     if (!m->shards) return fs_fail(FS_ERR_RUNTIME, "out of memory");
     m->n = n;
     for (int i = 0; i < ndirs; i++) {
-        cmp_shard_dir *slot = &m->shards[got[i].k - 1];
+        fs_shard_dir *slot = &m->shards[got[i].k - 1];
         if (slot->k) return fs_fail(FS_ERR_INPUT, "%s and %s are both shard %d/%d", slot->dir, got[i].dir, got[i].k, n);
         if (!complete[i])
             return fs_fail(FS_ERR_INPUT, "%s: shard %d/%d did not finish (no %s marker)", got[i].dir, got[i].k, n,
-                           CMP_SHARD_DONE);
+                           FS_SHARD_DONE);
         *slot = got[i];
         memset(&got[i], 0, sizeof got[i]); /* owned by the slot now */
     }
@@ -177,7 +177,7 @@ static int check_set(cmp_merge *m, cmp_shard_dir *got, const int *complete, int 
     return FS_OK;
 }
 
-static void free_dir(cmp_shard_dir *d)
+static void free_dir(fs_shard_dir *d)
 {
     for (int i = 0; i < d->argc; i++) free(d->argv[i]);
     for (int i = 0; i < d->nlines; i++) free(d->lines[i]);
@@ -185,22 +185,22 @@ static void free_dir(cmp_shard_dir *d)
 }
 
 /* A done shard's manifest is complete; one without DONE did not finish. */
-static int read_dir(const char *dir, cmp_shard_dir *d, int *complete)
+static int read_dir(const char *dir, fs_shard_dir *d, int *complete)
 {
     char done[1200];
     if (!realpath(dir, d->dir))
         return fs_fail(FS_ERR_INPUT, "%s: cannot open the shard folder: %s", dir, strerror(errno));
     int c = read_manifest(d->dir, d);
     if (c < 0) return -c;
-    snprintf(done, sizeof done, "%s/%s", d->dir, CMP_SHARD_DONE);
+    snprintf(done, sizeof done, "%s/%s", d->dir, FS_SHARD_DONE);
     *complete = c && access(done, F_OK) == 0;
     return FS_OK;
 }
 
-int cmp_merge_read(cmp_merge *m, int ndirs, const char *const *dirs, const char *out)
+int fs_merge_read(fs_merge *m, int ndirs, const char *const *dirs, const char *out)
 {
     memset(m, 0, sizeof *m);
-    cmp_shard_dir *got = calloc(ndirs, sizeof *got);
+    fs_shard_dir *got = calloc(ndirs, sizeof *got);
     int *complete = calloc(ndirs, sizeof *complete),
         rc = got && complete ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
     for (int i = 0; i < ndirs && !rc; i++) rc = read_dir(dirs[i], &got[i], &complete[i]);
@@ -213,23 +213,23 @@ int cmp_merge_read(cmp_merge *m, int ndirs, const char *const *dirs, const char 
 }
 
 /* The record's view: its kind, label and frame must be item id's in this plan. */
-static int record_matches(const cmp_run *r, int id, char **fd)
+static int record_matches(const fs_study_dir *r, int id, char **fd)
 {
-    int per = r->s.nframes, is_ref = id / per < r->s.nrefs, index = is_ref ? id / per : id / per - r->s.nrefs,
+    int per = r->s->nframes, is_ref = id / per < r->s->nrefs, index = is_ref ? id / per : id / per - r->s->nrefs,
         f = id % per;
-    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != r->s.first_frame + f) return 0;
-    if (is_ref) return !strcmp(fd[2], r->s.refs[index].spec);
-    return !r->s.entries[index].imported && !strcmp(fd[2], r->s.entries[index].label);
+    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != r->s->first_frame + f) return 0;
+    if (is_ref) return !strcmp(fd[2], r->s->refs[index].spec);
+    return !r->s->entries[index].imported && !strcmp(fd[2], r->s->entries[index].label);
 }
 
-static int map_shard(cmp_merge *m, const cmp_run *r, int s)
+static int map_shard(fs_merge *m, const fs_study_dir *r, int s)
 {
-    const cmp_shard_dir *d = &m->shards[s];
-    int total = cmp_item_count(r);
+    const fs_shard_dir *d = &m->shards[s];
+    int total = fs_study_item_count(r->s);
     for (int j = 0; j < d->nlines; j++) {
-        char copy[8192], *fd[CMP_MERGE_MAX_FIELDS];
+        char copy[8192], *fd[FS_MERGE_MAX_FIELDS];
         snprintf(copy, sizeof copy, "%s", d->lines[j]);
-        cmp_merge_split(copy, fd);
+        fs_merge_split(copy, fd);
         char *end;
         long id = strtol(fd[1], &end, 10);
         if (*end || id < 0 || id >= total || !record_matches(r, (int)id, fd))
@@ -244,14 +244,14 @@ static int map_shard(cmp_merge *m, const cmp_run *r, int s)
     return FS_OK;
 }
 
-int cmp_merge_map(cmp_merge *m, const cmp_run *r)
+int fs_merge_map(fs_merge *m, const fs_study_dir *r)
 {
     char hash[40];
-    snprintf(hash, sizeof hash, "%016llx", r->s.scene.hash);
+    snprintf(hash, sizeof hash, "%016llx", r->s->scene.hash);
     if (strcmp(hash, m->shards[0].scene_hash))
         return fs_fail(FS_ERR_INPUT, "%s: the scene has changed since the shards ran (hash %s, shards %s)",
-                       r->s.scene.path[0] ? r->s.scene.path : r->s.scene.source, hash, m->shards[0].scene_hash);
-    int total = cmp_item_count(r);
+                       r->s->scene.path[0] ? r->s->scene.path : r->s->scene.source, hash, m->shards[0].scene_hash);
+    int total = fs_study_item_count(r->s);
     m->record = calloc(total, sizeof *m->record);
     m->from = calloc(total, sizeof *m->from);
     if (!m->record || !m->from) return fs_fail(FS_ERR_RUNTIME, "out of memory");
@@ -259,19 +259,19 @@ int cmp_merge_map(cmp_merge *m, const cmp_run *r)
         int rc = map_shard(m, r, s);
         if (rc) return rc;
     }
-    for (int f = 0; f < r->s.nframes; f++)
-        for (int i = -r->s.nrefs; i < r->s.nentries; i++) {
-            int is_ref = i < 0, index = is_ref ? i + r->s.nrefs : i;
-            if (!is_ref && r->s.entries[index].imported) continue;
-            if (!m->record[cmp_item_id(r, is_ref, index, f)])
+    for (int f = 0; f < r->s->nframes; f++)
+        for (int i = -r->s->nrefs; i < r->s->nentries; i++) {
+            int is_ref = i < 0, index = is_ref ? i + r->s->nrefs : i;
+            if (!is_ref && r->s->entries[index].imported) continue;
+            if (!m->record[fs_study_item_id(r->s, is_ref, index, f)])
                 return fs_fail(FS_ERR_INPUT, "no shard made %s, frame %d: the shards were planned differently",
-                               is_ref ? r->s.refs[index].spec : r->s.entries[index].label, r->s.first_frame + f);
+                               is_ref ? r->s->refs[index].spec : r->s->entries[index].label, r->s->first_frame + f);
         }
     return FS_OK;
 }
 
 /* "a", or "a | b | ..." over the shards' distinct values of one field. */
-static void joined(const cmp_merge *m, size_t offset, char *buf, int size)
+static void joined(const fs_merge *m, size_t offset, char *buf, int size)
 {
     int at = 0;
     buf[0] = 0;
@@ -283,21 +283,58 @@ static void joined(const cmp_merge *m, size_t offset, char *buf, int size)
     }
 }
 
-void cmp_merge_provenance(const cmp_merge *m, fs_provenance *p)
+void fs_merge_provenance(const fs_merge *m, fs_provenance *p)
 {
     char v[640];
-    joined(m, offsetof(cmp_shard_dir, renderer), v, sizeof v);
+    joined(m, offsetof(fs_shard_dir, renderer), v, sizeof v);
     fs_provenance_set(p, "gl_renderer", v);
-    joined(m, offsetof(cmp_shard_dir, gl_version), v, sizeof v);
+    joined(m, offsetof(fs_shard_dir, gl_version), v, sizeof v);
     fs_provenance_set(p, "gl_version", v);
-    joined(m, offsetof(cmp_shard_dir, threads), v, sizeof v);
+    joined(m, offsetof(fs_shard_dir, threads), v, sizeof v);
     fs_provenance_set(p, "threads", v);
     snprintf(v, sizeof v, "%d", m->n);
     fs_provenance_set(p, "shards", v);
 }
 
-void cmp_merge_free(cmp_merge *m)
+void fs_merge_free(fs_merge *m)
 {
     for (int s = 0; m->shards && s < m->n; s++) free_dir(&m->shards[s]);
     free(m->shards), free(m->record), free(m->from);
+}
+
+/* path made absolute against the current folder (it need not exist). */
+static int absolute(const char *path, char *out, int size)
+{
+    char cwd[4096];
+    if (path[0] == '/') return snprintf(out, size, "%s", path) < size ? FS_OK : FS_ERR_INPUT;
+    if (!getcwd(cwd, sizeof cwd)) return fs_fail(FS_ERR_RUNTIME, "cannot read the current folder: %s", strerror(errno));
+    if (snprintf(out, size, "%s/%s", cwd, path) >= size) return fs_fail(FS_ERR_INPUT, "%s: path too long", path);
+    return FS_OK;
+}
+
+/* DIR, when it exists, is a writable folder, none of the shards' and holds no
+ * other run's outputs (with force: they are removed, outputs_list.h). */
+static int check_out(const fs_merge *m, int force)
+{
+    struct stat st;
+    char real[4096];
+    if (stat(m->out, &st) == 0) {
+        if (!S_ISDIR(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: exists and is not a folder", m->out_arg);
+        if (access(m->out, W_OK) != 0) return fs_fail(FS_ERR_INPUT, "%s: output folder is not writable", m->out_arg);
+        for (int s = 0; realpath(m->out, real) && s < m->n; s++)
+            if (!strcmp(real, m->shards[s].dir))
+                return fs_fail(FS_ERR_INPUT, "%s: is shard %d's folder; merge into another", m->out_arg, s + 1);
+        return fs_outputs_claim(m->out_arg, "merge", 0, force);
+    }
+    return FS_OK; /* made once the staging folder beside it could be */
+}
+
+int fs_merge_open(fs_merge *m, int force)
+{
+    int rc = absolute(m->out_arg, m->out, sizeof m->out);
+    if (!rc) rc = check_out(m, force);
+    if (!rc) snprintf(m->staging, sizeof m->staging, "%s.merging-%ld", m->out, (long)getpid());
+    if (!rc && mkdir(m->staging, 0755) != 0)
+        rc = fs_fail(FS_ERR_INPUT, "%s: cannot create the output folder: %s", m->out_arg, strerror(errno));
+    return rc;
 }

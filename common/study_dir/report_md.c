@@ -1,7 +1,7 @@
 /* compare's report.md: the command, the panel, the metrics per reference, the
  * files' labels, where the references came from, the counters, renderers and
  * provenance. */
-#include "compare.h"
+#include "study_dir_state.h"
 #include "counters_csv.h"
 #include "method_params.h"
 #include "study_tables.h"
@@ -20,20 +20,21 @@ static void md_counts(FILE *f, const char *name, const char *variant, const fs_s
     fputs(" |\n", f);
 }
 
-static void write_counter_table(const cmp_run *r, FILE *f)
+static void write_counter_table(const fs_study_dir *r, FILE *f)
 {
-    fprintf(f, "## Work counters%s\n\n| method | variant", r->s.nframes > 1 ? " (first frame)" : "");
+    fprintf(f, "## Work counters%s\n\n| method | variant", r->s->nframes > 1 ? " (first frame)" : "");
     for (int c = 0; c < FS_NCOUNTERS; c++) fprintf(f, " | %s", fs_counter_name(c));
     fputs(" |\n|---|---", f);
     for (int c = 0; c < FS_NCOUNTERS; c++) fputs("|---", f);
     fputs("|\n", f);
-    for (int k = 0; k < r->s.nrefs; k++)
-        if (!r->s.refs[k].analytic)
-            md_counts(f, r->s.refs[k].spec, "ground truth", &r->s.refs[k].made[0].counts, r->s.refs[k].v.m->counters);
-    for (int i = 0; i < r->s.nentries; i++)
-        if (!r->s.entries[i].imported)
-            md_counts(f, r->s.entries[i].name, r->s.entries[i].variant, &r->s.entries[i].counts[0],
-                      r->s.entries[i].v.m->counters);
+    for (int k = 0; k < r->s->nrefs; k++)
+        if (!r->s->refs[k].analytic)
+            md_counts(f, r->s->refs[k].spec, "ground truth", &r->s->refs[k].made[0].counts,
+                      r->s->refs[k].v.m->counters);
+    for (int i = 0; i < r->s->nentries; i++)
+        if (!r->s->entries[i].imported)
+            md_counts(f, r->s->entries[i].name, r->s->entries[i].variant, &r->s->entries[i].counts[0],
+                      r->s->entries[i].v.m->counters);
     fputs("\nTotals over the stages of one counting render, made after the timed ones on the same inputs; "
           "per stage and frame in `counters.csv`. The counts do not depend on the machine: docs/DESIGN.md "
           "(\"Work counters\") defines each unit. — marks a counter the method does not report.\n\n",
@@ -49,24 +50,24 @@ static void md_num(FILE *f, double v, const char *fmt)
 }
 
 /* Where each reference came from: rendered, or which cache entry. */
-static void write_ref_sources(const cmp_run *r, FILE *f)
+static void write_ref_sources(const fs_study_dir *r, FILE *f)
 {
     fputs("## References\n\n", f);
-    for (int k = 0; k < r->s.nrefs; k++) {
-        const cmp_ref *ref = &r->s.refs[k];
+    for (int k = 0; k < r->s->nrefs; k++) {
+        const fs_study_ref *ref = &r->s->refs[k];
         if (ref->analytic) {
             fprintf(f, "- `%s`: the ideal shape of the synthetic scene\n", ref->spec);
             continue;
         }
         int stored = 0;
-        for (int fr = 0; fr < r->s.nframes; fr++) stored += ref->made[fr].entry[0] != 0;
+        for (int fr = 0; fr < r->s->nframes; fr++) stored += ref->made[fr].entry[0] != 0;
         if (!stored) fprintf(f, "- `%s`: rendered; no cache (%s)\n", ref->spec, r->cache.why);
-        else fprintf(f, "- `%s`: %d of %d frame(s) from the cache\n", ref->spec, ref->hits, r->s.nframes);
-        for (int fr = 0; fr < r->s.nframes; fr++) {
-            const cli_cache_view *m = &ref->made[fr];
+        else fprintf(f, "- `%s`: %d of %d frame(s) from the cache\n", ref->spec, ref->hits, r->s->nframes);
+        for (int fr = 0; fr < r->s->nframes; fr++) {
+            const fs_study_made *m = &ref->made[fr];
             if (!m->entry[0]) continue;
             fprintf(f, "  - ");
-            if (r->s.sequence) fprintf(f, "frame %d: ", r->s.first_frame + fr);
+            if (r->s->sequence) fprintf(f, "frame %d: ", r->s->first_frame + fr);
             fprintf(f, "%s `%s`\n", m->hit ? "from the cache:" : "rendered, stored as", m->entry);
         }
     }
@@ -77,11 +78,11 @@ static void write_ref_sources(const cmp_run *r, FILE *f)
 }
 
 /* The labels that name the files, each with its method and parameters. */
-static void write_labels(const cmp_run *r, FILE *f)
+static void write_labels(const fs_study_dir *r, FILE *f)
 {
     fputs("## Files\n\nEach view is written as `LABEL.png` (shaded), `LABEL.exr` (the G-buffer with its provenance)",
           f);
-    fputs(r->s.sequence ? ", per frame as `LABEL_fNNNN.png` and `.exr`," : "", f);
+    fputs(r->s->sequence ? ", per frame as `LABEL_fNNNN.png` and `.exr`," : "", f);
     fputs(
         " and, for a method, `diff_LABEL.png` (heatmaps against the first reference). A label holds only letters, "
         "digits, `_` and `-`: the method, then `_PARAM-VALUE` for each swept parameter, with `.` in a value written "
@@ -89,8 +90,8 @@ static void write_labels(const cmp_run *r, FILE *f)
         "| label | method | settings | every parameter |\n|---|---|---|---|\n",
         f);
     char params[1024];
-    for (int k = 0; k < r->s.nrefs; k++) {
-        const cmp_ref *ref = &r->s.refs[k];
+    for (int k = 0; k < r->s->nrefs; k++) {
+        const fs_study_ref *ref = &r->s->refs[k];
         if (ref->analytic) {
             fprintf(f, "| `%s` | %s (ground truth) | — | the ideal shape of the synthetic scene |\n", ref->label,
                     ref->spec);
@@ -101,8 +102,8 @@ static void write_labels(const cmp_run *r, FILE *f)
         fprintf(f, "| `%s` | %s (ground truth) | %s | %s |\n", ref->label, ref->v.m->name, colon ? colon + 1 : "—",
                 params);
     }
-    for (int i = 0; i < r->s.nentries; i++) {
-        const cmp_entry *e = &r->s.entries[i];
+    for (int i = 0; i < r->s->nentries; i++) {
+        const fs_study_entry *e = &r->s->entries[i];
         if (e->imported) {
             fprintf(f, "| `%s` | imported | — | %s |\n", e->label, e->file);
             continue;
@@ -113,27 +114,27 @@ static void write_labels(const cmp_run *r, FILE *f)
     fputc('\n', f);
 }
 
-int cmp_write_report(const cmp_run *r)
+int fs_study_dir_write_report(const fs_study_dir *r)
 {
-    cmp_file cf;
-    int rc = cmp_open(r, "report.md", &cf);
+    fs_output cf;
+    int rc = fs_study_dir_open(r, "report.md", &cf);
     if (rc) return rc;
     FILE *f = cf.f;
-    fprintf(f, "# fluidsurf compare\n\nReproduce with:\n\n    %s\n\n", r->command);
+    fprintf(f, "# fluidsurf compare\n\nReproduce with:\n\n    %s\n\n", r->o->command);
     fprintf(f, "![panel](panel.png)\n\n");
-    for (int k = 0; k < r->s.nrefs; k++) {
-        fprintf(f, "## Against `%s`%s\n\n", r->s.refs[k].spec, r->s.nframes > 1 ? " (mean over frames)" : "");
+    for (int k = 0; k < r->s->nrefs; k++) {
+        fprintf(f, "## Against `%s`%s\n\n", r->s->refs[k].spec, r->s->nframes > 1 ? " (mean over frames)" : "");
         fputs(
             "| method | variant | IoU | depth bias (r) | depth RMSE (r) | depth p95 (r) | normal mean (deg) | normal p95 (deg) "
             "| interior normal (deg) | PSNR (dB) | SSIM | frame (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
             f);
-        for (int i = 0; i < r->s.nentries; i++) {
-            const cmp_entry *e = &r->s.entries[i];
-            int nf = e->imported ? 1 : r->s.nframes;
+        for (int i = 0; i < r->s->nentries; i++) {
+            const fs_study_entry *e = &r->s->entries[i];
+            int nf = e->imported ? 1 : r->s->nframes;
             double acc[FS_STUDY_ROW_VALUES] = {0};
             for (int fr = 0; fr < nf; fr++) {
                 double v[FS_STUDY_ROW_VALUES];
-                fs_study_row_values(&e->metrics[k * r->s.nframes + fr], e->frame_ms[fr], v);
+                fs_study_row_values(&e->metrics[k * r->s->nframes + fr], e->frame_ms[fr], v);
                 for (int j = 0; j < FS_STUDY_ROW_VALUES; j++) acc[j] += v[j] / nf;
             }
             fprintf(f, "| %s | %s", e->name, e->variant[0] ? e->variant : "—");
@@ -152,15 +153,16 @@ int cmp_write_report(const cmp_run *r)
             "cover; \"interior\" keeps pixels at least 3 px from either silhouette. PSNR and SSIM (Wang et al. 2004) "
             "are on sRGB luminance over the union of the coverage masks. Frame times are medians of %d runs after a "
             "warm-up; per-stage times are in `timings.csv`. Heatmap scales: normal %g deg, depth %g r.\n\n",
-            r->s.scene.radius, r->s.repeat, r->normal_scale_deg, r->depth_scale_r);
+            r->s->scene.radius, r->s->repeat, r->normal_scale_deg, r->depth_scale_r);
     write_labels(r, f);
     write_ref_sources(r, f);
-    if (r->s.counters) write_counter_table(r, f);
+    if (r->s->counters) write_counter_table(r, f);
     fputs("## Renderers\n\n", f);
-    for (int i = 0; i < r->s.nentries; i++) fprintf(f, "- %s: %s\n", r->s.entries[i].label, r->s.entries[i].renderer);
+    for (int i = 0; i < r->s->nentries; i++)
+        fprintf(f, "- %s: %s\n", r->s->entries[i].label, r->s->entries[i].renderer);
     fputs("\nOn OSMesa (llvmpipe) the OpenGL stages run on the same CPU cores as the C code: these timings say nothing "
           "about GPU speed.\n\n## Provenance\n\n",
           f);
-    for (int i = 0; i < r->s.prov.n; i++) fprintf(f, "- `%s`: %s\n", r->s.prov.name[i], r->s.prov.value[i]);
-    return cmp_close(&cf);
+    for (int i = 0; i < r->s->prov.n; i++) fprintf(f, "- `%s`: %s\n", r->s->prov.name[i], r->s->prov.value[i]);
+    return fs_study_dir_close(&cf);
 }

@@ -1,5 +1,5 @@
-/* Stamping and reloading the work items of compare --resume (compare_resume.h). */
-#include "compare_resume.h"
+/* Stamping and reloading the work items of compare --resume (resume.h). */
+#include "resume.h"
 #include "hash.h"
 #include "image_io.h"
 #include "render_output.h"
@@ -20,7 +20,7 @@ static void item_key(const fs_provenance *prov, char hex[FS_DIGEST_HEX])
     fs_digest_hex(fs_hash_digest(&h), hex);
 }
 
-int cmp_runs_format(const fs_stages *runs, int nruns, char *buf, int size)
+int fs_runs_format(const fs_stages *runs, int nruns, char *buf, int size)
 {
     int at = 0;
     buf[0] = 0;
@@ -36,14 +36,14 @@ int cmp_runs_format(const fs_stages *runs, int nruns, char *buf, int size)
     return 1;
 }
 
-void cmp_resume_stamp(fs_provenance *prov, const cmp_entry *e, int f)
+void fs_resume_stamp(fs_provenance *prov, const fs_study_entry *e, int f)
 {
     char key[FS_DIGEST_HEX], ms[40], runs[640];
     item_key(prov, key);
     snprintf(ms, sizeof ms, "%.17g", e->frame_ms[f]);
     fs_provenance_set(prov, "item", key);
     fs_provenance_set(prov, "frame_ms", ms);
-    if (f == 0 && cmp_runs_format(e->runs, e->nruns, runs, sizeof runs)) fs_provenance_set(prov, "runs", runs);
+    if (f == 0 && fs_runs_format(e->runs, e->nruns, runs, sizeof runs)) fs_provenance_set(prov, "runs", runs);
 }
 
 /* A stage name as the one static string the tables compare by pointer or text. */
@@ -57,7 +57,7 @@ static const char *intern(const char *name)
     return strcpy(pool[n++], name);
 }
 
-int cmp_runs_parse(const char *s, fs_stages *runs, int max)
+int fs_runs_parse(const char *s, fs_stages *runs, int max)
 {
     int nruns = 0;
     fs_stages st = {0};
@@ -79,17 +79,17 @@ int cmp_runs_parse(const char *s, fs_stages *runs, int max)
     return *s ? 0 : nruns;
 }
 
-int cmp_resume_load(cmp_entry *e, int f, int repeat, const fs_provenance *prov, const char *exr, cmp_view *v)
+int fs_resume_load(fs_study_entry *e, int f, int repeat, const fs_provenance *prov, const char *exr, fs_run_image *v)
 {
     char want[FS_DIGEST_HEX], have[FS_DIGEST_HEX], ms[64], runs[640];
     item_key(prov, want);
     if (fs_read_image_attr(exr, "fluidsurf:item", have, sizeof have) != 1 || strcmp(want, have)) return 0;
     if (fs_read_image_attr(exr, "fluidsurf:frame_ms", ms, sizeof ms) != 1) return 0;
-    fs_stages got[CMP_MAX_RUNS];
+    fs_stages got[FS_STUDY_MAX_RUNS];
     int n = 0; /* an item timed with another --repeat is rendered again: e->runs holds `repeat` */
     if (f == 0 &&
         (fs_read_image_attr(exr, "fluidsurf:runs", runs, sizeof runs) != 1 ||
-         (n = cmp_runs_parse(runs, got, CMP_MAX_RUNS)) != repeat))
+         (n = fs_runs_parse(runs, got, FS_STUDY_MAX_RUNS)) != repeat))
         return 0;
     float r;
     memset(v, 0, sizeof *v);

@@ -16,14 +16,14 @@ static int default_dir(char *buf, int size)
     return fs_fail(FS_ERR_RUNTIME, "no cache folder: neither XDG_CACHE_HOME nor HOME is set");
 }
 
-static void turn_off(cli_cache *c)
+static void turn_off(fs_ref_cache *c)
 {
     snprintf(c->why, sizeof c->why, "%s", fs_error_message());
     fprintf(stderr, "fluidsurf: warning: %s; continuing without the cache\n", c->why);
     c->on = 0;
 }
 
-void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet)
+void fs_ref_cache_open(fs_ref_cache *c, const char *dir, int use_default, int quiet)
 {
     char buf[FS_GCACHE_PATH];
     memset(c, 0, sizeof *c);
@@ -40,7 +40,7 @@ void cli_cache_open(cli_cache *c, const char *dir, int use_default, int quiet)
 
 /* The entry of key into im->g (and its counts): 1 on a hit; a bad entry is
  * named on stderr; one without the counts wanted is a miss. */
-static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im, fs_stages *counts)
+static int load_entry(fs_ref_cache *c, fs_digest key, const fs_scene *s, fs_run_image *im, fs_stages *counts)
 {
     fs_gbuffer g;
     char text[FS_GCACHE_COUNTS];
@@ -57,7 +57,7 @@ static int load_entry(cli_cache *c, fs_digest key, const fs_scene *s, fs_run_ima
     return 1;
 }
 
-static void store_entry(cli_cache *c, fs_digest key, fs_run *run, const fs_provenance *base, int frame,
+static void store_entry(fs_ref_cache *c, fs_digest key, fs_run *run, const fs_provenance *base, int frame,
                         const fs_run_image *im, const fs_stages *counts)
 {
     fs_provenance prov;
@@ -90,8 +90,8 @@ static float floor_y(const fs_scene *s, const fs_particles *p, const fs_grid *g)
     return g ? fs_scene_floor(s, g) : fs_scene_floor_of(s, p);
 }
 
-int cli_cache_render(cli_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
-                     const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, cli_cache_view *out)
+int fs_ref_cache_render(fs_ref_cache *c, fs_run *run, const fs_scene *s, const fs_particles *p, const fs_grid *g,
+                        const fs_provenance *base, int frame, fs_run_image *im, fs_stages *st, fs_study_made *out)
 {
     fs_stages local = {0};
     if (!st) st = &local;
