@@ -27,6 +27,10 @@ int cli_unknown_method(const char *cmd, const char *option, const char *name);
 /* A scene from SCENE.json, or a default scene around a particle file (its up
  * axis auto: the first frame decides). */
 int cli_scene_from_arg(fs_scene *s, const char *arg);
+/* IN's frames, after cli_scene_from_arg: a frame pattern (not a .json) needs
+ * frames ("A:B[:STEP]", cmd's --frames), a file or a scene file refuses them;
+ * one usage line (exit 2) when they do not fit. */
+int cli_scene_pattern(const char *cmd, fs_scene *s, const char *in, const char *frames);
 /* --up, --volume-scale, --iso, --support, --kernel (CLI_OPT_SCENE): set ones
  * win over the scene file's; unset ones are -1 (up, kernel) or 0. */
 enum { CLI_UP_AUTO = 3 };

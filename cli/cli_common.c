@@ -2,6 +2,8 @@
 #include "method.h"
 #include "registry.h"
 #include "fs_error.h"
+#include "frame_pattern.h"
+#include "frame_source.h"
 #include "gl_context.h"
 #include "hash.h"
 #include <errno.h>
@@ -50,6 +52,19 @@ int cli_scene_from_arg(fs_scene *s, const char *arg)
     s->up_source = FS_UP_AUTO;
     s->hash = fs_fnv1a(FS_SCENE_HASH_START, arg, n);
     return FS_OK;
+}
+
+int cli_scene_pattern(const char *cmd, fs_scene *s, const char *in, const char *frames)
+{
+    size_t n = strlen(in);
+    int json = n > 5 && !strcmp(in + n - 5, ".json"), a, b, step;
+    if (json || !fs_is_frame_pattern(in))
+        return frames ? cli_usage(cmd, "--frames: %s is not a frame pattern", in) : FS_OK;
+    if (!frames) return cli_usage(cmd, "%s: a frame pattern needs --frames FIRST:LAST[:STEP]", in);
+    if (fs_frame_range(frames, &a, &b, &step))
+        return cli_usage(cmd, "--frames %s: expected FIRST:LAST[:STEP] (0 <= FIRST <= LAST, STEP >= 1)", frames);
+    int rc = fs_scene_set_frames(s, in, a, b, step);
+    return rc ? cli_error(rc) : FS_OK;
 }
 
 void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o)

@@ -3,6 +3,7 @@
 #include "fs_error.h"
 #include "options.h"
 #include "particle_io.h"
+#include "up_axis.h"
 #include <stdio.h>
 
 /* what --help says after the options */
@@ -56,6 +57,14 @@ int cmd_info(int argc, char **argv)
                    : est > 0      ? "estimated from the spacing; set --radius"
                                   : "default; set --radius");
         if (est > 0) printf("radius the spacing implies: %.6g (%.3g r)\n", est, est / s.radius);
+        char why[200];
+        double share[3];
+        float r_up = est > 0 ? est : s.radius; /* as render's auto reads it: the spacing's r */
+        int up = fs_up_axis_guess(&p, file, r_up, why, sizeof why);
+        fs_up_low_end_shares(&p, r_up, share);
+        printf("up (auto): %c (%s)\n", 'x' + up, why);
+        printf("within r of the low end: x %.1f%%, y %.1f%%, z %.1f%%\n", 100 * share[0], 100 * share[1],
+               100 * share[2]);
         printf("nearest-neighbour distance, median: %.6g (%.3g r)\n", st.nn_median, st.nn_median / s.radius);
         printf(
             "density phi at centres, median: %.4g (volume_scale %g, cubic, H = 4r); volume_scale %.3g would make it 1\n",

@@ -23,31 +23,12 @@ static const char epilogue[] =
     "--set mesh.smooth_iters=25; --set mesh.attributes=on adds velocity and colour to .ply/.vtk/.vtp.\n"
     "--timings prints CSV: frame,stage,ms,vertices,triangles (counts on the total row).\n";
 
-/* "a_{}.ply" -> "a_%d.ply" (and %% for a literal %), into out. */
-static int to_pattern(const char *in, char *out, size_t size)
-{
-    size_t n = 0;
-    for (const char *s = in; *s; s++) {
-        const char *rep = s[0] == '{' && s[1] == '}' ? "%d" : NULL;
-        if (rep) s++;
-        size_t k = rep ? 2 : 1;
-        if (n + k >= size) return fs_fail(FS_ERR_INPUT, "%s: path too long", in);
-        if (rep) memcpy(out + n, rep, 2);
-        else out[n] = *s;
-        n += k;
-    }
-    out[n] = 0;
-    return FS_OK;
-}
-
-static int is_pattern(const char *p) { return strstr(p, "{}") || strchr(p, '%'); }
-
 typedef struct mesh_job {
     fs_scene *scene;
     const double *params; /* the method's, in table order */
     fs_mesh_opts opts;    /* from params once the first frame has settled r */
     const char *out;      /* a pattern when there are several frames */
-    int first, last, timings, quiet;
+    int first, timings, quiet;
     float radius;
 } mesh_job;
 
@@ -89,8 +70,8 @@ static int mesh_frame(mesh_job *j, int frame)
     fs_grid_free(&g);
     fs_particles_free(&p);
     if (!rc)
-        rc = is_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
-                                : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
+        rc = fs_is_frame_pattern(j->out) ? fs_frame_path(path, sizeof path, j->out, frame)
+                                         : (snprintf(path, sizeof path, "%s", j->out), FS_OK);
     t = fs_now_ms();
     fs_provenance prov;
     fs_mesh_provenance(&prov, j->scene, j->params, frame);
@@ -102,26 +83,13 @@ static int mesh_frame(mesh_job *j, int frame)
 }
 
 /* IN as a scene: a .json, a file, or a pattern with --frames. */
-static int scene_of(const char *in, const char *frames, const cli_scene_opts *sopts, fs_scene *s, int *first, int *last)
+static int scene_of(const char *in, const char *frames, const cli_scene_opts *sopts, fs_scene *s)
 {
-    char pat[FS_PATH_MAX];
     int rc = cli_scene_from_arg(s, in);
     if (rc) return cli_error(rc);
     if (s->up_source == FS_UP_AUTO) s->up_source = FS_UP_DEFAULT; /* a mesh has no up: no note */
     cli_scene_opts_apply(s, sopts);
-    int json = strlen(in) > 5 && !strcmp(in + strlen(in) - 5, ".json");
-    if (!json && is_pattern(in)) {
-        if (!frames) return cli_usage("mesh", "%s: a frame pattern needs --frames FIRST:LAST", in);
-        if ((rc = to_pattern(in, pat, sizeof pat))) return cli_error(rc);
-        strcpy(s->source, pat);
-        char *end;
-        long a = strtol(frames, &end, 10), b = *end == ':' ? strtol(end + 1, &end, 10) : -1;
-        if (*end || a < 0 || b < a || b > 100000000)
-            return cli_usage("mesh", "--frames %s: expected FIRST:LAST", frames);
-        s->frame_first = (int)a, s->frame_last = (int)b;
-    } else if (frames) return cli_usage("mesh", "--frames: %s is not a frame pattern", in);
-    fs_scene_frames(s, first, last);
-    return FS_OK;
+    return cli_scene_pattern("mesh", s, in, frames);
 }
 
 int cmd_mesh(int argc, char **argv)
@@ -139,7 +107,7 @@ int cmd_mesh(int argc, char **argv)
                        "the scene's, else the file's, else estimated from\n"
                        "the particle spacing (a note says so; fluidsurf info shows it)"),
         CLI_OPT_FIELD(sopts),
-        CLI_STRING_OPT("--frames", frames, "A:B", "frames of a pattern input"),
+        CLI_OPT_FRAMES(frames),
         CLI_STRING_OPT("--format", format, "FMT", "particle file format (default: from the extension)"),
         CLI_FLAG_OPT("--timings", timings, "print per-stage times and the mesh size (CSV on stdout)"),
         CLI_OPT_QUIET(quiet),
@@ -154,24 +122,26 @@ int cmd_mesh(int argc, char **argv)
     if (!m) return cli_usage("mesh", "the mesh method is not registered");
     if (!fs_mesh_export_known(out))
         return cli_usage("mesh", "%s: unknown mesh format (the mesh exports %s)", out, FS_MESH_EXPORTS);
-    if ((rc = scene_of(in, frames, &sopts, &scene, &j.first, &j.last))) return rc;
+    if ((rc = scene_of(in, frames, &sopts, &scene))) return rc;
     if (format && strlen(format) < sizeof scene.format) strcpy(scene.format, format);
-    if (j.last > j.first && !is_pattern(out))
-        return cli_usage("mesh", "%s: %d frames need {} in -o", out, j.last - j.first + 1);
+    int nframes = fs_scene_frame_count(&scene);
+    j.first = fs_scene_frame_number(&scene, 0);
+    if (nframes > 1 && !fs_is_frame_pattern(out)) return cli_usage("mesh", "%s: %d frames need {} in -o", out, nframes);
     if (cli_same_file(in, out)) return cli_usage("mesh", "%s: output would overwrite the input", out);
     for (int i = 0; i < nsets; i++)
         if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);
     double params[FS_MAX_PARAMS];
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
     char opat[4096];
-    if ((rc = to_pattern(out, opat, sizeof opat))) return cli_error(rc);
-    j.out = opat;
+    if (fs_is_frame_pattern(out) && (rc = fs_frame_pattern(out, opat, sizeof opat))) return cli_error(rc);
+    j.out = fs_is_frame_pattern(out) ? opat : out;
     j.timings = timings;
     j.quiet = quiet;
     if (timings) printf("frame,stage,ms,vertices,triangles\n");
     j.params = params;
-    fs_progress_begin("mesh", "frames", j.last - j.first + 1L);
-    for (int f = j.first; f <= j.last && !rc; f++) {
+    fs_progress_begin("mesh", "frames", nframes);
+    for (int k = 0; k < nframes && !rc; k++) {
+        int f = fs_scene_frame_number(&scene, k);
         char what[32];
         snprintf(what, sizeof what, "frame %d", f);
         if (!(rc = mesh_frame(&j, f))) fs_progress_item(what);

@@ -115,6 +115,10 @@ typedef struct cli_opt {
         CLI_CHOICE_OPT("--kernel", (o).kernel, "cubic|poly6|spiky|wyvill", NULL,                                       \
                        "the field's kernel (default: the scene's, else cubic)")
 #define CLI_OPT_SCENE(o) CLI_OPT_UP(o), CLI_OPT_FIELD(o)
+#define CLI_OPT_FRAMES(var)                                                                                            \
+    CLI_STRING_OPT("--frames", var, "A:B[:STEP]",                                                                      \
+                   "frames A to B (every STEP-th) of a frame pattern input\n"                                          \
+                   "({} or %04d in its name)")
 
 /* The positional arguments: up to max of them go to v[0..], counted in *n
  * (when n is given). too_many is the error's printf format; its arguments

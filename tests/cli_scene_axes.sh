@@ -10,11 +10,13 @@ fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 n=$(($(grep -c '|| fail' "$0") - 1)) # minus this line
 
 # An ASCII PLY of a jittered lattice, nx x ny x nz at spacing 2r = 0.05, with a
-# comment radius when $5 is given; $6 adds a column (a pile-up) of height $7 on axis $6.
-ply() { # out nx ny nz [radius] [column-axis column-height]
-  awk -v nx="$2" -v ny="$3" -v nz="$4" -v rad="${5:-}" -v ax="${6:-}" -v hc="${7:-0}" 'BEGIN {
+# comment radius when $5 is given; $6 adds a column (a pile-up) of height $7 on axis $6;
+# $8 lifts each (x, y) column of the lattice by up to $8 spacings along z (a rough bottom).
+ply() { # out nx ny nz [radius] [column-axis column-height] [roughness]
+  awk -v nx="$2" -v ny="$3" -v nz="$4" -v rad="${5:-}" -v ax="${6:-}" -v hc="${7:-0}" -v rough="${8:-0}" 'BEGIN {
     srand(7); n = 0
-    for (i = 0; i < nx; i++) for (j = 0; j < ny; j++) for (k = 0; k < nz; k++) p[n++] = i " " j " " k
+    for (i = 0; i < nx; i++) for (j = 0; j < ny; j++) { lift = rough * rand()
+      for (k = 0; k < nz; k++) p[n++] = i " " j " " (k + lift) }
     if (ax != "") for (a = 0; a < 3; a++) for (b = 0; b < 3; b++) for (c = 0; c < hc; c++)
       p[n++] = (ax == "y" ? a " " c " " b : a " " b " " c)
     print "ply"; print "format ascii 1.0"; if (rad != "") print "comment radius " rad
@@ -30,11 +32,12 @@ render() { "$BIN" render "$@" --method reference -W 32 -H 24; }
 ply "$T/pool_z.ply" 24 16 4         # thin along z: a z-up pool
 ply "$T/pool_y.ply" 24 4 16         # thin along y
 ply "$T/cube.ply" 10 10 10          # no axis stands out: y, the convention
-ply "$T/pile_z.ply" 20 20 3 "" z 20 # as wide as tall on every axis, the mass at the low end of z
+ply "$T/pile_z.ply" 20 20 3 "" z 20 2 # as wide as tall on every axis, the mass at the low end of z, no flat floor
+ply "$T/floor_z.ply" 20 20 3 "" z 20  # the same on a flat floor
 ply "$T/pool_r.ply" 24 4 16 0.03    # a radius in the file
 
 render "$T/pool_z.ply" -o "$T/pool_z.exr" 2> "$T/pool_z.err" || fail "render pool_z"
-grep -q "^fluidsurf: note: .*pool_z.ply: up is z (auto: the particles' extent is smallest along it; set --up)$" "$T/pool_z.err" ||
+grep -q "^fluidsurf: note: .*pool_z.ply: up is z (auto: a floor: 25.0% of the particles lie within r of its low end, 4.00 times the 6.2% along y; set --up)$" "$T/pool_z.err" ||
   fail "no note naming up = z: $(cat "$T/pool_z.err")"
 grep -q "^fluidsurf: note: .*pool_z.ply gives no particle radius: r = .* estimated from its spacing" "$T/pool_z.err" ||
   fail "no note of the estimated r on its own line: $(cat "$T/pool_z.err")"
@@ -51,6 +54,8 @@ grep -q "up is y (auto: no axis stands out; y, the usual convention" "$T/cube.er
 render "$T/pile_z.ply" -o "$T/pile_z.exr" 2> "$T/pile_z.err" || fail "render pile_z"
 [ "$(attr "$T/pile_z.exr" up)" = "z;auto" ] || fail "pile_z: up '$(attr "$T/pile_z.exr" up)', not z;auto ($(cat "$T/pile_z.err"))"
 grep -q "up is z (auto: the particles pile up at its low end, skewness" "$T/pile_z.err" || fail "pile_z note: $(cat "$T/pile_z.err")"
+render "$T/floor_z.ply" -o "$T/floor_z.exr" 2> "$T/floor_z.err" || fail "render floor_z"
+grep -q "up is z (auto: a floor: " "$T/floor_z.err" || fail "floor_z note: $(cat "$T/floor_z.err")"
 
 # --up wins, says nothing; -q silences the notes
 render "$T/pool_z.ply" --up x -o "$T/up_x.exr" 2> "$T/up_x.err" || fail "render --up x"

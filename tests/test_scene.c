@@ -1,9 +1,12 @@
 /* Scene files: every key parsed, relative paths resolved against the scene's
  * folder, --set lists, and each kind of error reported as one line naming the file. */
+#include "camera_text.h"
+#include "frame_pattern.h"
 #include "frame_source.h"
 #include "fs_error.h"
 #include "fs_test.h"
 #include "scene.h"
+#include <stdlib.h>
 #include <string.h>
 
 static const char *write_scene(const char *name, const char *text)
@@ -75,9 +78,135 @@ static void expect_error(const char *name, const char *text, const char *word)
     CHECK(strchr(msg, '\n') == NULL, "%s: message has several lines", name);
 }
 
+/* A camera's text reads back to the same bits; up, fov and size are optional. */
+static void camera_text(void)
+{
+    fs_camera c = {{0.1f, -2.0f / 3, 1e-7f}, {3.14159274f, 0, -1}, {0.3f, 0.9f, 0.1f}, 37.25f, 321, 123, 0, 0}, d;
+    char text[FS_CAMERA_TEXT_MAX];
+    unsigned given;
+    fs_camera_format(&c, text, sizeof text);
+    memset(&d, 0, sizeof d);
+    CHECK(fs_camera_parse(text, "t", &d, &given) == FS_OK, "%s", fs_error_message());
+    CHECK(!memcmp(c.eye, d.eye, sizeof c.eye) && !memcmp(c.target, d.target, sizeof c.target) &&
+              !memcmp(c.up, d.up, sizeof c.up) && c.fovy_deg == d.fovy_deg && d.width == 321 && d.height == 123,
+          "%s did not read back exactly", text);
+    CHECK(given == (FS_CAMERA_HAS_UP | FS_CAMERA_HAS_FOV | FS_CAMERA_HAS_SIZE), "given %u", given);
+    CHECK(fs_camera_parse("eye=1,2,3;target=0,0,0;up=z", "t", &d, &given) == FS_OK && d.up[2] == 1 && d.up[1] == 0 &&
+              given == FS_CAMERA_HAS_UP && d.fovy_deg == 37.25f,
+          "up=z: %s", fs_error_message());
+    static const char *const bad[][2] = {{"eye=1,2,3", "target"},
+                                         {"target=1,2,3", "eye"},
+                                         {"eye=1,2;target=0,0,0", "eye"},
+                                         {"eye=1,2,3;target=0,0,0;up=w", "up"},
+                                         {"eye=1,2,3;target=0,0,0;up=0,0,0", "up"},
+                                         {"eye=1,2,3;target=0,0,0;fov=200", "fov"},
+                                         {"eye=1,2,3;target=1,2,3", "differ"},
+                                         {"eye=1,2,3;target=0,0,0;size=0x4", "size"},
+                                         {"eye=1,2,3;target=0,0,0;zoom=2", "unknown key"},
+                                         {"eye=1,2,3;eye=1,2,3;target=0,0,0", "twice"},
+                                         {"eye=1,2,nan;target=0,0,0", "eye"},
+                                         {"", "eye"}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        d = c;
+        int rc = fs_camera_parse(bad[i][0], "--camera", &d, NULL);
+        const char *msg = fs_error_message();
+        CHECK(rc == FS_ERR_INPUT && !strncmp(msg, "--camera: camera '", 18) && strstr(msg, bad[i][1]) &&
+                  !strchr(msg, '\n') && !memcmp(&d, &c, sizeof d),
+              "'%s': rc %d, %s", bad[i][0], rc, msg);
+    }
+}
+
+/* A placed camera without an up of its own turns to the scene's up axis. */
+static void camera_up(void)
+{
+    fs_scene s;
+    float lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    fs_scene_load(&s,
+                  write_scene("up_z.json",
+                              "{\"particles\": \"a.vtk\", \"up\": \"z\", \"camera\": "
+                              "{\"eye\": [3, 0, 1], \"target\": [0, 0, 0]}}"));
+    fs_scene_finish_camera(&s, lo, hi);
+    CHECK(s.camera.up[0] == 0 && s.camera.up[1] == 0 && s.camera.up[2] == 1, "camera up %g %g %g, not the scene's z",
+          s.camera.up[0], s.camera.up[1], s.camera.up[2]);
+    fs_scene_load(&s,
+                  write_scene("up_own.json",
+                              "{\"particles\": \"a.vtk\", \"up\": \"z\", \"camera\": "
+                              "{\"eye\": [3, 0, 1], \"target\": [0, 0, 0], \"up\": [1, 0, 0]}}"));
+    fs_scene_finish_camera(&s, lo, hi);
+    CHECK(s.camera.up[0] == 1 && s.camera.up[2] == 0, "the camera's own up was replaced");
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    static char buf[2][8192];
+    static int k;
+    char *b = buf[k++ % 2];
+    size_t n = f ? fread(b, 1, sizeof buf[0] - 1, f) : 0;
+    b[n] = 0;
+    if (f) fclose(f);
+    return b;
+}
+
+/* A saved scene loads back to the same values, and saves to the same bytes. */
+static void save_round_trip(void)
+{
+    FILE *f = fopen(FS_TEST_OUT "/tet.obj", "w");
+    fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", f);
+    fclose(f);
+    const char *path = write_scene("save_in.json",
+                                   "{\"particles\": {\"file\": \"f_{}.ply\", \"first\": 2, \"last\": 9, \"step\": 3},\n"
+                                   " \"radius\": 0.0123, \"up\": \"z\", \"kernel\": \"spiky\", \"iso\": 0.45,\n"
+                                   " \"camera\": {\"eye\": [1.1, 2.2, 3.3], \"target\": [0, 0.1, 0], \"fov\": 33.3},\n"
+                                   " \"light\": {\"direction\": [0.2, 0.3, 0.9]}, \"background\": \"sky\",\n"
+                                   " \"obstacles\": [{\"min\": [0, 0, 0], \"max\": [1, 2, 3]}, {\"centre\": [1, 1, 1], "
+                                   "\"radius\": 0.5}, {\"mesh\": \"tet.obj\", \"scale\": 2, \"offset\": [1, 0, 0]}],\n"
+                                   " \"methods\": {\"spheres\": {\"radius_scale\": 0.7, \"thickness\": false}}}\n");
+    fs_scene a, b;
+    CHECK(fs_scene_load(&a, path) == FS_OK, "%s", fs_error_message());
+    CHECK(a.frame_step == 3 && fs_scene_frame_count(&a) == 3 && fs_scene_frame_number(&a, 2) == 8, "step %d: %d frames",
+          a.frame_step, fs_scene_frame_count(&a));
+    CHECK(fs_scene_save(&a, FS_TEST_OUT "/save_1.json") == FS_OK, "%s", fs_error_message());
+    CHECK(fs_scene_load(&b, FS_TEST_OUT "/save_1.json") == FS_OK, "%s", fs_error_message());
+    CHECK(!strcmp(a.source, b.source) && a.frame_first == b.frame_first && a.frame_last == b.frame_last &&
+              a.frame_step == b.frame_step,
+          "particles %s vs %s", a.source, b.source);
+    CHECK(a.radius == b.radius && a.up_axis == b.up_axis && a.kernel == b.kernel && a.iso == b.iso, "field");
+    CHECK(!memcmp(a.camera.eye, b.camera.eye, sizeof a.camera.eye) && a.camera.fovy_deg == b.camera.fovy_deg, "camera");
+    CHECK(!memcmp(a.light_dir, b.light_dir, sizeof a.light_dir), "light %.9g vs %.9g", a.light_dir[2], b.light_dir[2]);
+    CHECK(b.obstacles.n == 3 && !memcmp(a.obstacles.o[2].lo, b.obstacles.o[2].lo, sizeof a.obstacles.o[2].lo) &&
+              b.obstacles.o[1].radius == 0.5f,
+          "obstacles");
+    CHECK(b.nsets == 2 && !strcmp(b.sets[1].text, "spheres.thickness=off"), "methods");
+    CHECK(fs_scene_save(&b, FS_TEST_OUT "/save_2.json") == FS_OK, "%s", fs_error_message());
+    CHECK(!strcmp(slurp(FS_TEST_OUT "/save_1.json"), slurp(FS_TEST_OUT "/save_2.json")), "saved twice: not the same");
+}
+
+/* {} and printf patterns, --frames ranges. */
+static void patterns(void)
+{
+    char out[64];
+    CHECK(fs_is_frame_pattern("f_{}.ply") && fs_is_frame_pattern("f_%04d.ply") && !fs_is_frame_pattern("100%.ply") &&
+              !fs_is_frame_pattern("f.ply"),
+          "fs_is_frame_pattern");
+    CHECK(fs_frame_pattern("a%_{}.ply", out, sizeof out) == FS_OK && !strcmp(out, "a%%_%d.ply"), "{} gave %s", out);
+    CHECK(fs_frame_pattern("f_%04d.ply", out, sizeof out) == FS_OK && !strcmp(out, "f_%04d.ply"), "%%04d gave %s", out);
+    CHECK(fs_frame_pattern("f_{}_{}.ply", out, sizeof out) == FS_ERR_INPUT, "two {} accepted");
+    CHECK(fs_frame_pattern("f.ply", out, sizeof out) == FS_ERR_INPUT, "no conversion accepted");
+    int a, b, c;
+    CHECK(!fs_frame_range("2:9", &a, &b, &c) && a == 2 && b == 9 && c == 1, "2:9");
+    CHECK(!fs_frame_range("0:10:5", &a, &b, &c) && a == 0 && b == 10 && c == 5, "0:10:5");
+    const char *bad[] = {"2", "9:2", "1:2:0", "-1:2", "1:2:", "a:b", "1:2:3:4", "1: 2"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) CHECK(fs_frame_range(bad[i], &a, &b, &c), "%s", bad[i]);
+}
+
 int main(void)
 {
     full_scene();
+    camera_text();
+    camera_up();
+    save_round_trip();
+    patterns();
     fs_scene s;
     CHECK(fs_scene_load(&s, FS_TEST_OUT "/no_such_scene.json") == FS_ERR_INPUT, "missing scene");
     expect_error("e_empty.json", "", "empty");

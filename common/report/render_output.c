@@ -1,4 +1,5 @@
 #include "render_output.h"
+#include "camera_text.h"
 #include "image_io.h"
 #include "obstacle_mask.h"
 #include "output_file.h"
@@ -13,6 +14,19 @@ int fs_check_render_path(const char *path)
 {
     if (fs_path_ends_with(path, ".png") || fs_path_ends_with(path, ".exr")) return FS_OK;
     return fs_fail(FS_ERR_INPUT, "%s: output must end in .png or .exr", path);
+}
+
+int fs_read_render_camera(const char *path, fs_camera *c)
+{
+    char text[FS_CAMERA_TEXT_MAX];
+    int got = fs_read_image_attr(path, "fluidsurf:camera", text, sizeof text);
+    if (got < 0) return FS_ERR_INPUT;
+    if (!got) return fs_fail(FS_ERR_INPUT, "%s: no fluidsurf:camera (not an image fluidsurf rendered)", path);
+    unsigned given;
+    int rc = fs_camera_parse(text, path, c, &given);
+    if (!rc && given != (FS_CAMERA_HAS_UP | FS_CAMERA_HAS_FOV | FS_CAMERA_HAS_SIZE))
+        rc = fs_fail(FS_ERR_INPUT, "%s: fluidsurf:camera '%s' lacks up, fov or size", path, text);
+    return rc;
 }
 
 /* The suffixes of a 4-component AOV's channels: NAME.R NAME.G NAME.B NAME.A. */

@@ -37,6 +37,11 @@ int fs_write_render_in_scene(const char *path, const fs_scene *s, const fs_camer
  * FS_ERR_INPUT "FILE: no channel 'depth'" etc., or for a channel group that
  * cannot be an AOV (fs_gbuffer_add_aov: a 1-channel "color", too many groups). */
 int fs_read_render(const char *path, fs_gbuffer *g, float **rgba, float *r_out);
+/* The camera an EXR was rendered with (its fluidsurf:camera), exactly: eye,
+ * target, up, fov and size; the clip planes are left as c has them.
+ * FS_ERR_INPUT "FILE: no fluidsurf:camera ..." for an EXR without one (not
+ * rendered by fluidsurf), or the file's or the text's own error. */
+int fs_read_render_camera(const char *path, fs_camera *c);
 /* FS_ERR_INPUT unless path ends in .png or .exr. */
 int fs_check_render_path(const char *path);
 

@@ -19,6 +19,24 @@ void fs_scene_frames(const fs_scene *s, int *first, int *last)
     }
 }
 
+int fs_scene_set_frames(fs_scene *s, const char *pattern, int first, int last, int step)
+{
+    int rc = fs_frame_pattern(pattern, s->source, sizeof s->source);
+    if (rc) return rc;
+    s->frame_first = first, s->frame_last = last, s->frame_step = step;
+    return FS_OK;
+}
+
+int fs_scene_frame_count(const fs_scene *s)
+{
+    return s->frame_first < 0 ? 1 : (s->frame_last - s->frame_first) / s->frame_step + 1;
+}
+
+int fs_scene_frame_number(const fs_scene *s, int k)
+{
+    return s->frame_first < 0 ? 0 : s->frame_first + k * s->frame_step;
+}
+
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p)
 {
     memset(p, 0, sizeof *p);
@@ -51,6 +69,7 @@ static void settle_radius(fs_scene *s, const fs_particles *p, float radius_opt, 
     /* a synthetic set is made at its r: nothing to estimate or check */
     int have_est = s->synth.shape == FS_SYNTH_NONE && fs_particles_estimate_radius(p, &est) == FS_OK;
     if (!have_est) fs_error_clear();
+    s->spacing_r = have_est ? est : 0;
     const char *from = radius_source(s);
     if (!from && have_est) {
         s->radius = est;
@@ -71,15 +90,15 @@ static void settle_radius(fs_scene *s, const fs_particles *p, float radius_opt, 
 static void settle_up(fs_scene *s, const fs_particles *p, char *note, int size)
 {
     if (s->up_source != FS_UP_AUTO) return;
-    char why[160];
-    s->up_axis = fs_up_axis_guess(p, s->source, why, sizeof why);
+    char why[200];
+    s->up_axis = fs_up_axis_guess(p, s->source, s->spacing_r > 0 ? s->spacing_r : s->radius, why, sizeof why);
     snprintf(note, (size_t)size, "%.200s: up is %c (auto: %s; set %s)", s->source, 'x' + s->up_axis, why,
              fs_word("up"));
 }
 
 void fs_scene_adopt_frame(fs_scene *s, const fs_particles *p, float radius_opt, char *note, int size)
 {
-    char r_note[640] = "", up_note[400] = "";
+    char r_note[640] = "", up_note[480] = "";
     settle_radius(s, p, radius_opt, r_note, sizeof r_note);
     settle_up(s, p, up_note, sizeof up_note);
     snprintf(note, (size_t)size, "%s%s%s", r_note, r_note[0] && up_note[0] ? "\n" : "", up_note);

@@ -11,6 +11,13 @@ extern "C" {
 /* Frames to render: [first, last]; a single frame gives first = last = 0
  * (or the scene's frame for a pattern). */
 void fs_scene_frames(const fs_scene *s, int *first, int *last);
+/* The frames to render, first, first + step, ... up to last: how many, and the
+ * number of the k-th. */
+int fs_scene_frame_count(const fs_scene *s);
+int fs_scene_frame_number(const fs_scene *s, int k);
+/* s reads frames first, first + step, ... up to last of pattern ({} or a
+ * printf pattern, frame_pattern.h): FS_ERR_INPUT when it is not one. */
+int fs_scene_set_frames(fs_scene *s, const char *pattern, int first, int last, int step);
 /* Loads frame `frame` (ignored for a single file) and validates it. */
 int fs_scene_load_frame(const fs_scene *s, int frame, fs_particles *p);
 /* Settles what the first frame decides for the whole run, once: r is

@@ -12,7 +12,9 @@ typedef struct mesh_entry {
     char *path;
     fs_mesh_solid m;
 } mesh_entry;
-static mesh_entry *loaded; /* reachable until exit: every scene copy shares its mesh */
+/* reachable until exit: every scene copy shares its mesh. Each entry has its own
+ * allocation, so growing the list moves no mesh a scene points at. */
+static mesh_entry **loaded;
 static int nloaded;
 
 typedef struct obj_reader {
@@ -121,25 +123,26 @@ static int read_obj(const char *path, fs_mesh_solid *m)
 int fs_mesh_solid_load(const char *path, const fs_mesh_solid **out)
 {
     for (int i = 0; i < nloaded; i++)
-        if (!strcmp(loaded[i].path, path)) {
-            *out = &loaded[i].m;
+        if (!strcmp(loaded[i]->path, path)) {
+            *out = &loaded[i]->m;
             return FS_OK;
         }
     fs_mesh_solid m;
     int rc = read_obj(path, &m);
     if (rc) return rc;
-    mesh_entry *grown = realloc(loaded, (size_t)(nloaded + 1) * sizeof *loaded);
+    mesh_entry **grown = realloc(loaded, (size_t)(nloaded + 1) * sizeof *loaded);
+    mesh_entry *e = malloc(sizeof *e);
     char *copy = strdup(path);
-    if (!grown || !copy) {
-        free(copy);
-        free(m.tri);
-        if (grown) loaded = grown;
+    if (grown) loaded = grown;
+    if (!grown || !e || !copy) {
+        free(copy), free(e), free(m.tri);
         return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
     }
-    loaded = grown;
-    loaded[nloaded].path = copy;
-    loaded[nloaded].m = m;
-    *out = &loaded[nloaded++].m;
+    e->path = copy;
+    e->m = m;
+    e->m.path = copy;
+    loaded[nloaded++] = e;
+    *out = &e->m;
     return FS_OK;
 }
 

@@ -13,6 +13,7 @@ typedef struct fs_mesh_solid {
     int ntri;
     float *tri;         /* 9 floats per triangle: its three corners */
     float lo[3], hi[3]; /* bounds */
+    const char *path;   /* the file it was read from (a saved scene names it) */
 } fs_mesh_solid;
 
 /* Reads an OBJ file's "v" and "f" lines (polygons fanned into triangles; "v/vt/vn"

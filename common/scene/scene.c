@@ -1,5 +1,6 @@
 #include "scene.h"
 #include "fs_error.h"
+#include "frame_pattern.h"
 #include "hash.h"
 #include "params.h"
 #include "path_beside.h"
@@ -15,6 +16,7 @@ void fs_scene_defaults(fs_scene *s)
 {
     memset(s, 0, sizeof *s);
     s->frame_first = s->frame_last = -1;
+    s->frame_step = 1;
     s->synth.jitter = 0.1f;
     s->synth.seed = 1;
     s->radius = 0.025f;
@@ -68,6 +70,13 @@ fs_field fs_scene_field(const fs_scene *s)
     return f;
 }
 
+void fs_scene_place_camera(fs_scene *s, const fs_camera *c, int up_given)
+{
+    s->camera = *c;
+    s->has_camera = 1;
+    s->camera_up_auto = !up_given;
+}
+
 static fs_scene_resolver resolver;
 
 void fs_scene_set_resolver(fs_scene_resolver r) { resolver = r; }
@@ -91,6 +100,8 @@ int fs_scene_add_set(fs_scene *s, const char *set)
 void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3])
 {
     if (!s->has_camera) fs_camera_frame_box(&s->camera, bmin, bmax, s->up_axis);
+    if (s->has_camera && s->camera_up_auto)
+        for (int i = 0; i < 3; i++) s->camera.up[i] = i == s->up_axis ? 1.0f : 0.0f;
     /* Clip planes enclose the particles grown by the kernel support. */
     float g = s->support_r * s->radius, lo[3], hi[3];
     for (int i = 0; i < 3; i++) {
@@ -102,14 +113,14 @@ void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3
 
 float fs_scene_floor(const fs_scene *s, const fs_grid *g) { return g->bulk_lo[s->up_axis] - s->radius; }
 
-/* The bulk box of p (grid.h) with cells of the scene's support; the bounding
- * box when the grid cannot be built (the run reports why later). */
-static void bulk_box(const fs_scene *s, const fs_particles *p, float lo[3], float hi[3])
+/* The bulk box of p (grid.h) with cells of the support H = support_r r; the
+ * bounding box when the grid cannot be built (the run reports why later). */
+static void bulk_box(const fs_scene *s, const fs_particles *p, float r, float lo[3], float hi[3])
 {
     memcpy(lo, p->bmin, 3 * sizeof *lo);
     memcpy(hi, p->bmax, 3 * sizeof *hi);
     fs_grid g;
-    if (!p->n || fs_grid_build(&g, p, fs_scene_field(s).H)) return;
+    if (!p->n || fs_grid_build(&g, p, s->support_r * r)) return;
     memcpy(lo, g.bulk_lo, 3 * sizeof *lo);
     memcpy(hi, g.bulk_hi, 3 * sizeof *hi);
     fs_grid_free(&g);
@@ -118,20 +129,20 @@ static void bulk_box(const fs_scene *s, const fs_particles *p, float lo[3], floa
 float fs_scene_floor_of(const fs_scene *s, const fs_particles *p)
 {
     float lo[3], hi[3];
-    bulk_box(s, p, lo, hi);
+    bulk_box(s, p, s->radius, lo, hi);
     return lo[s->up_axis] - s->radius;
 }
 
 void fs_scene_frame_particles(fs_scene *s, const fs_particles *p)
 {
-    float blo[3], bhi[3];
-    bulk_box(s, p, blo, bhi);
+    float blo[3], bhi[3], r = s->spacing_r > 0 ? s->spacing_r : s->radius;
+    bulk_box(s, p, r, blo, bhi);
     if (!s->has_camera) {
         float lo[3], hi[3];
         fs_particles_core_bounds_in(p, 0.01f, blo, bhi, lo, hi);
         for (int i = 0; i < 3; i++) {
-            lo[i] -= s->radius;
-            hi[i] += s->radius;
+            lo[i] -= r;
+            hi[i] += r;
         }
         fs_camera_frame_box(&s->camera, lo, hi, s->up_axis);
         s->has_camera = 1;
@@ -251,6 +262,50 @@ static void set_path(fs_scene *s, jctx *c, const char *file)
     if (fs_path_beside(s->path, file, s->source, sizeof s->source)) bad(c, "particles", "path is too long");
 }
 
+/* A synthetic set's keys (shape syn). */
+static void parse_synthetic(fs_scene *s, jctx *c, const cJSON *v, const char *syn)
+{
+    static const char *const shapes[] = {"", "slab", "sphere", "box"};
+    for (int i = 1; i < 4; i++)
+        if (!strcmp(syn, shapes[i])) s->synth.shape = (fs_synth_shape)i;
+    if (!s->synth.shape) {
+        bad(c, "synthetic", "must be slab, sphere or box");
+        return;
+    }
+    const cJSON *size = cJSON_GetObjectItemCaseSensitive(v, "size");
+    if (size) {
+        int n = cJSON_IsArray(size) ? cJSON_GetArraySize(size) : 0;
+        if (n < 1 || n > 3) {
+            bad(c, "size", "must be an array of 1 to 3 particle counts");
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            const cJSON *e = cJSON_GetArrayItem(size, i);
+            if (!cJSON_IsNumber(e) || e->valuedouble < 1 || e->valuedouble > 1000 ||
+                e->valuedouble != floor(e->valuedouble)) {
+                bad(c, "size", "entries must be integers in [1, 1000]");
+                return;
+            }
+            s->synth.size[i] = (int)e->valuedouble;
+        }
+    }
+    get_num(c, v, "jitter", &s->synth.jitter, 0, 1);
+    int seed = (int)s->synth.seed;
+    get_int(c, v, "seed", &seed, 0, 2147483647);
+    s->synth.seed = (unsigned)seed;
+    const cJSON *mv = cJSON_GetObjectItemCaseSensitive(v, "moving");
+    if (mv && !cJSON_IsBool(mv)) bad(c, "moving", "must be true or false");
+    s->synth.moving = mv && cJSON_IsTrue(mv);
+}
+
+/* A sequence's file: a printf pattern, or {} for the frame number. */
+static void frame_pattern(fs_scene *s, jctx *c)
+{
+    char pat[sizeof s->source];
+    if (fs_frame_pattern(s->source, pat, sizeof pat)) bad(c, "file", "needs one {} or %d for the frame number");
+    else strcpy(s->source, pat);
+}
+
 static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
 {
     if (cJSON_IsString(v)) {
@@ -261,7 +316,7 @@ static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
         bad(c, "particles", "must be a file name or an object");
         return;
     }
-    static const char *const keys[] = {"file", "format", "first", "last",   "synthetic",
+    static const char *const keys[] = {"file", "format", "first", "last",   "step", "synthetic",
                                        "size", "jitter", "seed",  "moving", NULL};
     check_keys(c, v, "particles", keys);
     const char *file = get_str(c, v, "file"), *fmt = get_str(c, v, "format"), *syn = get_str(c, v, "synthetic");
@@ -272,50 +327,20 @@ static void parse_particles(fs_scene *s, jctx *c, const cJSON *v)
     }
     if (file) set_path(s, c, file);
     if (fmt) snprintf(s->format, sizeof s->format, "%s", fmt);
-    if (syn) {
-        static const char *const shapes[] = {"", "slab", "sphere", "box"};
-        for (int i = 1; i < 4; i++)
-            if (!strcmp(syn, shapes[i])) s->synth.shape = (fs_synth_shape)i;
-        if (!s->synth.shape) {
-            bad(c, "synthetic", "must be slab, sphere or box");
-            return;
-        }
-        const cJSON *size = cJSON_GetObjectItemCaseSensitive(v, "size");
-        if (size) {
-            int n = cJSON_IsArray(size) ? cJSON_GetArraySize(size) : 0;
-            if (n < 1 || n > 3) {
-                bad(c, "size", "must be an array of 1 to 3 particle counts");
-                return;
-            }
-            for (int i = 0; i < n; i++) {
-                const cJSON *e = cJSON_GetArrayItem(size, i);
-                if (!cJSON_IsNumber(e) || e->valuedouble < 1 || e->valuedouble > 1000 ||
-                    e->valuedouble != floor(e->valuedouble)) {
-                    bad(c, "size", "entries must be integers in [1, 1000]");
-                    return;
-                }
-                s->synth.size[i] = (int)e->valuedouble;
-            }
-        }
-        get_num(c, v, "jitter", &s->synth.jitter, 0, 1);
-        int seed = (int)s->synth.seed;
-        get_int(c, v, "seed", &seed, 0, 2147483647);
-        s->synth.seed = (unsigned)seed;
-        const cJSON *mv = cJSON_GetObjectItemCaseSensitive(v, "moving");
-        if (mv && !cJSON_IsBool(mv)) bad(c, "moving", "must be true or false");
-        s->synth.moving = mv && cJSON_IsTrue(mv);
-    }
+    if (syn) parse_synthetic(s, c, v, syn);
     const cJSON *first = cJSON_GetObjectItemCaseSensitive(v, "first"),
                 *last = cJSON_GetObjectItemCaseSensitive(v, "last");
     if (!!first != !!last) {
         bad(c, first ? "first" : "last", "needs both \"first\" and \"last\"");
         return;
     }
+    if (first && file) frame_pattern(s, c);
     if (first) {
         get_int(c, v, "first", &s->frame_first, 0, 100000000);
         get_int(c, v, "last", &s->frame_last, 0, 100000000);
+        get_int(c, v, "step", &s->frame_step, 1, 100000000);
         if (!c->rc && s->frame_last < s->frame_first) bad(c, "last", "is before \"first\"");
-    }
+    } else if (cJSON_GetObjectItemCaseSensitive(v, "step")) bad(c, "step", "needs \"first\" and \"last\"");
 }
 
 static void parse_camera(fs_scene *s, jctx *c, const cJSON *v)
@@ -342,6 +367,7 @@ static void parse_camera(fs_scene *s, jctx *c, const cJSON *v)
     get_int(c, v, "width", &cam->width, 1, 16384);
     get_int(c, v, "height", &cam->height, 1, 16384);
     s->has_camera = has_eye;
+    s->camera_up_auto = has_eye && !cJSON_GetObjectItemCaseSensitive(v, "up");
     if (has_eye && !c->rc) {
         float d[3] = {cam->target[0] - cam->eye[0], cam->target[1] - cam->eye[1], cam->target[2] - cam->eye[2]};
         if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-20f) bad(c, "target", "must differ from \"eye\"");

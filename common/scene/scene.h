@@ -46,10 +46,13 @@ typedef struct fs_scene {
     char source[FS_PATH_MAX];    /* particle file or printf pattern; "" for synthetic */
     char format[16];             /* forced particle format, "" = from the extension */
     int frame_first, frame_last; /* for a pattern source; -1 when not a sequence */
+    int frame_step;              /* every frame_step-th frame of first..last (1: each) */
     fs_synthetic synth;
 
     float radius; /* particle radius r */
     fs_radius_source r_source;
+    float spacing_r;    /* the r the first frame's spacing implies, 0 when not measured: the
+                      * framing and the up guess read it, so --radius moves neither */
     float volume_scale; /* V = volume_scale (2r)^3 */
     fs_kernel kernel;
     float support_r; /* H in multiples of r */
@@ -58,7 +61,8 @@ typedef struct fs_scene {
     fs_up_source up_source;
 
     fs_camera camera;
-    int has_camera; /* 0: frame the particles */
+    int has_camera;     /* 0: frame the particles */
+    int camera_up_auto; /* a placed camera without an up of its own: it follows up_axis */
 
     float light_dir[3]; /* towards the light, world space */
     float light_color[3];
@@ -92,7 +96,15 @@ int fs_scene_load(fs_scene *s, const char *path);
  * list is full, the text malformed, or the resolver refuses it). */
 int fs_scene_add_set(fs_scene *s, const char *set);
 fs_field fs_scene_field(const fs_scene *s);
-/* Completes the camera: frames the box when has_camera is 0, sets clip planes. */
+/* Places the camera c (has_camera); up_given 0: its up follows the scene's up
+ * axis (camera_up_auto), as a scene file's camera without "up" does. */
+void fs_scene_place_camera(fs_scene *s, const fs_camera *c, int up_given);
+/* Writes s as a scene file that reproduces it: r, the up axis and the camera as
+ * settled (call it after the first frame is adopted), paths absolute, numbers
+ * exact; atomically (output_file.h). */
+int fs_scene_save(const fs_scene *s, const char *path);
+/* Completes the camera: frames the box when has_camera is 0, turns a placed
+ * camera's up to the scene's up axis when camera_up_auto, sets clip planes. */
 void fs_scene_finish_camera(fs_scene *s, const float bmin[3], const float bmax[3]);
 struct fs_particles;
 struct fs_grid;
@@ -103,7 +115,9 @@ float fs_scene_floor(const fs_scene *s, const struct fs_grid *g);
 float fs_scene_floor_of(const fs_scene *s, const struct fs_particles *p);
 /* The same for a particle set: frames the 1%..99% quantile box, grown by r, of
  * the particles in the bulk box (so neither spray nor far strays shrink the fluid
- * to a corner), and clips with the bulk box (docs/DESIGN.md, "Neighbour grid"). */
+ * to a corner), and clips with the bulk box (docs/DESIGN.md, "Neighbour grid").
+ * With spacing_r set, the bulk's cells and the growth are of spacing_r, not r:
+ * the framing then reads the particles alone, and --radius does not move it. */
 void fs_scene_frame_particles(fs_scene *s, const struct fs_particles *p);
 
 #ifdef __cplusplus

@@ -1,5 +1,6 @@
 /* The scene's part of every output's provenance (scene_provenance.h). */
 #include "scene_provenance.h"
+#include "camera_text.h"
 #include <stdio.h>
 
 void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *renderer, const char *gl_version)
@@ -20,9 +21,6 @@ void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *rendere
     snprintf(v, sizeof v, "kernel=%s;support=%.9gr;iso=%.9g;volume_scale=%.9g", fs_kernel_name(s->kernel), s->support_r,
              s->iso, s->volume_scale);
     fs_provenance_set(p, "field", v);
-    const fs_camera *c = &s->camera;
-    snprintf(v, sizeof v, "eye=%.9g,%.9g,%.9g;target=%.9g,%.9g,%.9g;up=%.9g,%.9g,%.9g;fov=%.9g;size=%dx%d", c->eye[0],
-             c->eye[1], c->eye[2], c->target[0], c->target[1], c->target[2], c->up[0], c->up[1], c->up[2], c->fovy_deg,
-             c->width, c->height);
+    fs_camera_format(&s->camera, v, sizeof v);
     fs_provenance_set(p, "camera", v);
 }

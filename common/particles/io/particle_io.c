@@ -3,7 +3,6 @@
 #include "particle_io.h"
 #include "output_file.h"
 #include "fs_error.h"
-#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -125,38 +124,5 @@ int fs_particles_writable(const char *path, const char *format)
     if (rc) return rc;
     /* The stub (io_vdb_none.c) refuses without looking at the particles. */
     if (!FS_WITH_OPENVDB && strcasecmp(fmt, "vdb") == 0) return fs_write_vdb(NULL, path);
-    return FS_OK;
-}
-
-/* Accepts exactly one %[flags][width][.precision]d or i conversion; "%%" is a literal. */
-int fs_frame_path(char *out, int size, const char *pattern, int frame)
-{
-    int conversions = 0;
-    for (const char *s = pattern; *s; s++) {
-        if (*s != '%') continue;
-        if (s[1] == '%') {
-            s++;
-            continue;
-        }
-        s++;
-        while (*s && strchr("-+ 0", *s)) s++;
-        while (isdigit((unsigned char)*s)) s++;
-        if (*s == '.') {
-            s++;
-            while (isdigit((unsigned char)*s)) s++;
-        }
-        if (*s != 'd' && *s != 'i')
-            return fs_fail(FS_ERR_INPUT, "%s: frame pattern may only contain a %%d-style conversion", pattern);
-        conversions++;
-    }
-    if (conversions != 1)
-        return fs_fail(FS_ERR_INPUT, "%s: frame pattern needs exactly one %%d-style conversion (has %d)", pattern,
-                       conversions);
-    if (size <= 0) return fs_fail(FS_ERR_INPUT, "%s: no room for the frame path", pattern);
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wformat-nonliteral"
-    int len = snprintf(out, (size_t)size, pattern, frame); /* checked above: one int conversion */
-#pragma GCC diagnostic pop
-    if (len < 0 || len >= size) return fs_fail(FS_ERR_INPUT, "%s: frame path for frame %d is too long", pattern, frame);
     return FS_OK;
 }

@@ -4,6 +4,7 @@
  * one-line message "path: what is wrong"; p is left empty. */
 #ifndef FS_PARTICLE_IO_H
 #define FS_PARTICLE_IO_H
+#include "frame_pattern.h"
 #include "particles.h"
 #ifdef __cplusplus
 extern "C" {
@@ -17,8 +18,6 @@ int fs_particles_write(const fs_particles *p, const char *path, const char *form
 /* FS_OK when this build can write path's format (a build without VTK or OpenVDB
  * refuses .vtk or .vdb, as the writer would): lets a command refuse before it works. */
 int fs_particles_writable(const char *path, const char *format);
-/* Expands a printf pattern ("frame_%04d.vtk") for one frame. */
-int fs_frame_path(char *out, int size, const char *pattern, int frame);
 const char *fs_format_from_path(const char *path);
 
 /* Per-format entry points (one file each; the C++ ones are thin adapters). */
