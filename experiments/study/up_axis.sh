@@ -29,7 +29,7 @@ known() {
   esac
 }
 
-frames=(experiments/data/splashsurf/*.{vtk,vtu,bgeo,ply} experiments/data/splash/*.ply)
+frames=(experiments/data/splashsurf/*.{vtk,vtu,bgeo,ply} experiments/data/dualsphysics/*.vtk experiments/data/splash/*.ply)
 dsph=$SHARED/dualsphysics/dambreak200k_t0.300.vtk
 [ -f "$dsph" ] || [ "$FS_QUICK" = 1 ] || { echo "up_axis.sh: $dsph missing (set SHARED)" >&2; exit 2; }
 seen=$(sha256sum "${frames[@]}" | cut -c1-64)
