@@ -7,8 +7,8 @@
 #                                     so every CSV names a clean commit)
 #   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
 #                                     minutes; CI runs it so that no study script can rot), then
-#                                     each study's numbers against bounds that hold by definition
-#                                     (tools/check_quick.py) and the checks below; it also runs
+#                                     each study's numbers against bounds (by definition, and ones a broken
+#                                     method fails: tools/check_quick.py) and the checks below; it also runs
 #                                     scripts/demo.sh and fails if that changes `git status`
 #   experiments/run_all.sh --check    the checks of the committed results: every generated README
 #                                     table is its CSV's, and every committed CSV under results/
@@ -132,8 +132,10 @@ study tables bash experiments/tables.sh # after every study: pivots of their CSV
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
 if [ $mode = quick ]; then
-  # a study that ran to the end can still measure nonsense: its numbers against bounds
-  # that hold by definition, every study at least one (experiments/tools/check_quick.py)
+  # a study that ran to the end can still measure nonsense, or a method be broken: its numbers
+  # against bounds that hold by definition and ones with teeth (quality against the reference,
+  # a switch that changes what its paper says, a bar's committed verdict, a bounded simulation;
+  # experiments/tools/check_quick.py)
   study quick_bounds python3 experiments/tools/check_quick.py "$FS_RESULTS"
   readme_check
   numbers_check

@@ -18,7 +18,8 @@ done
 TMP=out/$(quick "" quick/)inacio2010/fig8
 mkdir -p "$TMP"
 idiff -a -fail 0.05 "$surface" "$translucent" > "$TMP/idiff.txt" 2>&1 || true # exits 1 on any difference
-stat() { sed -n "s/^ *$1 *= *\([-0-9.e+]*\).*/\1/p" "$TMP/idiff.txt" | head -1; }
+# idiff prints no statistics for identical images: then every error is 0 (PSNR inf)
+stat() { local v; v=$(sed -n "s/^ *$1 *= *\([-0-9.e+]*\).*/\1/p" "$TMP/idiff.txt" | head -1); echo "${v:-$2}"; }
 over=$(sed -n 's/^ *[0-9]* pixels (\([0-9.]*\)%) over 0.05.*/\1/p' "$TMP/idiff.txt" | head -1)
 {
   echo "# $(csv_commit "$R/volume_raycast_bar.csv"); images and metrics from volume_raycast.sh ($(sed -n '1s/^# *//p' "$R/volume_raycast_bar.csv" | cut -c1-200))"
@@ -26,7 +27,7 @@ over=$(sed -n 's/^ *[0-9]* pixels (\([0-9.]*\)%) over 0.05.*/\1/p' "$TMP/idiff.t
   csv_awk 'if (col("method") == "volume_raycast") { m = col("variant"); sub(/.*mode=/, "", m)
     print m " against reference," col("mask_iou") "," col("normal_mean_deg") "," col("interior_normal_mean_deg") ",,,,," }' \
     "$R/volume_raycast_bar.csv"
-  echo "translucent image against surface image,,,,$(stat "Mean error"),$(stat "RMS error"),$(stat "Max error"),$(stat "Peak SNR"),${over:-0}"
+  echo "translucent image against surface image,,,,$(stat "Mean error" 0),$(stat "RMS error" 0),$(stat "Max error" 0),$(stat "Peak SNR" inf),${over:-0}"
 } > "$R/fig8.csv"
 frames_mosaic "$R/fig8_pair.png" 2x1 "$(quick 400x400 64x64)" "$surface" "$translucent"
 echo "wrote $R/fig8.csv, $R/fig8_pair.png"
