@@ -14,7 +14,7 @@ src=$(pwd)
 source experiments/lib.sh
 BIN=$(realpath "${1:-${BIN:-build/fluidsurf}}") REPEATS=${2:-$(quick 3 1)}
 source experiments/slurm/local_cluster.sh
-out=$RESULTS/slurm
+out=$(realpath -m "$RESULTS/slurm") # absolute: the runs below work in $work
 work=$(mktemp -d /tmp/fluidsurf-scaling.XXXXXX)
 trap 'cluster_stop; rm -rf "$work"' EXIT
 mkdir -p "$out"
@@ -41,7 +41,7 @@ one_run() {
 }
 
 commit=$(cd "$src" && study_commit)
-csv=$src/$out/scaling.csv
+csv=$out/scaling.csv
 {
   echo "study,frames,size,mode,shards,wall_s_median,wall_s_min,wall_s_max"
 } > "$work/rows"
