@@ -31,6 +31,9 @@ int cli_scene_from_arg(fs_scene *s, const char *arg);
  * frames ("A:B[:STEP]", cmd's --frames), a file or a scene file refuses them;
  * one usage line (exit 2) when they do not fit. */
 int cli_scene_pattern(const char *cmd, fs_scene *s, const char *in, const char *frames);
+/* --camera TEXT or --camera-from FILE.exr (either, or neither): places s's
+ * camera, its size too; one usage line (exit 2) when malformed. */
+int cli_scene_camera(const char *cmd, fs_scene *s, const char *text, const char *from);
 /* --up, --volume-scale, --iso, --support, --kernel (CLI_OPT_SCENE): set ones
  * win over the scene file's; unset ones are -1 (up, kernel) or 0. */
 enum { CLI_UP_AUTO = 3 };

@@ -4,6 +4,8 @@
 #include "fs_error.h"
 #include "frame_pattern.h"
 #include "frame_source.h"
+#include "camera_text.h"
+#include "render_output.h"
 #include "gl_context.h"
 #include "hash.h"
 #include <errno.h>
@@ -65,6 +67,18 @@ int cli_scene_pattern(const char *cmd, fs_scene *s, const char *in, const char *
         return cli_usage(cmd, "--frames %s: expected FIRST:LAST[:STEP] (0 <= FIRST <= LAST, STEP >= 1)", frames);
     int rc = fs_scene_set_frames(s, in, a, b, step);
     return rc ? cli_error(rc) : FS_OK;
+}
+
+int cli_scene_camera(const char *cmd, fs_scene *s, const char *text, const char *from)
+{
+    if (text && from) return cli_usage(cmd, "--camera and --camera-from: choose one");
+    if (!text && !from) return FS_OK;
+    fs_camera c = s->camera;
+    unsigned given = FS_CAMERA_HAS_UP;
+    int rc = from ? fs_read_render_camera(from, &c) : fs_camera_parse(text, "--camera", &c, &given);
+    if (rc) return cli_error(rc);
+    fs_scene_place_camera(s, &c, (given & FS_CAMERA_HAS_UP) != 0);
+    return FS_OK;
 }
 
 void cli_scene_opts_apply(fs_scene *s, const cli_scene_opts *o)

@@ -65,11 +65,13 @@ static const cli_opt opts[] = {
     CLI_FLAG_OPT("--counters", A.counters,
                  "also count each variant's and reference's work in a\n"
                  "separate render after the timed ones: counters.csv"),
-    CLI_OPT_SIZE(A.w, A.h, 1, 16384, "image", "the scene's, else 512"),
+    CLI_OPT_SIZE(A.w, A.h, 1, 16384, "image", "the camera's, else the scene's, else 512"),
     CLI_OPT_RADIUS(A.radius,
                    "the scene's, else the file's, else estimated from\n"
                    "the particle spacing (a note says so; fluidsurf info shows it)"),
     CLI_OPT_SCENE(A.field),
+    CLI_OPT_CAMERA(A.camera, A.camera_from),
+    CLI_OPT_FRAMES(A.frames),
     CLI_OPT_GL(A.ctx_kind),
     CLI_OPT_REQUIRE_GPU(A.require_gpu),
     CLI_OPT_QUIET(A.quiet),

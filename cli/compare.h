@@ -10,7 +10,7 @@ struct fs_merge;
 
 /* compare's parsed command line. */
 typedef struct compare_args {
-    const char *input, *out, *methods, *cache_dir, *shard;
+    const char *input, *out, *methods, *cache_dir, *shard, *camera, *camera_from, *frames;
     const char *refspecs[FS_STUDY_MAX_REFS + 1], *imports[FS_STUDY_MAX_ENTRIES + 1], *sets[FS_MAX_SETS];
     int nrefspecs, nimports, nsets, w, h, repeat, counters;
     int no_cache, resume, force, quiet, require_gpu;

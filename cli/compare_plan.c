@@ -26,6 +26,8 @@ static int plan_variants(fs_study *s, const compare_args *o)
     int rc = cli_scene_from_arg(&sc, o->input);
     if (rc) return cli_error(rc);
     cli_scene_opts_apply(&sc, &o->field);
+    if ((rc = cli_scene_pattern("compare", &sc, o->input, o->frames))) return rc;
+    if ((rc = cli_scene_camera("compare", &sc, o->camera, o->camera_from))) return rc;
     if (o->w) sc.camera.width = o->w;
     if (o->h) sc.camera.height = o->h;
     if ((long)sc.camera.width * sc.camera.height > 16384L * 16384L / 4)

@@ -115,6 +115,13 @@ typedef struct cli_opt {
         CLI_CHOICE_OPT("--kernel", (o).kernel, "cubic|poly6|spiky|wyvill", NULL,                                       \
                        "the field's kernel (default: the scene's, else cubic)")
 #define CLI_OPT_SCENE(o) CLI_OPT_UP(o), CLI_OPT_FIELD(o)
+#define CLI_OPT_CAMERA(text, from)                                                                                     \
+    CLI_STRING_OPT("--camera", text, "'eye=X,Y,Z;target=X,Y,Z[;up=..][;fov=..]'",                                      \
+                   "place the camera (up: x, y, z or X,Y,Z, default the\n"                                             \
+                   "scene's up axis; fov in degrees; size=WxH too)"),                                                  \
+        CLI_STRING_OPT("--camera-from", from, "FILE.exr",                                                              \
+                       "the camera a fluidsurf EXR was rendered with, exactly\n"                                       \
+                       "(its size too): the images can be diffed")
 #define CLI_OPT_FRAMES(var)                                                                                            \
     CLI_STRING_OPT("--frames", var, "A:B[:STEP]",                                                                      \
                    "frames A to B (every STEP-th) of a frame pattern input\n"                                          \

@@ -82,4 +82,8 @@ if(FS_WITH_OIIO)
   add_test(NAME cli_scene_axes COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_scene_axes.sh $<TARGET_FILE:fluidsurf>
            ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_scene_axes)
   set_tests_properties(cli_scene_axes PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
+  # The camera (--camera, --camera-from, --save-scene) and frame patterns of render and compare.
+  add_test(NAME cli_camera COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli_camera.sh $<TARGET_FILE:fluidsurf>
+           ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}/test-out/cli_camera)
+  set_tests_properties(cli_camera PROPERTIES ENVIRONMENT "${FS_TEST_ENV}")
 endif()

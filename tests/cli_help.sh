@@ -10,8 +10,8 @@ fails=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 declare -A want=(
-  [render]="--method -o --set -W --width -H --height --radius --up --volume-scale --iso --support --kernel --format --frame --gl --require-gpu --timings --counters --export --appearance --cache -q"
-  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --force --shard --counters -W --width -H --height --radius --up --volume-scale --iso --support --kernel --gl --require-gpu -q"
+  [render]="--method -o --set -W --width -H --height --radius --up --volume-scale --iso --support --kernel --camera --camera-from --save-scene --format --frame --frames --gl --require-gpu --timings --counters --export --appearance --cache -q"
+  [compare]="-o --methods --set --reference --import --repeat --normal-scale --depth-scale --cache --no-cache --resume --force --shard --counters -W --width -H --height --radius --up --volume-scale --iso --support --kernel --camera --camera-from --frames --gl --require-gpu -q"
   [merge]="-o --force -q"
   [report]=""
   [diff]="--fail-iou --fail-normal-deg --fail-depth-r --radius --strict --json -o --normal-scale --depth-scale"

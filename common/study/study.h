@@ -76,7 +76,7 @@ typedef struct fs_study_entry {
 
 typedef struct fs_study {
     fs_scene scene;
-    int nentries, nrefs, nframes, first_frame, sequence;
+    int nentries, nrefs, nframes, first_frame, frame_step, sequence;
     int repeat;                    /* timed renders after one warm-up (default 3) */
     int counters;                  /* a counting render per variant and frame */
     int measure;                   /* metrics and temporal against the references (0: a shard, which has not all) */
@@ -97,6 +97,8 @@ static inline int fs_study_item_id(const fs_study *s, int is_ref, int index, int
 {
     return ((is_ref ? 0 : s->nrefs) + index) * s->nframes + f;
 }
+/* The number of the f-th frame the study renders (0 <= f < nframes). */
+static inline int fs_study_frame(const fs_study *s, int f) { return s->first_frame + f * s->frame_step; }
 static inline int fs_study_item_count(const fs_study *s) { return (s->nrefs + s->nentries) * s->nframes; }
 
 /* --- the plan (study_plan.c) --- */

@@ -71,7 +71,7 @@ static int load_frame(exec *x, int f)
     if (f > 0 && s->given && !(rc = fs_particles_validate(&s->given[f], "particles"))) {
         x->p = s->given[f]; /* borrowed: the struct is ours, the arrays the caller's */
         fs_particles_bounds(&x->p);
-    } else if (f > 0) rc = fs_scene_load_frame(&s->scene, s->first_frame + f, &x->p);
+    } else if (f > 0) rc = fs_scene_load_frame(&s->scene, fs_study_frame(s, f), &x->p);
     x->have_frame = !rc;
     if (!rc) rc = fs_grid_build(&x->g, f == 0 ? &s->frame0 : &x->p, fs_scene_field(&s->scene).H);
     x->have_grid = !rc;
@@ -95,7 +95,7 @@ static int render_analytic(exec *x, int f, fs_run_image *v, fs_stages *st)
     int rc = fs_gbuffer_alloc(&v->g, s->scene.camera.width, s->scene.camera.height);
     if (!rc && !(v->rgba = malloc((size_t)v->g.w * v->g.h * 4 * sizeof(float))))
         rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-    if (!rc) rc = fs_synthetic_analytic(&s->scene, s->first_frame + f, &s->scene.camera, &v->g);
+    if (!rc) rc = fs_synthetic_analytic(&s->scene, fs_study_frame(s, f), &s->scene.camera, &v->g);
     if (!rc) fs_shade(&s->scene, &s->scene.camera, &v->g, fs_scene_floor(&s->scene, &x->g), v->rgba);
     if (!rc) fs_stages_add(st, "analytic", fs_now_ms() - t0);
     return rc;
@@ -127,7 +127,7 @@ static int ref_frame(exec *x, int k, int f, fs_run_image *v)
     if (w == FS_ITEM_SKIP) return FS_OK;
     if (w == FS_ITEM_LOAD) {
         rc = x->io->load ? x->io->load(x->io->user, s, 1, k, f, NULL, v, &got) : FS_OK;
-        if (!rc && !got) rc = fs_fail(FS_ERR_RUNTIME, "%s, frame %d: not loaded", ref->spec, s->first_frame + f);
+        if (!rc && !got) rc = fs_fail(FS_ERR_RUNTIME, "%s, frame %d: not loaded", ref->spec, fs_study_frame(s, f));
         if (!rc) done(x, ref->spec, f);
         return rc;
     }
@@ -168,7 +168,7 @@ static int render_entry(exec *x, int i, int f, fs_run_image *cur, fs_provenance 
         if (rc) return rc;
         snprintf(e->renderer, sizeof e->renderer, "%s", fs_run_renderer(x->run[i]));
     }
-    fs_run_provenance(x->run[i], &s->prov, s->first_frame + f, prov);
+    fs_run_provenance(x->run[i], &s->prov, fs_study_frame(s, f), prov);
     if (x->io->load && (rc = x->io->load(x->io->user, s, 0, i, f, prov, cur, stored))) return rc;
     if (*stored) return FS_OK;
     rc = fs_run_upload(x->run[i], frame_particles(x, f), &x->g, NULL);
@@ -229,7 +229,7 @@ static int entry_frame(exec *x, int i, int f)
     rc = stored ? (x->io->load ? x->io->load(x->io->user, s, 0, i, f, NULL, &cur, &stored) : FS_OK)
                 : render_entry(x, i, f, &cur, &prov, &stored);
     if (!rc && w == FS_ITEM_LOAD && !stored)
-        rc = fs_fail(FS_ERR_RUNTIME, "%s, frame %d: not loaded", e->label, s->first_frame + f);
+        rc = fs_fail(FS_ERR_RUNTIME, "%s, frame %d: not loaded", e->label, fs_study_frame(s, f));
     if (!rc && s->measure) rc = entry_metrics(x, e, f, &cur);
     if (!rc && !stored && x->io->store) rc = x->io->store(x->io->user, s, 0, i, f, &cur, &prov);
     if (rc) {

@@ -15,6 +15,7 @@ void fs_study_init(fs_study *s, const fs_scene *sc)
     s->scene = *sc;
     s->repeat = 3;
     s->measure = 1;
+    s->frame_step = 1;
 }
 
 int fs_study_add_method(fs_study *s, const fs_method *m, const fs_sweep *sweeps, int nsweeps)
@@ -191,8 +192,9 @@ int fs_study_set_frames(fs_study *s)
     int last;
     fs_scene_frames(&s->scene, &s->first_frame, &last);
     s->sequence = s->scene.frame_first >= 0;
-    s->nframes = last - s->first_frame + 1;
-    if (s->given) s->first_frame = 0, s->nframes = s->ngiven, s->sequence = s->ngiven > 1;
+    s->nframes = fs_scene_frame_count(&s->scene);
+    s->frame_step = s->scene.frame_step;
+    if (s->given) s->first_frame = 0, s->frame_step = 1, s->nframes = s->ngiven, s->sequence = s->ngiven > 1;
     for (int i = 0; i < s->nentries; i++)
         if (s->entries[i].imported && s->nframes > 1)
             return fs_fail(FS_ERR_INPUT, "%s needs a single-frame scene", fs_word("import"));

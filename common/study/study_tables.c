@@ -76,7 +76,7 @@ static int write_metrics(const fs_study *s, FILE *f)
                 param_cells(s, e, f);
                 fs_csv_text(f, s->refs[k].spec);
                 fputc(',', f);
-                if (s->sequence) fprintf(f, "%d", s->first_frame + fr);
+                if (s->sequence) fprintf(f, "%d", fs_study_frame(s, fr));
                 double v[FS_STUDY_ROW_VALUES];
                 fs_study_row_values(m, e->frame_ms[fr], v);
                 for (int j = 0; j < FS_STUDY_ROW_VALUES; j++) {
@@ -187,13 +187,13 @@ static int write_counters(const fs_study *s, FILE *f)
     for (int k = 0; k < s->nrefs; k++) {
         const fs_study_ref *ref = &s->refs[k];
         for (int fr = 0; fr < s->nframes && !ref->analytic; fr++)
-            fs_counters_rows(f, ref->spec, "ground truth", s->first_frame + fr, &ref->made[fr].counts,
+            fs_counters_rows(f, ref->spec, "ground truth", fs_study_frame(s, fr), &ref->made[fr].counts,
                              ref->v.m->counters);
     }
     for (int i = 0; i < s->nentries; i++) {
         const fs_study_entry *e = &s->entries[i];
         for (int fr = 0; fr < s->nframes && !e->imported; fr++)
-            fs_counters_rows(f, e->name, e->variant, s->first_frame + fr, &e->counts[fr], e->v.m->counters);
+            fs_counters_rows(f, e->name, e->variant, fs_study_frame(s, fr), &e->counts[fr], e->v.m->counters);
     }
     return FS_OK;
 }

@@ -86,7 +86,7 @@ int fs_merge_ref(fs_study_dir *r, int k, int f, fs_run_image *v)
     ref->hits += made->hit;
     if (f == 0 && fs_runs_parse(fd[6], &ref->stages, 1) != 1) return bad_record(d, fd, "unreadable timings");
     if (!ref->analytic && take_counts(r, fd[7], &made->counts)) return bad_record(d, fd, "unreadable work counts");
-    return take_view(r, d->dir, ref->label, r->s->first_frame + f, v);
+    return take_view(r, d->dir, ref->label, fs_study_frame(r->s, f), v);
 }
 
 int fs_merge_entry(fs_study_dir *r, int i, int f, fs_run_image *v)
@@ -101,7 +101,7 @@ int fs_merge_entry(fs_study_dir *r, int i, int f, fs_run_image *v)
         return bad_record(d, fd, "unreadable timings");
     if (f == 0) snprintf(e->renderer, sizeof e->renderer, "%s", fd[6]);
     if (take_counts(r, fd[7], &e->counts[f])) return bad_record(d, fd, "unreadable work counts");
-    return take_view(r, d->dir, e->label, r->s->first_frame + f, v);
+    return take_view(r, d->dir, e->label, fs_study_frame(r->s, f), v);
 }
 
 /* Each file of the staging folder renamed into out (ok), or removed. */

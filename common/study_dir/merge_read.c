@@ -217,7 +217,7 @@ static int record_matches(const fs_study_dir *r, int id, char **fd)
 {
     int per = r->s->nframes, is_ref = id / per < r->s->nrefs, index = is_ref ? id / per : id / per - r->s->nrefs,
         f = id % per;
-    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != r->s->first_frame + f) return 0;
+    if (strcmp(fd[0], is_ref ? "ref" : "entry") || atoi(fd[3]) != fs_study_frame(r->s, f)) return 0;
     if (is_ref) return !strcmp(fd[2], r->s->refs[index].spec);
     return !r->s->entries[index].imported && !strcmp(fd[2], r->s->entries[index].label);
 }
@@ -265,7 +265,7 @@ int fs_merge_map(fs_merge *m, const fs_study_dir *r)
             if (!is_ref && r->s->entries[index].imported) continue;
             if (!m->record[fs_study_item_id(r->s, is_ref, index, f)])
                 return fs_fail(FS_ERR_INPUT, "no shard made %s, frame %d: the shards were planned differently",
-                               is_ref ? r->s->refs[index].spec : r->s->entries[index].label, r->s->first_frame + f);
+                               is_ref ? r->s->refs[index].spec : r->s->entries[index].label, fs_study_frame(r->s, f));
         }
     return FS_OK;
 }

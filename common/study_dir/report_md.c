@@ -67,7 +67,7 @@ static void write_ref_sources(const fs_study_dir *r, FILE *f)
             const fs_study_made *m = &ref->made[fr];
             if (!m->entry[0]) continue;
             fprintf(f, "  - ");
-            if (r->s->sequence) fprintf(f, "frame %d: ", r->s->first_frame + fr);
+            if (r->s->sequence) fprintf(f, "frame %d: ", fs_study_frame(r->s, fr));
             fprintf(f, "%s `%s`\n", m->hit ? "from the cache:" : "rendered, stored as", m->entry);
         }
     }

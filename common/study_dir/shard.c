@@ -47,7 +47,7 @@ static double frame_particles(const fs_study_dir *r, int f)
     char path[FS_PATH_MAX];
     struct stat st;
     if (!r->s->sequence || r->s->scene.synth.shape) return 1;
-    if (fs_frame_path(path, sizeof path, r->s->scene.source, r->s->first_frame + f) || stat(path, &st)) return 1;
+    if (fs_frame_path(path, sizeof path, r->s->scene.source, fs_study_frame(r->s, f)) || stat(path, &st)) return 1;
     return st.st_size > 0 ? (double)st.st_size : 1;
 }
 
@@ -135,8 +135,8 @@ static void write_ref_record(const fs_study_dir *r, FILE *f, int k, int fr)
     static char counts[FS_STAGE_COUNTS_MAX];
     char stages[640] = "";
     if (fr == 0) fs_runs_format(&ref->stages, 1, stages, sizeof stages);
-    fprintf(f, "ref\t%d\t%s\t%d\t%d\t%s\t%s\t%s\n", fs_study_item_id(r->s, 1, k, fr), ref->spec, r->s->first_frame + fr,
-            ref->made[fr].hit, or_dash(ref->made[fr].entry), or_dash(stages),
+    fprintf(f, "ref\t%d\t%s\t%d\t%d\t%s\t%s\t%s\n", fs_study_item_id(r->s, 1, k, fr), ref->spec,
+            fs_study_frame(r->s, fr), ref->made[fr].hit, or_dash(ref->made[fr].entry), or_dash(stages),
             ref->analytic ? "-" : counts_text(r, &ref->made[fr].counts, counts, sizeof counts));
 }
 
@@ -147,7 +147,7 @@ static void write_entry_record(const fs_study_dir *r, FILE *f, int i, int fr)
     char runs[640] = "";
     if (fr == 0) fs_runs_format(e->runs, e->nruns, runs, sizeof runs);
     fprintf(f, "entry\t%d\t%s\t%d\t%.17g\t%s\t%s\t%s\n", fs_study_item_id(r->s, 0, i, fr), e->label,
-            r->s->first_frame + fr, e->frame_ms[fr], or_dash(runs), or_dash(e->renderer),
+            fs_study_frame(r->s, fr), e->frame_ms[fr], or_dash(runs), or_dash(e->renderer),
             r->s->counters ? counts_text(r, &e->counts[fr], counts, sizeof counts) : "-");
 }
 

@@ -73,6 +73,7 @@ static int execute(fs_study_dir *r, const fs_study_io *io, int *have_ctx)
     const fs_study_dir_opts *o = r->o;
     const fs_gl_context *ctx = NULL;
     int rc = fs_study_load_first(r->s, o->radius, r->radius_note, sizeof r->radius_note);
+    if (!rc && r->radius_note[0]) fs_note("%s", r->radius_note); /* before the work: what r and up it took */
     if (!rc && fs_study_needs_gl(r->s, io)) {
         rc = o->gl_acquire ? o->gl_acquire(o->gl_user, &ctx) : fs_fail(FS_ERR_RUNTIME, "no GL context to render in");
         *have_ctx = !rc;
@@ -118,7 +119,6 @@ static int write_outputs(fs_study_dir *r)
 /* What one process says when it is done. */
 static void done_notes(const fs_study_dir *r, const fs_study_io *io, double t_start)
 {
-    if (r->radius_note[0]) fs_note("%s", r->radius_note);
     if (r->o->resume) fs_note("--resume: %d work item(s) loaded from %s/, the rest rendered", r->resumed, r->outdir);
     if (r->merge)
         fs_note("merge of %d shards done in %.1f s, outputs in %s/", r->merge->n, since_s(t_start), r->merge->out_arg);

@@ -11,7 +11,7 @@ typedef struct fs_study_dir {
     fs_study *s;
     const fs_study_dir_opts *o;
     char outdir[1024];                      /* o->dir, or a merge's staging folder */
-    char radius_note[1024];                 /* fs_scene_adopt_frame's note, given after success */
+    char radius_note[1024];                 /* fs_scene_adopt_frame's note, given before the work */
     int made_outdir;                        /* this run made outdir: a failure before any output removes it */
     int resumed;                            /* the work items --resume loaded */
     int *owner;                             /* with shards: each work item's shard, 1..N (fs_study_item_id) */

@@ -24,7 +24,7 @@ static int io_ref_view(void *user, fs_study *s, int k, int f, fs_run *run, const
                        fs_run_image *v, fs_stages *st, fs_study_made *made)
 {
     fs_study_dir *r = user;
-    int frame = s->first_frame + f;
+    int frame = fs_study_frame(s, f);
     int rc = fs_ref_cache_render(&r->cache, run, &s->scene, p, g, &s->prov, frame, v, st, made);
     if (!rc && made->hit) fs_note("%s, frame %d: from the cache, %s", s->refs[k].spec, frame, made->entry);
     return rc;
@@ -43,7 +43,7 @@ static int io_load(void *user, fs_study *s, int is_ref, int index, int f, const 
     }
     if (!r->o->resume || is_ref) return FS_OK;
     char exr[1400];
-    fs_study_dir_view_path(r, NULL, s->entries[index].label, s->first_frame + f, "", "exr", exr, sizeof exr);
+    fs_study_dir_view_path(r, NULL, s->entries[index].label, fs_study_frame(s, f), "", "exr", exr, sizeof exr);
     *got = fs_resume_load(&s->entries[index], f, s->repeat, prov, exr, v);
     r->resumed += *got;
     return FS_OK;
@@ -84,7 +84,7 @@ static int io_store(void *user, fs_study *s, int is_ref, int index, int f, const
     fs_study_dir *r = user;
     if (is_ref) ref_provenance(&s->refs[index], prov);
     else fs_resume_stamp(prov, &s->entries[index], f);
-    return write_view(r, is_ref ? s->refs[index].label : s->entries[index].label, s->first_frame + f, v, prov);
+    return write_view(r, is_ref ? s->refs[index].label : s->entries[index].label, fs_study_frame(s, f), v, prov);
 }
 
 /* A finished work item (one view of one frame), for the progress bar or line. */
@@ -92,7 +92,7 @@ static void io_done(void *user, const fs_study *s, const char *label, int f)
 {
     (void)user;
     char what[160];
-    if (s->nframes > 1) snprintf(what, sizeof what, "%s, frame %d", label, s->first_frame + f);
+    if (s->nframes > 1) snprintf(what, sizeof what, "%s, frame %d", label, fs_study_frame(s, f));
     else snprintf(what, sizeof what, "%s", label);
     fs_progress_item(what);
 }
