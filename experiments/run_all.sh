@@ -109,6 +109,7 @@ study inacio2010_sim_speed bash experiments/inacio2010/sim_speed.sh
 [ $mode = quick ] && study bench_make_splash bash experiments/bench/make_splash.sh
 study bench_foundation bash experiments/bench_foundation.sh
 study bench_info bash experiments/bench/info.sh
+study study_up_axis bash experiments/study/up_axis.sh # the up guess on every third-party frame: README's table
 study bench_memory bash experiments/bench/memory.sh
 study bench_speed bash experiments/bench/speed.sh $([ $mode = quick ] && echo --quick)
 study bench_thickness_counts bash experiments/bench/thickness_counts.sh

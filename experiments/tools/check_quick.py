@@ -320,6 +320,9 @@ CHECKS = [
     ("bench_info", "bench/info.csv", "*", "abs(ratio - 1) - target", ("in", -math.inf, 0),
      "info's radius estimate meets its targets: within 10% of the true r on a lattice, 20% on a developed frame "
      "(full size 3% and 2%)"),
+    ("study_up_axis", "study/up_axis.csv", "right~[01]", "right", ("in", 1, 1),
+     "the up guess (common/scene/up_axis.c) is the known up axis on every frame whose up is known: y on the "
+     "SPlisHSPlasH frames, z on the shapes stood on z = 0 and the DualSPHysics frames (full size: all 13)"),
     ("bench_memory", "bench/memory.csv", "*", "peak_rss_kib_median - peak_rss_kib_min", ("in", 0, math.inf),
      "a median is not below the minimum of the same runs"),
     ("bench_memory", "bench/memory.csv", "*", "peak_rss_kib_max - peak_rss_kib_median", ("in", 0, math.inf),
