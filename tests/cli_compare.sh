@@ -37,7 +37,7 @@ check 'grep -q "^spheres,radius_scale=1.2;thickness=off,1.2,off,reference," "$T/
 check 'grep -v "^#" "$T/sweep/metrics.csv" | head -1 | grep -q "^method,variant,radius_scale,thickness,reference,frame,mask_iou,"' "metrics.csv has the swept parameters' columns beside variant"
 check '[ -s "$T/sweep/spheres_radius_scale-0p8_thickness-on.png" ] && [ -s "$T/sweep/diff_spheres_radius_scale-1p2_thickness-off.png" ]' "variant label in file names (. written p, = written -)"
 check '[ -z "$(ls "$T/sweep" | sed "s/\.[a-z]*$//" | grep -vE "^[A-Za-z0-9_-]+$")" ]' "every file name is [A-Za-z0-9_-] plus its extension: $(ls "$T/sweep" | tr '\n' ' ')"
-check 'grep -qF "| \`spheres_radius_scale-0p8_thickness-on\` | spheres | radius_scale=0.8;thickness=on | radius_scale=0.8;thickness=on |" "$T/sweep/report.md"' "report.md maps each label to its method and parameters"
+check 'grep -qF "| \`spheres_radius_scale-0p8_thickness-on\` | spheres | radius_scale=0.8;thickness=on | radius_scale=0.8;thickness=on;splat=raster;splat_large_px=0 |" "$T/sweep/report.md"' "report.md maps each label to its method and parameters"
 read -r sw sh <<< "$(size "$T/sweep/panel.png")"
 check '[ "${sh:-0}" -ge $((2 * 48)) ] && [ "${sh:-0}" -le $((2 * 48 + 150)) ] && [ "${sw:-0}" -ge $((4 * 48)) ]' "sweep panel is a 2-row grid (${sw}x${sh})"
 

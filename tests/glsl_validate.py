@@ -4,7 +4,9 @@ counters, simulate, view), each with index.tsv (stage file, ";"-joined defines, 
 
 1. glslangValidator (the Khronos reference compiler) accepts every dumped source as
    GLSL 4.50 core with OpenGL semantics; the layered splat's sources also at every
-   INVOCATIONS the binary can choose (1 .. INVOCATIONS_MAX of common/gl/layered_splat.c).
+   INVOCATIONS the binary can choose (1 .. INVOCATIONS_MAX of common/gl/layered_splat.c);
+   the compute splatter's sources also with SPLAT_INT64 defined, the variant only a GL
+   with 64-bit atomics compiles (llvmpipe has none: common/gl/gl_splat.h).
 2. Coverage: every stage file under shaders/ was compiled; every literal defines string
    passed to fs_program_build in the C sources was compiled; every program of the plain
    compare was compiled again with the counter defines in the --counters run.
@@ -63,6 +65,16 @@ def invocation_variants(path, nmax, tmp):
         yield k, out
 
 
+def int64_variant(path, tmp):
+    """The source at path with SPLAT_INT64 defined after its #version line (a temporary file)."""
+    lines = open(path).read().split("\n")
+    os.makedirs(tmp, exist_ok=True)
+    out = os.path.join(tmp, "int64" + os.path.splitext(path)[1])
+    with open(out, "w") as f:
+        f.write("\n".join(lines[:1] + ["#define SPLAT_INT64 1"] + lines[1:]))
+    return out
+
+
 def literal_defines(src):
     """Every literal defines string given to fs_program_build in the C sources, ';'-joined."""
     found = set()
@@ -93,6 +105,9 @@ def main():
             if "#define INVOCATIONS " in open(path).read():
                 jobs += [("%s/%s with INVOCATIONS %d" % (run, name, k), var)
                          for k, var in invocation_variants(path, nmax, os.path.join(tmp, run + name))]
+            text = open(path).read()
+            if "#ifdef SPLAT_INT64" in text and "#define SPLAT_INT64" not in text:
+                jobs.append(("%s/%s with SPLAT_INT64" % (run, name), int64_variant(path, os.path.join(tmp, run + name))))
     with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
         errs = list(pool.map(lambda j: validate(j[1]), jobs))
     shutil.rmtree(tmp)

@@ -18,8 +18,10 @@ run() {
   FS_SHADER_DUMP=$T/dump/$name "$@" 2> "$T/$name.err" || fail "$name: $(tail -1 "$T/$name.err")"
 }
 scene=$SRC/experiments/scenes/dam_break.json
-run compare "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache -o "$T/compare"
-run counters "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache --counters -o "$T/counters"
+# the sprite methods on both splat paths (common/gl/gl_splat.h)
+splat=(--set spheres.splat=raster,compute)
+run compare "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache "${splat[@]}" -o "$T/compare"
+run counters "$BIN" compare "$scene" -W 32 -H 32 -q --no-cache --counters "${splat[@]}" -o "$T/counters"
 run simulate "$BIN" simulate dam_break --gpu --particles 500 --frames 1 -q -o "$T/sim_%04d.ply"
 if [ "$VIEW" = view ]; then
   run view bash "$SRC/tests/xvfb.sh" 320x240x24 "$BIN" view --simulate dam_break --gpu --particles 500 \

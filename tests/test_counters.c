@@ -23,8 +23,8 @@ static void test_names(void)
     const char *want[] = {"field_evals",   "neighbours_visited",   "march_samples",       "fragments_shaded",
                           "filter_taps",   "texels_written",       "crossings",           "cells_walked",
                           "cells_marched", "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
-                          "refine_evals",  "inside_evals"};
-    CHECK(FS_NCOUNTERS == 14, "%d counters", FS_NCOUNTERS);
+                          "refine_evals",  "inside_evals",         "splat_pixels",        "splat_atomics"};
+    CHECK(FS_NCOUNTERS == 16, "%d counters", FS_NCOUNTERS);
     for (int c = 0; c < FS_NCOUNTERS; c++) {
         CHECK(!strcmp(fs_counter_name(c), want[c]), "counter %d is %s", c, fs_counter_name(c));
         CHECK(fs_counter_index(want[c]) == c, "index of %s", want[c]);
@@ -92,40 +92,43 @@ static void test_text(void)
     fs_counting_set(0);
     char text[640];
     CHECK(fs_stage_counts_format(&st, text, sizeof text) == FS_OK, "format");
-    CHECK(!strcmp(text, "1:march=0,0,123456789012345,0,0,0,0,0,0,0,0,0,0,0;bounds=9,0,0,0,0,0,0,0,0,0,0,0,0,0"),
+    CHECK(!strcmp(text, "1:march=0,0,123456789012345,0,0,0,0,0,0,0,0,0,0,0,0,0;bounds=9,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0"),
           "text: %s", text);
     CHECK(fs_stage_counts_parse(text, &back) == FS_OK && back.n == 2, "parse");
     CHECK(!strcmp(back.name[1], "bounds") && !memcmp(back.count, st.count, sizeof st.count), "read back");
     CHECK(fs_stage_counts_parse("", &back) != FS_OK, "empty text is no counts");
     /* the 6 counters before issue 33: an older cache entry, counted again */
     CHECK(fs_stage_counts_parse("1:march=1,2,3,4,5,6", &back) != FS_OK, "too few values");
-    CHECK(fs_stage_counts_parse("2:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14", &back) != FS_OK, "another format");
+    /* the 14 counters before issue 47 */
+    CHECK(fs_stage_counts_parse("1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14", &back) != FS_OK, "14 values");
+    CHECK(fs_stage_counts_parse("2:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16", &back) != FS_OK, "another format");
     CHECK(fs_stage_counts_format(&st, text, 20) != FS_OK, "too long for the buffer");
     /* strict: exactly the format, digits only, below 2^64 */
     const char *bad[] = {
         "1:",
         "1:;",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;;",
-        "1:=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=-1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march= 1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=+1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14 ",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15",
-        "1:march=1,,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=01,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=18446744073709551616,0,0,0,0,0,0,0,0,0,0,0,0,0",
-        "1:march=99999999999999999999,0,0,0,0,0,0,0,0,0,0,0,0,0",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14;march=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14x",
-        "1:a,b=1,2,3,4,5,6,7,8,9,10,11,12,13,14",
-        "1:a=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=1,0,0,0,0,0,0,0,0,0,0,0,0,0" /* the total would wrap */};
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16;",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16;;",
+        "1:=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=-1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march= 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=+1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16 ",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17",
+        "1:march=1,,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=01,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=18446744073709551616,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0",
+        "1:march=99999999999999999999,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16;march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:march=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16x",
+        "1:a,b=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16",
+        "1:a=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0;b=1,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0" /* the total would wrap */};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
         CHECK(fs_stage_counts_parse(bad[i], &back) == FS_ERR_INPUT, "rejects '%s'", bad[i]);
-    CHECK(fs_stage_counts_parse("1:march=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0;b=0,0,0,0,0,0,0,0,0,0,0,0,0,1",
-                                &back) == FS_OK &&
-              back.count[0][0] == UINT64_MAX && back.count[1][13] == 1 && back.n == 2,
+    CHECK(fs_stage_counts_parse(
+              "1:march=18446744073709551615,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0;b=0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,1", &back) ==
+                  FS_OK &&
+              back.count[0][0] == UINT64_MAX && back.count[1][15] == 1 && back.n == 2,
           "2^64 - 1 and a second stage read back");
 }
 

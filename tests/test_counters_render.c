@@ -80,9 +80,12 @@ static double sprite_pixels_bound(float radius)
     return sum;
 }
 
+static uint64_t spheres_fragments; /* the raster's, for the compute splatter's check */
+
 static void check_spheres(const fs_stages *c, const fs_gbuffer *g)
 {
     uint64_t fr = cnt(c, "splat", FS_CNT_FRAGMENTS), tx = cnt(c, "splat", FS_CNT_TEXELS);
+    spheres_fragments = fr;
     double bound = sprite_pixels_bound(S.radius);
     CHECK(fr > 0 && fr <= bound, "spheres: %llu fragments, sprites hold at most %.0f pixels", (unsigned long long)fr,
           bound);
@@ -90,6 +93,30 @@ static void check_spheres(const fs_stages *c, const fs_gbuffer *g)
           (unsigned long long)tx, covered(g), (unsigned long long)fr);
     CHECK(cnt(c, "thickness", FS_CNT_FRAGMENTS) == fr && cnt(c, "thickness", FS_CNT_TEXELS) == tx,
           "spheres: the thickness pass draws the same sprites");
+}
+
+/* splat=compute: its footprints are the raster's quads (as many pixels as the
+ * raster's fragments, once per pass: the depth's two, the thickness's one),
+ * with an atomic per hit at most (plus the listing of large sprites and the
+ * thickness's carries), a depth texel per covered pixel, and no fragment. */
+static void check_spheres_compute(const fs_stages *c, const fs_gbuffer *g)
+{
+    uint64_t px = cnt(c, "splat_compute", FS_CNT_SPLAT_PIXELS), tpx = cnt(c, "thickness_compute", FS_CNT_SPLAT_PIXELS);
+    printf("spheres, splat=compute: %llu footprint pixels (raster: %llu fragments), %llu atomics, %llu + %llu texels\n",
+           (unsigned long long)tpx, (unsigned long long)spheres_fragments,
+           (unsigned long long)cnt(c, "splat_compute", FS_CNT_SPLAT_ATOMICS),
+           (unsigned long long)cnt(c, "splat_compute", FS_CNT_TEXELS),
+           (unsigned long long)cnt(c, "thickness_compute", FS_CNT_TEXELS));
+    CHECK(tpx == spheres_fragments && px == 2 * tpx, "spheres, splat=compute: %llu and %llu pixels for %llu fragments",
+          (unsigned long long)px, (unsigned long long)tpx, (unsigned long long)spheres_fragments);
+    uint64_t at = cnt(c, "splat_compute", FS_CNT_SPLAT_ATOMICS),
+             tat = cnt(c, "thickness_compute", FS_CNT_SPLAT_ATOMICS);
+    CHECK(at >= 2 * covered(g) && at <= px && tat >= covered(g), "spheres, splat=compute: %llu and %llu atomics",
+          (unsigned long long)at, (unsigned long long)tat);
+    CHECK(cnt(c, "splat_compute", FS_CNT_TEXELS) == covered(g) &&
+              cnt(c, "thickness_compute", FS_CNT_TEXELS) >= covered(g),
+          "spheres, splat=compute: a depth texel per covered pixel");
+    CHECK(!cnt(c, NULL, FS_CNT_FRAGMENTS), "spheres, splat=compute: fragments shaded");
 }
 
 /* The reference's walk counts of stage s: each near cell walked is marched, crossed on
@@ -399,6 +426,7 @@ int main(void)
         TEST_DONE();
     }
     test_method("spheres", check_spheres);
+    test_method_set("spheres", "splat=1", check_spheres_compute);
     test_method("reference", check_reference);
     test_method_set("reference", "thickness=0", check_reference_thickness_off);
     test_method_set("reference", "accel=0", check_reference_plain);

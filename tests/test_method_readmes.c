@@ -160,6 +160,9 @@ static int check_text(const fs_method *m, const char *text, const char *where)
     return bad;
 }
 
+/* spheres' two splat parameters (common/gl/gl_splat.h), right, for the checker's cases */
+#define SPLAT_ROWS "| `splat` | — | raster | c |\n| `splat_large_px` | — | 0 | d |\n"
+
 /* The checker itself: a right table passes, each kind of drift fails. */
 static void checker(void)
 {
@@ -167,13 +170,14 @@ static void checker(void)
     const fs_method *m = fs_method_find("spheres");
     const char *head = "| parameter | paper | ours | meaning |\n|---|---|---|---|\n";
     const char *cases[][2] = {
-        {"| `radius_scale` | 1 | 1.0 r | a |\n| `thickness` | — | on | b |\n", "0"},
-        {"| `radius_scale`, `thickness` | | 1, on | a |\n", "0"},
-        {"| `radius_scale` | 1 | 1.5 | a |\n| `thickness` | — | on | b |\n", "1"},                   /* wrong number */
-        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | — | off | b |\n", "1"},                    /* wrong bool */
-        {"| `radius_scale` | 1 | 1 | a |\n", "1"},                                                   /* missing row */
-        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | | on | b |\n| `radius` | | 1 | |\n", "1"}, /* unknown */
-        {"| `radius_scale` | 1 | r | a |\n| `thickness` | — | on | b |\n", "1"},                     /* no value */
+        {"| `radius_scale` | 1 | 1.0 r | a |\n| `thickness` | — | on | b |\n" SPLAT_ROWS, "0"},
+        {"| `radius_scale`, `thickness`, `splat`, `splat_large_px` | | 1, on, raster, 0 | a |\n", "0"},
+        {"| `radius_scale` | 1 | 1.5 | a |\n| `thickness` | — | on | b |\n" SPLAT_ROWS, "1"}, /* wrong number */
+        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | — | off | b |\n" SPLAT_ROWS, "1"},  /* wrong bool */
+        {"| `radius_scale` | 1 | 1 | a |\n" SPLAT_ROWS, "1"},                                 /* missing row */
+        {"| `radius_scale` | 1 | 1 | a |\n| `thickness` | | on | b |\n| `radius` | | 1 | |\n" SPLAT_ROWS,
+         "1"},                                                                              /* unknown */
+        {"| `radius_scale` | 1 | r | a |\n| `thickness` | — | on | b |\n" SPLAT_ROWS, "1"}, /* no value */
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         char text[1024];

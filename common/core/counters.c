@@ -8,7 +8,7 @@ static const char *const names[FS_NCOUNTERS] = {
     "field_evals",   "neighbours_visited",   "march_samples",       "fragments_shaded",
     "filter_taps",   "texels_written",       "crossings",           "cells_walked",
     "cells_marched", "cells_marched_inside", "cells_proven_inside", "cells_proven_outside",
-    "refine_evals",  "inside_evals"};
+    "refine_evals",  "inside_evals",         "splat_pixels",        "splat_atomics"};
 
 const char *fs_counter_name(int c) { return c >= 0 && c < FS_NCOUNTERS ? names[c] : NULL; }
 

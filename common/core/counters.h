@@ -33,6 +33,9 @@ typedef enum fs_counter {
     FS_CNT_CELLS_PROVEN_OUTSIDE,
     FS_CNT_REFINE_EVALS,
     FS_CNT_INSIDE_EVALS,
+    /* the compute splatter's work (issue 47; common/gl/gl_splat.h) */
+    FS_CNT_SPLAT_PIXELS,
+    FS_CNT_SPLAT_ATOMICS,
     FS_NCOUNTERS
 } fs_counter;
 #define FS_CNT_BIT(c) (1u << (c))

@@ -21,7 +21,8 @@ const char *fs_gl_counter_defines(void)
                                                     "FS_CNT_CROSSINGS",           "FS_CNT_CELLS_WALKED",
                                                     "FS_CNT_CELLS_MARCHED",       "FS_CNT_CELLS_MARCHED_INSIDE",
                                                     "FS_CNT_CELLS_PROVEN_INSIDE", "FS_CNT_CELLS_PROVEN_OUTSIDE",
-                                                    "FS_CNT_REFINE_EVALS",        "FS_CNT_INSIDE_EVALS"};
+                                                    "FS_CNT_REFINE_EVALS",        "FS_CNT_INSIDE_EVALS",
+                                                    "FS_CNT_SPLAT_PIXELS",        "FS_CNT_SPLAT_ATOMICS"};
     for (int c = 0; c < FS_NCOUNTERS; c++) n += snprintf(text + n, sizeof text - n, "\n%s %du", macro[c], c);
     return text;
 }

@@ -4,8 +4,9 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_stage.h"
-#include "gl_sprites.h"
 #include "gl_gbuffer.h"
+#include "gl_splat.h"
+#include "gl_sprites.h"
 #include "method.h"
 #include "shader.h"
 #include <stdlib.h>
@@ -16,12 +17,15 @@
 typedef struct spheres_params {
     double radius_scale;
     bool thickness;
+    fs_splat_path splat;
+    int splat_large_px;
 } spheres_params;
 
 #define FIELD(f) FS_PARAM_FIELD(spheres_params, f)
 static const fs_param_def params[] = {
     {FIELD(radius_scale), FS_PARAM_FLOAT, 1.0, 0.05, 4.0, NULL, "sphere radius in multiples of the particle radius r"},
     {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive chord-length thickness pass (on/off)"},
+    FS_SPLAT_PARAM_DEFS(spheres_params),
 };
 #undef FIELD
 
@@ -29,6 +33,8 @@ typedef struct spheres {
     fs_field field;
     float radius;
     int thickness;
+    fs_splat_path path;
+    fs_gl_splat cs; /* the compute splatter, when path is not raster */
     unsigned prog_surface, prog_thickness, vao;
     unsigned bufs[MAX_CHUNKS];
     size_t chunk, n; /* particles per buffer, in all */
@@ -44,6 +50,7 @@ static void destroy(void *self)
     if (s->prog_thickness) glDeleteProgram(s->prog_thickness);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
+    fs_gl_splat_free(&s->cs);
     fs_gl_target_destroy(&s->target);
     free(s);
 }
@@ -60,10 +67,12 @@ static void *create(const fs_method_setup *setup)
     s->field = setup->field;
     s->radius = (float)p.radius_scale * setup->field.r;
     s->thickness = p.thickness;
+    s->path = p.splat;
     const char *surf[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
-    s->prog_surface = fs_program_build(surf, "POS_PACKED3 1");
-    if (s->prog_surface) s->prog_thickness = fs_program_build(surf, "POS_PACKED3 1\nMODE_THICKNESS 1");
-    if (!s->prog_thickness) {
+    int ok = s->path == FS_SPLAT_RASTER ? (s->prog_surface = fs_program_build(surf, "POS_PACKED3 1")) &&
+            (s->prog_thickness = fs_program_build(surf, "POS_PACKED3 1\nMODE_THICKNESS 1"))
+                                        : fs_gl_splat_init(&s->cs, s->path, FS_SPRITE_XYZ, p.splat_large_px) == FS_OK;
+    if (!ok) {
         destroy(s);
         return NULL;
     }
@@ -95,6 +104,19 @@ static void set_uniforms(unsigned prog, const fs_camera *cam, float radius)
 
 static void draw(const spheres *s) { fs_gl_draw_sprites(s->vao, s->bufs, s->nbufs, s->chunk, s->n, 3 * sizeof(float)); }
 
+/* The depth and thickness passes on the compute splatter (gl_splat.h). */
+static int render_compute(spheres *s, const fs_camera *cam, fs_stages *t, double t0)
+{
+    fs_sprite_bufs sp = {s->bufs, s->nbufs, s->chunk, s->n};
+    int rc = fs_gl_splat_depth(&s->cs, &s->target, cam, &sp, s->radius);
+    double t1 = fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 0), t0);
+    if (!rc && s->thickness) {
+        rc = fs_gl_splat_thickness(&s->cs, &s->target, cam, &sp, s->radius, 1.0f);
+        fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 1), t1);
+    }
+    return rc;
+}
+
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
     spheres *s = self;
@@ -105,6 +127,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     }
     double t0 = fs_gl_stage_start();
     fs_gl_target_clear(&s->target);
+    if (s->path != FS_SPLAT_RASTER) {
+        int rc = render_compute(s, cam, t, t0);
+        return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
+    }
     fs_gl_target_begin_surface(&s->target);
     set_uniforms(s->prog_surface, cam, s->radius);
     draw(s);
@@ -126,7 +152,8 @@ const fs_method fs_method_spheres = {
     .paper = "inacio2010 (Table II baseline)",
     .needs_gl = 1,
     .grid_use = FS_GRID_UNUSED, /* the sprites are drawn in the particles' order */
-    .counters = FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS),
+    .counters = FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_TEXELS) | FS_CNT_BIT(FS_CNT_SPLAT_PIXELS) |
+        FS_CNT_BIT(FS_CNT_SPLAT_ATOMICS),
     .params = params,
     .nparams = sizeof params / sizeof *params,
     .params_size = sizeof(spheres_params),

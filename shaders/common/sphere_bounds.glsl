@@ -9,20 +9,35 @@ vec2 tangent_slopes(float c, float u, float r)
     return vec2(c * u - r * disc, c * u + r * disc) / den;
 }
 
-// Clip position of corner (gl_VertexID of a 4-vertex strip) of the quad bounding
-// the sphere (view-space centre c, radius r); depth at the sphere's nearest point
-// so early depth rejection stays conservative. False when the eye is inside or
-// behind: the caller culls.
-bool sphere_sprite_corner(vec3 c, float r, mat4 proj, out vec4 position)
+// The sprite of a sphere (view-space centre c, radius r): its quad's NDC
+// rectangle (x0, x1, y0, y1) and its NDC depth, that of the sphere's nearest
+// point, so early depth rejection stays conservative. False when the eye is
+// inside or behind: the caller culls. The raster and the compute splatter
+// both take their bounds from here (common/gl/gl_splat.h).
+bool sphere_sprite_rect(vec3 c, float r, mat4 proj, out vec4 rect, out float ndc_z)
 {
     float u = -c.z;
-    position = vec4(2.0, 2.0, 2.0, 1.0);
+    rect = vec4(0.0);
+    ndc_z = 2.0;
     if (u <= r * 1.001) return false;
     vec2 sx = tangent_slopes(c.x, u, r) * proj[0][0];
     vec2 sy = tangent_slopes(c.y, u, r) * proj[1][1];
-    vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
-    vec2 ndc = vec2(mix(sx.x, sx.y, corner.x), mix(sy.x, sy.y, corner.y));
+    rect = vec4(sx, sy);
     vec4 clip = proj * vec4(0.0, 0.0, c.z + r, 1.0);
-    position = vec4(ndc, clip.z / clip.w, 1.0);
+    ndc_z = clip.z / clip.w;
+    return true;
+}
+
+// Clip position of corner `vertex` (gl_VertexID of a 4-vertex strip) of the
+// sprite's quad; false (a position outside the clip volume) when culled.
+bool sphere_sprite_corner(vec3 c, float r, mat4 proj, int vertex, out vec4 position)
+{
+    vec4 rect;
+    float z;
+    position = vec4(2.0, 2.0, 2.0, 1.0);
+    if (!sphere_sprite_rect(c, r, proj, rect, z)) return false;
+    vec2 corner = vec2(vertex & 1, vertex >> 1);
+    vec2 ndc = vec2(mix(rect.x, rect.y, corner.x), mix(rect.z, rect.w, corner.y));
+    position = vec4(ndc, z, 1.0);
     return true;
 }

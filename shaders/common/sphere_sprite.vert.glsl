@@ -19,5 +19,5 @@ void main()
 {
     vec3 c = (u_view * vec4(sprite_pos(gl_InstanceID), 1.0)).xyz;
     v_center = c;
-    sphere_sprite_corner(c, u_radius, u_proj, gl_Position);
+    sphere_sprite_corner(c, u_radius, u_proj, gl_VertexID, gl_Position);
 }

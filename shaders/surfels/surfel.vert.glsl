@@ -24,5 +24,5 @@ void main()
     v_world_normal = s.normal.xyz;
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     if (dot(n, -c) <= 0.0) return; // back face
-    sphere_sprite_corner(c, v_radius, u_proj, gl_Position);
+    sphere_sprite_corner(c, v_radius, u_proj, gl_VertexID, gl_Position);
 }
