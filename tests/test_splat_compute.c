@@ -1,10 +1,11 @@
 /* The compute splatter (common/gl/gl_splat.h) gives the raster's G-buffer: for
- * spheres (so far the one method with the splat parameter) on the demo's frame (the 24,389-particle dam break) and the
- * front of the shared DualSPHysics frame (experiments/data/dualsphysics/),
- * splat=compute against splat=raster on llvmpipe: the same mask (IoU 1), depth
- * within 1e-6 relative, normals within 0.01 degrees, thickness within 1e-3 r
- * per pixel; also with every sprite of more than one pixel split over a
- * workgroup (splat_large_px=1). The comparison is shown to catch one sprite
+ * every method with the splat parameter (spheres; raycast_pca's entry and
+ * thickness spheres) on the demo's frame (the 24,389-particle dam break) and the front of the
+ * shared DualSPHysics frame (experiments/data/dualsphysics/), splat=compute
+ * against splat=raster on llvmpipe, the methods' whole output: the same mask
+ * (IoU 1), depth within 1e-6 relative, normals within 0.01 degrees, thickness
+ * within 1e-3 r per pixel; also with every sprite of more than one pixel split
+ * over a workgroup (splat_large_px=1). The comparison is shown to catch one sprite
  * left out, and the compute stages to be named apart from the raster's. */
 #include "fs_error.h"
 #include "frame_source.h"
@@ -183,11 +184,13 @@ int main(void)
             continue;
         }
         test_equal(fr, "spheres", NULL, NULL);
+        test_equal(fr, "raycast_pca", NULL, NULL);
         fs_particles_free(&fr->p);
     }
     /* sprites of more than one pixel split over workgroups */
     if (load_demo(&frames[0]) == FS_OK) {
         test_equal(&frames[0], "spheres", NULL, "splat_large_px=1");
+        test_equal(&frames[0], "raycast_pca", NULL, "splat_large_px=1"); /* 2.5 r thickness spheres */
         test_dropped_sprite(&frames[0]);
         fs_particles_free(&frames[0].p);
     }

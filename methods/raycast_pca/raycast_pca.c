@@ -6,9 +6,10 @@
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_grid.h"
-#include "gl_stage.h"
-#include "gl_sprites.h"
 #include "gl_gbuffer.h"
+#include "gl_splat.h"
+#include "gl_sprites.h"
+#include "gl_stage.h"
 #include "method.h"
 #include "raycast_pca/pca_normal.h"
 #include "shader.h"
@@ -32,6 +33,8 @@ typedef struct rpca_params {
     bool thickness;
     double thick_radius;
     rpca_thick_weight thick_weight;
+    fs_splat_path splat;
+    int splat_large_px;
 } rpca_params;
 
 #define FIELD(f) FS_PARAM_FIELD(rpca_params, f)
@@ -58,6 +61,7 @@ static const fs_param_def params[] = {
      "radius of the thickness spheres, multiples of r (the paper: the entry spheres' 1 r)"},
     {FIELD(thick_weight), FS_PARAM_ENUM, RPCA_THICK_VOLUME, 0, 1, "volume|chord",
      "what a thickness sphere adds: its chord times V / sphere volume (volume) or the bare chord"},
+    FS_SPLAT_PARAM_DEFS(rpca_params),
 };
 #undef FIELD
 
@@ -68,6 +72,7 @@ typedef struct rpca {
     fs_field f;
     rpca_params params;
     unsigned prog_splat, prog_thick, prog_march, prog_normals, prog_filter, vao;
+    fs_gl_splat cs;            /* the compute splatter, with splat=compute */
     unsigned tex_hit, tex_raw; /* world hit point; unfiltered view normal */
     int tex_w, tex_h;
     fs_grid own; /* built when the caller's grid is missing or too fine; upload only */
@@ -93,10 +98,22 @@ static void destroy(void *self)
     for (int i = 0; i < 5; i++)
         if (progs[i]) glDeleteProgram(progs[i]);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    fs_gl_splat_free(&s->cs);
     free_textures(s);
     fs_gl_grid_free(&s->gg);
     if (s->has_own) fs_grid_free(&s->own);
     free(s);
+}
+
+/* The sprite passes' programs: the raster's, or the compute splatter's (splat=compute). */
+static int build_sprites(rpca *s)
+{
+    if (s->params.splat != FS_SPLAT_RASTER)
+        return fs_gl_splat_init(&s->cs, s->params.splat, FS_SPRITE_XYZW, s->params.splat_large_px);
+    const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
+    if (!(s->prog_splat = fs_program_build(spr, NULL)) || !(s->prog_thick = fs_program_build(spr, "MODE_THICKNESS 1")))
+        return FS_ERR_RUNTIME;
+    return FS_OK;
 }
 
 static void *create(const fs_method_setup *setup)
@@ -113,14 +130,11 @@ static void *create(const fs_method_setup *setup)
         free(s);
         return NULL;
     }
-    const char *spr[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
     const char *march[] = {"raycast_pca/march.comp.glsl", NULL};
     const char *normals[] = {"raycast_pca/normals.comp.glsl", NULL};
     const char *filter[] = {"raycast_pca/filter.comp.glsl", NULL};
-    if (!(s->prog_splat = fs_program_build(spr, NULL)) ||
-        !(s->prog_thick = fs_program_build(spr, "MODE_THICKNESS 1")) ||
-        !(s->prog_march = fs_program_build(march, NULL)) || !(s->prog_normals = fs_program_build(normals, NULL)) ||
-        !(s->prog_filter = fs_program_build(filter, NULL))) {
+    if (build_sprites(s) != FS_OK || !(s->prog_march = fs_program_build(march, NULL)) ||
+        !(s->prog_normals = fs_program_build(normals, NULL)) || !(s->prog_filter = fs_program_build(filter, NULL))) {
         destroy(s);
         return NULL;
     }
@@ -185,11 +199,11 @@ static void dispatch(const fs_camera *cam)
 }
 
 /* xiao2017's passes, in the order render() runs them (defined below it). */
-static void entry_pass(rpca *s, const fs_camera *cam, float splat_r);
+static int entry_pass(rpca *s, const fs_camera *cam, float splat_r);
 static void march_pass(rpca *s, const fs_camera *cam);
 static void normals_pass(rpca *s, const fs_camera *cam);
 static void filter_pass(rpca *s, const fs_camera *cam, const float proj[16]);
-static void thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start);
+static int thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start);
 
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
@@ -203,28 +217,38 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_camera_proj_matrix(cam, proj);
 
     double t0 = fs_gl_stage_start();
-    entry_pass(s, cam, splat_r);
-    double t1 = fs_gl_stage_end(t, "splat", t0);
+    rc = entry_pass(s, cam, splat_r);
+    if (rc) return rc;
+    double t1 = fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 0), t0);
     march_pass(s, cam);
     double t2 = fs_gl_stage_end(t, "march", t1);
     normals_pass(s, cam);
     double t3 = fs_gl_stage_end(t, "normals", t2);
     filter_pass(s, cam, proj);
     double t4 = fs_gl_stage_end(t, "filter", t3);
-    thickness_pass(s, cam, t, t4);
-    return fs_gl_target_read_timed(&s->target, out, t);
+    rc = thickness_pass(s, cam, t, t4);
+    return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
 }
 
-static void entry_pass(rpca *s, const fs_camera *cam, float splat_r)
+/* The particles as the compute splatter reads them: the grid's sorted vec4 positions. */
+static fs_sprite_bufs sprites(const rpca *s) { return (fs_sprite_bufs){s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n}; }
+
+static int entry_pass(rpca *s, const fs_camera *cam, float splat_r)
 {
-    /* 3.1 ray entry: nearest sphere per pixel, hardware depth test. */
+    /* 3.1 ray entry: nearest sphere per pixel, hardware depth test (or the
+     * compute splatter's atomic minimum: the same depth and normal). */
     fs_gl_target_clear(&s->target);
+    if (s->params.splat != FS_SPLAT_RASTER) {
+        fs_sprite_bufs sp = sprites(s);
+        return fs_gl_splat_depth(&s->cs, &s->target, cam, &sp, splat_r);
+    }
     fs_gl_target_begin_surface(&s->target);
     fs_gl_camera_uniforms(s->prog_splat, cam);
     glUniform1f(glGetUniformLocation(s->prog_splat, "u_radius"), splat_r);
     draw_spheres(s);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
+    return FS_OK;
 }
 
 static void march_pass(rpca *s, const fs_camera *cam)
@@ -301,20 +325,26 @@ static float rpca_thickness_weight(rpca_thick_weight weight, float V, float radi
     return V / (4.18879020f * radius * radius * radius);
 }
 
-static void thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start)
+static int thickness_pass(rpca *s, const fs_camera *cam, fs_stages *t, double start)
 {
     /* 3.4 thickness: additive sphere splatting (weighted chord lengths). */
-    if (s->params.thickness) {
-        float radius = (float)s->params.thick_radius * s->f.r;
+    if (!s->params.thickness) return FS_OK;
+    float radius = (float)s->params.thick_radius * s->f.r;
+    float weight = rpca_thickness_weight(s->params.thick_weight, s->f.volume, radius);
+    int rc = FS_OK;
+    if (s->params.splat != FS_SPLAT_RASTER) {
+        fs_sprite_bufs sp = sprites(s);
+        rc = fs_gl_splat_thickness(&s->cs, &s->target, cam, &sp, radius, weight);
+    } else {
         fs_gl_target_begin_thickness(&s->target);
         fs_gl_camera_uniforms(s->prog_thick, cam);
         glUniform1f(glGetUniformLocation(s->prog_thick, "u_radius"), radius);
-        glUniform1f(glGetUniformLocation(s->prog_thick, "u_thickness_weight"),
-                    rpca_thickness_weight(s->params.thick_weight, s->f.volume, radius));
+        glUniform1f(glGetUniformLocation(s->prog_thick, "u_thickness_weight"), weight);
         draw_spheres(s);
         fs_gl_target_end_pass();
-        fs_gl_stage_end(t, "thickness", start);
     }
+    fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 1), start);
+    return rc;
 }
 
 /* the particles' colours, interpolated like the normals */
@@ -328,7 +358,8 @@ const fs_method fs_method_raycast_pca = {
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
     .counters = FS_CNT_BIT(FS_CNT_FIELD_EVALS) | FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_MARCH_SAMPLES) |
-        FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) | FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) | FS_CNT_BIT(FS_CNT_TEXELS) |
+        FS_CNT_BIT(FS_CNT_SPLAT_PIXELS) | FS_CNT_BIT(FS_CNT_SPLAT_ATOMICS),
     .aovs = aovs,
     .naovs = sizeof aovs / sizeof *aovs,
     .params = params,
