@@ -1,6 +1,7 @@
 /* The compute splatter (common/gl/gl_splat.h) gives the raster's G-buffer: for
  * every method with the splat parameter (spheres; raycast_pca's entry and
- * thickness spheres) on the demo's frame (the 24,389-particle dam break) and the front of the
+ * thickness spheres; aniso_ssf's ellipsoids, and its spheres with anisotropy
+ * off) on the demo's frame (the 24,389-particle dam break) and the front of the
  * shared DualSPHysics frame (experiments/data/dualsphysics/), splat=compute
  * against splat=raster on llvmpipe, the methods' whole output: the same mask
  * (IoU 1), depth within 1e-6 relative, normals within 0.01 degrees, thickness
@@ -185,12 +186,15 @@ int main(void)
         }
         test_equal(fr, "spheres", NULL, NULL);
         test_equal(fr, "raycast_pca", NULL, NULL);
+        test_equal(fr, "aniso_ssf", NULL, NULL);
+        test_equal(fr, "aniso_ssf", "anisotropy=off", NULL);
         fs_particles_free(&fr->p);
     }
     /* sprites of more than one pixel split over workgroups */
     if (load_demo(&frames[0]) == FS_OK) {
         test_equal(&frames[0], "spheres", NULL, "splat_large_px=1");
         test_equal(&frames[0], "raycast_pca", NULL, "splat_large_px=1"); /* 2.5 r thickness spheres */
+        test_equal(&frames[0], "aniso_ssf", NULL, "splat_large_px=1");
         test_dropped_sprite(&frames[0]);
         fs_particles_free(&frames[0].p);
     }

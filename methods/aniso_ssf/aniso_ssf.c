@@ -7,10 +7,11 @@
 #include "aniso_params.h"
 #include "fs_error.h"
 #include "gl.h"
-#include "gl_stage.h"
-#include "gl_grid.h"
-#include "gl_sprites.h"
 #include "gl_gbuffer.h"
+#include "gl_grid.h"
+#include "gl_splat.h"
+#include "gl_sprites.h"
+#include "gl_stage.h"
 #include "method.h"
 #include "shader.h"
 #include <stdlib.h>
@@ -26,6 +27,8 @@ typedef struct aniso_ssf_params {
     int max_radius_px;
     fs_aniso_param_values aniso;
     bool thickness;
+    fs_splat_path splat;
+    int splat_large_px;
 } aniso_ssf_params;
 
 #define FIELD(f) FS_PARAM_FIELD(aniso_ssf_params, f)
@@ -45,6 +48,7 @@ static const fs_param_def params[] = {
     {FIELD(max_radius_px), FS_PARAM_INT, 32, 1, 256, NULL, "largest filter radius in pixels"},
     FS_ANISO_PARAM_DEFS(aniso_ssf_params),
     {FIELD(thickness), FS_PARAM_BOOL, 1, 0, 1, NULL, "additive splatting thickness pass (on/off)"},
+    FS_SPLAT_PARAM_DEFS(aniso_ssf_params),
 };
 #undef FIELD
 
@@ -54,6 +58,7 @@ typedef struct assf {
     fs_aniso_params ap;
     unsigned prog_sph, prog_sph_thick, prog_ell, prog_ell_thick, vao;
     unsigned prog_gauss, prog_bilat, prog_curv, prog_narrow, prog_normals;
+    fs_gl_splat cs;  /* the compute splatter, with splat=compute */
     unsigned tex[2]; /* ping-pong depth */
     fs_grid own;
     int has_own;
@@ -79,6 +84,7 @@ static void destroy(void *self)
     for (size_t i = 0; i < sizeof progs / sizeof *progs; i++)
         if (progs[i]) glDeleteProgram(progs[i]);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    fs_gl_splat_free(&s->cs);
     free_textures(s);
     aniso_gl_free(&s->an);
     fs_gl_grid_free(&s->gg);
@@ -90,6 +96,23 @@ static unsigned comp(const char *name)
 {
     const char *st[] = {name, NULL};
     return fs_program_build(st, NULL);
+}
+
+/* The sprite passes' programs: the raster's spheres and ellipsoids, or the
+ * compute splatter's for the one shape the parameters pick (splat=compute). */
+static int build_sprites(assf *s)
+{
+    if (s->params.splat != FS_SPLAT_RASTER)
+        return fs_gl_splat_init(&s->cs, s->params.splat, s->params.anisotropy ? FS_SPRITE_ELLIPSOID : FS_SPRITE_XYZW,
+                                s->params.splat_large_px);
+    const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
+    const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
+    if (!(s->prog_sph = fs_program_build(sph, NULL)) ||
+        !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||
+        !(s->prog_ell = fs_program_build(ell, NULL)) ||
+        !(s->prog_ell_thick = fs_program_build(ell, "MODE_THICKNESS 1")))
+        return FS_ERR_RUNTIME;
+    return FS_OK;
 }
 
 static void *create(const fs_method_setup *setup)
@@ -110,13 +133,7 @@ static void *create(const fs_method_setup *setup)
         return NULL;
     }
     fs_aniso_params_set(&s->ap, &s->params.aniso, f->kernel, f->r);
-    const char *sph[] = {"common/sphere_sprite.vert.glsl", "common/sphere_sprite.frag.glsl", NULL};
-    const char *ell[] = {"aniso_ssf/ellipsoid.vert.glsl", "aniso_ssf/ellipsoid.frag.glsl", NULL};
-    if (!(s->prog_sph = fs_program_build(sph, NULL)) ||
-        !(s->prog_sph_thick = fs_program_build(sph, "MODE_THICKNESS 1")) ||
-        !(s->prog_ell = fs_program_build(ell, NULL)) ||
-        !(s->prog_ell_thick = fs_program_build(ell, "MODE_THICKNESS 1")) ||
-        !(s->prog_gauss = comp("aniso_ssf/gaussian.comp.glsl")) ||
+    if (build_sprites(s) != FS_OK || !(s->prog_gauss = comp("aniso_ssf/gaussian.comp.glsl")) ||
         !(s->prog_bilat = comp("aniso_ssf/bilateral.comp.glsl")) ||
         !(s->prog_curv = comp("aniso_ssf/curvature.comp.glsl")) ||
         !(s->prog_narrow = comp("aniso_ssf/narrow.comp.glsl")) ||
@@ -160,6 +177,47 @@ static void draw_sprites(const assf *s, int aniso)
 {
     if (aniso) fs_gl_draw_sprites(s->vao, s->an.bufs, s->an.nbufs, s->an.chunk, s->n, 12 * sizeof(float));
     else fs_gl_draw_sprites(s->vao, s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n, 4 * sizeof(float));
+}
+
+/* The sprites as the compute splatter reads them: ellipsoids (3 vec4 each) or
+ * the grid's sorted vec4 positions. */
+static fs_sprite_bufs sprites(const assf *s)
+{
+    if (s->params.anisotropy) return (fs_sprite_bufs){s->an.bufs, s->an.nbufs, s->an.chunk, s->n};
+    return (fs_sprite_bufs){s->gg.pos, s->gg.nchunks, s->gg.chunk, s->n};
+}
+
+/* The depth splat (4.3) into the cleared target: eye depth and normal of the
+ * nearest sprite, on the raster or the compute splatter. */
+static int splat_pass(assf *s, const fs_camera *cam)
+{
+    int aniso = s->params.anisotropy;
+    fs_gl_target_clear(&s->target);
+    if (s->params.splat != FS_SPLAT_RASTER) {
+        fs_sprite_bufs sp = sprites(s);
+        return fs_gl_splat_depth(&s->cs, &s->target, cam, &sp, s->f.r);
+    }
+    fs_gl_target_begin_surface(&s->target);
+    camera_uniforms(aniso ? s->prog_ell : s->prog_sph, cam, s->f.r);
+    draw_sprites(s, aniso);
+    fs_gl_target_end_pass();
+    glDisable(GL_DEPTH_TEST);
+    return FS_OK;
+}
+
+/* The additive thickness splat: the sum of the sprites' chords per pixel. */
+static int thickness_pass(assf *s, const fs_camera *cam)
+{
+    int aniso = s->params.anisotropy;
+    if (s->params.splat != FS_SPLAT_RASTER) {
+        fs_sprite_bufs sp = sprites(s);
+        return fs_gl_splat_thickness(&s->cs, &s->target, cam, &sp, s->f.r, 1.0f);
+    }
+    fs_gl_target_begin_thickness(&s->target);
+    camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, s->f.r);
+    draw_sprites(s, aniso);
+    fs_gl_target_end_pass();
+    return FS_OK;
 }
 
 static int ensure_targets(assf *s, int w, int h)
@@ -250,7 +308,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     int rc = ensure_targets(s, cam->width, cam->height);
     if (rc) return rc;
     int aniso = s->params.anisotropy;
-    float proj[16], r = s->f.r;
+    float proj[16];
     fs_camera_proj_matrix(cam, proj);
     float focal_px = proj[5] * 0.5f * (float)cam->height;
 
@@ -261,13 +319,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         t1 = fs_gl_stage_end(t, "anisotropy", t0);
     }
 
-    fs_gl_target_clear(&s->target);
-    fs_gl_target_begin_surface(&s->target);
-    camera_uniforms(aniso ? s->prog_ell : s->prog_sph, cam, r);
-    draw_sprites(s, aniso);
-    fs_gl_target_end_pass();
-    glDisable(GL_DEPTH_TEST);
-    double t2 = fs_gl_stage_end(t, "splat", t1);
+    rc = splat_pass(s, cam);
+    if (rc) return rc;
+    double t2 = fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 0), t1);
 
     unsigned depth = run_filter(s, cam, focal_px);
     double t3 = fs_gl_stage_end(t, "filter", t2);
@@ -284,13 +338,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     double t4 = fs_gl_stage_end(t, "normals", t3);
 
     if (s->params.thickness) {
-        fs_gl_target_begin_thickness(&s->target);
-        camera_uniforms(aniso ? s->prog_ell_thick : s->prog_sph_thick, cam, r);
-        draw_sprites(s, aniso);
-        fs_gl_target_end_pass();
-        fs_gl_stage_end(t, "thickness", t4);
+        rc = thickness_pass(s, cam);
+        fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 1), t4);
     }
-    return fs_gl_target_read_timed(&s->target, out, t);
+    return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
 }
 
 const fs_method fs_method_aniso_ssf = {
@@ -302,7 +353,7 @@ const fs_method fs_method_aniso_ssf = {
     .needs_gl = 1,
     .grid_use = FS_GRID_AT_UPLOAD,
     .counters = FS_CNT_BIT(FS_CNT_NEIGHBOURS) | FS_CNT_BIT(FS_CNT_FRAGMENTS) | FS_CNT_BIT(FS_CNT_FILTER_TAPS) |
-        FS_CNT_BIT(FS_CNT_TEXELS),
+        FS_CNT_BIT(FS_CNT_TEXELS) | FS_CNT_BIT(FS_CNT_SPLAT_PIXELS) | FS_CNT_BIT(FS_CNT_SPLAT_ATOMICS),
     .params = params,
     .nparams = (int)(sizeof params / sizeof *params),
     .params_size = sizeof(aniso_ssf_params),
