@@ -11,7 +11,8 @@ FLUIDSURF_GL=egl bash "$SRC/experiments/gpu/run.sh" --quick --bin "$BINDIR" -o "
   fail "run.sh exit $?: $(tail -3 "$T/log")"
 R=$T/run
 grep -v '^#' "$R/status.csv" | awk -F, 'NR > 1 && $4 != "0" {bad = 1; print "  " $0} END {exit bad}' || fail "cells that did not finish"
-for f in env xiao2017_table1 xu2022_fig9 inacio2010_tables iwasaki2006_density_grid demo_timings demo_metrics; do
+for f in env xiao2017_table1 xu2022_fig9 inacio2010_tables iwasaki2006_density_grid demo_timings demo_metrics \
+  demo_splat_timings demo_splat_metrics; do
   [ "$(grep -vc '^#' "$R/$f.csv" 2>/dev/null)" -ge 2 ] || fail "$f.csv has no rows"
 done
 grep -q '^gl_renderer,".\+"' "$R/env.csv" && grep -q '^gl_version,".\+"' "$R/env.csv" || fail "env.csv lacks the GL renderer or version"
@@ -29,8 +30,17 @@ for f in "$R"/*.csv; do head -1 "$f" | grep -q '^# .*commit=[0-9a-f]\+; dirty=[0
   fail "xiao2017 sizes are not 128 and 192"
 [ "$(awk -F, 'NR > 1 && $6 == "1" && $7 == "splat" {print $4}' "$R/xu2022_fig9.csv" | sort -u | wc -l)" = 10 ] ||
   fail "xu2022 does not have 10 variants"
+# both splat paths (issue 47): the compute splatter's stages, named apart from the raster's
+[ "$(awk -F, 'NR > 1 && $6 == "1" && $7 == "splat_compute" {print $4}' "$R/xu2022_fig9.csv" | sort -u | wc -l)" = 2 ] ||
+  fail "xu2022 does not have the 2 splat=compute variants"
+for p in 'splat=raster",[0-9]*,1,splat,' 'splat=compute",[0-9]*,1,splat_compute,' 'splat=compute",[0-9]*,1,thickness_compute,'; do
+  grep -q "$p" "$R/xiao2017_table1.csv" || fail "xiao2017_table1.csv has no row matching $p"
+done
+grep -q '^spheres,.*,splat_compute,' "$R/demo_splat_timings.csv" || fail "demo_splat_timings.csv: spheres has no splat_compute stage"
 python3 "$SRC/experiments/gpu/report.py" "$R" > "$R/README.md" && grep -q '^| 13824 | 192 | [0-9.]\+ | [0-9.]\+ |' "$R/README.md" ||
   fail "report.py: no xiao2017 row for 13824 particles at 192"
+grep -q '^| 13824 | 192 | [0-9.]\+ | [0-9.]\+ | [0-9.]\+ | [0-9.]\+ | [0-9.]\+ |' <(sed -n '/sprites raster/,/^$/p' "$R/README.md") ||
+  fail "report.py: no raster against compute row for 13824 particles at 192"
 python3 "$SRC/experiments/gpu/report.py" --tables "$R" > "$R/tables.csv" &&
   grep -q '^xiao2017_table1,13824,192,ours ms (GL clock),[0-9.]\+$' "$R/tables.csv" ||
   fail "report.py --tables: no xiao2017 cell for 13824 particles at 192"

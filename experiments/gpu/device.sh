@@ -6,16 +6,19 @@
 # the demo's images, README.md and tables.csv from report.py), and beside it README.md, status.csv and run.log to read
 # at once. A call returns at most 8 files, so the folder travels as one archive.
 #
-# usage: experiments/gpu/device.sh [--quick] [-o OUT]   (default OUT: $OUT, else out/device)
+# usage: experiments/gpu/device.sh [--quick] [-o OUT] [--steps LIST]   (default OUT: $OUT, else out/device)
+# --steps goes to run.sh: with both splat paths the study may need two calls, the first
+# --steps xiao2017_table1, the second the other steps (experiments/gpu/README.md).
 # Rehearse it here with --quick (EGL on llvmpipe). BUDGET_S (default 290) caps run.sh, so
 # the call, start included, fits in 6 minutes. Exit status: run.sh's.
 set -uo pipefail
-quick=() out=${OUT:-}
+quick=() steps=() out=${OUT:-}
 while [ $# -gt 0 ]; do
   case $1 in
     --quick) quick=(--quick) ;;
     -o) [ $# -ge 2 ] || { echo "device.sh: -o needs a folder" >&2; exit 2; }; out=$2; shift ;;
-    *) echo "device.sh: unknown argument $1 (usage: device.sh [--quick] [-o OUT])" >&2; exit 2 ;;
+    --steps) [ $# -ge 2 ] || { echo "device.sh: --steps needs a list" >&2; exit 2; }; steps=(--steps "$2"); shift ;;
+    *) echo "device.sh: unknown argument $1 (usage: device.sh [--quick] [-o OUT] [--steps LIST])" >&2; exit 2 ;;
   esac
   shift
 done
@@ -28,7 +31,7 @@ node_unpack_loaders
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export FLUIDSURF_GL=egl BUDGET_S=${BUDGET_S:-290}
-bash experiments/gpu/run.sh "${quick[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
+bash experiments/gpu/run.sh "${quick[@]}" "${steps[@]}" --bin .gpu/pack -o "$work/gpu" 2>&1 | tee "$out/run.log"
 rc=${PIPESTATUS[0]}
 # the README only when report.py succeeds (a failure is in run.log, and no empty README travels)
 if python3 experiments/gpu/report.py "$work/gpu" > "$work/README.tmp" 2>> "$out/run.log" &&

@@ -24,9 +24,10 @@ import sys
 from collections import defaultdict
 
 RASTER = ("splat", "thickness")  # raycast_pca's sprite stages: vertex + fragment work
+SPLAT_COMPUTE = ("splat_compute", "splat_compute64", "thickness_compute")  # the same on the compute splatter
 COMPUTE = ("march", "normals", "filter")  # its compute-shader stages
-T1_STAGES = RASTER + COMPUTE + ("readback",)
-F9_STAGES = ("anisotropy", "splat", "filter", "normals", "thickness", "readback")
+T1_STAGES = RASTER + SPLAT_COMPUTE + COMPUTE + ("readback",)
+F9_STAGES = ("anisotropy", "splat", "filter", "normals", "thickness", "readback") + SPLAT_COMPUTE
 FILTERS = ("none", "gaussian", "bilateral", "curvature", "narrow")
 # xiao2017 Table 1 (seconds, GTX 970): particle count -> {size: s}
 XIAO_N = (779752, 2027776, 12394215, 37975520, 142612764)
@@ -139,6 +140,16 @@ def frames(rs, stages, key):
     return {k: (med(wall[k].values()), med(gpu[k].values())) for k in wall}
 
 
+def splat_path(v):
+    """The sprite passes' path of a variant string: compute (splat=compute or compute32) or raster."""
+    return "compute" if "splat=compute" in v else "raster"
+
+
+def raster_rows(rs):
+    """The rows of the raster path (every row of a run made before the compute splatter)."""
+    return [r for r in rs if splat_path(r["variant"]) == "raster"]
+
+
 def paper_xiao(n, size):
     """The paper's seconds for the set nearest n (within 5%) at size, else None."""
     i = min(range(len(XIAO_N)), key=lambda j: abs(XIAO_N[j] - n) / XIAO_N[j])
@@ -152,7 +163,8 @@ def pick(values, want):
 
 
 def xiao(d):
-    rs = rows(d, "xiao2017_table1.csv")
+    everything = rows(d, "xiao2017_table1.csv")
+    rs = raster_rows(everything)
     if not rs:
         return "No xiao2017 rows.\n"
     fr = frames(rs, T1_STAGES, lambda r: (int(r["particles"]), int(r["size"])))
@@ -164,7 +176,7 @@ def xiao(d):
                                 "paper ms (GTX 970)", "paper / ours (GL clock)"), body, "xiao2017_table1")
     return (out + "\n" + EXCLUDED % "xiao2017 builds a GPU hash grid for its neighbour searches (its implementation "
             "notes) and does not say whether Table 1 includes it" + "\n" + setup_table(rs, "xiao2017_setup") + "\n"
-            + xiao_trends(fr) + "\n" + xiao_stages(rs))
+            + xiao_trends(fr) + "\n" + xiao_stages(rs) + xiao_splat(everything))
 
 
 XIAO_COLUMNS = ("Columns: *ours (GL clock)* is the sum of raycast_pca's GL stages (splat, march, normals, filter, "
@@ -251,6 +263,41 @@ def xiao_stages(rs):
                     body, "xiao2017_stages"))
 
 
+def sprite_ms(st):
+    """The GL-clock ms of the sprite passes (raster or compute) among a cell's stage medians."""
+    return sum(st.get(x, (0, 0))[1] or 0 for x in RASTER + SPLAT_COMPUTE)
+
+
+def xiao_splat(rs):
+    """raycast_pca with its sprite passes on the raster and on the compute splatter, per cell."""
+    if not any(splat_path(r["variant"]) == "compute" for r in rs):
+        return ""
+    key = lambda r: (int(r["particles"]), int(r["size"]), splat_path(r["variant"]))
+    fr, st = frames(rs, T1_STAGES, key), stage_medians(rs, key)
+    body, fast, with_paper = [], 0, 0
+    for (n, size) in sorted({(n, s) for n, s, _ in fr}):
+        ras, com = st.get((n, size, "raster"), {}), st.get((n, size, "compute"), {})
+        gr, gc = fr.get((n, size, "raster"), (None, None))[1], fr.get((n, size, "compute"), (None, None))[1]
+        p = paper_xiao(n, size)
+        if p and gc:
+            with_paper += 1
+            fast += gc <= p * 1e3
+        body.append((n, size, fmt(sprite_ms(ras) if ras else None), fmt(sprite_ms(com) if com else None),
+                     ratio(sprite_ms(ras) if ras else None, sprite_ms(com) if com else None), fmt(gr), fmt(gc),
+                     fmt(p * 1e3 if p else None), ratio(p * 1e3 if p else None, gc)))
+    big = [k for k in fr if k[2] == "compute" and paper_xiao(k[0], k[1]) and k[0] > 100e6 and k[1] == 1024]
+    target = ("; the 142M-particle cell at 1024^2 takes %s ms (the target: at most 157 ms, 5x faster than the paper's "
+              "784 ms)" % fmt(fr[big[0]][1]) if big else "")
+    verdict = (" With `splat=compute`, %d of the %d cells the paper has are at least as fast as its GTX 970%s." % (
+        fast, with_paper, target) if with_paper else "")
+    return ("\nThe sprite passes on the raster (`splat=raster`, the paper's pipeline) and on the compute splatter "
+            "(`splat=compute`, docs/DESIGN.md \"The compute splatter\"; the same G-buffer), GL clock, ms: the sprite "
+            "stages (splat and thickness, or splat_compute and thickness_compute), raster over compute, and the "
+            "frame of each path as in the first table.%s\n\n" % verdict
+            + table(("particles", "size", "sprites raster", "sprites compute", "raster / compute", "frame raster",
+                     "frame compute", "paper ms (GTX 970)", "paper / compute"), body, "xiao2017_splat"))
+
+
 def variant(v):
     """(anisotropy, filter) of a render_bench variant string."""
     kv = dict(x.split("=", 1) for x in v.replace("aniso_ssf.", "").split(";") if "=" in x)
@@ -258,7 +305,8 @@ def variant(v):
 
 
 def xu(d):
-    rs = rows(d, "xu2022_fig9.csv")
+    everything = rows(d, "xu2022_fig9.csv")
+    rs = raster_rows(everything)
     if not rs:
         return "No xu2022 rows.\n"
     fr = frames(rs, F9_STAGES, lambda r: (int(r["particles"]),) + variant(r["variant"]))
@@ -270,7 +318,7 @@ def xu(d):
                               "on ms (wall, + read back)"), body, "xu2022_fig9")
     return (out + "\n" + EXCLUDED % "the anisotropy's neighbour search runs on the GPU in every frame (its pass is "
             "in the frame), the grid it searches is built once per set" + "\n" + setup_table(rs, "xu2022_setup") + "\n"
-            + xu_statements(rs, g, ns))
+            + xu_statements(rs, g, ns) + xu_splat(everything))
 
 
 XU_COLUMNS = ("Columns: *off* and *on (GL clock)* are the sums of aniso_ssf's GL stages (the anisotropy pass when on, "
@@ -322,6 +370,30 @@ def xu_statements(rs, g, ns):
                      "on this GPU its iterations cost little." % (
                          ", ".join("%.2f" % x for x in cf), ns[0], ns[-1], 100 * (max(cf) - 1)))
     return "\n".join(lines) + "\n"
+
+
+def xu_splat(rs):
+    """aniso_ssf (narrow-range filter) with its sprite passes on the raster and on the compute splatter."""
+    if not any(splat_path(r["variant"]) == "compute" for r in rs):
+        return ""
+    rs = [r for r in rs if variant(r["variant"])[1] == "narrow"]
+    key = lambda r: (int(r["particles"]), variant(r["variant"])[0], splat_path(r["variant"]))
+    fr, st = frames(rs, F9_STAGES, key), stage_medians(rs, key)
+    body = []
+    for (n, a) in sorted({(n, a) for n, a, _ in fr}):
+        ras, com = st.get((n, a, "raster"), {}), st.get((n, a, "compute"), {})
+        gr, gc = fr.get((n, a, "raster"), (None, None))[1], fr.get((n, a, "compute"), (None, None))[1]
+        body.append((n, a, fmt(sprite_ms(ras) if ras else None), fmt(sprite_ms(com) if com else None),
+                     ratio(sprite_ms(ras) if ras else None, sprite_ms(com) if com else None), fmt(gr), fmt(gc),
+                     ratio(gc, gr)))
+    n = max(k[0] for k in fr)
+    half = ["%s (anisotropy %s)" % (ratio(fr.get((n, a, "compute"), (0, None))[1], fr.get((n, a, "raster"), (0, None))[1]),
+                                     a) for a in ("off", "on")]
+    return ("\nThe sprite passes on the raster (`splat=raster`) and on the compute splatter (`splat=compute`), "
+            "narrow-range filter, GL clock, ms: the sprite stages, raster over compute, and each path's frame. At %d "
+            "particles the compute frame over the raster's is %s (the target: at most 0.5).\n\n" % (n, ", ".join(half))
+            + table(("particles", "anisotropy", "sprites raster", "sprites compute", "raster / compute",
+                     "frame raster", "frame compute", "compute / raster"), body, "xu2022_splat"))
 
 
 def inacio_cells(rs):
@@ -484,7 +556,29 @@ def demo(d):
                 "iwasaki2006 renders its 61,500-77,000 surfels at 512^2 in about 39 ms (25.5 fps, GeForce 6800 GT, "
                 "Figs. 6 and 7), its shading on the GPU included.\n" % (
                     ", ".join(SURFEL_RENDER), sum(sr), demo_size(d), sum(sr) + srb[0], srb[0]))
-    return out
+    return out + demo_splat(d)
+
+
+def demo_splat(d):
+    """The sprite-splatting methods of the demo with splat=compute against the plain demo's raster."""
+    com = rows(d, "demo_splat_timings.csv")
+    if not com:
+        return ""
+    ras, metrics = rows(d, "demo_timings.csv"), {r["method"]: r for r in rows(d, "demo_splat_metrics.csv")}
+
+    def cell(rs, method):
+        st = {x["stage"]: (num(x["ms_median"]), num(x["gpu_ms_median"])) for x in rs if x["method"] == method}
+        return sprite_ms(st) if st else None, st.get("total", (None,))[0]
+
+    body = []
+    for m in sorted({r["method"] for r in com if r["method"] != "reference"}):
+        (sr, tr), (sc, tc) = cell([r for r in ras if r["variant"] == ""], m), cell(com, m)
+        body.append((m, fmt(sr), fmt(sc), ratio(sr, sc), fmt(tr), fmt(tc), metrics.get(m, {}).get("mask_iou", "")))
+    return ("\nThe sprite-splatting methods again with `splat=compute` (`demo_splat_timings.csv`): the sprite stages "
+            "on the GL clock (ms) and the frame on the wall clock, raster (the table above) and compute, and the "
+            "compute render's mask IoU against the reference:\n\n"
+            + table(("method", "sprites raster", "sprites compute", "raster / compute", "total raster (wall)",
+                     "total compute (wall)", "mask IoU (compute)"), body, "demo_splat", keys=1))
 
 
 DEMO_COLUMNS = ("Columns: *GL stages* is the sum of the method's stages that have a GL clock (surfels' density grid "
@@ -511,7 +605,7 @@ shading out, and each table says which of its columns include the read back and 
 def raster_evidence(d):
     """A sentence from the CSVs: a small raster pass against a large compute pass."""
     xu_rs = [r for r in rows(d, "xu2022_fig9.csv") if r["run"] != "0" and "anisotropy=off" in r["variant"]]
-    t1 = [r for r in rows(d, "xiao2017_table1.csv") if r["run"] != "0"]
+    t1 = [r for r in raster_rows(rows(d, "xiao2017_table1.csv")) if r["run"] != "0"]
     if not xu_rs or not t1:
         return ""
     n = min(int(r["particles"]) for r in xu_rs)
@@ -572,7 +666,7 @@ def repeat(d):
     body = []
     for name, stages, key in (("xiao2017_table1.csv", T1_STAGES, lambda x: (int(x["particles"]), int(x["size"]))),
                               ("xu2022_fig9.csv", F9_STAGES, lambda x: (int(x["particles"]), x["variant"]))):
-        a, b = frames(rows(d, name), stages, key), frames(rows(r, name), stages, key)
+        a, b = frames(raster_rows(rows(d, name)), stages, key), frames(raster_rows(rows(r, name)), stages, key)
         q = sorted(b[k][1] / a[k][1] for k in a if k in b and a[k][1] and b[k][1])
         if q:
             body.append((name, len(q), "%.2f" % statistics.median(q), "%.2f" % q[0], "%.2f" % q[-1]))

@@ -3,13 +3,16 @@
 # budgeted to BUDGET_S seconds (default 290: with the start, one device call of at most
 # 6 minutes, so a lease of 15 minutes has room for a second try):
 #   xiao2017 Table 1   raycast_pca on synthetic boxes of about the paper's particle
-#                      counts (0.78M .. 142.6M) at 512^2 .. 1920^2
-#   xu2022 Fig. 9      aniso_ssf, 5 filters x anisotropy off/on, against particle count
+#                      counts (0.78M .. 142.6M) at 512^2 .. 1920^2, its sprite passes on
+#                      the compute splatter (splat=compute) and on the raster (the paper's)
+#   xu2022 Fig. 9      aniso_ssf, 5 filters x anisotropy off/on, against particle count;
+#                      the narrow-range filter also with splat=compute, anisotropy off/on
 #   inacio2010 I, II   SPH dam break, CPU path against GPU path; volume ray casting
 #                      against spheres (experiments/tools/inacio_tables)
 #   iwasaki2006 4      the 256^3 density grid of about 210k particles: slice splatting
 #                      on the GL against the exact CPU sum (experiments/tools/density_bench)
-#   demo               `fluidsurf compare` of the bundled dam break at 1024^2
+#   demo               `fluidsurf compare` of the bundled dam break at 1024^2, and of the
+#                      sprite-splatting methods with splat=compute (demo_splat_*.csv)
 # Every row holds the wall time between glFinish calls and the GL clock's time of the
 # stage (gpu_ms), GL_RENDERER and GL_VERSION. The large particle sets are generated
 # where the script runs (synthetic boxes, the simulator): nothing big is carried.
@@ -18,12 +21,16 @@
 # BINDIR/provenance (scripts/pack_lean.sh records it where the pack is made, since a
 # copy of the repository on a GPU node has no .git), else from this repository.
 #
-# Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR]
+# Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR] [--steps LIST]
 #   --quick  the same steps at small sizes, for llvmpipe (the ctest gpu_quick; budget 170 s)
 #   -o DIR   output folder (default out/gpu, out/gpu-quick with --quick); it holds
 #            env.csv, status.csv and one CSV per step
 #   --bin    folder with fluidsurf, render_bench, inacio_tables, density_bench: a
 #            scripts/pack_lean.sh folder, or a build folder (default build-lean)
+#   --steps  the steps to run, comma-separated, of xiao2017_table1, xu2022_fig9,
+#            inacio2010_tables, iwasaki2006_density_grid, demo_compare (default all):
+#            with both splat paths the whole study may not fit one device call, so a
+#            first call runs xiao2017_table1 and a second the rest, each into its own DIR
 # FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 290, quick 170)
 # caps the whole run: a cell that would start after the budget is spent is written
 # to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
@@ -32,11 +39,15 @@
 # Exit status: 0 when every cell finished, 1 when one failed or was cut or skipped
 # (status.csv says which; the rows of the others are written all the same), 2 bad usage.
 set -uo pipefail
-usage() { echo "run.sh: $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR])" >&2; exit 2; }
-QUICK=0 OUTDIR="" BINDIR=""
+usage() { echo "run.sh: $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR] [--steps LIST])" >&2; exit 2; }
+QUICK=0 OUTDIR="" BINDIR="" STEPS=xiao2017_table1,xu2022_fig9,inacio2010_tables,iwasaki2006_density_grid,demo_compare
+ALL_STEPS=$STEPS
 while [ $# -gt 0 ]; do
   case $1 in
     --quick) QUICK=1 ;;
+    --steps) [ $# -ge 2 ] || usage "--steps needs a list"
+             for s in ${2//,/ }; do [[ ",$ALL_STEPS," == *",$s,"* ]] || usage "unknown step $s"; done
+             STEPS=$2; shift ;;
     -o|--bin) [ $# -ge 2 ] || usage "$1 needs a folder"
               if [ "$1" = -o ]; then OUTDIR=$(realpath -m "$2"); else BINDIR=$(realpath -m "$2"); fi; shift ;;
     *) usage "unknown argument $1" ;;
@@ -90,6 +101,7 @@ left() { # seconds left: of the whole budget, and of the current step's share
   echo "$l"
 }
 step_share() { STEP_END=$(($(date +%s) + $1)); } # the next cells' share, in seconds; "" lifts it
+want() { [[ ",$STEPS," == *",$1,"* ]]; } # want STEP: STEP is among --steps
 
 
 # status.csv: one row per cell: what ran, how long, how it ended
@@ -138,39 +150,58 @@ grep -q '^gl_renderer' "$OUTDIR/env.csv" || { echo "run.sh: no OpenGL context: $
 sed -n 's/^gl_renderer,//p; s/^gl_version,//p' "$OUTDIR/env.csv"
 
 RB_HEAD="label,particles,method,variant,size,run,stage,ms,gpu_ms,renderer,gl_version"
-# ---- xu2022 Fig. 9: aniso_ssf, each filter, anisotropy off and on ----
+# ---- xu2022 Fig. 9: aniso_ssf, each filter, anisotropy off and on; the sprite passes on
+# the compute splatter too, with the default narrow-range filter only (the filter does not
+# touch the sprite passes, so one filter answers how the splat paths compare) ----
 variants=()
 for a in off on; do for f in none gaussian bilateral curvature narrow; do
   variants+=("aniso_ssf.anisotropy=$a;aniso_ssf.filter=$f")
 done; done
-step_share "$SHARE_F9"
-for side in $F9_SIDES; do
-  cell xu2022_fig9 "box_${side}^3" 90 "$RB" "$(box_scene "$side")" "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
-done
+for a in off on; do variants+=("aniso_ssf.anisotropy=$a;aniso_ssf.filter=narrow;aniso_ssf.splat=compute"); done
+if want xu2022_fig9; then
+  step_share "$SHARE_F9"
+  for side in $F9_SIDES; do
+    cell xu2022_fig9 "box_${side}^3" 90 "$RB" "$(box_scene "$side")" "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
+  done
+fi
 # ---- inacio2010 Tables I and II: simulation and rendering, CPU path and GPU path ----
-step_share "$SHARE_IN"
-for n in $IN_COUNTS; do for path in cpu gpu; do
-  cell inacio2010_tables "${n}_$path" 60 "$IT" "$n" "$path" "$IN_SETTLE" "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
-done; done
+if want inacio2010_tables; then
+  step_share "$SHARE_IN"
+  for n in $IN_COUNTS; do for path in cpu gpu; do
+    cell inacio2010_tables "${n}_$path" 60 "$IT" "$n" "$path" "$IN_SETTLE" "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
+  done; done
+fi
 # ---- iwasaki2006 section 4: the density grid, slice splatting against the exact CPU sum ----
-step_share "$SHARE_DG"
-for res in $DG_RES; do
-  cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
-done
-# the exact sum on one CPU thread too: the paper's 88x is against one core
-cell iwasaki2006_density_grid "res_${DG_ONE}_1thread" 60 env OMP_NUM_THREADS=1 "$DB" "$DG_SCENE" \
-  "$(basename "$DG_SCENE" .json)_1thread" "$DG_ONE" 1 16
-# ---- the demo comparison ----
-step_share "$SHARE_DEMO"
-cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \
-  -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/demo"
+if want iwasaki2006_density_grid; then
+  step_share "$SHARE_DG"
+  for res in $DG_RES; do
+    cell iwasaki2006_density_grid "res_$res" 60 "$DB" "$DG_SCENE" "$(basename "$DG_SCENE" .json)" "$res" "$DG_RUNS" 16
+  done
+  # the exact sum on one CPU thread too: the paper's 88x is against one core
+  cell iwasaki2006_density_grid "res_${DG_ONE}_1thread" 60 env OMP_NUM_THREADS=1 "$DB" "$DG_SCENE" \
+    "$(basename "$DG_SCENE" .json)_1thread" "$DG_ONE" 1 16
+fi
+# ---- the demo comparison; then the sprite-splatting methods with splat=compute ----
+if want demo_compare; then
+  step_share "$SHARE_DEMO"
+  cell demo_compare "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \
+    -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/demo"
+  cell demo_compare "dam_break_${DEMO_SIZE}_splat_compute" 90 "$FS" compare --no-cache \
+    experiments/scenes/dam_break_ply.json --methods spheres,raycast_pca,aniso_ssf --set spheres.splat=compute \
+    --set raycast_pca.splat=compute --set aniso_ssf.splat=compute -W "$DEMO_SIZE" -H "$DEMO_SIZE" \
+    --repeat "$DEMO_RUNS" -q -o "$TMP/demo_splat"
+fi
 
-# ---- xiao2017 Table 1: raycast_pca, particle count x image size; last, largest set last,
-# so a spent budget cuts only the biggest cells ----
-STEP_END="" # the rest of the budget
-for side in $T1_SIDES; do
-  cell xiao2017_table1 "box_${side}^3" 120 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS"
-done
+# ---- xiao2017 Table 1: raycast_pca, particle count x image size, the sprite passes on the
+# compute splatter, then on the raster; last, largest set last, so a spent budget cuts only
+# the biggest cells ----
+if want xiao2017_table1; then
+  STEP_END="" # the rest of the budget
+  for side in $T1_SIDES; do
+    cell xiao2017_table1 "box_${side}^3" 200 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS" \
+      "raycast_pca.splat=compute" "raycast_pca.splat=raster"
+  done
+fi
 # ---- the CSVs, each with its header and the GL version on every row ----
 glv=$(sed -n 's/^gl_version,//p' "$OUTDIR/env.csv")
 write() { # write STEP HEADER: the raw rows of STEP under HEADER
@@ -181,12 +212,16 @@ write xiao2017_table1 "$RB_HEAD"
 write xu2022_fig9 "$RB_HEAD"
 write inacio2010_tables "particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frame,t,steps,table,stage,ms,gpu_ms,gl_version"
 write iwasaki2006_density_grid "label,particles,res,dims,method,run,ms,rel_l2_vs_exact,disks,renderer,threads,gpu_ms,gl_version"
+demo_csvs() { # demo_csvs FOLDER PREFIX: FOLDER's timings.csv and metrics.csv as PREFIX_timings.csv, PREFIX_metrics.csv
+  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$1/timings.csv" |
+    awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}'; } > "$OUTDIR/$2_timings.csv"
+  local glr; glr=$(sed -n 's/^gl_renderer,//p' "$OUTDIR/env.csv") # the context the GL methods ran on
+  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$1/metrics.csv" |
+    awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}'; } > "$OUTDIR/$2_metrics.csv"
+}
+[ -f "$TMP/demo_splat/timings.csv" ] && demo_csvs "$TMP/demo_splat" demo_splat
 if [ -f "$TMP/demo/timings.csv" ]; then
-  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$TMP/demo/timings.csv" |
-    awk -v v="$glv" 'NR == 1 {print $0 ",gl_version"; next} {print $0 "," v}'; } > "$OUTDIR/demo_timings.csv"
-  glr=$(sed -n 's/^gl_renderer,//p' "$OUTDIR/env.csv") # the context the GL methods ran on
-  { echo "# experiments/gpu/run.sh; $PROV"; grep -v '^#' "$TMP/demo/metrics.csv" |
-    awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}'; } > "$OUTDIR/demo_metrics.csv"
+  demo_csvs "$TMP/demo" demo
   mkdir -p "$OUTDIR/demo" && cp "$TMP"/demo/*.png "$OUTDIR/demo/" 2> /dev/null # to look at what the GPU drew
 fi
 # every step's stderr (a driver's shader log lands there)
