@@ -10,6 +10,7 @@ endif()
 fs_add_test(test_reference_accel fs_test_methods test_reference_accel.c test_render.c)
 fs_add_test(test_reference_supersample fs_test_methods test_reference_supersample.c)
 fs_add_test(test_reference_taylor fs_methods test_reference_taylor.c)
+fs_add_test(test_reference_demand fs_test_methods test_reference_demand.c test_render.c)
 # Zhu & Bridson's phi (field=zhu_bridson): the formula, its gradient and the Lipschitz bound
 # the reference marches on; the reference on a slab and a lattice ball.
 fs_add_test(test_zhu_bridson fs_field test_zhu_bridson.c)

@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum { REF_INTERIOR_AUTO, REF_INTERIOR_ON, REF_INTERIOR_OFF } ref_interior;
+typedef enum { REF_INTERIOR_AUTO, REF_INTERIOR_ON, REF_INTERIOR_OFF, REF_INTERIOR_DEMAND } ref_interior;
 
 typedef struct reference_params {
     double step_min;
@@ -38,8 +38,9 @@ static const fs_param_def params[] = {
     {FIELD(max_layers), FS_PARAM_INT, 64, 1, 1e6, NULL, "most inside intervals summed into the thickness"},
     {FIELD(accel), FS_PARAM_BOOL, 1, 0, 1, NULL,
      "sub-cell bounds, gathered arrays and vectorised sums (on); off: the plain march, for comparison"},
-    {FIELD(interior), FS_PARAM_ENUM, 0, 0, 2, "auto|on|off",
-     "accel, thickness on: fine interior bounds; auto builds them when the rays per cell pay for them"},
+    {FIELD(interior), FS_PARAM_ENUM, 0, 0, 3, "auto|on|off|demand",
+     "accel, thickness on: fine interior proofs; on: every cell's up front, demand: a cell's when a ray first enters "
+     "it inside; auto: as the rays per cell pay for them"},
     {FIELD(field), FS_PARAM_ENUM, 0, 0, 2, "isotropic|anisotropic|zhu_bridson",
      "SPH kernel, Yu & Turk's anisotropic kernel, or Zhu & Bridson's |x - xbar| - r (own march, accel ignored)"},
     {FIELD(supersample), FS_PARAM_INT, 1, 1, FS_REF_MAX_SUPERSAMPLE, NULL,
@@ -206,9 +207,9 @@ typedef struct ray_sample {
 } ray_sample;
 
 /* The ray through pixel position (fx, fy); its work added to w (w[0] before and
- * with the first hit, w[1] after it). */
+ * with the first hit, w[1] after it, w[2] its interior proofs). */
 static void cast(const reference *R, const fs_camera *cam, const float fwd[3], float fx, float fy, void *buf,
-                 ray_work w[2], ray_sample *out)
+                 ray_work w[FS_REF_NWORK], ray_sample *out)
 {
     float d[3];
     ray_result res;
@@ -216,8 +217,7 @@ static void cast(const reference *R, const fs_camera *cam, const float fwd[3], f
     if (R->zb) fs_ref_cast_zb(R, cam->eye, d, buf, &res);
     else if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
-    fs_ref_work_add(&w[FS_REF_FIRST], &res.w[FS_REF_FIRST]);
-    fs_ref_work_add(&w[FS_REF_AFTER], &res.w[FS_REF_AFTER]);
+    for (int k = 0; k < FS_REF_NWORK; k++) fs_ref_work_add(&w[k], &res.w[k]);
     out->hit = res.hit;
     out->thick = res.thick;
     if (!res.hit) return;
@@ -233,7 +233,7 @@ static void cast(const reference *R, const fs_camera *cam, const float fwd[3], f
  * pixel. Coverage is the share that hit, thickness the mean over all, depth the
  * mean over the hits and the normal their sum, renormalised. */
 static void shade_supersampled(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                               fs_gbuffer *out, ray_work w[2])
+                               fs_gbuffer *out, ray_work w[FS_REF_NWORK])
 {
     int n = R->supersample, hits = 0;
     double depth = 0, thick = 0, sum[3] = {0, 0, 0};
@@ -260,7 +260,7 @@ static void shade_supersampled(const reference *R, const fs_camera *cam, const f
 /* One pixel into the G-buffer; its work added to w. supersample = 1 casts the
  * pixel centre alone and writes its answer as it is. */
 static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                        fs_gbuffer *out, ray_work w[2])
+                        fs_gbuffer *out, ray_work w[FS_REF_NWORK])
 {
     if (R->supersample > 1) {
         shade_supersampled(R, cam, fwd, px, py, buf, out, w);
@@ -307,14 +307,16 @@ static void note_small_radius(reference *R, const fs_camera *cam, const float fw
  * (measured on the 1M-particle box, results/bench/speed.csv, interior=on/off). */
 #define FS_REF_VISITS 100.0
 
-/* Whether to build the fine interior bounds for this render: each of W x H rays
- * crosses about cbrt(cells) of the nwant cells that may hold inside sub-cells. */
-static int want_interior(const reference *R, const fs_camera *cam)
+/* How the fine interior proofs are made for this render: none (REF_INTERIOR_OFF),
+ * every cell's up front (ON) or on demand (DEMAND). auto: up front when each of
+ * W x H rays crosses about cbrt(cells) of the nwant cells that may hold inside
+ * sub-cells, at least FS_REF_VISITS rays a cell. */
+static ref_interior want_interior(const reference *R, const fs_camera *cam)
 {
-    if (!R->accel || !R->thickness || !R->sub || !R->nwant || R->interior == REF_INTERIOR_OFF) return 0;
-    if (R->interior == REF_INTERIOR_ON) return 1;
+    if (!R->accel || !R->thickness || !R->sub || !R->nwant) return REF_INTERIOR_OFF;
+    if (R->interior != REF_INTERIOR_AUTO) return (ref_interior)R->interior;
     double cells = (double)R->nwant;
-    return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS;
+    return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS ? REF_INTERIOR_ON : REF_INTERIOR_OFF;
 }
 
 /* Rays per near cell at which the coarse sub-cell bounds pay: a cell's take
@@ -343,23 +345,23 @@ static int prepare_bounds(reference *R, const fs_camera *cam, fs_stages *st)
     return FS_OK;
 }
 
-/* Builds the fine interior bounds once per upload when they pay (stage "interior"). */
+/* Prepares the fine interior proofs once per upload, as want_interior says: all
+ * of them made up front (stage "interior"), or the room for proofs on demand. */
 static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
 {
     int rc = prepare_bounds(R, cam, st);
     if (rc) return rc;
     if (R->interior_done) return FS_OK;
     R->interior_done = 1;
-    if (!want_interior(R, cam)) return FS_OK;
+    ref_interior how = want_interior(R, cam);
+    if (how == REF_INTERIOR_OFF) return FS_OK;
     double t0 = fs_now_ms();
-    rc = fs_ref_interior_build(R);
-    if (!rc) rc = fs_ref_cell_classes(R);
+    rc = fs_ref_interior_build(R, how == REF_INTERIOR_DEMAND);
     if (rc) {
-        fs_ref_interior_free(R);
         R->g = NULL;
         return rc;
     }
-    if (st) fs_stages_add(st, "interior", fs_now_ms() - t0);
+    if (st && how == REF_INTERIOR_ON) fs_stages_add(st, "interior", fs_now_ms() - t0);
     return FS_OK;
 }
 
@@ -400,11 +402,11 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_gbuffer_clear(out);
     int tw = (cam->width + FS_REF_TILE - 1) / FS_REF_TILE, th = (cam->height + FS_REF_TILE - 1) / FS_REF_TILE;
     fs_progress_sub_total((long)tw * th);
-    ray_work total[2] = {{0}}; /* both phases, over the threads */
+    ray_work total[FS_REF_NWORK] = {{0}}; /* both phases and the proofs, over the threads */
 #pragma omp parallel num_threads(nth)
     {
         void *buf = bufs + (size_t)omp_get_thread_num() * per;
-        ray_work w[2] = {{0}}; /* this thread's rays */
+        ray_work w[FS_REF_NWORK] = {{0}}; /* this thread's rays */
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < tw * th; tile++) {
             int x0 = tile % tw * FS_REF_TILE, y0 = tile / tw * FS_REF_TILE;
@@ -414,10 +416,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
             fs_progress_sub(1);
         }
 #pragma omp critical(fs_reference_work)
-        {
-            fs_ref_work_add(&total[FS_REF_FIRST], &w[FS_REF_FIRST]);
-            fs_ref_work_add(&total[FS_REF_AFTER], &w[FS_REF_AFTER]);
-        }
+        for (int k = 0; k < FS_REF_NWORK; k++) fs_ref_work_add(&total[k], &w[k]);
     }
     free(bufs);
     /* The march is one timed stage; a counting render splits its counts into the
@@ -427,6 +426,10 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (st) fs_stages_add(st, "march", fs_now_ms() - t0); /* the bounds are built in upload */
     count_work(&total[FS_REF_AFTER]);
     if (st && fs_counting && R->thickness) fs_stages_add(st, "thickness", 0);
+    /* proofs made on demand: timed in the march, counted apart (a stage of counts only) */
+    count_work(&total[FS_REF_PROOFS]);
+    if (st && fs_counting && total[FS_REF_PROOFS].evals) fs_stages_add(st, "interior", 0);
+    R->proof_waits += total[FS_REF_PROOFS].waits;
     return FS_OK;
 }
 

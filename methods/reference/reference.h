@@ -19,10 +19,10 @@ typedef struct reference {
     fs_field f;
     float step_min; /* scene units */
     int thickness, max_layers, accel;
-    int supersample;   /* N x N rays per pixel (1: the pixel centre) */
-    int noted_small;   /* the note of a radius under FS_REF_SMALL_R_PX was given */
-    float centre[3];   /* the centre of the particles' bulk box (the grid's), for that note */
-    int interior;      /* reference.c's ref_interior (auto, on, off): the fine interior bits (reference_interior.c) */
+    int supersample; /* N x N rays per pixel (1: the pixel centre) */
+    int noted_small; /* the note of a radius under FS_REF_SMALL_R_PX was given */
+    float centre[3]; /* the centre of the particles' bulk box (the grid's), for that note */
+    int interior; /* reference.c's ref_interior (auto, on, off, demand): the fine interior bits (reference_interior.c) */
     int interior_done; /* the interior decision was taken for the current upload */
     int bounds_done;   /* the sub-cell bounds decision was taken for the current upload */
     size_t nnear;      /* cell slots with a particle in their 27 neighbours */
@@ -44,10 +44,18 @@ typedef struct reference {
     float *sx, *sy, *sz; /* accel: sorted positions as structure of arrays */
     int sub;             /* accel: sub-cells per cell edge (0: no sub-cell bounds) */
     uint8_t *lo, *hi;    /* accel: per sub-cell, phi bounds quantised in units of iso / FS_REF_Q, rounded outward */
-    uint32_t *fine_off;  /* accel: per cell slot, its entry in fine, or FS_GRID_NONE */
-    uint8_t *fine;       /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
-    uint8_t *cell_cls;   /* accel: per cell slot, FS_REF_OUT/IN when every sub-cell is, else FS_REF_EDGE */
+    uint32_t *
+        fine_off; /* accel: per cell slot, its entry in fine (a cell that may hold inside sub-cells), or FS_GRID_NONE */
+    uint8_t *fine;        /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
+    uint8_t *fine_state;  /* accel: per entry, FS_REF_PROOF_* (atomic: proofs on demand claim an entry) */
+    uint8_t *cell_cls;    /* accel: per cell slot, FS_REF_OUT/IN when every coarse sub-cell is, else FS_REF_EDGE */
+    uint64_t proof_waits; /* proofs on demand: times a ray waited for the thread that claimed the cell, all renders */
 } reference;
+
+/* The state of a cell's interior proof (reference_interior.c): not made yet,
+ * being made by the thread that claimed it, made (walk its fine bits), or made
+ * and every coarse sub-cell proven inside (the whole cell is inside). */
+enum { FS_REF_PROOF_NONE = 0, FS_REF_PROOF_CLAIMED = 1, FS_REF_PROOF_BITS = 2, FS_REF_PROOF_ALL_IN = 3 };
 
 /* Fine sub-cells per cell edge for the interior bounds (reference_interior.c);
  * a multiple of every coarse count (1, 2, 4), and one vector row. */
@@ -74,15 +82,17 @@ typedef struct ray_work {
     uint64_t proven_in, proven_out; /* near cells crossed whole on proven bounds, by class */
     uint64_t refine_evals;          /* evals that refine a bracketed crossing */
     uint64_t inside_evals;          /* evals in the marched_in cells */
+    uint64_t waits; /* proofs on demand: waits for the thread that claimed the cell (not a work count) */
 } ray_work;
 
 /* The work of one ray's two phases: before and with its first hit (the first-hit
- * march), and after it (the thickness march). The counting render reports them as
- * the stages "march" and "thickness" (README.md, "Work counters"). */
-enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1 };
+ * march), and after it (the thickness march); and the interior proofs it made on
+ * demand. The counting render reports them as the stages "march", "thickness" and
+ * "interior" (README.md, "Work counters"). */
+enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1, FS_REF_PROOFS = 2, FS_REF_NWORK = 3 };
 
 typedef struct ray_result {
-    ray_work w[2]; /* [hit]: the phase the ray is in */
+    ray_work w[FS_REF_NWORK]; /* [hit]: the phase the ray is in; [FS_REF_PROOFS] its proofs */
     int hit;
     float t;    /* ray distance of the first hit */
     float n[3]; /* world normal, -grad phi normalised */
@@ -172,12 +182,22 @@ size_t fs_ref_zb_buf_size(const reference *R);
 /* Builds R->lo/hi for every near cell slot (R->sub set); frees them first. */
 int fs_ref_bounds_build(reference *R);
 void fs_ref_bounds_free(reference *R);
-/* Builds R->fine_off/fine for the cells that may hold inside sub-cells (after
- * fs_ref_bounds_build); frees them first. Nothing is built where it does not apply. */
-int fs_ref_interior_build(reference *R);
+/* Makes R->fine_off/fine/fine_state for the cells that may hold inside sub-cells
+ * (after fs_ref_bounds_build; frees them first), and, unless demand, every cell's
+ * proof (in parallel; counted as the stage "interior"). With demand the proofs are
+ * made by the march (fs_ref_proof_ready). Nothing is made where it does not apply. */
+int fs_ref_interior_build(reference *R, int demand);
+/* Bytes of one thread's scratch for fs_ref_proof_ready. */
+size_t fs_ref_proof_buf_size(const reference *R);
+/* The interior proof of cell c (slot, with an entry in R->fine), made now when no
+ * thread has made it (claimed once; a thread that finds it claimed waits for it,
+ * counted in w->waits), its work counted in w. The proof is a function of the
+ * cell alone, so the image does not depend on which ray made it. Returns
+ * FS_REF_PROOF_BITS or FS_REF_PROOF_ALL_IN. buf: fs_ref_proof_buf_size bytes. */
+int fs_ref_proof_ready(const reference *R, const int c[3], uint32_t slot, void *buf, ray_work *w);
 /* The number of cells that may hold inside sub-cells (after fs_ref_bounds_build). */
 size_t fs_ref_interior_cells(const reference *R);
-/* R->cell_cls from the sub-cell bounds (after both builds). */
+/* R->cell_cls from the coarse sub-cell bounds (after fs_ref_bounds_build). */
 int fs_ref_cell_classes(reference *R);
 void fs_ref_interior_free(reference *R);
 #endif

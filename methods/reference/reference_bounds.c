@@ -173,8 +173,7 @@ int fs_ref_cell_classes(reference *R)
             in &= R->lo[q] >= FS_REF_Q;
             out &= R->hi[q] < FS_REF_Q;
         }
-        int fine = R->fine_off && R->fine_off[c] != FS_GRID_NONE;
-        R->cell_cls[c] = (uint8_t)(fine ? FS_REF_EDGE : (in ? FS_REF_IN : (out ? FS_REF_OUT : FS_REF_EDGE)));
+        R->cell_cls[c] = (uint8_t)(in ? FS_REF_IN : (out ? FS_REF_OUT : FS_REF_EDGE));
     }
     return FS_OK;
 }

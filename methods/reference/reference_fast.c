@@ -19,19 +19,26 @@ typedef struct fast_ray {
     near_soa N;
     march m;
     ray_result *res;
-    int count;  /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
-    int ran;    /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
-    int taylor; /* the second-order inside step applies (fs_ref_taylor_applies) */
+    int count;       /* a counting render: count the walk's cells too (fs_counting, read once a ray) */
+    int ran;         /* the current cell had a run of unproven sub-cells (not crossed on bounds alone) */
+    int taylor;      /* the second-order inside step applies (fs_ref_taylor_applies) */
+    void *proof_buf; /* scratch of the interior proofs on demand (fs_ref_proof_ready) */
 } fast_ray;
 
 /* The work counts of the phase the ray is in: before its first hit, or after. */
 static inline ray_work *work(const fast_ray *F) { return &F->res->w[F->res->hit]; }
 
-size_t fs_ref_fast_buf_size(const reference *R)
+/* The gathered arrays' bytes, a multiple of 64. */
+static size_t soa_size(const reference *R)
 {
     size_t cap = R->max27 ? R->max27 : 1;
     cap = (cap + 15) & ~(size_t)15;
-    return cap * (5 * sizeof(float) + sizeof(uint32_t)) + 64;
+    return cap * (5 * sizeof(float) + sizeof(uint32_t));
+}
+
+size_t fs_ref_fast_buf_size(const reference *R)
+{
+    return soa_size(R) + (R->fine_state ? fs_ref_proof_buf_size(R) : 0) + 64;
 }
 
 static void soa_bind(near_soa *N, void *buf, const reference *R)
@@ -445,13 +452,13 @@ static void sub_start(const reference *R, int res, const int cell[3], const floa
     }
 }
 
-/* Marches the cell stretch [t, t_out] sub-cell by sub-cell; edge sub-cells
- * in a row are marched as one range, over the particles gathered once. */
-static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, float t_out, float lip)
+/* Marches the cell stretch [t, t_out] sub-cell by sub-cell at resolution res
+ * (R->sub, or FS_REF_FINE over a cell's interior proof); edge sub-cells in a
+ * row are marched as one range, over the particles gathered once. */
+static int visit_subcells(fast_ray *F, const int c[3], uint32_t slot, float t, float t_out, float lip, int res)
 {
     const reference *R = F->R;
     const float *o = F->o, *d = F->d;
-    int res = R->fine_off && R->fine_off[slot] != FS_GRID_NONE ? FS_REF_FINE : R->sub;
     subwalk w;
     sub_start(R, res, c, o, d, t, &w);
     float o_loc[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}, v;
@@ -500,9 +507,17 @@ static int visit_cell(fast_ray *F, const int c[3], uint32_t slot, float t, float
     uint32_t cnt = R->count27[slot];
     float lip = R->lip_unit * (float)cnt;
     if (cnt && R->sub) {
-        int cls = R->cell_cls[slot];
+        int cls = R->cell_cls[slot], res = R->sub;
         if (cls != FS_REF_EDGE && skip_proven(&F->m, cls, 0)) return 0; /* the whole cell is proven */
-        return visit_subcells(F, c, slot, t, t_out, lip);
+        if (F->m.started && F->m.inside && R->fine_off && R->fine_off[slot] != FS_GRID_NONE) {
+            /* a ray inside on entry reads the cell's interior proof, made now if no ray has made it */
+            if (fs_ref_proof_ready(R, c, slot, F->proof_buf, &F->res->w[FS_REF_PROOFS]) == FS_REF_PROOF_ALL_IN) {
+                skip_proven(&F->m, FS_REF_IN, 0); /* the whole cell is inside, as the ray is */
+                return 0;
+            }
+            res = FS_REF_FINE;
+        }
+        return visit_subcells(F, c, slot, t, t_out, lip, res);
     }
     F->ran = 1;
     if (cnt) {
@@ -534,7 +549,16 @@ static int fast_visit(void *ctx, const int c[3], uint32_t slot, float t, float t
 void fs_ref_cast_fast(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res)
 {
     memset(res, 0, sizeof *res);
-    fast_ray F = {R, o, d, {0}, {0, 0, 0, 0, -R->f.iso, 0, R->step_min}, res, fs_counting, 0, fs_ref_taylor_applies(R)};
+    fast_ray F = {R,
+                  o,
+                  d,
+                  {0},
+                  {0, 0, 0, 0, -R->f.iso, 0, R->step_min},
+                  res,
+                  fs_counting,
+                  0,
+                  fs_ref_taylor_applies(R),
+                  (char *)buf + soa_size(R)};
     soa_bind(&F.N, buf, R);
     float t_last;
     fs_ref_walk(R, o, d, fast_visit, &F, &t_last);

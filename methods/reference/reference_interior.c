@@ -11,14 +11,18 @@
  * the cubic spline (s = 8/(pi H^3)). Only the curvature term is summed
  * without cancellation, and it shrinks as e^2: with e = H/8 = r/2 the bound
  * over the liquid is ~0.7. Each near cell gets FS_REF_FINE^3 such boxes, one
- * bit each (phi >= iso proven), built by gathering, in parallel over blocks,
- * with the inner loop over a row of FS_REF_FINE boxes vectorised. Only the
- * cubic spline (the default kernel) has this level; for the others the
- * accelerated path keeps the monotone bounds only. */
+ * bit each (phi >= iso proven), built by gathering, with the inner loop over a
+ * row of FS_REF_FINE boxes vectorised. A cell's proof is made once: up front
+ * for every cell (interior=on, in parallel over blocks), or on demand by the
+ * first ray that enters the cell inside the fluid (a claim per cell; a ray that
+ * finds it claimed waits for it). Only the cubic spline (the default kernel)
+ * has this level; for the others the accelerated path keeps the monotone
+ * bounds only. */
 #include "counters.h"
 #include "fs_error.h"
 #include "reference.h"
 #include <math.h>
+#include <sched.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,8 +30,9 @@ void fs_ref_interior_free(reference *R)
 {
     free(R->fine_off);
     free(R->fine);
+    free(R->fine_state);
     R->fine_off = NULL;
-    R->fine = NULL;
+    R->fine = R->fine_state = NULL;
 }
 
 /* Candidate particles of one cell, relative to its corner (capacity cap). */
@@ -132,15 +137,16 @@ static uint64_t cell_interior(const reference *R, const int c[3], fine_cand *all
     return visits;
 }
 
-static int cand_alloc(fine_cand *c, size_t cap)
+/* Two candidate buffers of R->max27 entries over one scratch of fs_ref_proof_buf_size bytes. */
+static void cand_bind(fine_cand *all, fine_cand *slab, void *buf, const reference *R)
 {
-    c->x = malloc(3 * (cap ? cap : 1) * sizeof *c->x);
-    c->y = c->x ? c->x + cap : NULL;
-    c->z = c->x ? c->x + 2 * cap : NULL;
-    c->n = 0;
-    c->cap = (int)cap;
-    return c->x != NULL;
+    size_t cap = R->max27 ? R->max27 : 1;
+    float *f = buf;
+    *all = (fine_cand){f, f + cap, f + 2 * cap, 0, (int)cap};
+    *slab = (fine_cand){f + 3 * cap, f + 4 * cap, f + 5 * cap, 0, (int)cap};
 }
+
+size_t fs_ref_proof_buf_size(const reference *R) { return 6 * (size_t)(R->max27 ? R->max27 : 1) * sizeof(float); }
 
 /* Cells worth the fine level: some coarse sub-cell of theirs may be inside. */
 static int wants_fine(const reference *R, uint32_t slot)
@@ -152,25 +158,50 @@ static int wants_fine(const reference *R, uint32_t slot)
     return 0;
 }
 
-/* A coarse sub-cell whose fine sub-cells are all proven inside is proven
- * inside itself; a cell whose coarse sub-cells all are needs no fine level. */
-static void promote(reference *R, uint32_t slot)
+/* Whether every coarse sub-cell of the cell is inside: by its own lower bound,
+ * or because its fine sub-cells all are (then the cell is crossed whole). */
+static int all_inside(const reference *R, uint32_t slot, const uint8_t *bits)
 {
-    int sub = R->sub, f = FS_REF_FINE / sub, all = 1;
-    const uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    int sub = R->sub, f = FS_REF_FINE / sub;
     size_t base = (size_t)slot * sub * sub * sub;
     for (int q = 0; q < sub * sub * sub; q++) {
-        int ci = q % sub, cj = q / sub % sub, ck = q / (sub * sub), full = 1;
+        if (R->lo[base + q] >= FS_REF_Q) continue;
+        int ci = q % sub, cj = q / sub % sub, ck = q / (sub * sub);
         for (int z = ck * f; z < ck * f + f; z++)
             for (int y = cj * f; y < cj * f + f; y++)
                 for (int x = ci * f; x < ci * f + f; x++) {
                     int k = (z * FS_REF_FINE + y) * FS_REF_FINE + x;
-                    full &= bits[k >> 3] >> (k & 7) & 1;
+                    if (!(bits[k >> 3] >> (k & 7) & 1)) return 0;
                 }
-        if (full && R->lo[base + q] < FS_REF_Q) R->lo[base + q] = FS_REF_Q;
-        all &= R->lo[base + q] >= FS_REF_Q;
     }
-    if (all) R->fine_off[slot] = FS_GRID_NONE;
+    return 1;
+}
+
+/* Makes cell c's proof (its entry's bits), counted in w; returns its state. */
+static int prove(const reference *R, const int c[3], uint32_t slot, void *buf, ray_work *w)
+{
+    fine_cand all, slab;
+    cand_bind(&all, &slab, buf, R);
+    uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    w->nbrs += cell_interior(R, c, &all, &slab, bits);
+    w->evals += FS_REF_FINE3; /* one second-order bound (value, gradient, curvature at the centre) per fine box */
+    return all_inside(R, slot, bits) ? FS_REF_PROOF_ALL_IN : FS_REF_PROOF_BITS;
+}
+
+int fs_ref_proof_ready(const reference *R, const int c[3], uint32_t slot, void *buf, ray_work *w)
+{
+    uint8_t *st = R->fine_state + R->fine_off[slot];
+    uint8_t s = __atomic_load_n(st, __ATOMIC_ACQUIRE), none = FS_REF_PROOF_NONE;
+    if (s >= FS_REF_PROOF_BITS) return s;
+    if (s == FS_REF_PROOF_NONE &&
+        __atomic_compare_exchange_n(st, &none, FS_REF_PROOF_CLAIMED, 0, __ATOMIC_ACQUIRE, __ATOMIC_ACQUIRE)) {
+        s = (uint8_t)prove(R, c, slot, buf, w);
+        __atomic_store_n(st, s, __ATOMIC_RELEASE); /* the bits are written before the state says so */
+        return s;
+    }
+    w->waits++; /* another thread is making it: its result is the same, so wait for it */
+    while ((s = __atomic_load_n(st, __ATOMIC_ACQUIRE)) < FS_REF_PROOF_BITS) sched_yield();
+    return s;
 }
 
 size_t fs_ref_interior_cells(const reference *R)
@@ -181,7 +212,41 @@ size_t fs_ref_interior_cells(const reference *R)
     return n;
 }
 
-int fs_ref_interior_build(reference *R)
+/* interior=on: every cell's proof, in parallel over blocks. */
+static int prove_all(reference *R)
+{
+    const fs_grid *g = R->g;
+    long nb = (long)g->nblocks;
+    ray_work total = {0};
+    int failed = 0;
+#pragma omp parallel
+    {
+        ray_work w = {0};
+        void *buf = malloc(fs_ref_proof_buf_size(R));
+#pragma omp for schedule(dynamic, 2)
+        for (long b = 0; b < nb; b++)
+            for (int l = 0; buf && l < FS_GRID_B3; l++) {
+                uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l, off = R->fine_off[slot];
+                if (off == FS_GRID_NONE) continue;
+                int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
+                            g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
+                            g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
+                R->fine_state[off] = (uint8_t)prove(R, c, slot, buf, &w);
+            }
+#pragma omp critical(fs_reference_interior)
+        {
+            failed |= !buf;
+            fs_ref_work_add(&total, &w);
+        }
+        free(buf);
+    }
+    if (failed) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for the interior proofs' scratch");
+    fs_count_add(FS_CNT_FIELD_EVALS, total.evals);
+    fs_count_add(FS_CNT_NEIGHBOURS, total.nbrs);
+    return FS_OK;
+}
+
+int fs_ref_interior_build(reference *R, int demand)
 {
     fs_ref_interior_free(R);
     const fs_grid *g = R->g;
@@ -191,39 +256,13 @@ int fs_ref_interior_build(reference *R)
     if (!R->fine_off) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
     size_t n = 0;
     for (size_t c = 0; c < g->ncells; c++) R->fine_off[c] = wants_fine(R, (uint32_t)c) ? (uint32_t)n++ : FS_GRID_NONE;
-    R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8));
-    if (!R->fine) {
+    R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8)); /* pages no proof writes stay unmapped */
+    R->fine_state = calloc(n ? n : 1, 1);
+    if (!R->fine || !R->fine_state) {
         fs_ref_interior_free(R);
-        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory");
+        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu interior cells", n);
     }
-    long nb = (long)g->nblocks;
-    uint64_t visits = 0, cells = 0;
-#pragma omp parallel reduction(+ : visits, cells)
-    {
-        fine_cand all, slab;
-        int ok = cand_alloc(&all, R->max27) & cand_alloc(&slab, R->max27);
-#pragma omp for schedule(dynamic, 2)
-        for (long b = 0; b < nb; b++)
-            for (int l = 0; l < FS_GRID_B3; l++) {
-                uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l, off = R->fine_off[slot];
-                if (off == FS_GRID_NONE) continue;
-                uint8_t *bits = R->fine + (size_t)off * (FS_REF_FINE3 / 8);
-                if (!ok) {
-                    memset(bits, 0, FS_REF_FINE3 / 8);
-                    continue;
-                } /* nothing proven: still exact */
-                int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
-                            g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
-                            g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                visits += cell_interior(R, c, &all, &slab, bits);
-                cells++;
-                promote(R, slot);
-            }
-        free(all.x);
-        free(slab.x);
-    }
-    /* one second-order bound of phi (value, gradient, curvature at the centre) per fine box */
-    fs_count_add(FS_CNT_FIELD_EVALS, cells * FS_REF_FINE3);
-    fs_count_add(FS_CNT_NEIGHBOURS, visits);
-    return FS_OK;
+    int rc = demand ? FS_OK : prove_all(R);
+    if (rc) fs_ref_interior_free(R);
+    return rc;
 }

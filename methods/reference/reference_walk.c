@@ -205,6 +205,7 @@ void fs_ref_work_add(ray_work *dst, const ray_work *src)
     dst->proven_out += src->proven_out;
     dst->refine_evals += src->refine_evals;
     dst->inside_evals += src->inside_evals;
+    dst->waits += src->waits;
 }
 
 void fs_ref_cell_begin(ray_result *res, const march *m, cell_mark *c)
