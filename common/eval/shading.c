@@ -6,6 +6,7 @@
 #include "vec3.h"
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 /* Sky, linear RGB. */
 static const float SKY_HORIZON[3] = {0.78f, 0.84f, 0.90f};
@@ -175,9 +176,10 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
 void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, float floor_y, float *rgba)
 {
     shade_ctx c;
-    float right[3], cup[3];
+    fs_camera_rays rays; /* the basis once, not per pixel */
+    fs_camera_rays_init(cam, &rays);
     c.s = s;
-    fs_camera_basis(cam, right, cup, c.fwd);
+    memcpy(c.fwd, rays.fwd, sizeof c.fwd);
     for (int i = 0; i < 3; i++) {
         c.eye[i] = cam->eye[i];
         c.L[i] = s->light_dir[i];
@@ -201,7 +203,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
         for (int x = 0; x < w; x++) {
             size_t idx = (size_t)y * w + x;
             float d[3], bg[3], col[3];
-            fs_camera_ray(cam, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
+            fs_camera_rays_dir(&rays, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
             float t_obstacle = background(&c, c.eye, d, 0.0f, bg);
             float cov = g->coverage[idx];
             cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
@@ -214,7 +216,7 @@ void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, floa
                     vn[1] = 0;
                     vn[2] = 1;
                 }
-                fs_camera_from_view_dir(cam, vn, n);
+                fs_camera_rays_from_view(&rays, vn, n);
                 fs_v3_normalize(n);
                 /* Normals bent slightly away at silhouettes: make them face the camera. */
                 float nv = -fs_v3_dot(n, d);

@@ -3,7 +3,7 @@
  * start-up (docs/DESIGN.md, "Start-up"). Writes what OpenImageIO's writer wrote
  * before: one scanline part, 32-bit float channels under the caller's names (the
  * file keeps them sorted by name, readers look them up by name), zip compression
- * (16 lines a chunk) and the provenance as string attributes. Reads scanline
+ * (16 lines a chunk; at zlib's fastest level, below) and the provenance as string attributes. Reads scanline
  * EXRs: every channel as float; tiled and deep ones go to the OpenImageIO module
  * (fs_read_image_oiio). */
 #include "image_exr_core.h"
@@ -58,6 +58,10 @@ static exr_result_t write_parts(exr_context_t f, const fs_image *img, const fs_a
     int part;
     exr_result_t rc = exr_add_part(f, "", EXR_STORAGE_SCANLINE, &part);
     if (!rc) rc = exr_initialize_required_attr_simple(f, part, img->w, img->h, EXR_COMPRESSION_ZIP);
+    /* zlib's fastest level: a whole 1024x1024 render of the DualSPHysics frame to EXR took
+     * 1.67 s of CPU on one thread against 2.22 s at zlib's default (6), and its file was 1.4%
+     * larger (15.84 MB, not 15.61) */
+    if (!rc) rc = exr_set_zip_compression_level(f, part, 1);
     char fallback[16];
     for (int c = 0; !rc && c < img->nch; c++) {
         const char *n = channel_name(img, c, fallback);

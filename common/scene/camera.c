@@ -51,31 +51,55 @@ void fs_camera_proj_matrix(const fs_camera *c, float m[16])
     m[14] = 2 * f * n / (n - f);
 }
 
-void fs_camera_ray(const fs_camera *c, float px, float py, float dir[3])
+void fs_camera_rays_init(const fs_camera *c, fs_camera_rays *r)
 {
-    float r[3], u[3], f[3];
-    fs_camera_basis(c, r, u, f);
-    float t = tanf(c->fovy_deg * (float)M_PI / 360.0f), a = (float)c->width / c->height;
-    float x = (2.0f * px / c->width - 1.0f) * t * a, y = (1.0f - 2.0f * py / c->height) * t;
-    for (int i = 0; i < 3; i++) dir[i] = f[i] + x * r[i] + y * u[i];
+    fs_camera_basis(c, r->right, r->up, r->fwd);
+    for (int i = 0; i < 3; i++) r->eye[i] = c->eye[i];
+    r->tan_half = tanf(c->fovy_deg * (float)M_PI / 360.0f);
+    r->aspect = (float)c->width / c->height;
+    r->width = (float)c->width;
+    r->height = (float)c->height;
+}
+
+void fs_camera_rays_dir(const fs_camera_rays *r, float px, float py, float dir[3])
+{
+    float x = (2.0f * px / r->width - 1.0f) * r->tan_half * r->aspect, y = (1.0f - 2.0f * py / r->height) * r->tan_half;
+    for (int i = 0; i < 3; i++) dir[i] = r->fwd[i] + x * r->right[i] + y * r->up[i];
     fs_v3_normalize(dir);
 }
 
-void fs_camera_to_view_dir(const fs_camera *c, const float w[3], float v[3])
+void fs_camera_rays_to_view(const fs_camera_rays *r, const float w[3], float v[3])
 {
-    float r[3], u[3], f[3];
-    fs_camera_basis(c, r, u, f);
-    float x = fs_v3_dot(w, r), y = fs_v3_dot(w, u), z = -fs_v3_dot(w, f);
+    float x = fs_v3_dot(w, r->right), y = fs_v3_dot(w, r->up), z = -fs_v3_dot(w, r->fwd);
     v[0] = x;
     v[1] = y;
     v[2] = z;
 }
 
+void fs_camera_rays_from_view(const fs_camera_rays *r, const float v[3], float w[3])
+{
+    for (int i = 0; i < 3; i++) w[i] = v[0] * r->right[i] + v[1] * r->up[i] - v[2] * r->fwd[i];
+}
+
+void fs_camera_ray(const fs_camera *c, float px, float py, float dir[3])
+{
+    fs_camera_rays r;
+    fs_camera_rays_init(c, &r);
+    fs_camera_rays_dir(&r, px, py, dir);
+}
+
+void fs_camera_to_view_dir(const fs_camera *c, const float w[3], float v[3])
+{
+    fs_camera_rays r;
+    fs_camera_rays_init(c, &r);
+    fs_camera_rays_to_view(&r, w, v);
+}
+
 void fs_camera_from_view_dir(const fs_camera *c, const float v[3], float w[3])
 {
-    float r[3], u[3], f[3];
-    fs_camera_basis(c, r, u, f);
-    for (int i = 0; i < 3; i++) w[i] = v[0] * r[i] + v[1] * u[i] - v[2] * f[i];
+    fs_camera_rays r;
+    fs_camera_rays_init(c, &r);
+    fs_camera_rays_from_view(&r, v, w);
 }
 
 /* Largest |NDC| coordinate of the box corners seen from c, and their NDC centre. */
