@@ -34,6 +34,18 @@ auto_camera() {
   P_CAMERA="\"eye\": $(json_vec "$P_EYE"), \"target\": $(json_vec "$P_TGT"), \"up\": $(json_vec "$P_UP"), \"fov\": $FOV"
 }
 
+# view_from_above AXIS: turns the camera auto_camera read (P_EYE, P_TGT, P_UP, P_CAMERA) to
+# look straight down the scene's up axis AXIS (x, y or z) at the same target from the same
+# distance: the view from above, with y as the image's up for AXIS z and z otherwise.
+view_from_above() {
+  read -r P_EYE P_UP < <(awk -v e="$P_EYE" -v t="$P_TGT" -v ax="$1" 'BEGIN {
+    split(e, E, ","); split(t, T, ","); d = 0; for (i = 1; i <= 3; i++) d += (E[i] - T[i]) ^ 2
+    a = index("xyz", ax); u = a == 3 ? 2 : 3
+    for (i = 1; i <= 3; i++) { X[i] = T[i] + (i == a ? sqrt(d) : 0); U[i] = i == u }
+    printf "%.9g,%.9g,%.9g %d,%d,%d\n", X[1], X[2], X[3], U[1], U[2], U[3] }')
+  P_CAMERA="\"eye\": $(json_vec "$P_EYE"), \"target\": $(json_vec "$P_TGT"), \"up\": $(json_vec "$P_UP"), \"fov\": $FOV"
+}
+
 # vdb_aperture FOV_DEG: vdb_tool -render's aperture for a vertical field of view
 # (its focal length is 100: aperture = 100 tan(fov / 2))
 vdb_aperture() { awk -v f="$1" 'BEGIN {printf "%.4g", 100 * sin(f * 3.14159265358979 / 360) / cos(f * 3.14159265358979 / 360)}'; }
@@ -123,17 +135,26 @@ replace_block() {
     !skip' "$1" > "$1.new" && mv "$1.new" "$1"
 }
 
-# reference_frames: sets the array frames to "NAME|PARTICLE FILE|RENDER INPUT AND OPTIONS" of
-# the reference studies (thickness_counts.sh, interior_auto.sh): fluidsurf's splash frame and
-# the bundled dam break, and in full mode first the DualSPHysics frame ($SHARED, z up,
-# r = 0.00365 as its README gives); exits 2 when that frame is missing
+# reference_frames [BIN DIR]: sets the array frames to "NAME|PARTICLE FILE|RENDER INPUT AND
+# OPTIONS" of the reference studies (thickness_counts.sh, interior_auto.sh, peers.sh):
+# fluidsurf's splash frame and the bundled dam break, and in full mode first the DualSPHysics
+# frame ($SHARED, z up, r = 0.00365 as its README gives), auto-framed, and with BIN and DIR also
+# from above (dualsphysics_above: a scene written into DIR with the camera of view_from_above,
+# which BIN frames); exits 2 when that frame is missing
 reference_frames() {
   frames=("splash|experiments/data/splash/dam_break_splash_100k.ply|experiments/data/splash/dam_break_splash_100k.ply"
           "dam_break|experiments/data/splashsurf/dam_break_frame_23_24389_particles.vtk|experiments/scenes/dam_break.json")
   [ "$FS_QUICK" = 1 ] && return 0
-  local dsph=${SHARED:-../shared/data}/dualsphysics/dambreak200k_t0.300.vtk
+  local dsph=${SHARED:-../shared/data}/dualsphysics/dambreak200k_t0.300.vtk part
   [ -f "$dsph" ] || { echo "$(basename "$0"): $dsph missing (set SHARED to the shared data folder)" >&2; exit 2; }
-  frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}")
+  if [ $# -lt 2 ]; then frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "${frames[@]}"); return 0; fi
+  part="\"particles\": \"$(realpath "$dsph")\", \"up\": \"z\", \"radius\": 0.00365"
+  echo "{$part}" > "$2/dualsphysics.json"
+  auto_camera "$1" "$2/dualsphysics.json" "$2"
+  view_from_above z
+  echo "{$part, \"camera\": {$P_CAMERA}}" > "$2/dualsphysics_above.json"
+  frames=("dualsphysics|$dsph|$dsph --up z --radius 0.00365" "dualsphysics_above|$dsph|$2/dualsphysics_above.json"
+          "${frames[@]}")
 }
 # zb_sweep BIN: the demo's mesh twice, on the SPH field and on Zhu & Bridson's (issue 38),
 # where BIN has mesh (a build with OpenVDB); nothing otherwise.

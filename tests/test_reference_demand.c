@@ -5,7 +5,9 @@
  * does not matter which ray made it, or when); demand makes at most the proofs
  * that on makes, and more than none; the same number on 1 and 2 threads (a cell
  * is claimed once: two threads never both prove it); and a second render of the
- * same upload makes none (a cell is proven once, whatever renders follow). With
+ * same upload makes none (a cell is proven once, whatever renders follow). The
+ * coarse sub-cell bounds, also made on demand (by the first ray that walks a
+ * cell) where interior=on makes them up front, are checked the same way. With
  * a proof left unmade where a ray enters a cell inside, or made wrongly, the
  * march skips other sub-cells and the images differ. */
 #include "counters.h"
@@ -19,9 +21,15 @@
 #include <stdint.h>
 #include <string.h>
 
+/* What a render made: interior proofs (stage "interior": field_evals / 512) and
+ * cells' coarse bounds (stage "bounds": field_evals, one per sub-cell). */
+typedef struct made {
+    uint64_t proofs, bounds;
+} made;
+
 /* Renders the scene with reference.interior=how, twice on one upload while counting;
- * the first render's G-buffer into g, the proofs (interior field_evals / 512) of each into proofs. */
-static int render_twice(fs_scene *s, const fs_particles *p, const char *how, fs_gbuffer *g, uint64_t proofs[2])
+ * the first render's G-buffer into g, what each made into m. */
+static int render_twice(fs_scene *s, const fs_particles *p, const char *how, fs_gbuffer *g, made m[2])
 {
     char set[64];
     snprintf(set, sizeof set, "reference.interior=%s", how);
@@ -35,9 +43,11 @@ static int render_twice(fs_scene *s, const fs_particles *p, const char *how, fs_
         fs_stages st = {0};
         fs_run_image im = {0};
         rc = fs_run_render(run, &s->camera, &im, &st);
-        proofs[k] = 0;
-        for (int i = 0; i < st.n; i++)
-            if (!strcmp(st.name[i], "interior")) proofs[k] = st.count[i][FS_CNT_FIELD_EVALS] / (8 * 8 * 8);
+        m[k] = (made){0, 0};
+        for (int i = 0; i < st.n; i++) {
+            if (!strcmp(st.name[i], "interior")) m[k].proofs = st.count[i][FS_CNT_FIELD_EVALS] / (8 * 8 * 8);
+            if (!strcmp(st.name[i], "bounds")) m[k].bounds = st.count[i][FS_CNT_FIELD_EVALS];
+        }
         if (!rc && k == 0) *g = im.g;
         else fs_run_image_free(&im);
     }
@@ -56,6 +66,20 @@ static int same_bits(const fs_gbuffer *a, const fs_gbuffer *b)
         !memcmp(a->coverage, b->coverage, n * sizeof *a->coverage);
 }
 
+/* demand made what on made or less, more than none, the same on 2 threads (dem[0])
+ * and on 1 (dem1[0]), and nothing again in a second render (index 1). */
+static void check_made(const char *what, uint64_t on[2], uint64_t dem[2], uint64_t dem1[2])
+{
+    printf("%s: on %llu up front, demand %llu (2 threads) and %llu (1 thread), then %llu and %llu in a second render\n",
+           what, (unsigned long long)on[0], (unsigned long long)dem[0], (unsigned long long)dem1[0],
+           (unsigned long long)dem[1], (unsigned long long)dem1[1]);
+    CHECK(dem[0] > 0 && dem[0] <= on[0], "%s: demand makes %llu, on %llu", what, (unsigned long long)dem[0],
+          (unsigned long long)on[0]);
+    CHECK(dem[0] == dem1[0], "%s: the same on 2 threads and on 1 (%llu, %llu)", what, (unsigned long long)dem[0],
+          (unsigned long long)dem1[0]);
+    CHECK(dem[1] == 0 && dem1[1] == 0 && on[1] == 0, "%s: a second render makes none again", what);
+}
+
 int main(void)
 {
     fs_methods_register_builtin();
@@ -67,28 +91,25 @@ int main(void)
     CHECK(!rc, "load: %s", fs_error_message());
     if (rc) TEST_DONE();
     fs_gbuffer on = {0}, demand = {0}, demand1 = {0};
-    uint64_t p_on[2], p_dem[2], p_dem1[2];
+    made m_on[2], m_dem[2], m_dem1[2];
     omp_set_num_threads(2);
-    rc = render_twice(&s, &p, "on", &on, p_on);
-    if (!rc) rc = render_twice(&s, &p, "demand", &demand, p_dem);
+    rc = render_twice(&s, &p, "on", &on, m_on);
+    if (!rc) rc = render_twice(&s, &p, "demand", &demand, m_dem);
     omp_set_num_threads(1);
-    if (!rc) rc = render_twice(&s, &p, "demand", &demand1, p_dem1);
+    if (!rc) rc = render_twice(&s, &p, "demand", &demand1, m_dem1);
     CHECK(!rc, "renders: %s", fs_error_message());
     if (!rc) {
         size_t covered = 0;
         for (size_t i = 0; i < (size_t)on.w * on.h; i++) covered += on.coverage[i] > 0;
-        printf("%zu pixels covered; proofs: on %llu up front, demand %llu (2 threads) and %llu (1 thread), "
-               "then %llu and %llu in a second render\n",
-               covered, (unsigned long long)p_on[0], (unsigned long long)p_dem[0], (unsigned long long)p_dem1[0],
-               (unsigned long long)p_dem[1], (unsigned long long)p_dem1[1]);
         CHECK(covered > 1000, "the fluid covers the image (%zu pixels)", covered);
         CHECK(same_bits(&on, &demand), "interior=demand's G-buffer (2 threads) is interior=on's bit for bit");
         CHECK(same_bits(&on, &demand1), "interior=demand's G-buffer (1 thread) is interior=on's bit for bit");
-        CHECK(p_dem[0] > 0 && p_dem[0] <= p_on[0], "demand proves %llu cells, on %llu", (unsigned long long)p_dem[0],
-              (unsigned long long)p_on[0]);
-        CHECK(p_dem[0] == p_dem1[0], "the same proofs on 2 threads and on 1 (%llu, %llu)", (unsigned long long)p_dem[0],
-              (unsigned long long)p_dem1[0]);
-        CHECK(p_dem[1] == 0 && p_dem1[1] == 0 && p_on[1] == 0, "a second render proves no cell again");
+        uint64_t on_p[2] = {m_on[0].proofs, m_on[1].proofs}, dem_p[2] = {m_dem[0].proofs, m_dem[1].proofs},
+                 dem1_p[2] = {m_dem1[0].proofs, m_dem1[1].proofs};
+        check_made("interior proofs", on_p, dem_p, dem1_p);
+        uint64_t on_b[2] = {m_on[0].bounds, m_on[1].bounds}, dem_b[2] = {m_dem[0].bounds, m_dem[1].bounds},
+                 dem1_b[2] = {m_dem1[0].bounds, m_dem1[1].bounds};
+        check_made("cell bounds (sub-cells)", on_b, dem_b, dem1_b);
     }
     fs_gbuffer_free(&on);
     fs_gbuffer_free(&demand);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Why thickness costs what it does (issue 33, part 1): the reference's work counters on
-# three frames, with thickness off, on (interior bits as `auto` decides) and on without the
-# interior bits (interior=off). One counting render each (`render --counters`, after
+# three frames (the DualSPHysics one also from above), with thickness off, on (interior proofs
+# as `auto` decides), on with the proofs made on demand (interior=demand) and on without them
+# (interior=off). One counting render each (`render --counters`, after
 # its timed render; docs/DESIGN.md, "Work counters"), split at each ray's first hit: stage
 # `march` is the first-hit march, `thickness` the march after it (methods/reference/README.md).
 # The counts depend only on the particles, view, size and parameters, not on the machine.
@@ -12,12 +13,13 @@
 #
 # Frames: dualsphysics, the 205k-particle DualSPHysics dam break just after impact
 # ($SHARED/dualsphysics/dambreak200k_t0.300.vtk, z up, r = 0.00365 as its README gives;
-# auto-framed); splash, fluidsurf's own 100k splash frame (experiments/data/splash, r in its
+# auto-framed, and dualsphysics_above: looking down z from as far, lib.sh's view_from_above); splash, fluidsurf's own 100k splash frame (experiments/data/splash, r in its
 # header; auto-framed); dam_break, the bundled 24k frame 23 as experiments/scenes/dam_break.json
 # frames it (r = 0.025, volume_scale 0.8). Environment: BIN (./build/fluidsurf), SIZE,
 # SHARED (../shared/data).
 #
-# One row per frame, variant and stage (bounds, interior, march, thickness, total) with every
+# One row per frame, variant and stage (march, thickness, bounds, interior, total; bounds and
+# interior made on demand by the march are stages of counts only) with every
 # counter of the reference as a column; pixels and hits (first-hit crossings: covered pixels)
 # repeated on each row, so per-ray and per-hit ratios need one lookup each.
 set -euo pipefail
@@ -32,9 +34,10 @@ T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
 mkdir -p "$OUT"
 
 # NAME|PARTICLE FILE|RENDER INPUT AND OPTIONS
-reference_frames
+reference_frames "$BIN" "$T"
 # NAME|OPTIONS
-variants=("thickness_off|--set reference.thickness=off" "thickness_on|" "thickness_on_no_interior|--set reference.interior=off")
+variants=("thickness_off|--set reference.thickness=off" "thickness_on|"
+          "thickness_on_demand|--set reference.interior=demand" "thickness_on_no_interior|--set reference.interior=off")
 counters="field_evals neighbours_visited march_samples crossings cells_walked cells_marched cells_marched_inside"
 counters="$counters cells_proven_inside cells_proven_outside refine_evals inside_evals"
 

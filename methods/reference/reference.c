@@ -190,8 +190,7 @@ static int upload(void *self, const fs_particles *p, const fs_grid *g)
     fs_ref_bounds_free(R);
     fs_ref_interior_free(R);
     R->sub = 0;
-    R->bounds_done = R->interior_done = 0; /* built at the first render, when they pay (prepare_bounds) */
-    R->nwant = 0;
+    R->prepared = 0; /* the bounds and proofs: at the first render, when they pay (prepare) */
     return FS_OK;
 }
 
@@ -208,12 +207,12 @@ typedef struct ray_sample {
 
 /* The ray through pixel position (fx, fy); its work added to w (w[0] before and
  * with the first hit, w[1] after it, w[2] its interior proofs). */
-static void cast(const reference *R, const fs_camera *cam, const float fwd[3], float fx, float fy, void *buf,
-                 ray_work w[FS_REF_NWORK], ray_sample *out)
+static void cast(const reference *R, const fs_camera_rays *cam, float fx, float fy, void *buf, ray_work w[FS_REF_NWORK],
+                 ray_sample *out)
 {
     float d[3];
     ray_result res;
-    fs_camera_ray(cam, fx, fy, d);
+    fs_camera_rays_dir(cam, fx, fy, d);
     if (R->zb) fs_ref_cast_zb(R, cam->eye, d, buf, &res);
     else if (R->accel) fs_ref_cast_fast(R, cam->eye, d, buf, &res);
     else fs_ref_cast_plain(R, cam->eye, d, buf, &res);
@@ -222,17 +221,17 @@ static void cast(const reference *R, const fs_camera *cam, const float fwd[3], f
     out->thick = res.thick;
     if (!res.hit) return;
     float nv[3], dv[3];
-    fs_camera_to_view_dir(cam, res.n, nv);
-    fs_camera_to_view_dir(cam, d, dv);
+    fs_camera_rays_to_view(cam, res.n, nv);
+    fs_camera_rays_to_view(cam, d, dv);
     float s = nv[0] * dv[0] + nv[1] * dv[1] + nv[2] * dv[2] > 0 ? -1.0f : 1.0f; /* face the camera */
     for (int a = 0; a < 3; a++) out->n[a] = s * nv[a];
-    out->depth = res.t * (d[0] * fwd[0] + d[1] * fwd[1] + d[2] * fwd[2]);
+    out->depth = res.t * (d[0] * cam->fwd[0] + d[1] * cam->fwd[1] + d[2] * cam->fwd[2]);
 }
 
 /* supersample = N > 1: N x N rays through the centres of an N x N grid over the
  * pixel. Coverage is the share that hit, thickness the mean over all, depth the
  * mean over the hits and the normal their sum, renormalised. */
-static void shade_supersampled(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
+static void shade_supersampled(const reference *R, const fs_camera_rays *cam, int px, int py, void *buf,
                                fs_gbuffer *out, ray_work w[FS_REF_NWORK])
 {
     int n = R->supersample, hits = 0;
@@ -241,14 +240,14 @@ static void shade_supersampled(const reference *R, const fs_camera *cam, const f
     for (int j = 0; j < n; j++)
         for (int i = 0; i < n; i++) {
             ray_sample s;
-            cast(R, cam, fwd, px + (i + 0.5f) / n, py + (j + 0.5f) / n, buf, w, &s);
+            cast(R, cam, px + (i + 0.5f) / n, py + (j + 0.5f) / n, buf, w, &s);
             thick += s.thick;
             if (!s.hit) continue;
             if (!hits++) memcpy(first, s.n, sizeof first);
             depth += s.depth;
             for (int a = 0; a < 3; a++) sum[a] += s.n[a];
         }
-    size_t id = (size_t)py * cam->width + px;
+    size_t id = (size_t)py * out->w + px;
     out->thickness[id] = (float)(thick / (n * n));
     if (!hits) return;
     double len = sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
@@ -259,16 +258,16 @@ static void shade_supersampled(const reference *R, const fs_camera *cam, const f
 
 /* One pixel into the G-buffer; its work added to w. supersample = 1 casts the
  * pixel centre alone and writes its answer as it is. */
-static void shade_pixel(const reference *R, const fs_camera *cam, const float fwd[3], int px, int py, void *buf,
-                        fs_gbuffer *out, ray_work w[FS_REF_NWORK])
+static void shade_pixel(const reference *R, const fs_camera_rays *cam, int px, int py, void *buf, fs_gbuffer *out,
+                        ray_work w[FS_REF_NWORK])
 {
     if (R->supersample > 1) {
-        shade_supersampled(R, cam, fwd, px, py, buf, out, w);
+        shade_supersampled(R, cam, px, py, buf, out, w);
         return;
     }
     ray_sample s;
-    cast(R, cam, fwd, px + 0.5f, py + 0.5f, buf, w, &s);
-    size_t id = (size_t)py * cam->width + px;
+    cast(R, cam, px + 0.5f, py + 0.5f, buf, w, &s);
+    size_t id = (size_t)py * out->w + px;
     out->thickness[id] = s.thick;
     if (!s.hit) return;
     for (int a = 0; a < 3; a++) out->normal[3 * id + a] = s.n[a];
@@ -302,67 +301,67 @@ static void note_small_radius(reference *R, const fs_camera *cam, const float fw
             px, FS_REF_SMALL_R_PX, n);
 }
 
-/* Rays per interior cell at which the fine interior bounds pay for themselves:
- * building a cell's costs about as much as marching its inside for ~100 rays
- * (measured on the 1M-particle box, results/bench/speed.csv, interior=on/off). */
-#define FS_REF_VISITS 100.0
-
-/* How the fine interior proofs are made for this render: none (REF_INTERIOR_OFF),
- * every cell's up front (ON) or on demand (DEMAND). auto: up front when each of
- * W x H rays crosses about cbrt(cells) of the nwant cells that may hold inside
- * sub-cells, at least FS_REF_VISITS rays a cell. */
-static ref_interior want_interior(const reference *R, const fs_camera *cam)
-{
-    if (!R->accel || !R->thickness || !R->sub || !R->nwant) return REF_INTERIOR_OFF;
-    if (R->interior != REF_INTERIOR_AUTO) return (ref_interior)R->interior;
-    double cells = (double)R->nwant;
-    return (double)cam->width * cam->height * cbrt(cells) / cells >= FS_REF_VISITS ? REF_INTERIOR_ON : REF_INTERIOR_OFF;
-}
-
 /* Rays per near cell at which the coarse sub-cell bounds pay: a cell's take
  * about as long to build as ~10 gathers and marches of its stretch. */
 #define FS_REF_BOUNDS_VISITS 10.0
 
-/* Builds the coarse sub-cell bounds once per upload when the image is large
- * enough for them to pay (stage "bounds"); a small image marches without. */
-static int prepare_bounds(reference *R, const fs_camera *cam, fs_stages *st)
+/* Rays per interior cell at which the fine interior proofs pay for themselves:
+ * proving a cell costs about as much as marching its inside for ~100 rays
+ * (measured on the 1M-particle box, results/bench/speed.csv, interior=on/off). */
+#define FS_REF_VISITS 100.0
+
+/* The rays that cross each of n cells of the fluid, about: each of the W x H rays
+ * crosses about cbrt(n) of them. */
+static double rays_per_cell(size_t n, const fs_camera *cam)
 {
-    if (R->bounds_done) return FS_OK;
-    R->bounds_done = 1;
-    double n = (double)R->nnear;
-    if (!R->accel || R->zb || !n || (double)cam->width * cam->height * cbrt(n) / n < FS_REF_BOUNDS_VISITS) return FS_OK;
-    double t0 = fs_now_ms();
-    int rc = fs_ref_bounds_build(R);
-    R->nwant = rc ? 0 : fs_ref_interior_cells(R);
-    if (!rc && R->sub) rc = fs_ref_cell_classes(R);
-    if (rc) {
-        fs_ref_bounds_free(R);
-        R->sub = 0;
-        R->g = NULL;
-        return rc;
-    }
-    if (st) fs_stages_add(st, "bounds", fs_now_ms() - t0);
-    return FS_OK;
+    return n ? (double)cam->width * cam->height * cbrt((double)n) / (double)n : 0;
 }
 
-/* Prepares the fine interior proofs once per upload, as want_interior says: all
- * of them made up front (stage "interior"), or the room for proofs on demand. */
-static int prepare_interior(reference *R, const fs_camera *cam, fs_stages *st)
+/* The cells an interior proof can help (FS_REF_EDGE_IN), after every cell's bounds. */
+static size_t edge_in_cells(const reference *R)
 {
-    int rc = prepare_bounds(R, cam, st);
-    if (rc) return rc;
-    if (R->interior_done) return FS_OK;
-    R->interior_done = 1;
-    ref_interior how = want_interior(R, cam);
-    if (how == REF_INTERIOR_OFF) return FS_OK;
+    size_t n = 0;
+    for (size_t c = 0; c < R->g->ncells; c++) n += R->cell_cls[c] == FS_REF_EDGE_IN;
+    return n;
+}
+
+/* How the fine interior proofs are made for this render (after the bounds): none
+ * (REF_INTERIOR_OFF), every cell's up front (ON) or on demand (DEMAND). auto: up
+ * front when each of the W x H rays crosses about cbrt(n) of the n cells a proof
+ * can help, at least FS_REF_VISITS rays a cell. auto does not choose demand: on
+ * the frames measured it made nearly every proof on makes, and was no faster
+ * (README.md, `interior`). */
+static ref_interior want_interior(const reference *R, const fs_camera *cam)
+{
+    if (!R->thickness || !R->sub) return REF_INTERIOR_OFF;
+    if (R->interior != REF_INTERIOR_AUTO) return (ref_interior)R->interior;
+    return rays_per_cell(edge_in_cells(R), cam) >= FS_REF_VISITS ? REF_INTERIOR_ON : REF_INTERIOR_OFF;
+}
+
+/* Once per upload, when the image is large enough for them to pay: the coarse
+ * sub-cell bounds (stage "bounds") and the fine interior proofs as want_interior
+ * says (stage "interior"); with interior=demand both are made by the march, a
+ * cell's when a ray first needs it. A small image marches without. */
+static int prepare(reference *R, const fs_camera *cam, fs_stages *st)
+{
+    if (R->prepared) return FS_OK;
+    R->prepared = 1;
+    if (!R->accel || R->zb || rays_per_cell(R->nnear, cam) < FS_REF_BOUNDS_VISITS) return FS_OK;
+    int demand = R->thickness && R->interior == REF_INTERIOR_DEMAND;
     double t0 = fs_now_ms();
-    rc = fs_ref_interior_build(R, how == REF_INTERIOR_DEMAND);
+    int rc = fs_ref_bounds_build(R, demand);
+    if (!rc && st && R->sub && !demand) fs_stages_add(st, "bounds", fs_now_ms() - t0);
+    ref_interior how = rc ? REF_INTERIOR_OFF : want_interior(R, cam);
+    t0 = fs_now_ms();
+    if (how != REF_INTERIOR_OFF) rc = fs_ref_interior_build(R, how == REF_INTERIOR_DEMAND);
+    if (!rc && st && R->fine && how == REF_INTERIOR_ON) fs_stages_add(st, "interior", fs_now_ms() - t0);
     if (rc) {
+        fs_ref_bounds_free(R);
+        fs_ref_interior_free(R);
+        R->sub = 0;
         R->g = NULL;
-        return rc;
     }
-    if (st && how == REF_INTERIOR_ON) fs_stages_add(st, "interior", fs_now_ms() - t0);
-    return FS_OK;
+    return rc;
 }
 
 /* A phase's work into the pending counts (a no-op unless counting). */
@@ -388,7 +387,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (out->w != cam->width || out->h != cam->height)
         return fs_fail(FS_ERR_RUNTIME, "reference: G-buffer %dx%d does not match the camera %dx%d", out->w, out->h,
                        cam->width, cam->height);
-    int rc = prepare_interior(R, cam, st);
+    int rc = prepare(R, cam, st);
     if (rc) return rc;
     double t0 = fs_now_ms();
     int nth = omp_get_max_threads();
@@ -396,9 +395,9 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     per = (per + 63) & ~(size_t)63;
     char *bufs = malloc((size_t)nth * per);
     if (!bufs) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %d ray buffers", nth);
-    float right[3], up[3], fwd[3];
-    fs_camera_basis(cam, right, up, fwd);
-    note_small_radius(R, cam, fwd);
+    fs_camera_rays rays; /* the basis once, not per ray */
+    fs_camera_rays_init(cam, &rays);
+    note_small_radius(R, cam, rays.fwd);
     fs_gbuffer_clear(out);
     int tw = (cam->width + FS_REF_TILE - 1) / FS_REF_TILE, th = (cam->height + FS_REF_TILE - 1) / FS_REF_TILE;
     fs_progress_sub_total((long)tw * th);
@@ -412,7 +411,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
             int x0 = tile % tw * FS_REF_TILE, y0 = tile / tw * FS_REF_TILE;
             for (int py = y0; py < y0 + FS_REF_TILE && py < cam->height; py++)
                 for (int px = x0; px < x0 + FS_REF_TILE && px < cam->width; px++)
-                    shade_pixel(R, cam, fwd, px, py, buf, out, w);
+                    shade_pixel(R, &rays, px, py, buf, out, w);
             fs_progress_sub(1);
         }
 #pragma omp critical(fs_reference_work)
@@ -426,10 +425,12 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (st) fs_stages_add(st, "march", fs_now_ms() - t0); /* the bounds are built in upload */
     count_work(&total[FS_REF_AFTER]);
     if (st && fs_counting && R->thickness) fs_stages_add(st, "thickness", 0);
-    /* proofs made on demand: timed in the march, counted apart (a stage of counts only) */
+    /* bounds and proofs made on demand: timed in the march, counted apart (stages of counts only) */
+    count_work(&total[FS_REF_BOUNDS]);
+    if (st && fs_counting && total[FS_REF_BOUNDS].evals) fs_stages_add(st, "bounds", 0);
     count_work(&total[FS_REF_PROOFS]);
     if (st && fs_counting && total[FS_REF_PROOFS].evals) fs_stages_add(st, "interior", 0);
-    R->proof_waits += total[FS_REF_PROOFS].waits;
+    R->waits += total[FS_REF_BOUNDS].waits + total[FS_REF_PROOFS].waits;
     return FS_OK;
 }
 

@@ -12,8 +12,13 @@
 #include <stdint.h>
 
 /* Sub-cell classes of reference_bounds.c: phi < iso on the whole sub-cell,
- * phi >= iso on the whole sub-cell, or neither proven. */
-enum { FS_REF_OUT = 0, FS_REF_IN = 1, FS_REF_EDGE = 2 };
+ * phi >= iso on the whole sub-cell, or neither proven. A whole cell's class
+ * (R->cell_cls) is one of these, or FS_REF_EDGE_IN: neither proven, and some
+ * coarse sub-cell may be inside (the cells an interior proof can help); or, while
+ * its bounds are made on demand, FS_REF_CELL_NONE (not made yet) or
+ * FS_REF_CELL_CLAIMED (being made by the thread that claimed it). */
+enum { FS_REF_OUT = 0, FS_REF_IN = 1, FS_REF_EDGE = 2, FS_REF_EDGE_IN = 3 };
+enum { FS_REF_CELL_CLAIMED = 0xfe, FS_REF_CELL_NONE = 0xff };
 
 typedef struct reference {
     fs_field f;
@@ -23,10 +28,8 @@ typedef struct reference {
     int noted_small; /* the note of a radius under FS_REF_SMALL_R_PX was given */
     float centre[3]; /* the centre of the particles' bulk box (the grid's), for that note */
     int interior; /* reference.c's ref_interior (auto, on, off, demand): the fine interior bits (reference_interior.c) */
-    int interior_done; /* the interior decision was taken for the current upload */
-    int bounds_done;   /* the sub-cell bounds decision was taken for the current upload */
-    size_t nnear;      /* cell slots with a particle in their 27 neighbours */
-    size_t nwant;      /* cells that may hold inside sub-cells */
+    int prepared; /* the bounds and interior decisions were taken for the current upload */
+    size_t nnear; /* cell slots with a particle in their 27 neighbours */
     const fs_grid *g;
     uint32_t *count27; /* per cell slot: particles in the 27 cells around it */
     uint32_t max27;
@@ -44,12 +47,10 @@ typedef struct reference {
     float *sx, *sy, *sz; /* accel: sorted positions as structure of arrays */
     int sub;             /* accel: sub-cells per cell edge (0: no sub-cell bounds) */
     uint8_t *lo, *hi;    /* accel: per sub-cell, phi bounds quantised in units of iso / FS_REF_Q, rounded outward */
-    uint32_t *
-        fine_off; /* accel: per cell slot, its entry in fine (a cell that may hold inside sub-cells), or FS_GRID_NONE */
-    uint8_t *fine;        /* accel: FS_REF_FINE^3 bits an entry: phi >= iso proven on that fine sub-cell */
-    uint8_t *fine_state;  /* accel: per entry, FS_REF_PROOF_* (atomic: proofs on demand claim an entry) */
-    uint8_t *cell_cls;    /* accel: per cell slot, FS_REF_OUT/IN when every coarse sub-cell is, else FS_REF_EDGE */
-    uint64_t proof_waits; /* proofs on demand: times a ray waited for the thread that claimed the cell, all renders */
+    uint8_t *cell_cls;   /* accel: per cell slot, its class (FS_REF_OUT ... FS_REF_CELL_NONE; atomic on demand) */
+    uint8_t *fine;       /* accel: per cell slot, FS_REF_FINE^3 bits: phi >= iso proven on that fine sub-cell */
+    uint8_t *fine_state; /* accel: per cell slot, FS_REF_PROOF_* (atomic: proofs on demand claim a cell) */
+    uint64_t waits;      /* on demand: times a ray waited for the thread that claimed a cell, all renders */
 } reference;
 
 /* The state of a cell's interior proof (reference_interior.c): not made yet,
@@ -86,13 +87,13 @@ typedef struct ray_work {
 } ray_work;
 
 /* The work of one ray's two phases: before and with its first hit (the first-hit
- * march), and after it (the thickness march); and the interior proofs it made on
- * demand. The counting render reports them as the stages "march", "thickness" and
- * "interior" (README.md, "Work counters"). */
-enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1, FS_REF_PROOFS = 2, FS_REF_NWORK = 3 };
+ * march), and after it (the thickness march); and the cells' bounds and interior
+ * proofs it made on demand. The counting render reports them as the stages "march",
+ * "thickness", "bounds" and "interior" (README.md, "Work counters"). */
+enum { FS_REF_FIRST = 0, FS_REF_AFTER = 1, FS_REF_BOUNDS = 2, FS_REF_PROOFS = 3, FS_REF_NWORK = 4 };
 
 typedef struct ray_result {
-    ray_work w[FS_REF_NWORK]; /* [hit]: the phase the ray is in; [FS_REF_PROOFS] its proofs */
+    ray_work w[FS_REF_NWORK]; /* [hit]: the phase the ray is in; then what it made on demand */
     int hit;
     float t;    /* ray distance of the first hit */
     float n[3]; /* world normal, -grad phi normalised */
@@ -179,25 +180,27 @@ size_t fs_ref_fast_buf_size(const reference *R);
 void fs_ref_cast_zb(const reference *R, const float o[3], const float d[3], void *buf, ray_result *res);
 size_t fs_ref_zb_buf_size(const reference *R);
 
-/* Builds R->lo/hi for every near cell slot (R->sub set); frees them first. */
-int fs_ref_bounds_build(reference *R);
+/* Makes room for R->lo/hi/cell_cls (R->sub set; frees them first), and, unless
+ * demand, every near cell's bounds and class (in parallel, counted in the current
+ * stage). With demand they are made by the march (fs_ref_cell_ready). */
+int fs_ref_bounds_build(reference *R, int demand);
 void fs_ref_bounds_free(reference *R);
-/* Makes R->fine_off/fine/fine_state for the cells that may hold inside sub-cells
- * (after fs_ref_bounds_build; frees them first), and, unless demand, every cell's
- * proof (in parallel; counted as the stage "interior"). With demand the proofs are
- * made by the march (fs_ref_proof_ready). Nothing is made where it does not apply. */
+/* The class of near cell c (slot), its bounds made now when no thread has made them
+ * (claimed once; a thread that finds them claimed waits for them, counted in w->waits),
+ * their work counted in w. A function of the cell alone. */
+int fs_ref_cell_ready(const reference *R, const int c[3], uint32_t slot, ray_work *w);
+/* Makes room for R->fine/fine_state (after fs_ref_bounds_build; frees them first),
+ * and, unless demand, every FS_REF_EDGE_IN cell's proof (in parallel, counted in the
+ * current stage: needs every cell's bounds). With demand the proofs are made by the
+ * march (fs_ref_proof_ready). Nothing is made where it does not apply. */
 int fs_ref_interior_build(reference *R, int demand);
 /* Bytes of one thread's scratch for fs_ref_proof_ready. */
 size_t fs_ref_proof_buf_size(const reference *R);
-/* The interior proof of cell c (slot, with an entry in R->fine), made now when no
- * thread has made it (claimed once; a thread that finds it claimed waits for it,
- * counted in w->waits), its work counted in w. The proof is a function of the
- * cell alone, so the image does not depend on which ray made it. Returns
- * FS_REF_PROOF_BITS or FS_REF_PROOF_ALL_IN. buf: fs_ref_proof_buf_size bytes. */
+/* The interior proof of FS_REF_EDGE_IN cell c (slot), made now when no thread has
+ * made it (claimed once; a thread that finds it claimed waits for it, counted in
+ * w->waits), its work counted in w. The proof is a function of the cell alone, so
+ * the image does not depend on which ray made it. Returns FS_REF_PROOF_BITS or
+ * FS_REF_PROOF_ALL_IN. buf: fs_ref_proof_buf_size bytes. */
 int fs_ref_proof_ready(const reference *R, const int c[3], uint32_t slot, void *buf, ray_work *w);
-/* The number of cells that may hold inside sub-cells (after fs_ref_bounds_build). */
-size_t fs_ref_interior_cells(const reference *R);
-/* R->cell_cls from the coarse sub-cell bounds (after fs_ref_bounds_build). */
-int fs_ref_cell_classes(reference *R);
 void fs_ref_interior_free(reference *R);
 #endif

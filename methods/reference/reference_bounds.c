@@ -6,11 +6,14 @@
  * in units of iso / FS_REF_Q, the upper rounded up and the lower down (with a
  * margin far above the float error of the sums), so the classes they give are
  * proven: hi < FS_REF_Q means phi < iso everywhere, lo >= FS_REF_Q phi >= iso.
- * Built by gathering, in parallel over blocks: no locks, no atomics. */
+ * Built by gathering, per cell: up front in parallel over blocks, or on demand by
+ * the first ray that walks the cell (a claim per cell; a ray that finds it claimed
+ * waits for it). Either way a cell's bounds are a function of the cell alone. */
 #include "counters.h"
 #include "fs_error.h"
 #include "reference.h"
 #include <math.h>
+#include <sched.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,7 +84,7 @@ static void add_bounds(const fs_field *f, const float p[3], float b[3][64], int 
 /* Bounds of the sub-cells of cell c, slot `slot`; returns the particle-box
  * distances it computed (work counters: one per particle for the cell, one
  * per sub-cell for each particle that reaches it). */
-static uint64_t cell_bounds(reference *R, const int c[3], uint32_t slot, float *up, float *dn)
+static uint64_t cell_bounds(const reference *R, const int c[3], uint32_t slot, float *up, float *dn)
 {
     uint64_t visits = 0;
     const fs_grid *g = R->g;
@@ -122,24 +125,54 @@ static uint64_t cell_bounds(reference *R, const int c[3], uint32_t slot, float *
     return visits;
 }
 
-int fs_ref_bounds_build(reference *R)
+/* The class of cell slot from its sub-cells' bounds (reference.h, FS_REF_EDGE_IN). */
+static uint8_t cell_class(const reference *R, size_t slot)
 {
-    fs_ref_bounds_free(R);
-    const fs_grid *g = R->g;
-    R->sub = sub_count(R);
-    if (!R->sub) return FS_OK;
-    size_t nsub = (size_t)R->sub * R->sub * R->sub, total = g->ncells * nsub;
-    R->lo = calloc(total ? total : 1, 1);
-    R->hi = calloc(total ? total : 1, 1); /* hi = 0: phi < iso, right for cells no particle sees */
-    if (!R->lo || !R->hi) {
-        fs_ref_bounds_free(R);
-        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu sub-cell bounds", total);
+    size_t nsub = (size_t)R->sub * R->sub * R->sub;
+    int in = 1, out = 1, may_in = 0;
+    for (size_t q = slot * nsub; q < (slot + 1) * nsub; q++) {
+        in &= R->lo[q] >= FS_REF_Q;
+        out &= R->hi[q] < FS_REF_Q;
+        may_in |= R->hi[q] >= FS_REF_Q && R->lo[q] < FS_REF_Q;
     }
+    return (uint8_t)(in ? FS_REF_IN : out ? FS_REF_OUT : may_in ? FS_REF_EDGE_IN : FS_REF_EDGE);
+}
+
+/* Cell c's bounds and class, their work counted in w (one bound of phi, upper and
+ * lower in one pass, per sub-cell). */
+static uint8_t make_cell(const reference *R, const int c[3], uint32_t slot, ray_work *w)
+{
+    float up[64], dn[64];
+    w->nbrs += cell_bounds(R, c, slot, up, dn);
+    w->evals += (uint64_t)R->sub * R->sub * R->sub;
+    return cell_class(R, slot);
+}
+
+int fs_ref_cell_ready(const reference *R, const int c[3], uint32_t slot, ray_work *w)
+{
+    uint8_t *st = R->cell_cls + slot;
+    uint8_t s = __atomic_load_n(st, __ATOMIC_ACQUIRE), none = FS_REF_CELL_NONE;
+    if (s < FS_REF_CELL_CLAIMED) return s;
+    if (s == FS_REF_CELL_NONE &&
+        __atomic_compare_exchange_n(st, &none, FS_REF_CELL_CLAIMED, 0, __ATOMIC_ACQUIRE, __ATOMIC_ACQUIRE)) {
+        s = make_cell(R, c, slot, w);
+        __atomic_store_n(st, s, __ATOMIC_RELEASE); /* the bounds are written before the class says so */
+        return s;
+    }
+    w->waits++; /* another thread is making them: the same bounds, so wait for them */
+    while ((s = __atomic_load_n(st, __ATOMIC_ACQUIRE)) >= FS_REF_CELL_CLAIMED) sched_yield();
+    return s;
+}
+
+/* Every near cell's bounds, in parallel over blocks, counted in the current stage. */
+static void make_all(reference *R)
+{
+    const fs_grid *g = R->g;
     long nb = (long)g->nblocks;
-    uint64_t visits = 0, cells = 0;
-#pragma omp parallel reduction(+ : visits, cells)
+    uint64_t evals = 0, nbrs = 0;
+#pragma omp parallel reduction(+ : evals, nbrs)
     {
-        float up[64], dn[64];
+        ray_work w = {0};
 #pragma omp for schedule(dynamic, 4)
         for (long b = 0; b < nb; b++)
             for (int l = 0; l < FS_GRID_B3; l++) {
@@ -148,32 +181,31 @@ int fs_ref_bounds_build(reference *R)
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                visits += cell_bounds(R, c, slot, up, dn);
-                cells++;
+                R->cell_cls[slot] = make_cell(R, c, slot, &w);
             }
+        evals += w.evals;
+        nbrs += w.nbrs;
     }
-    /* one bound of phi (upper and lower, in one pass) per sub-cell */
-    fs_count_add(FS_CNT_FIELD_EVALS, cells * nsub);
-    fs_count_add(FS_CNT_NEIGHBOURS, visits);
-    return FS_OK;
+    fs_count_add(FS_CNT_FIELD_EVALS, evals);
+    fs_count_add(FS_CNT_NEIGHBOURS, nbrs);
 }
 
-int fs_ref_cell_classes(reference *R)
+int fs_ref_bounds_build(reference *R, int demand)
 {
+    fs_ref_bounds_free(R);
     const fs_grid *g = R->g;
-    free(R->cell_cls);
+    R->sub = sub_count(R);
+    if (!R->sub) return FS_OK;
+    size_t nsub = (size_t)R->sub * R->sub * R->sub, total = g->ncells * nsub;
+    R->lo = malloc(total ? total : 1); /* a cell's are written when its bounds are made */
+    R->hi = malloc(total ? total : 1);
     R->cell_cls = malloc(g->ncells ? g->ncells : 1);
-    if (!R->cell_cls) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
-    size_t nsub = (size_t)R->sub * R->sub * R->sub;
-    long nc = (long)g->ncells;
-#pragma omp parallel for schedule(static)
-    for (long c = 0; c < nc; c++) {
-        int in = 1, out = 1;
-        for (size_t q = (size_t)c * nsub; q < (size_t)(c + 1) * nsub; q++) {
-            in &= R->lo[q] >= FS_REF_Q;
-            out &= R->hi[q] < FS_REF_Q;
-        }
-        R->cell_cls[c] = (uint8_t)(in ? FS_REF_IN : (out ? FS_REF_OUT : FS_REF_EDGE));
+    if (!R->lo || !R->hi || !R->cell_cls) {
+        fs_ref_bounds_free(R);
+        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu sub-cell bounds", total);
     }
+    /* cells no particle sees are outside; the others' bounds are made now or on demand */
+    for (size_t c = 0; c < g->ncells; c++) R->cell_cls[c] = R->count27[c] ? FS_REF_CELL_NONE : FS_REF_OUT;
+    if (!demand) make_all(R);
     return FS_OK;
 }

@@ -362,7 +362,7 @@ static int march_range(fast_ray *F, float t0, float u0, float u1, float lip)
         /* inside, the second-order step pays where the interior bits leave short unproven
          * stretches; through long unproven interior (no bits built) the doubling trials of
          * the monotone bound prove longer steps per sum (README.md, step 11) */
-        if (M > 0 && (!m->inside || R->fine_off)) {
+        if (M > 0 && (!m->inside || R->fine)) {
             proven = taylor_step(F, t, rem, M, &slope, &s, &gn, &lo, &g_lo);
         } else {
             slope = NAN;
@@ -422,7 +422,7 @@ static int sub_class(const reference *R, uint32_t slot, int res, const int c[3],
     *v = 0;
     if (res == R->sub) return FS_REF_EDGE;
     size_t k = ((size_t)c[2] * FS_REF_FINE + c[1]) * FS_REF_FINE + c[0];
-    const uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    const uint8_t *bits = R->fine + (size_t)slot * (FS_REF_FINE3 / 8);
     return bits[k >> 3] >> (k & 7) & 1u ? FS_REF_IN : FS_REF_EDGE;
 }
 
@@ -507,9 +507,9 @@ static int visit_cell(fast_ray *F, const int c[3], uint32_t slot, float t, float
     uint32_t cnt = R->count27[slot];
     float lip = R->lip_unit * (float)cnt;
     if (cnt && R->sub) {
-        int cls = R->cell_cls[slot], res = R->sub;
-        if (cls != FS_REF_EDGE && skip_proven(&F->m, cls, 0)) return 0; /* the whole cell is proven */
-        if (F->m.started && F->m.inside && R->fine_off && R->fine_off[slot] != FS_GRID_NONE) {
+        int cls = fs_ref_cell_ready(R, c, slot, &F->res->w[FS_REF_BOUNDS]), res = R->sub;
+        if ((cls == FS_REF_IN || cls == FS_REF_OUT) && skip_proven(&F->m, cls, 0)) return 0; /* proven whole */
+        if (cls == FS_REF_EDGE_IN && F->m.started && F->m.inside && R->fine) {
             /* a ray inside on entry reads the cell's interior proof, made now if no ray has made it */
             if (fs_ref_proof_ready(R, c, slot, F->proof_buf, &F->res->w[FS_REF_PROOFS]) == FS_REF_PROOF_ALL_IN) {
                 skip_proven(&F->m, FS_REF_IN, 0); /* the whole cell is inside, as the ray is */

@@ -28,10 +28,8 @@
 
 void fs_ref_interior_free(reference *R)
 {
-    free(R->fine_off);
     free(R->fine);
     free(R->fine_state);
-    R->fine_off = NULL;
     R->fine = R->fine_state = NULL;
 }
 
@@ -148,16 +146,6 @@ static void cand_bind(fine_cand *all, fine_cand *slab, void *buf, const referenc
 
 size_t fs_ref_proof_buf_size(const reference *R) { return 6 * (size_t)(R->max27 ? R->max27 : 1) * sizeof(float); }
 
-/* Cells worth the fine level: some coarse sub-cell of theirs may be inside. */
-static int wants_fine(const reference *R, uint32_t slot)
-{
-    if (!R->count27[slot]) return 0;
-    size_t n = (size_t)R->sub * R->sub * R->sub, base = (size_t)slot * n;
-    for (size_t k = 0; k < n; k++)
-        if (R->hi[base + k] >= FS_REF_Q && R->lo[base + k] < FS_REF_Q) return 1;
-    return 0;
-}
-
 /* Whether every coarse sub-cell of the cell is inside: by its own lower bound,
  * or because its fine sub-cells all are (then the cell is crossed whole). */
 static int all_inside(const reference *R, uint32_t slot, const uint8_t *bits)
@@ -182,7 +170,7 @@ static int prove(const reference *R, const int c[3], uint32_t slot, void *buf, r
 {
     fine_cand all, slab;
     cand_bind(&all, &slab, buf, R);
-    uint8_t *bits = R->fine + (size_t)R->fine_off[slot] * (FS_REF_FINE3 / 8);
+    uint8_t *bits = R->fine + (size_t)slot * (FS_REF_FINE3 / 8);
     w->nbrs += cell_interior(R, c, &all, &slab, bits);
     w->evals += FS_REF_FINE3; /* one second-order bound (value, gradient, curvature at the centre) per fine box */
     return all_inside(R, slot, bits) ? FS_REF_PROOF_ALL_IN : FS_REF_PROOF_BITS;
@@ -190,7 +178,7 @@ static int prove(const reference *R, const int c[3], uint32_t slot, void *buf, r
 
 int fs_ref_proof_ready(const reference *R, const int c[3], uint32_t slot, void *buf, ray_work *w)
 {
-    uint8_t *st = R->fine_state + R->fine_off[slot];
+    uint8_t *st = R->fine_state + slot;
     uint8_t s = __atomic_load_n(st, __ATOMIC_ACQUIRE), none = FS_REF_PROOF_NONE;
     if (s >= FS_REF_PROOF_BITS) return s;
     if (s == FS_REF_PROOF_NONE &&
@@ -204,15 +192,7 @@ int fs_ref_proof_ready(const reference *R, const int c[3], uint32_t slot, void *
     return s;
 }
 
-size_t fs_ref_interior_cells(const reference *R)
-{
-    if (!R->sub) return 0;
-    size_t n = 0;
-    for (size_t c = 0; c < R->g->ncells; c++) n += (size_t)wants_fine(R, (uint32_t)c);
-    return n;
-}
-
-/* interior=on: every cell's proof, in parallel over blocks. */
+/* interior=on: every FS_REF_EDGE_IN cell's proof, in parallel over blocks (its bounds made). */
 static int prove_all(reference *R)
 {
     const fs_grid *g = R->g;
@@ -226,12 +206,12 @@ static int prove_all(reference *R)
 #pragma omp for schedule(dynamic, 2)
         for (long b = 0; b < nb; b++)
             for (int l = 0; buf && l < FS_GRID_B3; l++) {
-                uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l, off = R->fine_off[slot];
-                if (off == FS_GRID_NONE) continue;
+                uint32_t slot = (uint32_t)b * FS_GRID_B3 + (uint32_t)l;
+                if (R->cell_cls[slot] != FS_REF_EDGE_IN) continue;
                 int c[3] = {g->bkey[3 * b] * FS_GRID_B + l % FS_GRID_B,
                             g->bkey[3 * b + 1] * FS_GRID_B + l / FS_GRID_B % FS_GRID_B,
                             g->bkey[3 * b + 2] * FS_GRID_B + l / (FS_GRID_B * FS_GRID_B)};
-                R->fine_state[off] = (uint8_t)prove(R, c, slot, buf, &w);
+                R->fine_state[slot] = (uint8_t)prove(R, c, slot, buf, &w);
             }
 #pragma omp critical(fs_reference_interior)
         {
@@ -252,15 +232,12 @@ int fs_ref_interior_build(reference *R, int demand)
     const fs_grid *g = R->g;
     if (R->aniso || R->f.kernel != FS_KERNEL_CUBIC || !R->sub || !R->thickness)
         return FS_OK; /* only thickness walks the inside */
-    R->fine_off = malloc((g->ncells ? g->ncells : 1) * sizeof *R->fine_off);
-    if (!R->fine_off) return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu cells", g->ncells);
-    size_t n = 0;
-    for (size_t c = 0; c < g->ncells; c++) R->fine_off[c] = wants_fine(R, (uint32_t)c) ? (uint32_t)n++ : FS_GRID_NONE;
-    R->fine = malloc((n ? n : 1) * (FS_REF_FINE3 / 8)); /* pages no proof writes stay unmapped */
-    R->fine_state = calloc(n ? n : 1, 1);
+    size_t n = g->ncells ? g->ncells : 1;
+    R->fine = malloc(n * (FS_REF_FINE3 / 8)); /* a block's cells fill a page: pages no proof writes stay unmapped */
+    R->fine_state = calloc(n, 1);
     if (!R->fine || !R->fine_state) {
         fs_ref_interior_free(R);
-        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for %zu interior cells", n);
+        return fs_fail(FS_ERR_RUNTIME, "reference: out of memory for the interior proofs of %zu cells", n);
     }
     int rc = demand ? FS_OK : prove_all(R);
     if (rc) fs_ref_interior_free(R);
