@@ -117,6 +117,29 @@ int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *b
     return nb;
 }
 
+void fs_gl_chunks_free(fs_gl_chunks *c)
+{
+    if (c->n) glDeleteBuffers(c->n, c->bufs);
+    free(c->bufs);
+    c->bufs = NULL;
+    c->n = 0;
+}
+
+int fs_gl_chunks_upload(fs_gl_chunks *c, const float *vec4s, size_t n, const char *who)
+{
+    fs_gl_chunks_free(c);
+    c->chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
+    int maxb = (int)((n + c->chunk - 1) / c->chunk);
+    if (!(c->bufs = calloc(maxb ? maxb : 1, sizeof *c->bufs))) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", who);
+    int nb = fs_gl_upload_chunked(vec4s, n, c->chunk, c->bufs, maxb);
+    if (nb < 0) {
+        fs_gl_chunks_free(c);
+        return -nb;
+    }
+    c->n = nb;
+    return FS_OK;
+}
+
 /* Fills buffer buf with particles [first, first + cnt) as float triples. */
 static void fill_xyz(unsigned buf, const float *x, const float *y, const float *z, size_t first, size_t cnt,
                      float *stage, size_t stage_n)

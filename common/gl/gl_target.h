@@ -43,6 +43,16 @@ unsigned fs_gl_texture_2d_array(unsigned format, int w, int h, int layers);
 int fs_gl_upload_chunked(const float *vec4s, size_t n, size_t chunk, unsigned *bufs, int maxbufs);
 /* Elements of `elem_bytes` that fit one SSBO binding on this context. */
 size_t fs_gl_ssbo_chunk(size_t elem_bytes);
+/* A set of vec4s in as many storage buffers of at most `chunk` elements as it
+ * takes: the splatters' particles (slice_splat.c, layered_splat.c). */
+typedef struct fs_gl_chunks {
+    unsigned *bufs;
+    int n;        /* buffers */
+    size_t chunk; /* elements per buffer (fs_gl_ssbo_chunk of a vec4) */
+} fs_gl_chunks;
+/* Replaces c's buffers with the n vec4s; `who` names the caller in a message. */
+int fs_gl_chunks_upload(fs_gl_chunks *c, const float *vec4s, size_t n, const char *who);
+void fs_gl_chunks_free(fs_gl_chunks *c);
 /* Uploads the positions x, y, z (n each) as packed float triples (12 bytes a
  * particle; std430 float[], since a vec3 array would have a 16-byte stride) in
  * buffers of at most `chunk` particles, through a small staging block rather

@@ -33,9 +33,8 @@ struct fs_layered_splat {
      * grid does not pay for idle invocations */
     unsigned prog[INVOCATIONS_MAX + 1], vao, fbo;
     int layers, max_invocations; /* layers per invocation; invocations per point */
-    unsigned *bufs;
-    int nbufs;
-    size_t draws; /* points sent in the last run (particles x passes) */
+    fs_gl_chunks parts;          /* the particles of the last run */
+    size_t draws;                /* points sent in the last run (particles x passes) */
 };
 
 fs_layered_splat *fs_layered_splat_create(void)
@@ -76,18 +75,10 @@ static unsigned program(fs_layered_splat *s, int invocations)
     return s->prog[invocations] = fs_program_build(st, defs);
 }
 
-static void free_buffers(fs_layered_splat *s)
-{
-    if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
-    free(s->bufs);
-    s->bufs = NULL;
-    s->nbufs = 0;
-}
-
 void fs_layered_splat_destroy(fs_layered_splat *s)
 {
     if (!s) return;
-    free_buffers(s);
+    fs_gl_chunks_free(&s->parts);
     if (s->fbo) glDeleteFramebuffers(1, &s->fbo);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     for (int i = 0; i <= INVOCATIONS_MAX; i++)
@@ -142,7 +133,7 @@ int fs_density_texture_read(unsigned tex, fs_density_grid *g)
     return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "density texture: readback failed");
 }
 
-static int upload_particles(fs_layered_splat *s, const fs_particles *p, size_t chunk)
+static int upload_particles(fs_layered_splat *s, const fs_particles *p)
 {
     float *v = malloc(p->n * 4 * sizeof(float));
     if (!v) return fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory for %zu particles", p->n);
@@ -156,21 +147,9 @@ static int upload_particles(fs_layered_splat *s, const fs_particles *p, size_t c
         v[4 * i + 2] = p->z[i];
         v[4 * i + 3] = 0.0f;
     }
-    free_buffers(s);
-    int maxb = (int)((p->n + chunk - 1) / chunk);
-    s->bufs = calloc(maxb, sizeof *s->bufs);
-    if (!s->bufs) {
-        free(v);
-        return fs_fail(FS_ERR_RUNTIME, "layered splat: out of memory");
-    }
-    int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, maxb);
+    int rc = fs_gl_chunks_upload(&s->parts, v, p->n, "layered splat");
     free(v);
-    if (nb < 0) {
-        free_buffers(s);
-        return -nb;
-    }
-    s->nbufs = nb;
-    return FS_OK;
+    return rc;
 }
 
 int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, const fs_particles *p, const fs_field *f,
@@ -191,8 +170,7 @@ int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, cons
     const float zero = 0.0f;
     glClearTexImage(tex3d, 0, GL_RED, GL_FLOAT, &zero);
     if (p->n == 0) return FS_OK;
-    const size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
-    int rc = upload_particles(s, p, chunk);
+    int rc = upload_particles(s, p);
     if (rc) return rc;
     glNamedFramebufferTexture(s->fbo, GL_COLOR_ATTACHMENT0, tex3d, 0); /* layered: the whole 3D texture */
     if (glCheckNamedFramebufferStatus(s->fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -223,9 +201,9 @@ int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, cons
     const int u_layer0 = glGetUniformLocation(prog, "u_layer0");
     for (int pass = 0; pass < passes; pass++) {
         glUniform1i(u_layer0, pass * per_draw);
-        for (int b = 0; b < s->nbufs; b++) {
-            size_t lo = (size_t)b * chunk, hi = lo + chunk < p->n ? lo + chunk : p->n;
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->bufs[b]);
+        for (int b = 0; b < s->parts.n; b++) {
+            size_t chunk = s->parts.chunk, lo = (size_t)b * chunk, hi = lo + chunk < p->n ? lo + chunk : p->n;
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->parts.bufs[b]);
             glDrawArrays(GL_POINTS, 0, (GLsizei)(hi - lo));
             s->draws += hi - lo;
         }

@@ -22,9 +22,8 @@
 
 struct fs_slice_splat {
     unsigned prog, vao, fbo, tex;
-    int tw, th;     /* size of tex */
-    unsigned *bufs; /* particle buffers of the last run */
-    int nbufs;
+    int tw, th;         /* size of tex */
+    fs_gl_chunks parts; /* the particles of the last run, in band order */
     size_t disks;
     /* uniform locations */
     int u_first, u_axes, u_origin, u_spacing, u_size, u_zrange, u_H, u_planes, u_V, u_kernel;
@@ -56,14 +55,6 @@ fs_slice_splat *fs_slice_splat_create(void)
     return s;
 }
 
-static void free_buffers(fs_slice_splat *s)
-{
-    if (s->nbufs) glDeleteBuffers(s->nbufs, s->bufs);
-    free(s->bufs);
-    s->bufs = NULL;
-    s->nbufs = 0;
-}
-
 static void free_target(fs_slice_splat *s)
 {
     if (s->fbo) glDeleteFramebuffers(1, &s->fbo);
@@ -75,7 +66,7 @@ static void free_target(fs_slice_splat *s)
 void fs_slice_splat_destroy(fs_slice_splat *s)
 {
     if (!s) return;
-    free_buffers(s);
+    fs_gl_chunks_free(&s->parts);
     free_target(s);
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->prog) glDeleteProgram(s->prog);
@@ -157,32 +148,20 @@ static int cluster_upload(fs_slice_splat *s, const fs_particles *p, int up, int 
     }
     free(fill);
     free(band);
-    free_buffers(s);
-    size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
-    int maxb = (int)((p->n + chunk - 1) / chunk);
-    s->bufs = calloc(maxb, sizeof *s->bufs);
-    if (!s->bufs) {
-        free(v);
-        return fs_fail(FS_ERR_RUNTIME, "slice splat: out of memory");
-    }
-    int nb = fs_gl_upload_chunked(v, p->n, chunk, s->bufs, maxb);
+    int rc = fs_gl_chunks_upload(&s->parts, v, p->n, "slice splat");
     free(v);
-    if (nb < 0) {
-        free_buffers(s);
-        return -nb;
-    }
-    s->nbufs = nb;
-    return FS_OK;
+    return rc;
 }
 
 /* Draws particle slots [s0, s1), split over the chunked buffers. */
-static void draw_range(const fs_slice_splat *s, size_t s0, size_t s1, size_t chunk)
+static void draw_range(const fs_slice_splat *s, size_t s0, size_t s1)
 {
-    for (int b = 0; b < s->nbufs; b++) {
+    const size_t chunk = s->parts.chunk;
+    for (int b = 0; b < s->parts.n; b++) {
         size_t c0 = (size_t)b * chunk, c1 = c0 + chunk;
         size_t lo = s0 > c0 ? s0 : c0, hi = s1 < c1 ? s1 : c1;
         if (lo >= hi) continue;
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->bufs[b]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->parts.bufs[b]);
         glUniform1i(s->u_first, (int)(lo - c0));
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, (GLsizei)(hi - lo));
     }
@@ -292,13 +271,12 @@ static int band_reaches(const bands *b, int k, float H, const float *planes, int
  * bands; returns whether any particle was drawn. */
 static int draw_reaching_bands(fs_slice_splat *s, const bands *b, float H, const float *planes, int np)
 {
-    const size_t chunk = fs_gl_ssbo_chunk(4 * sizeof(float));
     int drawn = 0;
     for (int k = 0; k < b->nc;) {
         int run = k;
         while (run < b->nc && band_reaches(b, run, H, planes, np)) run++;
         if (run > k && b->start[run] > b->start[k]) {
-            draw_range(s, b->start[k], b->start[run], chunk);
+            draw_range(s, b->start[k], b->start[run]);
             s->disks += b->start[run] - b->start[k];
             drawn = 1;
         }

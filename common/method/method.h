@@ -109,6 +109,11 @@ void *fs_method_params_alloc(const fs_method *m, const double *values);
 /* For create(): copies the setup's parameter struct (size bytes) into dst;
  * FS_ERR_RUNTIME (fs_fail) naming the method when the setup has none. */
 int fs_method_params_copy(const char *method, const fs_method_setup *setup, void *dst, size_t size);
+/* For create(): the field checked (fs_method_check_field) into f, the
+ * parameters copied into params (size bytes), and the scene into scene (the
+ * defaults when the setup has none). */
+int fs_method_setup_take(const char *method, const fs_method_setup *setup, fs_field *f, void *params, size_t size,
+                         struct fs_scene *scene);
 
 #ifdef __cplusplus
 }

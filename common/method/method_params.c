@@ -1,5 +1,6 @@
 #include "method_params.h"
 #include "fs_error.h"
+#include "scene.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,4 +145,16 @@ void fs_method_provenance(fs_provenance *out, const fs_method *m, const double *
     fs_provenance_set(out, "params", pstr);
     snprintf(fstr, sizeof fstr, "%d", frame);
     fs_provenance_set(out, "frame", fstr);
+}
+
+int fs_method_setup_take(const char *method, const fs_method_setup *setup, fs_field *f, void *params, size_t size,
+                         fs_scene *scene)
+{
+    int rc = fs_method_check_field(method, &setup->field);
+    if (!rc) rc = fs_method_params_copy(method, setup, params, size);
+    if (rc) return rc;
+    *f = setup->field;
+    if (setup->scene) *scene = *setup->scene;
+    else fs_scene_defaults(scene);
+    return FS_OK;
 }

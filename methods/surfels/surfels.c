@@ -5,7 +5,7 @@
  * refraction and the caustics (5.3, surfel_gl.c). See README.md. */
 #include "caustics.h"
 #include "output_file.h"
-#include "density_splat.h"
+#include "density_frame.h"
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_stage.h"
@@ -71,14 +71,8 @@ typedef struct surfels {
     fs_field f;
     surfels_params params;
     fs_scene scene;
-    const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
-    const fs_particles *all;
-    fs_particles bulk;
-    size_t dropped; /* far strays left out of the density grid; bulk is then a copy */
+    fs_density_frame fr; /* the frame: its bulk, its neighbour grid */
     float floor_h;
-    const fs_grid *ng;
-    fs_grid own;
-    int has_own;
     fs_density_grid dg;
     fs_slice_splat *splat;
     fs_caustics *caustics;
@@ -100,8 +94,7 @@ static void destroy(void *self)
     if (s->gl_ready) surfel_gl_destroy(&s->gl);
     if (s->slice_tex) glDeleteTextures(1, &s->slice_tex);
     free(s->slices);
-    if (s->has_own) fs_grid_free(&s->own);
-    if (s->dropped) fs_particles_free(&s->bulk);
+    fs_density_frame_free(&s->fr);
     fs_density_grid_free(&s->dg);
     fs_surfel_set_free(&s->set);
     free(s);
@@ -109,20 +102,12 @@ static void destroy(void *self)
 
 static void *create(const fs_method_setup *setup)
 {
-    const fs_field *f = &setup->field;
-    if (fs_method_check_field("surfels", f)) return NULL;
     surfels *s = calloc(1, sizeof *s);
-    if (!s) {
-        fs_fail(FS_ERR_RUNTIME, "surfels: out of memory");
-        return NULL;
-    }
-    s->f = *f;
-    if (fs_method_params_copy("surfels", setup, &s->params, sizeof s->params)) {
+    if (!s || fs_method_setup_take("surfels", setup, &s->f, &s->params, sizeof s->params, &s->scene)) {
+        if (!s) fs_fail(FS_ERR_RUNTIME, "surfels: out of memory");
         free(s);
         return NULL;
     }
-    if (setup->scene) s->scene = *setup->scene;
-    else fs_scene_defaults(&s->scene);
     if (surfel_gl_create(&s->gl)) {
         destroy(s);
         return NULL;
@@ -138,41 +123,23 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     surfels *s = self;
-    if (s->dropped) fs_particles_free(&s->bulk);
-    s->p = s->all = NULL;
-    int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
-    if (rc) {
-        s->dropped = 0;
-        return rc;
-    }
-    if (s->dropped)
-        fs_note("surfels: %zu far stray particle(s) outside the bulk are left out of the density grid", s->dropped);
-    s->p = &s->bulk;
-    s->all = p;
     s->floor_h = fs_scene_floor(&s->scene, g);
     /* the exact build walks cells of at least H */
-    return fs_grid_fit(g, p, s->f.H, &s->own, &s->has_own, &s->ng);
+    return fs_density_frame_upload(&s->fr, p, g, s->f.H, 1, "surfels", "the density grid");
 }
 
 /* The density grid and its surfels: view-independent, rebuilt every frame. */
 static int build_surface(surfels *s, fs_stages *t)
 {
-    const fs_particles *p = s->p;
+    const fs_particles *p = s->fr.p;
     fs_density_grid_free(&s->dg);
     int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, s->params.grid_res);
     if (rc) return rc;
-    double t0 = fs_gl_stage_start();
-    if (s->params.grid_build == GRID_SPLAT)
-        rc = fs_slice_splat_run(s->splat, &s->dg, p, &s->f, s->scene.up_axis, s->params.clusters);
-    else rc = fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
-    if (rc) return rc;
+    int splat = s->params.grid_build == GRID_SPLAT; /* slice splatting: a GL stage */
+    fs_density_builder b = {
+        splat ? FS_DENSITY_SLICE : FS_DENSITY_EXACT, NULL, s->splat, s->scene.up_axis, s->params.clusters, splat};
     double t1;
-    if (s->params.grid_build == GRID_SPLAT) { /* slice splatting: a GL stage */
-        t1 = fs_gl_stage_end(t, "density_grid", t0);
-    } else { /* the exact CPU sum: the GL clock would time the CPU */
-        t1 = fs_now_ms();
-        fs_stages_add(t, "density_grid", t1 - t0);
-    }
+    if ((rc = fs_density_frame_build(&b, &s->fr, &s->f, &s->dg, 0, t, "density_grid", &t1))) return rc;
     fs_surfel_extract_opts eo = {s->f.iso, (float)s->params.radius_scale, (float)s->params.gap};
     if ((rc = fs_surfels_extract(&s->dg, &eo, &s->set, &s->gap_added))) return rc;
     if ((rc = surfel_gl_upload(&s->gl, &s->set))) return rc;
@@ -272,7 +239,7 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     object_box box;
     int object = s->params.object == OBJECT_BOX;
     if (object) {
-        box = place_object(s->p, up, l->floor_h);
+        box = place_object(s->fr.p, up, l->floor_h);
         object = box.top > box.bottom;
     }
     if (object) { /* sample planes evenly from the floor to the box's top */
@@ -302,7 +269,7 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
     surfels *s = self;
-    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: render before upload");
+    if (!s->fr.p) return fs_fail(FS_ERR_RUNTIME, "surfels: render before upload");
     int rc = build_surface(s, t);
     surfel_look look;
     if (!rc) rc = build_look(s, &look, t);
@@ -323,7 +290,7 @@ static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
     (void)prov; /* its files carry none yet */
     surfels *s = self;
-    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "surfels: export before upload");
+    if (!s->fr.p) return fs_fail(FS_ERR_RUNTIME, "surfels: export before upload");
     int vdb = fs_path_ends_with(path, ".vdb"), ply = fs_path_ends_with(path, ".ply");
     if (!vdb && !ply) return fs_fail(FS_ERR_INPUT, "%s: surfels exports .vdb (density grid) or .ply (surfels)", path);
     fs_stages t = {0};

@@ -6,7 +6,7 @@
  * textures give each ray's entry and exit, and a compute pass marches between
  * them (shaders/volume_raycast/march.comp.glsl) writing the G-buffer and the
  * transfer-function image. See README.md. */
-#include "density_splat.h"
+#include "density_frame.h"
 #include "output_file.h"
 #include "fs_error.h"
 #include "gl.h"
@@ -21,7 +21,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum { BUILD_LAYERED = 0, BUILD_SLICE, BUILD_EXACT } vr_build;
+/* the params' order is the builders' (density_frame.h) */
+typedef enum {
+    BUILD_LAYERED = FS_DENSITY_LAYERED,
+    BUILD_SLICE = FS_DENSITY_SLICE,
+    BUILD_EXACT = FS_DENSITY_EXACT
+} vr_build;
 typedef enum { MODE_SURFACE, MODE_TRANSLUCENT } vr_mode;
 
 typedef struct volume_raycast_params {
@@ -59,14 +64,8 @@ typedef struct vr {
     fs_field f;
     volume_raycast_params params;
     fs_scene scene;
-    const fs_particles *p; /* the bulk: the particles the density grid keeps (fs_density_grid_keep) */
-    const fs_particles *all;
-    fs_particles bulk;
-    size_t dropped; /* far strays left out of the volume; bulk is then a copy */
+    fs_density_frame fr; /* the frame: its bulk, its neighbour grid */
     float floor_h;
-    const fs_grid *ng;
-    fs_grid own_ng;
-    int has_own_ng;
     fs_density_grid dg; /* shape always; data filled by the CPU builds and by export */
     fs_layered_splat *layered;
     fs_slice_splat *slice;
@@ -96,8 +95,7 @@ static void destroy(void *self)
     }
     if (s->own_tex) glDeleteTextures(1, &s->own_tex);
     fs_gl_target_destroy(&s->target);
-    if (s->has_own_ng) fs_grid_free(&s->own_ng);
-    if (s->dropped) fs_particles_free(&s->bulk);
+    fs_density_frame_free(&s->fr);
     fs_density_grid_free(&s->dg);
     free(s->background);
     free(s);
@@ -126,20 +124,12 @@ static void box_corners(float out[36 * 4])
 
 static void *create(const fs_method_setup *setup)
 {
-    const fs_field *f = &setup->field;
-    if (fs_method_check_field("volume_raycast", f)) return NULL;
     vr *s = calloc(1, sizeof *s);
-    if (!s) {
-        fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory");
-        return NULL;
-    }
-    s->f = *f;
-    if (fs_method_params_copy("volume_raycast", setup, &s->params, sizeof s->params)) {
+    if (!s || fs_method_setup_take("volume_raycast", setup, &s->f, &s->params, sizeof s->params, &s->scene)) {
+        if (!s) fs_fail(FS_ERR_RUNTIME, "volume_raycast: out of memory");
         free(s);
         return NULL;
     }
-    if (setup->scene) s->scene = *setup->scene;
-    else fs_scene_defaults(&s->scene);
     const char *faces[] = {"volume_raycast/faces.vert.glsl", "volume_raycast/faces.frag.glsl", NULL};
     const char *march[] = {"volume_raycast/march.comp.glsl", NULL};
     if (!(s->prog_faces = fs_program_build(faces, NULL)) || !(s->prog_march = fs_program_build(march, NULL))) {
@@ -163,27 +153,16 @@ static void *create(const fs_method_setup *setup)
 static int upload(void *self, const fs_particles *p, const fs_grid *g)
 {
     vr *s = self;
-    if (s->dropped) fs_particles_free(&s->bulk);
-    s->p = s->all = NULL;
-    int rc = fs_density_grid_keep(p, g->bulk_lo, g->bulk_hi, s->f.H, &s->bulk, &s->dropped);
-    if (rc) {
-        s->dropped = 0;
-        return rc;
-    }
-    if (s->dropped)
-        fs_note("volume_raycast: %zu far stray particle(s) outside the bulk are left out of the volume", s->dropped);
-    s->p = &s->bulk;
-    s->all = p;
     s->floor_h = fs_scene_floor(&s->scene, g);
-    s->ng = g;
-    if (s->params.build != BUILD_EXACT) return FS_OK; /* only the exact build walks the neighbour grid */
-    return fs_grid_fit(g, p, s->f.H, &s->own_ng, &s->has_own_ng, &s->ng);
+    /* only the exact build walks the neighbour grid */
+    return fs_density_frame_upload(&s->fr, p, g, s->f.H, s->params.build == BUILD_EXACT, "volume_raycast",
+                                   "the volume");
 }
 
 /* IV-A: the volume texture over the bulk's box grown by H. */
 static int build_volume(vr *s, fs_stages *t)
 {
-    const fs_particles *p = s->p;
+    const fs_particles *p = s->fr.p;
     int b = s->params.build;
     fs_density_grid_free(&s->dg);
     int rc = fs_density_grid_init(&s->dg, p->bmin, p->bmax, s->f.H, s->params.grid_res);
@@ -193,23 +172,10 @@ static int build_volume(vr *s, fs_stages *t)
         if (!(s->tex3d = fs_density_texture_create(&s->dg))) return FS_ERR_RUNTIME;
         memcpy(s->tex_dim, s->dg.dim, sizeof s->tex_dim);
     }
-    double t0 = fs_gl_stage_start();
-    if (b == BUILD_LAYERED) {
-        rc = fs_layered_splat_run(s->layered, &s->dg, p, &s->f, s->tex3d);
-    } else {
-        /* the CPU-side builds end in main memory: the upload is part of their cost */
-        rc = b == BUILD_SLICE ? fs_slice_splat_run(s->slice, &s->dg, p, &s->f, s->scene.up_axis, s->params.clusters)
-                              : fs_density_grid_exact(&s->dg, s->all, s->ng, &s->f);
-        if (!rc) rc = fs_density_texture_upload(s->tex3d, &s->dg);
-    }
-    if (rc) return rc;
-    if (t && b == BUILD_LAYERED) {
-        fs_gl_stage_end(t, "volume", t0);
-    } else if (t) { /* a CPU build: the GL clock would time the CPU */
-        glFinish();
-        fs_stages_add(t, "volume", fs_now_ms() - t0);
-    }
-    return FS_OK;
+    /* a CPU-side build ends in main memory: timed by the wall clock, with its upload */
+    fs_density_builder db = {(fs_density_build)b, s->layered,         s->slice,
+                             s->scene.up_axis,    s->params.clusters, b == BUILD_LAYERED};
+    return fs_density_frame_build(&db, &s->fr, &s->f, &s->dg, s->tex3d, t, "volume", NULL);
 }
 
 static int resize(vr *s, int w, int h)
@@ -344,7 +310,7 @@ static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
 static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *t)
 {
     vr *s = self;
-    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: render before upload");
+    if (!s->fr.p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: render before upload");
     int rc = build_volume(s, t);
     if (!rc) rc = resize(s, cam->width, cam->height);
     if (rc) return rc;
@@ -368,7 +334,7 @@ static int export_file(void *self, const char *path, const fs_provenance *prov)
 {
     (void)prov; /* its files carry none yet */
     vr *s = self;
-    if (!s->p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
+    if (!s->fr.p) return fs_fail(FS_ERR_RUNTIME, "volume_raycast: export before upload");
     if (!fs_path_ends_with(path, ".vdb"))
         return fs_fail(FS_ERR_INPUT, "%s: volume_raycast exports .vdb (the density volume)", path);
     int rc = build_volume(s, NULL);
