@@ -1,4 +1,5 @@
-/* fluidsurf: command-line entry point; one file per subcommand (cli/cmd_*.c). */
+/* fluidsurf: command-line entry point; one file per subcommand (cli/commands/cmd_*.c,
+ * the viewer in cli/view/). */
 #include "caller_words.h"
 #include "method.h"
 #include "registry.h"
