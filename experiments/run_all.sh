@@ -107,7 +107,7 @@ study inacio2010_sim_speed bash experiments/inacio2010/sim_speed.sh
 # bundled data (experiments/data/splash/): make_splash.sh remakes it (15-30 min), so a full
 # run leaves it alone and a quick run only checks that the script works.
 [ $mode = quick ] && study bench_make_splash bash experiments/bench/make_splash.sh
-study bench_foundation bash experiments/bench_foundation.sh
+study bench_foundation bash experiments/bench/foundation.sh
 study bench_info bash experiments/bench/info.sh
 study study_up_axis bash experiments/study/up_axis.sh # the up guess on every third-party frame: README's table
 study bench_memory bash experiments/bench/memory.sh
@@ -129,7 +129,7 @@ if [ $mode = quick ]; then
   fi
 fi
 study demo bash experiments/demo/run.sh # the main job's committed summary, results/demo/
-study tables bash experiments/tables.sh # after every study: pivots of their CSVs for the READMEs
+study readme_pivots bash experiments/readme_pivots.sh # after every study: pivots of their CSVs for the READMEs
 study plots bash experiments/plots.sh # last: draws from every study's CSVs
 
 if [ $mode = quick ]; then

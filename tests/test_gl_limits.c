@@ -2,7 +2,7 @@
  * pure check refuses each limit one below its need with the one line the CLI
  * prints, and a limit the driver does not report; the real context (OSMesa, or
  * EGL in the lean build) meets every need. Prints the driver's values beside the
- * needs, the numbers DESIGN.md records. `test_gl_limits --table` prints the table
+ * needs, the numbers docs/DESIGN.md records. `test_gl_limits --table` prints the table
  * alone (name, need), for tests/gl_limits_needs.py. */
 #include "fs_error.h"
 #include "fs_test.h"
@@ -46,7 +46,7 @@ static void test_refusals(const fs_gl_limit *t, int n)
     printf("%d limits: each refused one below its need, and when not reported\n", n);
 }
 
-/* The context of this build meets every need; its values, for DESIGN.md. */
+/* The context of this build meets every need; its values, for docs/DESIGN.md. */
 static void test_context(const fs_gl_limit *t, int n)
 {
     fs_gl_context ctx;

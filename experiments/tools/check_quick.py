@@ -378,7 +378,7 @@ CHECKS = [
      "raycast_pca's PCA-blended, filtered normals stay near the iso-surface's (full size 6.1 degrees)"),
     ("demo", "demo/metrics.csv", "method=spheres || method=aniso_ssf", "mask_iou", ("in", 0.8, 1),
      "the splatted sprites cover the fluid, a radius beyond its silhouette (full size 0.872 and 0.877)"),
-    ("tables", "xiao2017/table1_growth.csv", "series=paper_gtx970&particles=779752", 'c("512")', ("in", 0.9995, 1.0005),
+    ("readme_pivots", "xiao2017/table1_growth.csv", "series=paper_gtx970&particles=779752", 'c("512")', ("in", 0.9995, 1.0005),
      "the pivot of t(size) / t(512) at 512 is 1 by definition"),
     ("plots", "xiao2017/fig10.png", "*", "width", ("in", 900, 900),
      "plots.sh draws only PNGs; plot_csv.py draws every plot 900 wide (pngcairo size 900,560)"),

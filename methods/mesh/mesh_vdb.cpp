@@ -235,8 +235,6 @@ extern "C" int fs_mesh_volume_slab_done(fs_mesh_volume *v, size_t s)
     }
 }
 
-extern "C" size_t fs_mesh_volume_bytes(const fs_mesh_volume *v) { return (size_t)v->grid->memUsage(); }
-
 extern "C" int fs_mesh_volume_mesh(const fs_mesh_volume *v, double iso, fs_trimesh *out)
 {
     *out = fs_trimesh{};

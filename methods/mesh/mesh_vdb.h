@@ -46,9 +46,8 @@ float *fs_mesh_volume_slab(fs_mesh_volume *v, size_t s, size_t *count, const int
  * frees its buffer; after the last slab, decides that one too. FS_ERR_RUNTIME
  * (fs_fail) on failure. */
 int fs_mesh_volume_slab_done(fs_mesh_volume *v, size_t s);
-/* Leaves that kept their voxels, and the bytes the tree holds (memUsage). */
+/* Leaves that kept their voxels. */
 size_t fs_mesh_volume_kept(const fs_mesh_volume *v);
-size_t fs_mesh_volume_bytes(const fs_mesh_volume *v);
 /* The iso-surface value = iso as a mesh (volumeToMesh, adaptivity 0, quads
  * split in two), wound outward (towards lower values). FS_ERR_RUNTIME on failure. */
 int fs_mesh_volume_mesh(const fs_mesh_volume *v, double iso, fs_trimesh *out);

@@ -6,7 +6,7 @@
 # FS_QUICK=1 (run_all.sh --quick): 64^2 and 128^2 images, a 27k box, 1 run, into
 # out/quick/results/bench (work files in out/quick/bench).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 source experiments/lib.sh # median, quick, RESULTS
 RUNS=${RUNS:-$(quick 5 1)}
 BIN=${BIN:-./build/fluidsurf}

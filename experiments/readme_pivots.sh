@@ -9,7 +9,7 @@ source experiments/lib.sh # RESULTS, quick
 pivot() { # IN OUT ARGS...: relative to RESULTS
   local in=$RESULTS/$1 out=$RESULTS/$2
   shift 2
-  if [ ! -f "$in" ]; then echo "tables.sh: $in not there: skipped"; return; fi
+  if [ ! -f "$in" ]; then echo "readme_pivots.sh: $in not there: skipped"; return; fi
   python3 experiments/tools/pivot_csv.py "$in" "$out" "$@"
   echo "wrote $out"
 }
@@ -28,4 +28,4 @@ for scene in slab box; do
     --where "region=interior|face"
 done
 pivot inacio2010/sim_speed.csv inacio2010/sim_speed_table.csv --rows particles,boundary --col path --val ms_per_step
-echo "tables.sh: done"
+echo "readme_pivots.sh: done"
