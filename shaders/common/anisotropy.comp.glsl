@@ -25,27 +25,23 @@ void main()
     float sw = 0.0, R2 = u_R * u_R;
     vec3 se = vec3(0.0), sd = vec3(0.0), so = vec3(0.0); // sums of w e, w e_k^2, w (e0e1, e0e2, e1e2)
     int n = 0;
-    ivec3 lo, hi;
-    if (fs_grid_range(x, u_R, lo, hi))
-        for (int k = lo.z; k <= hi.z; k++)
-            for (int j = lo.y; j <= hi.y; j++) {
-                for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
-                    uvec2 run;
-                    ce = fs_grid_row_run(ci, hi.x, j, k, run);
-                    n_nbrs += run.y - run.x;
-                    for (uint s = run.x; s < run.y; s++) {
-                        vec3 e = fs_grid_pos(s).xyz - x;
-                        float d2 = dot(e, e);
-                        if (d2 >= R2) continue;
-                        float w = fs_kernel_w(u_kernel, sqrt(d2), u_R);
-                        if (d2 > 0.0) n++;
-                        sw += w;
-                        se += w * e;
-                        sd += w * e * e;
-                        so += w * vec3(e.x * e.y, e.x * e.z, e.y * e.z);
-                    }
-                }
+    fs_grid_runs it;
+    uvec2 run;
+    if (fs_grid_runs_start(x, u_R, it))
+        while (fs_grid_next_run(it, run)) {
+            n_nbrs += run.y - run.x;
+            for (uint s = run.x; s < run.y; s++) {
+                vec3 e = fs_grid_pos(s).xyz - x;
+                float d2 = dot(e, e);
+                if (d2 >= R2) continue;
+                float w = fs_kernel_w(u_kernel, sqrt(d2), u_R);
+                if (d2 > 0.0) n++;
+                sw += w;
+                se += w * e;
+                sd += w * e * e;
+                so += w * vec3(e.x * e.y, e.x * e.z, e.y * e.z);
             }
+        }
     vec3 c = x;
     mat3 A = mat3(1.0);
     if (sw > 0.0) {

@@ -1,12 +1,11 @@
 // The block-sparse neighbour grid of common/particles/grid.h as uploaded by
-// common/gl/gl_grid.c. Walk the particles within `radius` of x like this:
-//   ivec3 lo, hi;
-//   if (fs_grid_range(x, radius, lo, hi))
-//     for (int k = lo.z; k <= hi.z; k++) for (int j = lo.y; j <= hi.y; j++)
-//       for (int i = lo.x, e; i <= hi.x; i = e + 1) {
-//         uvec2 run; e = fs_grid_row_run(i, hi.x, j, k, run); // cells i..e: one run of slots
-//         for (uint s = run.x; s < run.y; s++) { vec3 p = fs_grid_pos(s).xyz; ... }
-//       }
+// common/gl/gl_grid.c. Walk the particles within `radius` of x like this (the
+// neighbour loop, written once: fs_grid_runs below):
+//   fs_grid_runs it;
+//   uvec2 run;
+//   if (fs_grid_runs_start(x, radius, it))
+//     while (fs_grid_next_run(it, run))
+//       for (uint s = run.x; s < run.y; s++) { vec3 p = fs_grid_pos(s).xyz; ... }
 // Cells outside every stored block are empty and have no particle in their 27
 // neighbours. The bindings must match FS_GL_GRID_BINDING_* in common/gl/gl_grid.h.
 layout(std430, binding = 8) readonly buffer FsGridStart { uint fs_grid_start[]; };
@@ -126,4 +125,27 @@ bool fs_grid_near_occupied(ivec3 c)
 {
     uint s = fs_grid_slot(c);
     return s != FS_GRID_NONE && (fs_grid_near[s >> 5] & (1u << (s & 31u))) != 0u;
+}
+// The runs of slots of the cells within `radius` of x, row by row, each row's
+// cells of one block at a time: the neighbour loop (see the top of this file).
+struct fs_grid_runs {
+    ivec3 lo, hi;
+    int i, j, k; // the next run starts at cell (i, j, k)
+};
+bool fs_grid_runs_start(vec3 x, float radius, out fs_grid_runs it)
+{
+    bool any = fs_grid_range(x, radius, it.lo, it.hi);
+    it.i = it.lo.x, it.j = it.lo.y, it.k = it.lo.z;
+    return any;
+}
+// The next run into run; false when the range is done.
+bool fs_grid_next_run(inout fs_grid_runs it, out uvec2 run)
+{
+    if (it.i > it.hi.x) { // the row is done: the next one
+        it.i = it.lo.x;
+        if (++it.j > it.hi.y) it.j = it.lo.y, it.k++;
+    }
+    if (it.k > it.hi.z) { run = uvec2(0u); return false; }
+    it.i = fs_grid_row_run(it.i, it.hi.x, it.j, it.k, run) + 1;
+    return true;
 }

@@ -34,22 +34,18 @@ void count_done()
 float phi(vec3 x)
 {
     n_evals++;
-    ivec3 lo, hi;
-    if (!fs_grid_range(x, u_H, lo, hi)) return 0.0;
+    fs_grid_runs it;
+    uvec2 run;
+    if (!fs_grid_runs_start(x, u_H, it)) return 0.0;
     float s = 0.0, H2 = u_H * u_H;
-    for (int k = lo.z; k <= hi.z; k++)
-        for (int j = lo.y; j <= hi.y; j++) {
-            for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
-                uvec2 run;
-                ce = fs_grid_row_run(ci, hi.x, j, k, run);
-                n_nbrs += run.y - run.x;
-                for (uint i = run.x; i < run.y; i++) {
-                    vec3 e = fs_grid_pos(i).xyz - x;
-                    float d2 = dot(e, e);
-                    if (d2 < H2) s += fs_kernel_w(u_kernel, sqrt(d2), u_H);
-                }
-            }
+    while (fs_grid_next_run(it, run)) {
+        n_nbrs += run.y - run.x;
+        for (uint i = run.x; i < run.y; i++) {
+            vec3 e = fs_grid_pos(i).xyz - x;
+            float d2 = dot(e, e);
+            if (d2 < H2) s += fs_kernel_w(u_kernel, sqrt(d2), u_H);
         }
+    }
     return s * u_V;
 }
 

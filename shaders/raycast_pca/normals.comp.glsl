@@ -44,33 +44,29 @@ void main()
     mat3 s2 = mat3(0.0);
     float ws = 0.0, wc = 0.0;
     int cnt = 0;
-    ivec3 lo, hi;
-    if (fs_grid_range(x, rad, lo, hi))
-        for (int k = lo.z; k <= hi.z; k++)
-            for (int j = lo.y; j <= hi.y; j++) {
-                for (int ci = lo.x, ce; ci <= hi.x; ci = ce + 1) { // cells ci..ce: one run of slots
-                    uvec2 run;
-                    ce = fs_grid_row_run(ci, hi.x, j, k, run);
-                    n_nbrs += run.y - run.x;
-                    for (uint i = run.x; i < run.y; i++) {
-                        vec3 u = fs_grid_pos(i).xyz - x; // relative to x: keeps float precision
-                        float d2 = dot(u, u);
-                        if (u_use_color != 0 && d2 < H2) {
-                            float wk = fs_kernel_w(u_kernel, sqrt(d2), u_H);
-                            col += wk * fs_grid_attr(i).rgb;
-                            wc += wk;
-                        }
-                        if (d2 >= R2) continue;
-                        float d = sqrt(d2);
-                        if (d > 0.0) grad += fs_spiky_dw(d, u_R) / d * u; // -grad_x W: outwards
-                        float q = d / u_R, w = 1.0 - q * q * q;
-                        ws += w;
-                        m += w * u;
-                        s2 += w * outerProduct(u, u);
-                        cnt++;
-                    }
+    fs_grid_runs it;
+    uvec2 run;
+    if (fs_grid_runs_start(x, rad, it))
+        while (fs_grid_next_run(it, run)) {
+            n_nbrs += run.y - run.x;
+            for (uint i = run.x; i < run.y; i++) {
+                vec3 u = fs_grid_pos(i).xyz - x; // relative to x: keeps float precision
+                float d2 = dot(u, u);
+                if (u_use_color != 0 && d2 < H2) {
+                    float wk = fs_kernel_w(u_kernel, sqrt(d2), u_H);
+                    col += wk * fs_grid_attr(i).rgb;
+                    wc += wk;
                 }
+                if (d2 >= R2) continue;
+                float d = sqrt(d2);
+                if (d > 0.0) grad += fs_spiky_dw(d, u_R) / d * u; // -grad_x W: outwards
+                float q = d / u_R, w = 1.0 - q * q * q;
+                ws += w;
+                m += w * u;
+                s2 += w * outerProduct(u, u);
+                cnt++;
             }
+        }
     vec3 viewfwd = -transpose(u_view_rot)[2];
     vec3 dir = normalize(x - u_eye);
     vec3 nb = length(grad) > 0.0 ? normalize(grad) : -dir;
