@@ -17,6 +17,7 @@
 #include "shader.h"
 #include "sph.h"
 #include "view.h"
+#include "vec3.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <math.h>
@@ -68,7 +69,7 @@ typedef struct viewer {
 static int sim_advance(viewer *w)
 {
     float *d = w->v.box_move, r = fs_sph_get_params(w->sim)->r, dt = (float)w->dt;
-    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    float len = fs_v3_len(d);
     float v = fminf(fminf(w->box_speed + 400 * r * dt, 60 * r), sqrtf(2 * 400 * r * len));
     w->box_speed = len > 0 ? v : 0;
     if (!(len > 0)) return fs_sph_advance(w->sim, w->dt);

@@ -1,6 +1,7 @@
 /* Keyboard and mouse handling of the viewer: the GLFW callbacks and the test
  * scripts both call these, so scripted tests run the real code paths. */
 #include "view.h"
+#include "vec3.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <math.h>
@@ -15,8 +16,8 @@ static void flat_axes(const fs_view *v, float right[3], float fwd[3])
     fs_camera_basis(&c, right, up, fwd);
     int u = v->orbit.up_axis;
     right[u] = fwd[u] = 0;
-    float lr = sqrtf(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
-    float lf = sqrtf(fwd[0] * fwd[0] + fwd[1] * fwd[1] + fwd[2] * fwd[2]);
+    float lr = fs_v3_len(right);
+    float lf = fs_v3_len(fwd);
     for (int k = 0; k < 3; k++) {
         right[k] = lr > 0 ? right[k] / lr : 0;
         fwd[k] = lf > 0 ? fwd[k] / lf : 0;

@@ -15,6 +15,7 @@ static inline void fs_v3_cross(const float a[3], const float b[3], float o[3])
     o[1] = a[2] * b[0] - a[0] * b[2];
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
+static inline float fs_v3_len(const float a[3]) { return sqrtf(fs_v3_dot(a, a)); }
 /* v scaled to unit length: 1; v left as it is when its length is 0 or NaN: 0. */
 static inline int fs_v3_normalize(float v[3])
 {
@@ -27,6 +28,7 @@ static inline double fs_v3d_dot(const double a[3], const double b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+static inline double fs_v3d_len(const double a[3]) { return sqrt(fs_v3d_dot(a, a)); }
 static inline void fs_v3d_cross(const double a[3], const double b[3], double o[3])
 {
     o[0] = a[1] * b[2] - a[2] * b[1];

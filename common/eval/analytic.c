@@ -3,6 +3,7 @@
  * the volume of N cubes of side 2r. */
 #include "analytic.h"
 #include "fs_error.h"
+#include "vec3.h"
 #include <math.h>
 
 static const char *scene_name(const fs_scene *s) { return s->path[0] ? s->path : "synthetic scene"; }
@@ -77,7 +78,7 @@ int fs_synthetic_analytic(const fs_scene *s, int frame, const fs_camera *cam, fs
             else nw[axis] = dir[axis] > 0 ? -1 : 1;
             float n[3] = {(float)nw[0], (float)nw[1], (float)nw[2]}, nv[3];
             fs_camera_to_view_dir(cam, n, nv);
-            float len = sqrtf(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+            float len = fs_v3_len(nv);
             size_t id = (size_t)py * cam->width + px;
             for (int a = 0; a < 3; a++) out->normal[3 * id + a] = nv[a] / len;
             out->depth[id] = (float)(t0 * (dir[0] * fwd[0] + dir[1] * fwd[1] + dir[2] * fwd[2]));

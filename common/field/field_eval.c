@@ -1,6 +1,7 @@
 /* phi and grad phi at one point (field_eval.h): the 27 cells around x hold
  * every particle within reach, because the grid's cell is at least the reach. */
 #include "field_eval.h"
+#include "vec3.h"
 
 size_t fs_field_eval_at(const fs_field_eval *e, const float x[3], float *phi, float grad[3])
 {
@@ -21,7 +22,7 @@ size_t fs_field_eval_at(const fs_field_eval *e, const float x[3], float *phi, fl
                 w = e->ak->wscale[sl];
             } else
                 for (int a = 0; a < 3; a++) u[a] = d[a];
-            float r = sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            float r = fs_v3_len(u);
             if (r >= H) continue;
             terms++;
             s += V * w * fs_kernel_w(e->f.kernel, r, H);

@@ -1,5 +1,6 @@
 /* Zhu & Bridson's phi and its gradient (zhu_bridson.h). */
 #include "zhu_bridson.h"
+#include "vec3.h"
 #include <math.h>
 
 double fs_zb_phi(const fs_zb_sum *s, double R, double r, float grad[3])
@@ -7,7 +8,7 @@ double fs_zb_phi(const fs_zb_sum *s, double R, double r, float grad[3])
     if (grad) grad[0] = grad[1] = grad[2] = 0;
     if (!(s->K > 0)) return R - r;
     double yb[3] = {s->m[0] / s->K, s->m[1] / s->K, s->m[2] / s->K};
-    double len = sqrt(yb[0] * yb[0] + yb[1] * yb[1] + yb[2] * yb[2]);
+    double len = fs_v3d_len(yb);
     if (!grad || !(len > 0)) return len - r;
     double n[3] = {-yb[0] / len, -yb[1] / len, -yb[2] / len}, ybn = yb[0] * n[0] + yb[1] * n[1] + yb[2] * n[2];
     const double *G = s->G;

@@ -2,6 +2,7 @@
 #include "gl_gbuffer.h"
 #include "fs_error.h"
 #include "gl.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdlib.h>
 
@@ -23,7 +24,7 @@ int fs_gl_target_read(const fs_gl_target *t, fs_gbuffer *g)
         float cov = nrm[4 * i + 3] > 0.5f ? 1.0f : 0.0f;
         g->coverage[i] = cov;
         float *o = g->normal + 3 * i, *s = nrm + 4 * i;
-        float l = sqrtf(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+        float l = fs_v3_len(s);
         for (int k = 0; k < 3; k++) o[k] = cov && l > 0 ? s[k] / l : 0.0f;
         if (!cov) g->depth[i] = INFINITY;
     }

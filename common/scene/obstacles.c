@@ -3,6 +3,7 @@
 #include "fs_error.h"
 #include "obstacle_mesh.h"
 #include "path_beside.h"
+#include "vec3.h"
 #include <stdio.h>
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -148,7 +149,7 @@ float fs_obstacle_distance(const fs_obstacle *o, const float p[3])
     }
     if (o->kind == FS_OBSTACLE_SPHERE) {
         float d[3] = {p[0] - o->c[0], p[1] - o->c[1], p[2] - o->c[2]};
-        return sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - o->radius;
+        return fs_v3_len(d) - o->radius;
     }
     float out2 = 0, inside = -INFINITY;
     for (int a = 0; a < 3; a++) {

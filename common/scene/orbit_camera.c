@@ -2,6 +2,7 @@
  * the up axis u, then a = u+1, b = u+2 (mod 3): for y-up, a = z and b = x, so
  * yaw 0 looks from +z down -z, the default framing's side. */
 #include "orbit_camera.h"
+#include "vec3.h"
 #include <math.h>
 
 static const float pitch_limit = 1.5533f; /* 89 degrees: keeps up and forward apart */
@@ -14,7 +15,7 @@ void fs_orbit_from_camera(fs_orbit *o, const fs_camera *c, int up_axis)
         o->target[k] = c->target[k];
         d[k] = c->eye[k] - c->target[k];
     }
-    o->dist = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    o->dist = fs_v3_len(d);
     if (!(o->dist > 0)) o->dist = 1;
     o->pitch = asinf(fmaxf(-1.0f, fminf(1.0f, d[u] / o->dist)));
     o->yaw = atan2f(d[b], d[a]);

@@ -6,6 +6,7 @@
 #include "path_beside.h"
 #include "grid.h"
 #include "particles.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -28,7 +29,7 @@ void fs_scene_defaults(fs_scene *s)
     s->camera.fovy_deg = 40.0f;
     s->camera.width = 512;
     s->camera.height = 512;
-    float l[3] = {0.35f, 0.85f, 0.4f}, n = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    float l[3] = {0.35f, 0.85f, 0.4f}, n = fs_v3_len(l);
     for (int i = 0; i < 3; i++) {
         s->light_dir[i] = l[i] / n;
         s->light_color[i] = 1.0f;
@@ -503,8 +504,7 @@ int fs_scene_load(fs_scene *s, const char *path)
             get_vec3(&c, v, "direction", s->light_dir);
             get_vec3(&c, v, "color", s->light_color);
             get_num(&c, v, "ambient", &s->ambient, 0, 10);
-            float n = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] +
-                            s->light_dir[2] * s->light_dir[2]);
+            float n = fs_v3_len(s->light_dir);
             if (!c.rc && n < 1e-12f) bad(&c, "direction", "must not be zero");
             else
                 for (int i = 0; i < 3; i++) s->light_dir[i] /= n;

@@ -17,6 +17,7 @@
 #include "fs_error.h"
 #include "kernels.h"
 #include "sph_internal.h"
+#include "vec3.h"
 #include <math.h>
 #include <string.h>
 
@@ -223,7 +224,7 @@ static void forces_integrate(fs_sph *s, const step_consts *k, long n, float dt)
         if (!isfinite(x[0] + x[1] + x[2] + v[0] + v[1] + v[2])) bad++;
         else {
             clamps += clamp_to_box(s, x, v);
-            float sp = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            float sp = fs_v3_len(v);
             if (sp > vmax) vmax = sp;
         }
         s->x[i] = x[0];

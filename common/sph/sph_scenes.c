@@ -8,6 +8,7 @@
 #include "kernels.h"
 #include "obstacles.h"
 #include "sph_internal.h"
+#include "vec3.h"
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
@@ -349,7 +350,7 @@ static float place_spouts(fs_sph *s, const scene_def *d, float sc, float top)
         sp->pos[0] = cx * sc;
         sp->pos[1] = 1.2f * sc;
         sp->pos[2] = cz * sc;
-        float dir[3] = {0.8f - cx, -0.3f, 0.8f - cz}, l = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        float dir[3] = {0.8f - cx, -0.3f, 0.8f - cz}, l = fs_v3_len(dir);
         for (int a = 0; a < 3; a++) sp->dir[a] = dir[a] / l;
         sp->speed = 2.0f;
         sp->width = (int)lroundf(3 * sc);

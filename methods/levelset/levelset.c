@@ -12,6 +12,7 @@
 #include "method.h"
 #include "output_file.h"
 #include "timing.h"
+#include "vec3.h"
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -144,7 +145,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
                 float nw[3] = {(float)h.n[0], (float)h.n[1], (float)h.n[2]}, nv[3], dv[3];
                 fs_camera_to_view_dir(cam, nw, nv);
                 fs_camera_to_view_dir(cam, d, dv);
-                float len = sqrtf(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+                float len = fs_v3_len(nv);
                 if (!(len > 0)) {
                     nv[0] = nv[1] = 0;
                     nv[2] = len = 1;

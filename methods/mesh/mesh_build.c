@@ -12,6 +12,7 @@
 #include "mesh_smooth.h"
 #include "mesh_vdb.h"
 #include "mesh_weights.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,7 +62,7 @@ static size_t field_normal_at(const normal_src *s, const float *x, float n[3])
         float phi;
         terms = fs_field_eval_at(s->e, x, &phi, g);
     }
-    float len = sqrtf(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    float len = fs_v3_len(g);
     for (int a = 0; a < 3; a++) n[a] = len > 0 ? sign * g[a] / len : 0;
     return terms;
 }

@@ -1,6 +1,7 @@
 /* Collapsing degenerate faces (mesh_collapse.h). */
 #include "mesh_collapse.h"
 #include "fs_error.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,11 +44,11 @@ static int join_if_degenerate(const fs_trimesh *m, size_t t, double eps, work *w
     for (int i = 0; i < 3; i++) {
         const float *a = m->pos + 3 * (size_t)c[i], *b = m->pos + 3 * (size_t)c[(i + 1) % 3];
         for (int k = 0; k < 3; k++) e[i][k] = (double)b[k] - a[k];
-        len[i] = sqrt(e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2]);
+        len[i] = fs_v3d_len(e[i]);
     }
-    double x[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
-                   e[0][0] * e[1][1] - e[0][1] * e[1][0]};
-    double area2 = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    double x[3];
+    fs_v3d_cross(e[0], e[1], x);
+    double area2 = fs_v3d_len(x);
     double longest = fmax(len[0], fmax(len[1], len[2]));
     if (longest > 0 && area2 / longest >= eps) return 0;
     int s = len[0] <= len[1] && len[0] <= len[2] ? 0 : len[1] <= len[2] ? 1 : 2; /* edge s joins corners s, s+1 */

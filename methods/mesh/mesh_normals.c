@@ -2,13 +2,14 @@
 #include "mesh_normals.h"
 #include "fs_error.h"
 #include "mesh_adjacency.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 static void normalise(float *n)
 {
-    float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    float len = fs_v3_len(n);
     for (int a = 0; a < 3; a++) n[a] = len > 0 ? n[a] / len : 0;
 }
 

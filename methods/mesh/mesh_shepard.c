@@ -1,5 +1,6 @@
 /* Shepard interpolation over the neighbour grid (mesh_shepard.h). */
 #include "mesh_shepard.h"
+#include "vec3.h"
 #include <math.h>
 
 void fs_mesh_shepard(const fs_grid *g, const fs_field *f, const float x[3], fs_shepard_value value, const void *ctx,
@@ -13,7 +14,7 @@ void fs_mesh_shepard(const fs_grid *g, const fs_field *f, const float x[3], fs_s
         for (uint32_t s = s0; s < s1; s++) {
             const float *y = g->pos4 + 4 * (size_t)s;
             float d[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-            float r = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            float r = fs_v3_len(d);
             if (r >= f->H) continue;
             double W = fs_kernel_w(f->kernel, r, f->H);
             for (int a = 0; a < k; a++) num[a] += W * value(ctx, s, a);

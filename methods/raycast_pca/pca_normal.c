@@ -9,7 +9,7 @@ int rpca_basic_normal(const float x[3], const float *pts, int n, float R, float 
     out[0] = out[1] = out[2] = 0;
     for (int j = 0; j < n; j++) {
         float e[3] = {x[0] - pts[3 * j], x[1] - pts[3 * j + 1], x[2] - pts[3 * j + 2]};
-        float d = sqrtf(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+        float d = fs_v3_len(e);
         if (d >= R || d <= 0) continue;
         float g = fs_spiky_dw(d, R) / d; /* grad_x W = W'(d) e / d, pointing inwards */
         for (int a = 0; a < 3; a++) out[a] -= g * e[a];

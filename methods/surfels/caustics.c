@@ -151,7 +151,7 @@ static int check_setup(const fs_caustics_setup *s)
     if (s->up_axis < 0 || s->up_axis > 2)
         return fs_fail(FS_ERR_INPUT, "caustics: up_axis %d is not 0, 1 or 2", s->up_axis);
     const float *L = s->light_dir;
-    float len = sqrtf(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+    float len = fs_v3_len(L);
     if (!(len > 0.0f) || !isfinite(len)) return fs_fail(FS_ERR_INPUT, "caustics: light_dir has no direction");
     if (!(L[s->up_axis] / len > 0.01f))
         return fs_fail(FS_ERR_INPUT, "caustics: the light must come from above (light_dir along up %g)",
@@ -256,8 +256,7 @@ static int begin_run(fs_caustics *c, const fs_caustics_setup *setup, fs_caustics
     int rc = check_setup(setup);
     if (rc) return rc;
     *s = *setup;
-    float len = sqrtf(s->light_dir[0] * s->light_dir[0] + s->light_dir[1] * s->light_dir[1] +
-                      s->light_dir[2] * s->light_dir[2]);
+    float len = fs_v3_len(s->light_dir);
     for (int k = 0; k < 3; k++) s->light_dir[k] /= len;
     if ((rc = ensure_screen(c, s->screen_res)) || (rc = ensure_planes(c, s->plane_res, s->nplanes))) return rc;
     return FS_OK;

@@ -3,6 +3,7 @@
  * extracted in parallel into per-plane sets and concatenated in order. */
 #include "surfel_extract.h"
 #include "fs_error.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,7 +51,7 @@ static void grad_at(const fs_density_grid *g, const float x[3], float out[3])
 /* Unit outward normal (-grad phi); 0 when the gradient vanishes. */
 static void outward(const float grad[3], float n[3])
 {
-    float l = sqrtf(grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2]);
+    float l = fs_v3_len(grad);
     for (int a = 0; a < 3; a++) n[a] = l > 0 ? -grad[a] / l : 0.0f;
 }
 

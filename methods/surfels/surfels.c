@@ -16,6 +16,7 @@
 #include "surfel_extract.h"
 #include "surfel_gl.h"
 #include "surfel_ply.h"
+#include "vec3.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -200,8 +201,7 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     int up = sc->up_axis, a = (up + 1) % 3, b = (up + 2) % 3;
     memset(l, 0, sizeof *l);
     memcpy(l->light_dir, sc->light_dir, sizeof l->light_dir);
-    float ln = sqrtf(l->light_dir[0] * l->light_dir[0] + l->light_dir[1] * l->light_dir[1] +
-                     l->light_dir[2] * l->light_dir[2]);
+    float ln = fs_v3_len(l->light_dir);
     for (int i = 0; i < 3; i++) l->light_dir[i] = ln > 0 ? l->light_dir[i] / ln : (i == up);
     memcpy(l->light_color, sc->light_color, sizeof l->light_color);
     l->ambient = sc->ambient;
