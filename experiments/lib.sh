@@ -132,7 +132,15 @@ replace_block() {
   awk -v t="$3" -v b="<!-- $2 -->" -v e="<!-- end $2 -->" '
     $0 == b {print; while ((getline l < t) > 0) print l; skip = 1; next}
     $0 == e {skip = 0}
-    !skip' "$1" > "$1.new" && mv "$1.new" "$1"
+    !skip' "$1" > "$1.tmp" && publish "$1"
+}
+
+# publish FILE...: moves each FILE.tmp over FILE. A script writes its outputs as FILE.tmp
+# (git ignores *.tmp*) and publishes them when they are whole, so a failed or killed run
+# leaves the earlier FILE, never half of a new one where readers look.
+publish() {
+  local f
+  for f; do mv "$f.tmp" "$f"; done
 }
 
 # reference_frames [BIN DIR]: sets the array frames to "NAME|PARTICLE FILE|RENDER INPUT AND

@@ -47,7 +47,7 @@ bench() {
   for stage in $(cut -d, -f1 "$tmp.stages" | awk '!seen[$0]++'); do
     renderer=$(grep "^$stage," "$tmp.stages" | head -1 | cut -d, -f4-)
     med=$(grep "^$stage," "$tmp.stages" | cut -d, -f2 | median)
-    echo "$label,$method,$size,$stage,$med,$RUNS,$peak,\"$renderer\"" >> "$out.new"
+    echo "$label,$method,$size,$stage,$med,$RUNS,$peak,\"$renderer\"" >> "$out.tmp"
     printf '%-28s %-10s %5s %-10s %10.2f ms  peak %s KiB  (%s)\n' "$label" "$method" "$size" "$stage" "$med" "$peak" "$renderer"
   done
 }
@@ -57,14 +57,14 @@ bench() {
   echo "# machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
   echo "# medians of $RUNS runs; peak_rss_kib is the largest over the runs (whole process)"
   echo "scene,method,size,stage,ms_median,runs,peak_rss_kib,renderer"
-} > "$out.new"
+} > "$out.tmp"
 bench dam_break_24k_ref$S1 $dam reference $S1
 bench dam_break_24k_sph$S1 $dam spheres $S1
 bench dam_break_24k_sph$S2 $dam spheres $S2
 bench box_${BOXN}_ref$S1 $box reference $S1
 bench box_${BOXN}_sph$S1 $box spheres $S1
 bench box_${BOXN}_sph$S2 $box spheres $S2
-mv "$out.new" "$out"
+publish "$out"
 stamp_csv "$out"
 rm -f "$tmp" "$tmp".*
 echo "wrote $out"

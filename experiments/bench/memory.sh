@@ -109,8 +109,8 @@ header="# state $STATE: $provenance; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores
   echo "state,input,method,n,size,runs,peak_rss_kib_median,peak_rss_kib_min,peak_rss_kib_max,commit"
   [ -f "$csv" ] && grep -v '^#' "$csv" | grep -v '^state,' | awk -F, -v s="$STATE" '$1 != s' || true
   cat "$csv.rows"
-} > "$csv.new"
-mv "$csv.new" "$csv"
+} > "$csv.tmp"
+publish "$csv"
 rm -f "$csv.rows"
 echo "wrote $csv"
 # quick mode: the table too (memory_table.sh writes it beside this CSV, never into results/)

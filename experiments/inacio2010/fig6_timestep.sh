@@ -22,7 +22,7 @@ OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 T=$(mktemp -d)
 csv=$OUT/fig6_timestep.csv
-tmp=$T/fig6.csv
+tmp=$csv.tmp
 echo "# fluidsurf simulate dam_break --particles $PARTICLES, $SECONDS_SIM s simulated; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)" > "$tmp"
 echo "eos,stiffness,steps_x_dt,path,renderer,particles,bound_first_frame_s,bound_min_s,steps,violations,exit,frames_done,t_end,clamps,first_clamp_t,outside_max,v_max_peak,density_err_end,ms_per_frame_median,outcome" >> "$tmp"
 run() { # EOS STIFFNESS_ARGS LABEL SUBSTEPS DT PATH
@@ -53,7 +53,7 @@ for path in cpu gpu; do
     run ideal "--sound-speed 15" x "$1" "$2" $path  # k = c^2 = 225
   done
 done
-mv "$tmp" "$csv"
+publish "$csv"
 stamp_csv "$csv"
 rm -rf "$T"
 if [ "$FS_QUICK" = 1 ] && [ $missing -gt 0 ]; then echo "fig6_timestep: $missing runs left no --stats record" >&2; exit 1; fi

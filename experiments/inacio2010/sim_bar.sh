@@ -23,7 +23,7 @@ PARTICLES=${PARTICLES:-$(quick 8000 1024)}
 OUT=$RESULTS/inacio2010
 mkdir -p "$OUT"
 csv=$OUT/sim_bar.csv
-tmp=$(mktemp)
+tmp=$csv.tmp
 echo "# fluidsurf simulate dam_break --particles $PARTICLES --eos tait --frames $FRAMES; $(nproc) cores; load before: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)" > "$tmp"
 echo "path,renderer,particles,boundary,frames,t_end,steps,step_s,ms_per_step,steps_per_s,stopped_early_nan,outside_max,clamps,violations,dt_min,dt_max,density_err,density_abs_err,depth,depth_expected,depth_rel_err,depth_expected_lattice,depth_rel_err_lattice,kinetic,pass" >> "$tmp"
 # PARALLEL=1 runs the two paths at the same time (each then shares the cores);
@@ -65,7 +65,7 @@ for path in cpu gpu; do
         out, f[10], f[8], dtmin, dtmax, f[12], f[13], f[14], dm, relm, f[15], rell, f[16], ok ? "yes" : "no" }' \
     "$st" >> "$tmp"
 done
-mv "$tmp" "$csv"
+publish "$csv"
 stamp_csv "$csv" "$OUT"/sim_bar_{cpu,gpu}_frames.csv
 if [ "$FS_QUICK" = 1 ]; then # a quick run fails unless both paths ran every frame
   for path in cpu gpu; do

@@ -75,8 +75,8 @@ fi
 
 # 2. stage times on synthetic boxes
 csv=$R/volume_raycast_times.csv
-echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); volume stage: medians of $VRUNS runs at 64x64 (variants build=...), the rest medians of $RUNS runs at ${SIZE}x${SIZE} (variants thickness=...), each after a warm-up; stages from fluidsurf compare timings.csv; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)" > "$csv.new"
-echo "particles,grid_res,method,variant,stage,ms_median,renderer" >> "$csv.new"
+echo "# volume_raycast (grid spacing $SPACING_R r, step 0.5 spacing) and spheres on synthetic boxes (lattice 2r, r = 0.025, jitter 0.1 r); volume stage: medians of $VRUNS runs at 64x64 (variants build=...), the rest medians of $RUNS runs at ${SIZE}x${SIZE} (variants thickness=...), each after a warm-up; stages from fluidsurf compare timings.csv; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)" > "$csv.tmp"
+echo "particles,grid_res,method,variant,stage,ms_median,renderer" >> "$csv.tmp"
 for size in $BOXES; do
   IFS=, read -r a b c <<< "$size"
   n=$((a * b * c))
@@ -105,11 +105,11 @@ JSON
     awk -F, -v n="$n" -v g="$res" -v d="$d" '!/^#/ && $1 != "method" && $1 != "reference" {
         if (d ~ /^vol/) { if ($3 != "volume") next; sub(/;thickness=off/, "", $2) }
         r = $9; for (i = 10; i <= NF; i++) r = r "," $i;
-        print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/$d/timings.csv" >> "$csv.new"
+        print n "," g "," $1 "," $2 "," $3 "," $4 "," r }' "$tmp/$d/timings.csv" >> "$csv.tmp"
   done
   [ "$n" = 8192 ] && cp "$tmp/box_$n/panel.png" "$R/volume_raycast_box_8192_panel.png"
 done
-mv "$csv.new" "$csv"
+publish "$csv"
 summarize "$csv" > "$R/volume_raycast_summary.csv"
 stamp_csv "$csv" "$R/volume_raycast_summary.csv" "$R/volume_raycast_bar.csv"
 column -t -s, "$R/volume_raycast_bar.csv" | cut -c1-200

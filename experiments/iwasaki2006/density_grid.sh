@@ -41,7 +41,7 @@ load0=$(cut -d' ' -f1-3 /proc/loadavg)
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); renderer llvmpipe = OSMesa on the same CPU cores: no GPU timing"
   echo "# medians of $RUNS runs; res = grid points along the longest axis (dims in the raw rows under $TMP); exact_cpu includes the neighbour grid build; slice_splat includes clustering, upload and read back"
   echo "set,particles,res,method,ms_median,rel_l2_vs_exact,disks,renderer"
-} > "$csv.new"
+} > "$csv.tmp"
 
 while IFS=: read -r label scene; do
   for res in $RES; do
@@ -55,13 +55,13 @@ while IFS=: read -r label scene; do
       disks=$(echo "$rows" | head -1 | cut -d, -f9)
       renderer=$(echo "$rows" | head -1 | cut -d, -f10- | sed 's/,[0-9]*,[0-9.]*,"[^"]*"$//; s/,[0-9]*,,$//')
       [ "$method" = exact_cpu ] && l2=0
-      echo "$label,$n,$res,$method,$ms,$l2,$disks,$renderer" >> "$csv.new"
+      echo "$label,$n,$res,$method,$ms,$l2,$disks,$renderer" >> "$csv.tmp"
       printf '%-14s %4s %-12s %10.1f ms  rel L2 %-9s disks %s\n' "$label" "$res" "$method" "$ms" "$l2" "${disks:--}"
     done
   done
 done <<< "$SETS"
 # The machine may be shared: the load averages before and after go into the header.
-sed -i "2s|\$|; load average before: $load0, after: $(cut -d' ' -f1-3 /proc/loadavg)|" "$csv.new"
-mv "$csv.new" "$csv"
+sed -i "2s|\$|; load average before: $load0, after: $(cut -d' ' -f1-3 /proc/loadavg)|" "$csv.tmp"
+publish "$csv"
 stamp_csv "$csv"
 echo "wrote $csv"

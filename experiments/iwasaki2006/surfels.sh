@@ -17,8 +17,8 @@ mkdir -p "$R"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 csv=$R/surfels.csv
-echo "# surfels (iwasaki2006 defaults) at ${SIZE}x${SIZE}; medians of $RUNS runs; stages from fluidsurf compare" > "$csv.new"
-echo "scene,particles,surfels,caustics,stage,ms_median,renderer" >> "$csv.new"
+echo "# surfels (iwasaki2006 defaults) at ${SIZE}x${SIZE}; medians of $RUNS runs; stages from fluidsurf compare" > "$csv.tmp"
+echo "scene,particles,surfels,caustics,stage,ms_median,renderer" >> "$csv.tmp"
 for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/xu2022/double_dam_break.json; do
   name=${scene%%:*} json=${scene#*:}
   "$BIN" compare --no-cache "$json" --methods surfels --set surfels.caustics=on,off -W "$SIZE" -H "$SIZE" --repeat "$RUNS" -q -o "$tmp/$name"
@@ -28,7 +28,7 @@ for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/
   # timings.csv: method,variant,stage,ms_median,ms_min,ms_max,runs,gpu_ms_median,renderer
   awk -F, -v s="$name" -v n="$particles" -v k="$surfels" '!/^#/ && $1 == "surfels" {
       split($2, v, "="); c = v[2]; r = $9; for (i = 10; i <= NF; i++) r = r "," $i;
-      print s "," n "," k "," c "," $3 "," $4 "," r }' "$tmp/$name/timings.csv" >> "$csv.new"
+      print s "," n "," k "," c "," $3 "," $4 "," r }' "$tmp/$name/timings.csv" >> "$csv.tmp"
   cp "$tmp/$name/metrics.csv" "$R/${name}_metrics.csv"
   cp "$tmp/$name/surfels_caustics-on_own.png" "$R/${name}_own.png"
   cp "$tmp/$name/surfels_caustics-on.png" "$R/${name}_shared.png"
@@ -36,6 +36,6 @@ for scene in dam_break:experiments/scenes/dam_break.json double_dam:experiments/
   cp "$tmp/$name/panel.png" "$R/${name}_panel.png"
   oiiotool "$tmp/$name/surfels_caustics-on.exr" --ch caustics --ch 0,0,0 -o "$R/${name}_caustics.png"
 done
-mv "$csv.new" "$csv"
+publish "$csv"
 stamp_csv "$csv" "$R"/{dam_break,double_dam}_metrics.csv
 column -t -s, "$csv"

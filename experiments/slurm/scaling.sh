@@ -59,7 +59,7 @@ for spec in "${specs[@]}"; do
 done
 renderer=$(grep -ho 'gl_renderer=[^;]*' "$work"/test-0-*/metrics.csv | head -1)
 { echo "# $commit; host_cpus=$(nproc); repeats=$REPEATS; one node; $renderer"; cat "$work/rows"; } > "$csv.tmp"
-mv "$csv.tmp" "$csv"
+publish "$csv"
 cd "$src"
 if [ "$FS_QUICK" = 1 ]; then echo "scaling: wrote $csv"; exit 0; fi
 python3 experiments/tools/csv_table.py "$csv" results/slurm/README.md

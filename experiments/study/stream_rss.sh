@@ -27,5 +27,5 @@ for ((f = 0; f < max; f++)); do ln -sf "$PWD/$FRAME" "$work/f_$(printf %04d $f).
     echo "$n,$rss,$wall,$items"
   done
 } > "$csv.tmp"
-mv "$csv.tmp" "$csv"
+publish "$csv"
 cat "$csv"

@@ -48,6 +48,6 @@ csv=$R/bars.csv
     ratio=$(awk -v a="$ref" -v b="$f" 'BEGIN {if (a != "" && b > 0) printf "%.2f", a / b; else print "n/a"}')
     echo "speed_${l}_${SPEED}_ms,$f,report,measured,stages ms:$split; CPU reference $ref ms = ${ratio}x raycast_pca's frame"
   done
-} > "$csv.new"
-mv "$csv.new" "$csv"
+} > "$csv.tmp"
+publish "$csv"
 column -t -s, "$csv"

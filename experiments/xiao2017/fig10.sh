@@ -31,7 +31,7 @@ csv=$OUT/fig10.csv
   echo "# xiao2017 Fig. 10 analogue; $STUDY_PROV; $(date -u +%Y-%m-%dT%H:%MZ); $(nproc) cores"
   echo "# raycast_pca shipped defaults, ${SIZE}x${SIZE}, medians of $RUNS runs; frame = sum of splat..readback"
   echo "scene,particles,iso,frame_ms,march_ms,runs,renderer"
-} > "$csv.new"
+} > "$csv.tmp"
 for spec in $SPECS; do
   IFS=: read -r label n scene <<< "$spec"
   for iso in $ISOS; do
@@ -53,9 +53,9 @@ PY
     frame=$(for r in "$TMP"/run.*; do awk -F, -v st="$STAGES" 'index(st, " " $1 " ") {s += $2} END {print s}' "$r"; done | median)
     march=$(cat "$TMP"/run.* | grep '^march,' | cut -d, -f2 | median)
     renderer=$(grep -h '^march,' "$TMP/run.1" | cut -d, -f4-)
-    echo "$label,$n,$iso,$frame,$march,$RUNS,\"$renderer\"" >> "$csv.new"
+    echo "$label,$n,$iso,$frame,$march,$RUNS,\"$renderer\"" >> "$csv.tmp"
     printf '%-14s iso %.1f  frame %8.1f ms  march %8.1f ms\n' "$label" "$iso" "$frame" "$march"
   done
 done
-mv "$csv.new" "$csv"
+publish "$csv"
 echo "wrote $csv"

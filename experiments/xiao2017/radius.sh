@@ -18,7 +18,7 @@ TMP=out/$(quick "" quick/)xiao2017/radius
 mkdir -p "$OUT" "$TMP"
 for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "radius.sh: $x missing" >&2; exit 2; }; done
 csv=$OUT/radius_sweep.csv
-echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.new"
+echo "scene,normals,pca_radius_r,interior_deg,face_deg,edge_band_deg" > "$csv.tmp"
 for shape in slab box; do
   d=$TMP/$shape
   "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" --methods raycast_pca --set raycast_pca.normals=basic,blend \
@@ -29,6 +29,6 @@ for shape in slab box; do
         split(f, a, /_pca_radius-/); gsub(/p/, ".", a[2]); key = s "," a[1] "," a[2];
         v[key, $2] = $4; keys[key] = 1 }
       END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
-    sort >> "$csv.new"
+    sort >> "$csv.tmp"
 done
-mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
+publish "$csv"; stamp_csv "$csv"; column -t -s, "$csv"

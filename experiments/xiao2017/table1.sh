@@ -52,7 +52,7 @@ csv=$OUT/table1.csv
   echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); OSMesa llvmpipe: GL stages run on the same CPU cores"
   echo "# medians of runs (RUNS=$RUNS; cells whose first run took > ${BIG} s keep 1 run); first-run limit ${LIMIT} s (reference: ${LIMIT_REF} s); frame = sum of splat..readback"
   echo "label,particles,method,size,stage,ms_median,runs,renderer,note"
-} > "$csv.new"
+} > "$csv.tmp"
 
 # cell LABEL N SCENE METHOD SIZE STAGES
 cell() {
@@ -67,7 +67,7 @@ cell() {
   if [ "$rc" -ne 0 ]; then
     local why="skipped: first run exceeded the ${limit} s limit"
     [ "$rc" -eq 124 ] || why="skipped: render failed with exit status $rc"
-    echo "$label,$n,$method,$size,frame,,0,,$why" >> "$csv.new"
+    echo "$label,$n,$method,$size,frame,,0,,$why" >> "$csv.tmp"
     printf '%-14s %-11s %5s  %s\n' "$label" "$method" "$size" "$why"
     return
   fi
@@ -83,14 +83,14 @@ cell() {
   for st in $stages; do
     local med
     med=$(cat "$f".run* | grep "^$st," | cut -d, -f2 | median)
-    echo "$label,$n,$method,$size,$st,$med,$runs,\"$renderer\"," >> "$csv.new"
+    echo "$label,$n,$method,$size,$st,$med,$runs,\"$renderer\"," >> "$csv.tmp"
   done
   # frame: median over runs of the per-run sum of the stages
   for r in "$f".run*; do
     awk -F, -v st=" $stages " 'index(st, " " $1 " ") {s += $2} END {print s}' "$r"
   done | median > "$f.frame"
   frame=$(cat "$f.frame")
-  echo "$label,$n,$method,$size,frame,$frame,$runs,\"$renderer\"," >> "$csv.new"
+  echo "$label,$n,$method,$size,frame,$frame,$runs,\"$renderer\"," >> "$csv.tmp"
   printf '%-14s %-11s %5s  frame %9.1f ms  (%d runs, %s)\n' "$label" "$method" "$size" "$frame" "$runs" "$renderer"
 }
 
@@ -100,7 +100,7 @@ done <<< "$SETS"
 cell dam_break_24k 24389 experiments/scenes/dam_break.json reference "$REF_SIZE" "march" "$LIMIT_REF"
 IFS=: read -r label n scene <<< "$BIGBOX"
 cell "$label" "$n" "$scene" reference "$REF_SIZE" "march" "$LIMIT_REF"
-mv "$csv.new" "$csv"
+publish "$csv"
 stamp_csv "$csv"
 echo "wrote $csv"
 
@@ -135,6 +135,6 @@ rat=$OUT/table1_ratios.csv
     for (i = 1; i <= 5; i++) for (j = 1; j <= 5; j++)
       printf "paper_gtx970,%s,%s,%s,%.3f,%.3f\n", N[i], S[j], row[j "," i], row[j "," i] / row[1 "," i], row[j "," i] / row[j "," 1]
   }'
-} > "$rat.new"
-mv "$rat.new" "$rat"
+} > "$rat.tmp"
+publish "$rat"
 echo "wrote $rat"

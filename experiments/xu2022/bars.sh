@@ -53,6 +53,6 @@ csv=$R/bars.csv
     ratio=$(awk -v a="$on" -v b="$off" 'BEGIN {printf "%.2f", a / b}')
     echo "c_speed_${l}_${SPEED}_ms,$on,report,measured,$renderer; narrow filter; stages ms:$split; anisotropy off: $off ms; on/off = ${ratio}x"
   done
-} > "$csv.new"
-mv "$csv.new" "$csv"
+} > "$csv.tmp"
+publish "$csv"
 column -t -s, "$csv"

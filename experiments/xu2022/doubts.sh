@@ -25,21 +25,21 @@ pick() {
 }
 
 csv=$OUT/doubts_narrow_bias.csv
-echo "view,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
+echo "view,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.tmp"
 for spec in oblique:experiments/scenes/slab.json topdown:experiments/xu2022/slab_topdown.json; do
   IFS=: read -r view scene <<< "$spec"
   "$BIN" compare --force --no-cache "$scene" --methods aniso_ssf --set aniso_ssf.filter=none,gaussian,narrow --reference analytic \
       -W $(quick 512 128) -H $(quick 512 128) --repeat 1 -q -o "$TMP/narrow_$view" 2> "$TMP/narrow_$view.log"
-  pick "$view" "$TMP/narrow_$view/metrics.csv" >> "$csv.new"
+  pick "$view" "$TMP/narrow_$view/metrics.csv" >> "$csv.tmp"
 done
-mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
+publish "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
 
 csv=$OUT/doubts_curvature.csv
-echo "size,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.new"
+echo "size,variant,mask_iou,depth_bias_r,depth_rmse_r,interior_normal_mean_deg" > "$csv.tmp"
 for size in $(quick "256 512 1024" "64 128"); do
   "$BIN" compare --force --no-cache experiments/scenes/box.json --methods aniso_ssf --set aniso_ssf.filter=curvature \
       --set aniso_ssf.iterations=80,320 --set aniso_ssf.anisotropy=off,on --reference analytic \
       -W $size -H $size --repeat 1 -q -o "$TMP/curv_$size" 2> "$TMP/curv_$size.log"
-  pick "$size" "$TMP/curv_$size/metrics.csv" >> "$csv.new"
+  pick "$size" "$TMP/curv_$size/metrics.csv" >> "$csv.tmp"
 done
-mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
+publish "$csv"; stamp_csv "$csv"; column -t -s, "$csv"

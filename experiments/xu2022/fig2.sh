@@ -30,7 +30,7 @@ done
       a = col("variant"); sub(/;.*/, "", a); sub(/anisotropy=/, "", a)
       print s "," r "," a "," col("mask_iou") "," col("normal_mean_deg") "," col("interior_normal_mean_deg") "," col("depth_rmse_r") }' "$D/$scene/metrics.csv"
   done
-} > "$OUT/fig2.csv.new"
-mv "$OUT/fig2.csv.new" "$OUT/fig2.csv"
+} > "$OUT/fig2.csv.tmp"
+publish "$OUT/fig2.csv"
 frames_mosaic "$OUT/fig2_pair.png" 3x2 "$(quick 300x300 64x64)" "${imgs[@]}"
 echo "wrote $OUT/fig2.csv, $OUT/fig2_pair.png"

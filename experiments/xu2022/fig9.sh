@@ -41,8 +41,8 @@ head_lines() {
   echo "# medians of RUNS=$RUNS runs (cells whose first run took > ${BIG} s keep 1 run); frame = sum of $STAGES"
 }
 tcsv=$OUT/timings.csv fcsv=$OUT/fig9.csv
-{ head_lines; echo "label,particles,anisotropy,filter,stage,ms_median,runs,renderer"; } > "$tcsv.new"
-{ head_lines; echo "label,particles,anisotropy,filter,frame_ms,runs,renderer"; } > "$fcsv.new"
+{ head_lines; echo "label,particles,anisotropy,filter,stage,ms_median,runs,renderer"; } > "$tcsv.tmp"
+{ head_lines; echo "label,particles,anisotropy,filter,frame_ms,runs,renderer"; } > "$fcsv.tmp"
 
 while IFS=: read -r label n scene; do
   for a in off on; do
@@ -60,14 +60,14 @@ while IFS=: read -r label n scene; do
       for st in $STAGES; do
         med=$(cat "$c".run* | { grep "^$st," || true; } | cut -d, -f2 | median)
         [ -n "$med" ] || continue   # no anisotropy stage when it is off
-        echo "$label,$n,$a,$f,$st,$med,$runs,\"$renderer\"" >> "$tcsv.new"
+        echo "$label,$n,$a,$f,$st,$med,$runs,\"$renderer\"" >> "$tcsv.tmp"
       done
       frame=$(for r in "$c".run*; do awk -F, -v st=" $STAGES " 'index(st, " " $1 " ") {s += $2} END {print s}' "$r"; done | median)
-      echo "$label,$n,$a,$f,frame,$frame,$runs,\"$renderer\"" >> "$tcsv.new"
-      echo "$label,$n,$a,$f,$frame,$runs,\"$renderer\"" >> "$fcsv.new"
+      echo "$label,$n,$a,$f,frame,$frame,$runs,\"$renderer\"" >> "$tcsv.tmp"
+      echo "$label,$n,$a,$f,$frame,$runs,\"$renderer\"" >> "$fcsv.tmp"
       printf '%-14s aniso %-3s %-9s frame %9.1f ms (%d runs, %s)\n' "$label" "$a" "$f" "$frame" "$runs" "$renderer"
     done
   done
 done <<< "$SETS"
-mv "$tcsv.new" "$tcsv"; mv "$fcsv.new" "$fcsv"
+publish "$tcsv" "$fcsv"
 echo "wrote $tcsv $fcsv"

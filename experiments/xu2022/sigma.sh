@@ -19,7 +19,7 @@ TMP=out/$(quick "" quick/)xu2022/sigma
 mkdir -p "$OUT" "$TMP"
 for x in "$BIN" "$TOOL"; do [ -x "$x" ] || { echo "sigma.sh: $x missing" >&2; exit 2; }; done
 csv=$OUT/sigma_sweep.csv
-echo "scene,filter,sigma_r,anisotropy,interior_deg,face_deg,edge_band_deg" > "$csv.new"
+echo "scene,filter,sigma_r,anisotropy,interior_deg,face_deg,edge_band_deg" > "$csv.tmp"
 for shape in slab box; do
   d=$TMP/$shape
   "$BIN" compare --force --no-cache "experiments/scenes/$shape.json" --methods aniso_ssf --set aniso_ssf.filter=gaussian,narrow \
@@ -31,6 +31,6 @@ for shape in slab box; do
         split(f, a, /_sigma-|_anisotropy-/); gsub(/p/, ".", a[2]); key = s "," a[1] "," a[2] "," a[3];
         v[key, $2] = $4; keys[key] = 1 }
       END { for (k in keys) printf "%s,%.2f,%.2f,%.2f\n", k, v[k, "interior"], v[k, "face"], v[k, "edge_band"] }' |
-    sort >> "$csv.new"
+    sort >> "$csv.tmp"
 done
-mv "$csv.new" "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
+publish "$csv"; stamp_csv "$csv"; column -t -s, "$csv"
