@@ -2,7 +2,7 @@
 #include "api_internal.h"
 #include "fs_error.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "provenance.h"
 
 #include <pthread.h>

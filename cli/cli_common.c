@@ -1,6 +1,6 @@
 #include "cli.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "fs_error.h"
 #include "frame_pattern.h"
 #include "frame_source.h"

@@ -2,7 +2,7 @@
  * the viewer in cli/view/). */
 #include "caller_words.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "cli.h"
 #include "fs_error.h"
 #include "interrupt.h"

@@ -9,7 +9,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "test_render.h"
 #include "metrics.h"
 #include "synthetic.h"

@@ -9,7 +9,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include <stdlib.h>

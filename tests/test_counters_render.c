@@ -11,7 +11,7 @@
 #include "gl.h"
 #include "gl_context.h"
 #include "gl_counters.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include "shader.h"

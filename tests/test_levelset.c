@@ -8,7 +8,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "metrics.h"
 #include "run.h"
 #include "scene.h"

@@ -6,7 +6,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "method_params.h"
 #include "run.h"
 #include "sweep.h"

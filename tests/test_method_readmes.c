@@ -9,7 +9,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include <ctype.h>
 #include <stdarg.h>
 #include <stdlib.h>

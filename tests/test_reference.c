@@ -5,7 +5,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "particle_io.h"
 #include "analytic.h"

@@ -4,7 +4,7 @@
 #include "fs_test.h"
 #include "golden.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "particle_io.h"
 #include <stdlib.h>

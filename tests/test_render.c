@@ -1,7 +1,7 @@
 #include "test_render.h"
 #include "fs_error.h"
 #include "particle_io.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include <stdio.h>

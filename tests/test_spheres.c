@@ -5,7 +5,7 @@
 #include "gl_context.h"
 #include "golden.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include <stdlib.h>

@@ -7,7 +7,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "metrics.h"
 #include "particles.h"
 #include "scene.h"

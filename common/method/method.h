@@ -1,6 +1,6 @@
 /* The method interface (docs/DESIGN.md, "Adding a method"): a struct of function
  * pointers, registered in one registry (registry.c; the built-in table is in the
- * layer above, methods/registry.h). A method turns particles + camera into a G-buffer; only the
+ * layer above, methods/builtin_methods.h). A method turns particles + camera into a G-buffer; only the
  * run layer (common/run/run.h) calls its functions. */
 #ifndef FS_METHOD_H
 #define FS_METHOD_H

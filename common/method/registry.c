@@ -1,4 +1,4 @@
-/* The registry of methods (libvmaf-style): methods/registry.c registers the
+/* The registry of methods (libvmaf-style): methods/builtin_methods.c registers the
  * built-in table; a test may register a method of its own the same way. */
 #include "method.h"
 #include "fs_error.h"

@@ -35,7 +35,7 @@
 #include "gl_stage.h"
 #include "image_io.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include "sph.h"

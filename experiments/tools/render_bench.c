@@ -27,7 +27,7 @@
 #include "gl_limits.h"
 #include "image_io.h"
 #include "method.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "study.h"
 #include "scene.h"

@@ -5,7 +5,7 @@
  * ray intersector, one ray per pixel (OpenMP over rows). A baseline users pick
  * instead of the papers' methods (Museth 2013, OpenVDB). The OpenVDB calls live
  * in levelset_vdb.cpp; this file (and the method) exists only with
- * FS_WITH_OPENVDB=ON (methods/CMakeLists.txt, methods/registry.c). */
+ * FS_WITH_OPENVDB=ON (FS_OPTIONAL_METHODS in methods/CMakeLists.txt). */
 #include "counters.h"
 #include "fs_error.h"
 #include "levelset_vdb.h"

@@ -3,7 +3,7 @@
  * OpenVDB's volumeToMesh, optionally smoothed, vertex normals from the
  * analytic gradient (mesh_build.c), rasterised by OpenGL into the G-buffer
  * with a signed additive thickness (mesh_gl.c). Exists only with
- * FS_WITH_OPENVDB=ON (methods/CMakeLists.txt, methods/registry.c). */
+ * FS_WITH_OPENVDB=ON (FS_OPTIONAL_METHODS in methods/CMakeLists.txt). */
 #include "aniso_params.h"
 #include "counters.h"
 #include "fs_error.h"

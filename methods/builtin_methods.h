@@ -1,7 +1,7 @@
-/* The built-in methods (methods/registry.c): the layer above method.h, which
+/* The built-in methods (methods/builtin_methods.c): the layer above method.h, which
  * only knows the registry, not which methods there are. */
-#ifndef FS_METHODS_REGISTRY_H
-#define FS_METHODS_REGISTRY_H
+#ifndef FS_BUILTIN_METHODS_H
+#define FS_BUILTIN_METHODS_H
 #include "method.h"
 #ifdef __cplusplus
 extern "C" {
