@@ -9,7 +9,7 @@ if(NOT XVFB_RUN)
   message(FATAL_ERROR "xvfb-run not found: the GLFW context test needs it. Run scripts/setup.sh (Debian package xvfb).")
 endif()
 add_executable(test_context_glfw test_context_glfw.c)
-target_link_libraries(test_context_glfw PRIVATE fs_run fs_report fs_methods fs_sph)
+target_link_libraries(test_context_glfw PRIVATE fs_run fs_image fs_methods fs_sph)
 target_compile_definitions(test_context_glfw PRIVATE FS_TEST_DATA="${CMAKE_SOURCE_DIR}/experiments/data"
   FS_TEST_OUT="${CMAKE_BINARY_DIR}/test-out")
 set(_ctx_lsan "${FS_TEST_ENV}")

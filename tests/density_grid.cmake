@@ -1,7 +1,7 @@
 # Area "density_grid": the exact CPU density grid, iwasaki2006's slice splatting
 # against it, the VDB adapter; then, where openvdb-tools is installed, vdb_print
 # reads the grid the C test wrote.
-fs_add_test(test_density_grid fs_report test_density_grid.c)
+fs_add_test(test_density_grid fs_image test_density_grid.c)
 set_tests_properties(test_density_grid PROPERTIES FIXTURES_SETUP density_grid_vdb)
 find_program(FS_VDB_PRINT vdb_print)
 if(FS_VDB_PRINT AND FS_WITH_OPENVDB)

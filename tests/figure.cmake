@@ -1,2 +1,2 @@
 # Area "figure": text, heatmaps with colour bars, panels.
-fs_add_test(test_figure fs_report test_figure.c)
+fs_add_test(test_figure fs_figure test_figure.c)

@@ -5,7 +5,7 @@
  * method keeps the pointers it was given while the caller's struct goes out of
  * scope); a failed upload; an empty frame; the grid built only for a method
  * that reads it; a GL method without a context.
- * Links the run and report layers only, not methods/. */
+ * Links the run and image layers only, not methods/. */
 #include "fs_error.h"
 #include "fs_test.h"
 #include "image_io.h"

@@ -6,7 +6,7 @@
  * library sits in (wherever that tree was moved), then in the build tree. */
 #define _GNU_SOURCE
 #include "alloc_cap.h"
-#include "figure.h"
+#include "rgba_image.h"
 #include "fs_error.h"
 #include "image_exr_core.h"
 #include "oiio_plugin.h"

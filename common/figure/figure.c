@@ -1,5 +1,5 @@
-/* Figure building blocks (figure.h): RGBA buffers, heatmaps with a colour bar,
- * panels of labelled tiles. Text comes from common/report/image_text.cpp. */
+/* Figures (figure.h): heatmaps with a colour bar, panels of labelled tiles.
+ * Text comes from the image layer (rgba_image.h). */
 #include "figure.h"
 #include "fs_error.h"
 #include <math.h>
@@ -21,30 +21,6 @@ static const unsigned char VIRIDIS[11][3] = {
 };
 /* "No data": a dark grey no value of viridis comes close to. */
 static const unsigned char NODATA_SRGB = 80;
-
-int fs_rgba_alloc(fs_rgba_image *im, int w, int h, const float fill[4])
-{
-    static const float clear[4] = {0, 0, 0, 0};
-    memset(im, 0, sizeof *im);
-    if (w <= 0 || h <= 0 || (size_t)w > SIZE_MAX / 16 / (size_t)h)
-        return fs_fail(FS_ERR_INPUT, "image: bad size %dx%d", w, h);
-    size_t n = (size_t)w * h;
-    float *pix = malloc(n * 4 * sizeof(float));
-    if (!pix) return fs_fail(FS_ERR_RUNTIME, "image: out of memory for %dx%d RGBA", w, h);
-    if (!fill) fill = clear;
-    for (size_t i = 0; i < n; i++) memcpy(pix + 4 * i, fill, 4 * sizeof(float));
-    im->w = w;
-    im->h = h;
-    im->pix = pix;
-    return FS_OK;
-}
-
-void fs_rgba_free(fs_rgba_image *im)
-{
-    if (!im) return;
-    free(im->pix);
-    memset(im, 0, sizeof *im);
-}
 
 /* src over dst with straight alpha, clipped; the result is opaque where dst was. */
 static void composite_over(fs_rgba_image *dst, const fs_rgba_image *src, int x, int y)

@@ -1,4 +1,4 @@
-/* Image files through OpenImageIO (common/report/image_oiio.cpp), or, in a build with
+/* Image files through OpenImageIO (common/image/image_oiio.cpp), or, in a build with
  * FS_WITH_OIIO=OFF, OpenEXRCore and stb (image_exr_core.c, image_stb.c: PNG and EXR
  * only): PNG (sRGB 8-bit) and EXR (linear float, RGBA plus named AOV channels and
  * string attributes). */

@@ -18,7 +18,7 @@
  * here (the full build fails with FS_ERR_RUNTIME): text is measured with a fixed
  * estimate (0.6 em a code point), nothing is drawn, and one note says so, so a
  * bare GPU node still writes every image of `compare`. */
-#include "figure.h"
+#include "rgba_image.h"
 #include "fs_error.h"
 #include "text_blend.h"
 

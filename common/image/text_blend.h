@@ -2,7 +2,7 @@
  * (image_text.cpp through OpenImageIO, text_stb.c without it). */
 #ifndef FS_TEXT_BLEND_H
 #define FS_TEXT_BLEND_H
-#include "figure.h"
+#include "rgba_image.h"
 #ifdef __cplusplus
 extern "C" {
 #endif

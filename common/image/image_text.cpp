@@ -9,7 +9,7 @@
 // render_text draws glyph coverage into a small one-channel buffer; the
 // coverage is blended into the caller's linear RGBA in sRGB-encoded values
 // (text_blend.c, shared with text_stb.c).
-#include "figure.h"
+#include "rgba_image.h"
 #include "fs_error.h"
 #include "image_io.h"
 #include "text_blend.h"

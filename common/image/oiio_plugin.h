@@ -7,7 +7,7 @@
  * errors land in the caller's fs_error. */
 #ifndef FS_OIIO_PLUGIN_H
 #define FS_OIIO_PLUGIN_H
-#include "figure.h"
+#include "rgba_image.h"
 #include <stdarg.h>
 #include <stddef.h>
 #ifdef __cplusplus

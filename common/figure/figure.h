@@ -1,28 +1,11 @@
-/* Figure building blocks: heatmaps with a colour bar and scale, text through
- * OpenImageIO (common/report/image_text.cpp; text_stb.c without it), and panels of labelled tiles. Images here
- * are linear RGBA float (4 channels), rows top to bottom. */
+/* Figures: heatmaps with a colour bar and scale, and panels of labelled tiles,
+ * drawn on RGBA images with their text (common/image/rgba_image.h). */
 #ifndef FS_FIGURE_H
 #define FS_FIGURE_H
-#include "image_io.h"
+#include "rgba_image.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-typedef struct fs_rgba_image {
-    int w, h;
-    float *pix; /* 4*w*h */
-} fs_rgba_image;
-
-int fs_rgba_alloc(fs_rgba_image *im, int w, int h, const float fill[4]);
-void fs_rgba_free(fs_rgba_image *im);
-/* Draws text with its top-left corner at (x, y), DejaVuSans at size px.
- * A missing font: FS_ERR_RUNTIME in the build with OpenImageIO; without it
- * (text_stb.c) FS_OK, nothing drawn, and one fs_note for the process. */
-int fs_draw_text(fs_rgba_image *im, int x, int y, const char *text, int size, const float rgb[3]);
-/* Width and height in pixels that text would take. A missing font: as
- * fs_draw_text (without OpenImageIO, FS_OK with an estimate: 0.6 em a code point
- * wide, 1.2 em high). */
-int fs_text_size(const char *text, int size, int *w, int *h);
 
 /* A heatmap of values (NAN = no data, drawn dark grey) from 0 to vmax with a
  * perceptual colour map (values above vmax saturate), plus a vertical colour bar
