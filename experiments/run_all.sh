@@ -8,11 +8,11 @@
 #   experiments/run_all.sh --quick    every script at small sizes into out/quick/results/ (a few
 #                                     minutes; CI runs it so that no study script can rot), then
 #                                     each study's numbers against bounds (by definition, and ones a broken
-#                                     method fails: tools/check_quick.py) and the checks below; it also runs
+#                                     method fails: scripts/check_quick.py) and the checks below; it also runs
 #                                     scripts/demo.sh and fails if that changes `git status`
 #   experiments/run_all.sh --check    the checks of the committed results: every generated README
 #                                     table is its CSV's, and every committed CSV under results/
-#                                     names a clean commit (tools/check_results.sh)
+#                                     names a clean commit (scripts/check_results.sh)
 #
 # Studies run in the order below; one that fails stops the run with its name.
 set -euo pipefail
@@ -48,15 +48,15 @@ study() {
 readme_check() { study readme_tables bash tests/readme_tables.sh "$PWD"; }
 # the prose numbers (<!--n--> notes) and the index's commit column against the committed CSVs
 numbers_check() {
-  study results_numbers python3 experiments/tools/check_numbers.py
-  study results_index python3 experiments/tools/check_index.py results/README.md
+  study results_numbers python3 scripts/check_numbers.py
+  study results_index python3 scripts/check_index.py results/README.md
 }
 
 if [ $mode = check ]; then
   readme_check
   numbers_check
-  study results_clean bash experiments/tools/check_results.sh
-  study results_bounds python3 experiments/tools/check_quick.py results --skip bench_make_splash
+  study results_clean bash scripts/check_results.sh
+  study results_bounds python3 scripts/check_quick.py results --skip bench_make_splash
   exit 0
 fi
 if [ $mode = quick ]; then
@@ -136,10 +136,10 @@ if [ $mode = quick ]; then
   # a study that ran to the end can still measure nonsense, or a method be broken: its numbers
   # against bounds that hold by definition and ones with teeth (quality against the reference,
   # a switch that changes what its paper says, a bar's committed verdict, a bounded simulation;
-  # experiments/tools/check_quick.py)
-  study quick_bounds python3 experiments/tools/check_quick.py "$FS_RESULTS"
+  # scripts/check_quick.py)
+  study quick_bounds python3 scripts/check_quick.py "$FS_RESULTS"
   readme_check
   numbers_check
-  study results_clean bash experiments/tools/check_results.sh
+  study results_clean bash scripts/check_results.sh
 fi
 echo "run_all: every study ran ($mode)"

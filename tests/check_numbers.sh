@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# experiments/tools/check_numbers.py beyond the committed files (the ctest results_numbers):
+# scripts/check_numbers.py beyond the committed files (the ctest results_numbers):
 #   a wrong annotated number in docs/DESIGN.md fails, naming the line, the text's number and
 #   the CSV's;
 #   a time typed without a note in docs/DESIGN.md fails;
@@ -12,7 +12,7 @@ SRC=$1 T=$2
 rm -rf "$T"; mkdir -p "$T/docs" "$T/r/results"; cd "$SRC" || exit 2
 fails=0
 check() { if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
-C=(python3 experiments/tools/check_numbers.py)
+C=(python3 scripts/check_numbers.py)
 ln -s "$SRC/results" "$T/results"
 # DESIGN's fixed cost of an 8x8 render, 0.08 s in results/bench/speed.csv, typed as 0.17
 sed 's/machine): 0\.08<!--n/machine): 0.17<!--n/' docs/DESIGN.md > "$T/docs/DESIGN.md"

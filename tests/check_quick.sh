@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# experiments/tools/check_quick.py, which experiments/run_all.sh --quick runs on the quick
+# scripts/check_quick.py, which experiments/run_all.sh --quick runs on the quick
 # studies' CSVs (in CI, scripts/test.sh; not here: the studies take minutes):
 #   its table covers every study of run_all.sh;
 #   the committed full-size results/ meet the same bounds (they hold by definition at any
@@ -13,7 +13,7 @@ SRC=$1 T=$2
 rm -rf "$T"; mkdir -p "$T"; cd "$SRC" || exit 2
 fails=0
 check() { if eval "$1"; then echo "ok   $2"; else echo "FAIL $2"; fails=$((fails + 1)); fi; }
-Q=(python3 experiments/tools/check_quick.py)
+Q=(python3 scripts/check_quick.py)
 "${Q[@]}" --table-only > "$T/table.txt" 2>&1; rc=$?
 check '[ $rc -eq 0 ]' "every study of run_all.sh has a row ($(tr '\n' ' ' < "$T/table.txt" | head -c 600))"
 "${Q[@]}" results --skip bench_make_splash > "$T/results.txt" 2>&1; rc=$?

@@ -9,7 +9,7 @@ timed runs); the papers' numbers are the ones their tables and text print.
 
 tables.csv holds every number of the README's tables, unrounded, one a row (table, the row's
 first one or two cells as key and sub, column, value), so that prose elsewhere can cite them
-(experiments/tools/check_numbers.py).
+(scripts/check_numbers.py).
 
 Frame times are the sums of a method's own stages (no load, grid build or upload), as in
 experiments/xiao2017/table1.sh and experiments/xu2022/fig9.sh; fluidsurf shades on the CPU

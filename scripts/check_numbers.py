@@ -45,7 +45,7 @@ class Bad(Exception):
 
 
 def rel(path):
-    return os.path.relpath(path, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+    return os.path.relpath(path, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
 
 def read_csv(path, cache={}):
@@ -173,7 +173,7 @@ def default_files(root):
 
 
 def main():
-    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
     args = sys.argv[1:]
     fix = "--fix" in args
     args = [a for a in args if a != "--fix"]

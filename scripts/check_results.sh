@@ -11,7 +11,7 @@
 # listed fails (take it off the list), so the list only shrinks.
 #   check_results.sh [ROOT]   (default: this checkout; ROOT/results is checked)
 set -u
-cd "${1:-$(dirname "$0")/../..}"
+cd "${1:-$(dirname "$0")/..}"
 source experiments/lib.sh # PROV_RE
 pending_list=experiments/tools/rerun_pending.txt
 pending() { [ -f $pending_list ] && grep -qxF "$1" $pending_list; }

@@ -3,7 +3,7 @@
 commit must be the one in the provenance line of its main CSV (the first CSV its analogue
 column links), or "none recorded" when that CSV names none. Lists each row that differs.
 
-    python3 experiments/tools/check_index.py [--fix] [results/README.md]
+    python3 scripts/check_index.py [--fix] [results/README.md]
 
 --fix writes each row's commit column from its main CSV (after a study is re-run).
 """

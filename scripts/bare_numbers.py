@@ -1,4 +1,4 @@
-"""Which numbers in Markdown prose look measured and carry no note (experiments/tools/check_numbers.py).
+"""Which numbers in Markdown prose look measured and carry no note (scripts/check_numbers.py).
 
 Two rules, on the prose outside code blocks and generated blocks (`<!-- table: -->`,
 `<!-- NAME:begin -->`, `<!-- NAME -->` to `<!-- end NAME -->`), in every file but one a script
