@@ -32,80 +32,75 @@ static int is_grid(const fs_study_dir *r)
         r->s->entries[methods - 1].v.m == r->s->entries[0].v.m;
 }
 
+/* The grid panel's cells: a row per value of the first swept parameter, and per
+ * value of the second a column of images, then a column of their heatmaps. */
+typedef struct grid_cells {
+    int rows, cols;          /* the variants' grid; the panel has 2 * cols columns */
+    fs_rgba_image *img, *hm; /* rows * cols */
+    char (*cap)[256], (*rh)[200], (*ch)[200];
+    const fs_rgba_image **tiles; /* rows * 2 cols */
+    const char **caps, **rhp, **chp;
+} grid_cells;
+
+static void grid_free(grid_cells *g)
+{
+    for (int i = 0; g->hm && i < g->rows * g->cols; i++) fs_rgba_free(&g->hm[i]);
+    free(g->img), free(g->hm), free(g->cap), free(g->rh), free(g->ch);
+    free(g->tiles), free(g->caps), free(g->rhp), free(g->chp);
+}
+
+static int grid_alloc(grid_cells *g, const fs_study *s)
+{
+    memset(g, 0, sizeof *g);
+    g->rows = 1 + s->entries[0].v.value_index[0], g->cols = 1 + s->entries[0].v.value_index[1];
+    for (int i = 0; i < s->nentries; i++) {
+        if (s->entries[i].v.value_index[0] + 1 > g->rows) g->rows = s->entries[i].v.value_index[0] + 1;
+        if (s->entries[i].v.value_index[1] + 1 > g->cols) g->cols = s->entries[i].v.value_index[1] + 1;
+    }
+    size_t n = (size_t)g->rows * g->cols;
+    g->img = calloc(n, sizeof *g->img), g->hm = calloc(n, sizeof *g->hm), g->cap = calloc(n, sizeof *g->cap);
+    g->rh = calloc(g->rows, sizeof *g->rh), g->ch = calloc(g->cols, sizeof *g->ch);
+    g->tiles = calloc(2 * n, sizeof *g->tiles), g->caps = calloc(2 * n, sizeof *g->caps);
+    g->rhp = calloc(g->rows, sizeof *g->rhp), g->chp = calloc(2 * (size_t)g->cols, sizeof *g->chp);
+    int ok = g->img && g->hm && g->cap && g->rh && g->ch && g->tiles && g->caps && g->rhp && g->chp;
+    return ok ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory");
+}
+
+/* Entry e's cell: its image, its heatmap beside it, one caption under both, and
+ * the headers from its variant string "p=v;q=w". */
+static int grid_cell(grid_cells *g, const fs_study_dir *r, const fs_study_entry *e)
+{
+    int y = e->v.value_index[0], x = e->v.value_index[1], k = y * g->cols + x, t = y * 2 * g->cols + x;
+    wrap_view(&e->first, &g->img[k]);
+    int rc = fs_study_dir_normal_heatmap(r, e, &g->hm[k]);
+    snprintf(g->cap[k], sizeof g->cap[k], "%.1f ms  %.1f deg", e->frame_ms[0], e->metrics[0].normal_mean_deg);
+    g->tiles[t] = &g->img[k], g->tiles[t + g->cols] = &g->hm[k];
+    g->caps[t] = g->caps[t + g->cols] = g->cap[k];
+    char var[200];
+    snprintf(var, sizeof var, "%s", e->variant);
+    char *semi = strchr(var, ';');
+    if (semi) *semi = 0;
+    snprintf(g->rh[y], sizeof g->rh[0], "%s", var);
+    snprintf(g->ch[x], sizeof g->ch[0], "%s", semi ? semi + 1 : "");
+    return rc;
+}
+
 static int write_grid_panel(const fs_study_dir *r)
 {
-    const fs_study_entry *e0 = &r->s->entries[0];
-    int rows = 1 + e0->v.value_index[0], cols = 1 + e0->v.value_index[1];
-    for (int i = 0; i < r->s->nentries; i++) {
-        if (r->s->entries[i].v.value_index[0] + 1 > rows) rows = r->s->entries[i].v.value_index[0] + 1;
-        if (r->s->entries[i].v.value_index[1] + 1 > cols) cols = r->s->entries[i].v.value_index[1] + 1;
-    }
-    fs_rgba_image *img = calloc((size_t)rows * cols, sizeof *img), *hm = calloc((size_t)rows * cols, sizeof *hm);
-    const fs_rgba_image **ti = calloc((size_t)rows * cols, sizeof *ti), **th = calloc((size_t)rows * cols, sizeof *th);
-    char(*cap)[256] = calloc((size_t)rows * cols, sizeof *cap), (*rh)[200] = calloc(rows, sizeof *rh),
-    (*ch)[200] = calloc(cols, sizeof *ch);
-    const char **capp = calloc((size_t)rows * cols, sizeof *capp), **rhp = calloc(rows, sizeof *rhp),
-               **chp = calloc(cols, sizeof *chp);
-    int rc = img && hm && ti && th && cap && rh && ch && capp && rhp && chp ? FS_OK
-                                                                            : fs_fail(FS_ERR_RUNTIME, "out of memory");
-    for (int i = 0; i < r->s->nentries && !rc; i++) {
-        const fs_study_entry *e = &r->s->entries[i];
-        int k = e->v.value_index[0] * cols + e->v.value_index[1];
-        const fs_sweep *s0 = NULL;
-        (void)s0;
-        wrap_view(&e->first, &img[k]);
-        ti[k] = &img[k];
-        rc = fs_study_dir_normal_heatmap(r, e, &hm[k]);
-        th[k] = &hm[k];
-        const fs_metrics *m = &e->metrics[0];
-        snprintf(cap[k], sizeof cap[k], "%.1f ms  %.1f deg", e->frame_ms[0], m->normal_mean_deg);
-        capp[k] = cap[k];
-        /* headers from the variant string "p=v;q=w" */
-        char var[200];
-        snprintf(var, sizeof var, "%s", e->variant);
-        char *semi = strchr(var, ';');
-        if (semi) *semi = 0;
-        snprintf(rh[e->v.value_index[0]], sizeof rh[0], "%s", var);
-        snprintf(ch[e->v.value_index[1]], sizeof ch[0], "%s", semi ? semi + 1 : "");
-    }
-    for (int i = 0; i < rows; i++) rhp[i] = rh[i];
-    for (int i = 0; i < cols; i++) chp[i] = ch[i];
-    fs_rgba_image out = {0};
+    grid_cells g;
+    int rc = grid_alloc(&g, r->s);
+    for (int i = 0; i < r->s->nentries && !rc; i++) rc = grid_cell(&g, r, &r->s->entries[i]);
+    for (int i = 0; !rc && i < g.rows; i++) g.rhp[i] = g.rh[i];
+    for (int x = 0; !rc && x < g.cols; x++) g.chp[x] = g.chp[g.cols + x] = g.ch[x];
     char title[300];
-    snprintf(title, sizeof title, "%s (normal error against %s on the right)", e0->name, r->s->refs[0].spec);
-    /* images and heatmaps side by side: 2*cols columns */
-    const fs_rgba_image **both = calloc((size_t)rows * cols * 2, sizeof *both);
-    const char **bcap = calloc((size_t)rows * cols * 2, sizeof *bcap), **bch = calloc((size_t)cols * 2, sizeof *bch);
-    if (!rc && (!both || !bcap || !bch)) rc = fs_fail(FS_ERR_RUNTIME, "out of memory");
-    for (int y = 0; y < rows && !rc; y++)
-        for (int x = 0; x < cols; x++) {
-            both[y * 2 * cols + x] = ti[y * cols + x];
-            both[y * 2 * cols + cols + x] = th[y * cols + x];
-            bcap[y * 2 * cols + x] = capp[y * cols + x];
-            bcap[y * 2 * cols + cols + x] = capp[y * cols + x];
-        }
-    for (int x = 0; x < cols && !rc; x++) {
-        bch[x] = chp[x];
-        bch[cols + x] = chp[x];
-    }
-    fs_panel_spec spec = {rows, 2 * cols, both, bcap, bch, rhp, title};
+    snprintf(title, sizeof title, "%s (normal error against %s on the right)", r->s->entries[0].name,
+             r->s->refs[0].spec);
+    fs_panel_spec spec = {g.rows, 2 * g.cols, g.tiles, g.caps, g.chp, g.rhp, title};
+    fs_rgba_image out = {0};
     if (!rc) rc = fs_panel_compose(&spec, &out);
     if (!rc) rc = fs_study_dir_write_rgba(r, "panel.png", &out);
     fs_rgba_free(&out);
-    for (int i = 0; hm && i < rows * cols; i++) fs_rgba_free(&hm[i]);
-    free(img);
-    free(hm);
-    free(ti);
-    free(th);
-    free(cap);
-    free(rh);
-    free(ch);
-    free(capp);
-    free(rhp);
-    free(chp);
-    free(both);
-    free(bcap);
-    free(bch);
+    grid_free(&g);
     return rc;
 }
 
