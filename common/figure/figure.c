@@ -191,48 +191,45 @@ static int text_w(const char *text, int font, int *w)
     return fs_text_size(text, font, w, &h);
 }
 
-static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
+/* The grid is sane and every tile has pixels; *max_h: the tallest tile. */
+static int check_tiles(const fs_panel_spec *s, int *max_h)
 {
-    memset(g, 0, sizeof *g);
     if (!s || s->rows <= 0 || s->cols <= 0 || s->rows > 1000 || s->cols > 1000)
         return fs_fail(FS_ERR_INPUT, "panel: bad grid %dx%d", s ? s->rows : 0, s ? s->cols : 0);
     if (!s->tiles) return fs_fail(FS_ERR_INPUT, "panel: no tile list");
-    int n = s->rows * s->cols, max_h = 0, rc;
-    for (int k = 0; k < n; k++) {
+    *max_h = 0;
+    for (int k = 0; k < s->rows * s->cols; k++) {
         const fs_rgba_image *t = s->tiles[k];
         if (t && (t->w <= 0 || t->h <= 0 || !t->pix))
             return fs_fail(FS_ERR_INPUT, "panel: tile %d (row %d, column %d) has no pixels", k, k / s->cols,
                            k % s->cols);
-        if (t && t->h > max_h) max_h = t->h;
+        if (t && t->h > *max_h) *max_h = t->h;
     }
-    g->font = figure_font(max_h);
-    g->title_font = g->font * 4 / 3;
-    g->pad = g->font / 2 > 4 ? g->font / 2 : 4;
-    if ((rc = line_height(g->font, &g->line)) || (rc = line_height(g->title_font, &g->title_line))) return rc;
-    int *mem = calloc((size_t)2 * s->rows + 3 * s->cols, sizeof(int));
-    if (!mem) return fs_fail(FS_ERR_RUNTIME, "panel: out of memory");
-    g->col_x = mem, g->col_w = mem + s->cols, g->col_mid = mem + 2 * s->cols;
-    g->row_y = mem + 3 * s->cols, g->row_h = g->row_y + s->rows;
+    return FS_OK;
+}
 
-    /* Column width: widest tile, caption or header of the column; row height: tallest tile. */
-    for (int k = 0; k < n; k++) {
-        int r = k / s->cols, c = k % s->cols, cw = 0;
+/* Column width: widest tile, caption or header of the column; row height:
+ * tallest tile; the widest row header. */
+static int cell_sizes(const fs_panel_spec *s, panel_geom *g)
+{
+    int rc = FS_OK, w;
+    for (int k = 0; k < s->rows * s->cols && !rc; k++) {
+        int r = k / s->cols, c = k % s->cols;
         const fs_rgba_image *t = s->tiles[k];
         if (t && t->w > g->col_w[c]) g->col_w[c] = t->w;
         if (t && t->h > g->row_h[r]) g->row_h[r] = t->h;
-        if ((rc = text_w(nth(s->captions, k), g->font, &cw))) goto fail;
-        if (cw > g->col_w[c]) g->col_w[c] = cw;
+        if (!(rc = text_w(nth(s->captions, k), g->font, &w)) && w > g->col_w[c]) g->col_w[c] = w;
     }
-    for (int c = 0; c < s->cols; c++) {
-        int hw;
-        if ((rc = text_w(nth(s->col_headers, c), g->font, &hw))) goto fail;
-        if (hw > g->col_w[c]) g->col_w[c] = hw;
-    }
-    for (int r = 0; s->row_headers && r < s->rows; r++) {
-        int hw;
-        if ((rc = text_w(nth(s->row_headers, r), g->font, &hw))) goto fail;
-        if (hw > g->row_header_w) g->row_header_w = hw;
-    }
+    for (int c = 0; c < s->cols && !rc; c++)
+        if (!(rc = text_w(nth(s->col_headers, c), g->font, &w)) && w > g->col_w[c]) g->col_w[c] = w;
+    for (int r = 0; s->row_headers && r < s->rows && !rc; r++)
+        if (!(rc = text_w(nth(s->row_headers, r), g->font, &w)) && w > g->row_header_w) g->row_header_w = w;
+    return rc;
+}
+
+/* Columns left to right; returns the grid's right edge. */
+static int place_columns(const fs_panel_spec *s, panel_geom *g)
+{
     g->grid_x = g->pad + (s->row_headers ? g->row_header_w + g->pad : 0);
     int x = g->grid_x;
     for (int c = 0; c < s->cols; c++) {
@@ -247,10 +244,16 @@ static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
         }
         g->col_mid[c] = g->col_x[c] + (narrowest ? narrowest : g->col_w[c]) / 2;
     }
-    int y = g->pad, title_w = 0;
+    return x;
+}
+
+/* The title, the column headers and the rows top to bottom; the panel's size. */
+static int place_rows(const fs_panel_spec *s, panel_geom *g, int right)
+{
+    int y = g->pad, title_w = 0, rc;
     g->title_y = y;
     if (s->title && *s->title) {
-        if ((rc = text_w(s->title, g->title_font, &title_w))) goto fail;
+        if ((rc = text_w(s->title, g->title_font, &title_w))) return rc;
         y += g->title_line + g->pad;
     }
     g->header_y = y;
@@ -259,12 +262,30 @@ static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
         g->row_y[r] = y;
         y += g->row_h[r] + (s->captions ? g->pad / 2 + g->line : 0) + g->pad;
     }
-    g->out_w = x > title_w + 2 * g->pad ? x : title_w + 2 * g->pad;
+    g->out_w = right > title_w + 2 * g->pad ? right : title_w + 2 * g->pad;
     g->out_h = y;
     return FS_OK;
-fail:
-    free(mem);
-    g->col_x = NULL;
+}
+
+static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
+{
+    memset(g, 0, sizeof *g);
+    int max_h, rc = check_tiles(s, &max_h);
+    if (rc) return rc;
+    g->font = figure_font(max_h);
+    g->title_font = g->font * 4 / 3;
+    g->pad = g->font / 2 > 4 ? g->font / 2 : 4;
+    if ((rc = line_height(g->font, &g->line)) || (rc = line_height(g->title_font, &g->title_line))) return rc;
+    int *mem = calloc((size_t)2 * s->rows + 3 * s->cols, sizeof(int));
+    if (!mem) return fs_fail(FS_ERR_RUNTIME, "panel: out of memory");
+    g->col_x = mem, g->col_w = mem + s->cols, g->col_mid = mem + 2 * s->cols;
+    g->row_y = mem + 3 * s->cols, g->row_h = g->row_y + s->rows;
+    rc = cell_sizes(s, g);
+    if (!rc) rc = place_rows(s, g, place_columns(s, g));
+    if (rc) {
+        free(mem);
+        g->col_x = NULL;
+    }
     return rc;
 }
 
