@@ -137,23 +137,12 @@ void fs_srgb_luminance(const float *rgba, int w, int h, float *lum)
  * Local moments come from two separable passes, O(w h 11). The SSIM map covers
  * the full images; its mean is taken over mask != 0 (all pixels if mask is NULL).
  * Returns FS_ERR_RUNTIME when out of memory; *out = NAN without any pixel. */
-static int ssim_mean(const float *x, const float *y, int w, int h, const unsigned char *mask, double *out)
+enum { SSIM_R = 5 }; /* the window's half width: 11x11 */
+
+/* Horizontal pass: mx, my, E[x^2], E[y^2], E[xy] of each pixel's row segment into hp (5 a pixel). */
+static void ssim_rows(const float *x, const float *y, int w, int h, const double *g, double *hp)
 {
-    enum { R = 5 };
-    const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
-    double g[2 * R + 1];
-    for (int k = -R; k <= R; k++) g[k + R] = exp(-(k * k) / (2 * 1.5 * 1.5));
-    size_t n = (size_t)w * h;
-    /* horizontal pass: mx, my, E[x^2], E[y^2], E[xy] of each pixel's row segment */
-    double *hp = malloc(5 * n * sizeof(double)), *row_sum = malloc((size_t)h * sizeof(double));
-    size_t *row_cnt = malloc((size_t)h * sizeof(size_t));
-    if (!hp || !row_sum || !row_cnt) {
-        free(hp);
-        free(row_sum);
-        free(row_cnt);
-        *out = NAN;
-        return fs_fail(FS_ERR_RUNTIME, "out of memory for SSIM of a %dx%d image", w, h);
-    }
+    const int R = SSIM_R;
 #pragma omp parallel for schedule(static)
     for (int j = 0; j < h; j++)
         for (int i = 0; i < w; i++) {
@@ -176,7 +165,14 @@ static int ssim_mean(const float *x, const float *y, int w, int h, const unsigne
             o[3] = syy / sw;
             o[4] = sxy / sw;
         }
-        /* vertical pass, then the SSIM of each pixel, summed per row */
+}
+
+/* Vertical pass, then the SSIM of each pixel in the mask, summed per row. */
+static void ssim_columns(const double *hp, int w, int h, const double *g, const unsigned char *mask, double *row_sum,
+                         size_t *row_cnt)
+{
+    const int R = SSIM_R;
+    const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
 #pragma omp parallel for schedule(static)
     for (int j = 0; j < h; j++) {
         double rs = 0;
@@ -200,13 +196,28 @@ static int ssim_mean(const float *x, const float *y, int w, int h, const unsigne
         row_sum[j] = rs;
         row_cnt[j] = rc;
     }
-    size_t cnt = 0;
-    for (int j = 0; j < h; j++) cnt += row_cnt[j];
-    *out = cnt ? sum_rows(row_sum, h) / (double)cnt : NAN;
+}
+
+static int ssim_mean(const float *x, const float *y, int w, int h, const unsigned char *mask, double *out)
+{
+    double g[2 * SSIM_R + 1];
+    for (int k = -SSIM_R; k <= SSIM_R; k++) g[k + SSIM_R] = exp(-(k * k) / (2 * 1.5 * 1.5));
+    size_t n = (size_t)w * h;
+    double *hp = malloc(5 * n * sizeof(double)), *row_sum = malloc((size_t)h * sizeof(double));
+    size_t *row_cnt = malloc((size_t)h * sizeof(size_t)), cnt = 0;
+    int rc =
+        hp && row_sum && row_cnt ? FS_OK : fs_fail(FS_ERR_RUNTIME, "out of memory for SSIM of a %dx%d image", w, h);
+    *out = NAN;
+    if (!rc) {
+        ssim_rows(x, y, w, h, g, hp);
+        ssim_columns(hp, w, h, g, mask, row_sum, row_cnt);
+        for (int j = 0; j < h; j++) cnt += row_cnt[j];
+        *out = cnt ? sum_rows(row_sum, h) / (double)cnt : NAN;
+    }
     free(hp);
     free(row_sum);
     free(row_cnt);
-    return FS_OK;
+    return rc;
 }
 
 double fs_ssim(const float *x, const float *y, int w, int h, const unsigned char *mask)
@@ -310,11 +321,10 @@ static void robust_depth_stats(const fs_gbuffer *a, metric_scratch *s, size_t nb
     out->depth_over_1r_frac = nb ? sum_rows(s->row_a, a->h) / (double)nb : NAN;
 }
 
-/* Depth and normal statistics over the pixels both cover. */
-static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r, metric_scratch *s, fs_metrics *out)
+/* Pass 1: the masks, each covered pixel's depth error and normal angle, and their row sums. */
+static void pixel_errors(const fs_gbuffer *a, const fs_gbuffer *b, float r, metric_scratch *s)
 {
     int w = a->w, h = a->h;
-    /* pass 1: masks, per-pixel errors and their row sums */
 #pragma omp parallel for schedule(static)
     for (int y = 0; y < h; y++) {
         double sd = 0, sa = 0;
@@ -337,20 +347,11 @@ static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r
         s->row_n[y] = nb;
         s->row_u[y] = nu;
     }
-    size_t nb = 0, nu = 0;
-    for (int y = 0; y < h; y++) {
-        s->row_off[y] = nb;
-        nb += s->row_n[y];
-        nu += s->row_u[y];
-    }
-    out->n_both = nb;
-    out->n_union = nu;
-    out->mask_iou = nu ? (double)nb / (double)nu : 1.0;
-    double bias = nb ? sum_rows(s->row_a, h) / (double)nb : NAN;
-    out->depth_bias_r = bias;
-    out->normal_mean_deg = nb ? sum_rows(s->row_b, h) / (double)nb : NAN;
+}
 
-    /* pass 2: the depth error around the bias (RMS and |.| for the percentile) */
+/* Pass 2: the depth error around the bias (RMS, and |.| for its percentile). */
+static void depth_spread(int w, int h, double bias, metric_scratch *s, size_t nb, fs_metrics *out)
+{
 #pragma omp parallel for schedule(static)
     for (int y = 0; y < h; y++) {
         double sq = 0;
@@ -366,9 +367,11 @@ static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r
     }
     out->depth_rmse_r = nb ? sqrt(sum_rows(s->row_a, h) / (double)nb) : NAN;
     out->depth_p95_r = fs_percentile(s->vals, nb, 95);
-    robust_depth_stats(a, s, nb, out);
+}
 
-    /* pass 3: angles for their percentile */
+/* Pass 3: the angles for their percentile. */
+static void angle_p95(int w, int h, metric_scratch *s, size_t nb, fs_metrics *out)
+{
 #pragma omp parallel for schedule(static)
     for (int y = 0; y < h; y++) {
         double *v = s->vals + s->row_off[y];
@@ -378,6 +381,28 @@ static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r
         }
     }
     out->normal_p95_deg = fs_percentile(s->vals, nb, 95);
+}
+
+/* Depth and normal statistics over the pixels both cover. */
+static void depth_normal_stats(const fs_gbuffer *a, const fs_gbuffer *b, float r, metric_scratch *s, fs_metrics *out)
+{
+    int w = a->w, h = a->h;
+    pixel_errors(a, b, r, s);
+    size_t nb = 0, nu = 0;
+    for (int y = 0; y < h; y++) {
+        s->row_off[y] = nb;
+        nb += s->row_n[y];
+        nu += s->row_u[y];
+    }
+    out->n_both = nb;
+    out->n_union = nu;
+    out->mask_iou = nu ? (double)nb / (double)nu : 1.0;
+    double bias = nb ? sum_rows(s->row_a, h) / (double)nb : NAN;
+    out->depth_bias_r = bias;
+    out->normal_mean_deg = nb ? sum_rows(s->row_b, h) / (double)nb : NAN;
+    depth_spread(w, h, bias, s, nb, out);
+    robust_depth_stats(a, s, nb, out);
+    angle_p95(w, h, s, nb, out);
 }
 
 static void interior_stats(const fs_gbuffer *a, const fs_gbuffer *b, metric_scratch *s, fs_metrics *out)
