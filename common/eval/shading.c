@@ -27,6 +27,7 @@ typedef struct shade_ctx {
     float pixel_angle;    /* angular size of one pixel: ray cone spread per unit distance */
     float eps;            /* rays leave a surface beyond this distance (a thousandth of r) */
     float floor_light[3]; /* ambient + direct light on the floor */
+    fs_camera_rays rays;  /* the camera's basis, once per pass, not per pixel */
 } shade_ctx;
 
 static float mixf(float a, float b, float t) { return a + (b - a) * t; }
@@ -173,76 +174,90 @@ static void shade_water(const shade_ctx *c, const float p[3], float dist, const 
     }
 }
 
+/* The light, floor and footprint every pixel of one shading pass shares. */
+static void shade_setup(shade_ctx *c, const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, float floor_y)
+{
+    c->s = s;
+    fs_camera_rays_init(cam, &c->rays);
+    memcpy(c->fwd, c->rays.fwd, sizeof c->fwd);
+    for (int i = 0; i < 3; i++) {
+        c->eye[i] = cam->eye[i];
+        c->L[i] = s->light_dir[i];
+        c->up[i] = i == s->up_axis ? 1.0f : 0.0f;
+    }
+    fs_v3_normalize(c->L);
+    c->floor_y = floor_y;
+    c->check = s->radius > 0 ? 8.0f * s->radius : 1.0f;
+    c->eps = 1e-3f * (s->radius > 0 ? s->radius : 1.0f);
+    c->pixel_angle = 2.0f * tanf(cam->fovy_deg * (float)M_PI / 360.0f) / g->h;
+    float floor_nl = fmaxf(c->L[s->up_axis], 0.0f);
+    for (int i = 0; i < 3; i++) c->floor_light[i] = s->ambient + floor_nl * s->light_color[i];
+}
+
+/* Pixel idx's surface along view ray d: its normal made to face the camera, lit
+ * as the scene's material with the pixel's albedo. */
+static void shade_surface(const shade_ctx *c, const fs_gbuffer *g, size_t idx, const float d[3], const float *albedo,
+                          float col[3])
+{
+    float n[3], vn[3] = {g->normal[3 * idx], g->normal[3 * idx + 1], g->normal[3 * idx + 2]};
+    if (!(fs_v3_dot(vn, vn) > 1e-12f)) {
+        vn[0] = 0;
+        vn[1] = 0;
+        vn[2] = 1;
+    }
+    fs_camera_rays_from_view(&c->rays, vn, n);
+    fs_v3_normalize(n);
+    /* Normals bent slightly away at silhouettes: make them face the camera. */
+    float nv = -fs_v3_dot(n, d);
+    if (nv < 0.02f) {
+        for (int i = 0; i < 3; i++) n[i] -= (0.02f - nv) * d[i];
+        fs_v3_normalize(n);
+    }
+    float v[3] = {-d[0], -d[1], -d[2]};
+    if (c->s->material == FS_MATERIAL_OPAQUE) {
+        shade_opaque(c, n, v, albedo, col);
+        return;
+    }
+    float along = fs_v3_dot(d, c->fwd), depth = g->depth[idx], p[3];
+    float dist = isfinite(depth) && along > 0 ? depth / along : 0.0f;
+    for (int i = 0; i < 3; i++) p[i] = c->eye[i] + d[i] * dist;
+    float thick = g->thickness[idx];
+    thick = isfinite(thick) && thick > 0 ? thick : 0.0f;
+    shade_water(c, p, dist, n, d, thick, albedo, col);
+}
+
+/* Pixel (x, y): the background, and over it the surface by its coverage. sx, sy:
+ * the camera's pixels per G-buffer pixel. */
+static void shade_pixel(const shade_ctx *c, const fs_gbuffer *g, const float *color, int x, int y, float sx, float sy,
+                        float *o)
+{
+    size_t idx = (size_t)y * g->w + x;
+    float d[3], bg[3], col[3];
+    fs_camera_rays_dir(&c->rays, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
+    float t_obstacle = background(c, c->eye, d, 0.0f, bg);
+    float cov = g->coverage[idx];
+    cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
+    /* A solid in front of the fluid: the pixel shows the solid alone (a NaN depth hides too). */
+    if (cov > 0 && isfinite(t_obstacle) && !(t_obstacle * fs_v3_dot(d, c->fwd) >= g->depth[idx])) cov = 0;
+    if (cov > 0) {
+        shade_surface(c, g, idx, d, color ? color + 4 * idx : c->s->material_color, col);
+        for (int i = 0; i < 3; i++) bg[i] = mixf(bg[i], col[i], cov);
+    }
+    o[0] = bg[0];
+    o[1] = bg[1];
+    o[2] = bg[2];
+    o[3] = 1.0f;
+}
+
 void fs_shade(const fs_scene *s, const fs_camera *cam, const fs_gbuffer *g, float floor_y, float *rgba)
 {
     shade_ctx c;
-    fs_camera_rays rays; /* the basis once, not per pixel */
-    fs_camera_rays_init(cam, &rays);
-    c.s = s;
-    memcpy(c.fwd, rays.fwd, sizeof c.fwd);
-    for (int i = 0; i < 3; i++) {
-        c.eye[i] = cam->eye[i];
-        c.L[i] = s->light_dir[i];
-        c.up[i] = i == s->up_axis ? 1.0f : 0.0f;
-    }
-    fs_v3_normalize(c.L);
-    c.floor_y = floor_y;
-    c.check = s->radius > 0 ? 8.0f * s->radius : 1.0f;
-    c.eps = 1e-3f * (s->radius > 0 ? s->radius : 1.0f);
-    c.pixel_angle = 2.0f * tanf(cam->fovy_deg * (float)M_PI / 360.0f) / g->h;
-    float floor_nl = fmaxf(c.L[s->up_axis], 0.0f);
-    for (int i = 0; i < 3; i++) c.floor_light[i] = s->ambient + floor_nl * s->light_color[i];
-
+    shade_setup(&c, s, cam, g, floor_y);
     /* The G-buffer may be smaller or larger than the camera's image: scale pixel positions. */
     float sx = (float)cam->width / g->w, sy = (float)cam->height / g->h;
     int w = g->w, h = g->h;
     const float *color = fs_gbuffer_aov(g, FS_AOV_COLOR); /* NULL: the material's colour */
-
 #pragma omp parallel for schedule(static)
-    for (int y = 0; y < h; y++) {
-        for (int x = 0; x < w; x++) {
-            size_t idx = (size_t)y * w + x;
-            float d[3], bg[3], col[3];
-            fs_camera_rays_dir(&rays, (x + 0.5f) * sx, (y + 0.5f) * sy, d);
-            float t_obstacle = background(&c, c.eye, d, 0.0f, bg);
-            float cov = g->coverage[idx];
-            cov = cov > 0 ? (cov < 1 ? cov : 1) : 0; /* also NaN -> 0 */
-            /* A solid in front of the fluid: the pixel shows the solid alone (a NaN depth hides too). */
-            if (cov > 0 && isfinite(t_obstacle) && !(t_obstacle * fs_v3_dot(d, c.fwd) >= g->depth[idx])) cov = 0;
-            if (cov > 0) {
-                float n[3], vn[3] = {g->normal[3 * idx], g->normal[3 * idx + 1], g->normal[3 * idx + 2]};
-                if (!(fs_v3_dot(vn, vn) > 1e-12f)) {
-                    vn[0] = 0;
-                    vn[1] = 0;
-                    vn[2] = 1;
-                }
-                fs_camera_rays_from_view(&rays, vn, n);
-                fs_v3_normalize(n);
-                /* Normals bent slightly away at silhouettes: make them face the camera. */
-                float nv = -fs_v3_dot(n, d);
-                if (nv < 0.02f) {
-                    for (int i = 0; i < 3; i++) n[i] -= (0.02f - nv) * d[i];
-                    fs_v3_normalize(n);
-                }
-                const float *albedo = color ? color + 4 * idx : s->material_color;
-                float v[3] = {-d[0], -d[1], -d[2]};
-                if (s->material == FS_MATERIAL_OPAQUE) {
-                    shade_opaque(&c, n, v, albedo, col);
-                } else {
-                    float along = fs_v3_dot(d, c.fwd), depth = g->depth[idx], p[3];
-                    float dist = isfinite(depth) && along > 0 ? depth / along : 0.0f;
-                    for (int i = 0; i < 3; i++) p[i] = c.eye[i] + d[i] * dist;
-                    float thick = g->thickness[idx];
-                    thick = isfinite(thick) && thick > 0 ? thick : 0.0f;
-                    shade_water(&c, p, dist, n, d, thick, albedo, col);
-                }
-                for (int i = 0; i < 3; i++) bg[i] = mixf(bg[i], col[i], cov);
-            }
-            float *o = rgba + 4 * idx;
-            o[0] = bg[0];
-            o[1] = bg[1];
-            o[2] = bg[2];
-            o[3] = 1.0f;
-        }
-    }
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) shade_pixel(&c, g, color, x, y, sx, sy, rgba + 4 * ((size_t)y * w + x));
 }
