@@ -228,26 +228,36 @@ static int find_prop(const ply_elem *e, const char *const *names)
     return -1;
 }
 
-/* Reads the vertex element into p; elements before it are skipped. */
-static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, int nel, unsigned long long file_size,
-                     fs_particles *p)
+/* Where the vertex element keeps each attribute fluidsurf reads (-1: absent),
+ * and the colours' scale to [0, 1]. */
+typedef struct vertex_columns {
+    int x, y, z, vx, vy, vz, r, g, b, phase;
+    int has_v, has_c;
+    double cscale[3];
+} vertex_columns;
+
+static int find_columns(const ply_elem *v, const char *path, vertex_columns *c)
 {
-    int vi = -1;
-    for (int i = 0; i < nel && vi < 0; i++)
-        if (strcmp(el[i].name, "vertex") == 0) vi = i;
-    if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
-    const ply_elem *v = &el[vi];
     static const char *const nx[] = {"x", NULL}, *const ny[] = {"y", NULL}, *const nz[] = {"z", NULL},
                              *const nvx[] = {"vx", NULL}, *const nvy[] = {"vy", NULL}, *const nvz[] = {"vz", NULL},
                              *const nr[] = {"red", "r", "diffuse_red", NULL},
                              *const ng[] = {"green", "g", "diffuse_green", NULL},
                              *const nb[] = {"blue", "b", "diffuse_blue", NULL}, *const nph[] = {"phase", NULL};
-    int ix = find_prop(v, nx), iy = find_prop(v, ny), iz = find_prop(v, nz);
-    int ivx = find_prop(v, nvx), ivy = find_prop(v, nvy), ivz = find_prop(v, nvz);
-    int ir = find_prop(v, nr), ig = find_prop(v, ng), ib = find_prop(v, nb), iph = find_prop(v, nph);
-    if (ix < 0 || iy < 0 || iz < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY vertex element lacks x, y or z", path);
-    int has_v = ivx >= 0 && ivy >= 0 && ivz >= 0, has_c = ir >= 0 && ig >= 0 && ib >= 0;
+    c->x = find_prop(v, nx), c->y = find_prop(v, ny), c->z = find_prop(v, nz);
+    c->vx = find_prop(v, nvx), c->vy = find_prop(v, nvy), c->vz = find_prop(v, nvz);
+    c->r = find_prop(v, nr), c->g = find_prop(v, ng), c->b = find_prop(v, nb), c->phase = find_prop(v, nph);
+    if (c->x < 0 || c->y < 0 || c->z < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY vertex element lacks x, y or z", path);
+    c->has_v = c->vx >= 0 && c->vy >= 0 && c->vz >= 0, c->has_c = c->r >= 0 && c->g >= 0 && c->b >= 0;
+    for (int k = 0; k < 3; k++) {
+        int t = c->has_c ? v->props[k == 0 ? c->r : k == 1 ? c->g : c->b].type : T_NONE;
+        c->cscale[k] = t == T_U8 ? 1.0 / 255 : t == T_U16 ? 1.0 / 65535 : 1.0;
+    }
+    return FS_OK;
+}
 
+/* The elements before the vertex element (index vi), read past. */
+static int skip_elements(breader *r, const char *path, int fmt, const ply_elem *el, int vi)
+{
     double val[MAX_PROPS];
     for (int e = 0; e < vi; e++)
         if (el[e].count && !el[e].nprops) /* nothing to read: a count no data backs */
@@ -258,8 +268,12 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
             for (int k = 0; k < el[e].nprops; k++)
                 if (!read_prop(r, fmt, &el[e].props[k], &val[k]))
                     return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY element '%s'", path, el[e].name);
+    return FS_OK;
+}
 
-    /* Refuse counts the rest of the file cannot hold before allocating for them. */
+/* Refuses a vertex count the rest of the file cannot hold, before allocating for it. */
+static int check_room(const breader *r, const char *path, int fmt, const ply_elem *v, unsigned long long file_size)
+{
     unsigned long long left = file_size > r->consumed ? file_size - r->consumed : 0, min_record = 0;
     for (int k = 0; k < v->nprops; k++)
         min_record +=
@@ -267,39 +281,57 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
     if (v->count > (fmt == FMT_ASCII ? left + 1 : left) / min_record)
         return fs_fail(FS_ERR_INPUT, "%s: truncated PLY: header says %llu vertices but only %llu bytes of data follow",
                        path, v->count, left);
-    int rc =
-        fs_particles_alloc(p, (size_t)v->count,
-                           (has_v ? FS_HAS_VELOCITY : 0) | (has_c ? FS_HAS_COLOR : 0) | (iph >= 0 ? FS_HAS_PHASE : 0));
-    if (rc) return rc;
-    double cscale[3] = {1, 1, 1};
-    for (int k = 0; has_c && k < 3; k++) {
-        int t = v->props[k == 0 ? ir : k == 1 ? ig : ib].type;
-        cscale[k] = t == T_U8 ? 1.0 / 255 : t == T_U16 ? 1.0 / 65535 : 1.0;
+    return FS_OK;
+}
+
+/* Vertex i into p. */
+static int read_vertex(breader *r, const char *path, int fmt, const ply_elem *v, const vertex_columns *c,
+                       fs_particles *p, size_t i)
+{
+    double val[MAX_PROPS];
+    for (int k = 0; k < v->nprops; k++)
+        if (!read_prop(r, fmt, &v->props[k], &val[k]))
+            return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
+    p->x[i] = (float)val[c->x];
+    p->y[i] = (float)val[c->y];
+    p->z[i] = (float)val[c->z];
+    if (c->has_v) {
+        p->vx[i] = (float)val[c->vx];
+        p->vy[i] = (float)val[c->vy];
+        p->vz[i] = (float)val[c->vz];
     }
-    for (size_t i = 0; i < p->n; i++) {
-        for (int k = 0; k < v->nprops; k++)
-            if (!read_prop(r, fmt, &v->props[k], &val[k]))
-                return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
-        p->x[i] = (float)val[ix];
-        p->y[i] = (float)val[iy];
-        p->z[i] = (float)val[iz];
-        if (has_v) {
-            p->vx[i] = (float)val[ivx];
-            p->vy[i] = (float)val[ivy];
-            p->vz[i] = (float)val[ivz];
-        }
-        if (has_c) {
-            p->color[3 * i] = (float)(val[ir] * cscale[0]);
-            p->color[3 * i + 1] = (float)(val[ig] * cscale[1]);
-            p->color[3 * i + 2] = (float)(val[ib] * cscale[2]);
-        }
-        if (iph >= 0) {
-            if (!(val[iph] >= INT32_MIN && val[iph] <= INT32_MAX))
-                return fs_fail(FS_ERR_INPUT, "%s: PLY vertex %zu: phase out of range", path, i);
-            p->phase[i] = (int32_t)val[iph];
-        }
+    if (c->has_c) {
+        p->color[3 * i] = (float)(val[c->r] * c->cscale[0]);
+        p->color[3 * i + 1] = (float)(val[c->g] * c->cscale[1]);
+        p->color[3 * i + 2] = (float)(val[c->b] * c->cscale[2]);
+    }
+    if (c->phase >= 0) {
+        if (!(val[c->phase] >= INT32_MIN && val[c->phase] <= INT32_MAX))
+            return fs_fail(FS_ERR_INPUT, "%s: PLY vertex %zu: phase out of range", path, i);
+        p->phase[i] = (int32_t)val[c->phase];
     }
     return FS_OK;
+}
+
+/* Reads the vertex element into p; elements before it are skipped. */
+static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, int nel, unsigned long long file_size,
+                     fs_particles *p)
+{
+    int vi = -1;
+    for (int i = 0; i < nel && vi < 0; i++)
+        if (strcmp(el[i].name, "vertex") == 0) vi = i;
+    if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
+    const ply_elem *v = &el[vi];
+    vertex_columns c;
+    int rc = find_columns(v, path, &c);
+    if (!rc) rc = skip_elements(r, path, fmt, el, vi);
+    if (!rc) rc = check_room(r, path, fmt, v, file_size);
+    if (!rc)
+        rc = fs_particles_alloc(p, (size_t)v->count,
+                                (c.has_v ? FS_HAS_VELOCITY : 0) | (c.has_c ? FS_HAS_COLOR : 0) |
+                                    (c.phase >= 0 ? FS_HAS_PHASE : 0));
+    for (size_t i = 0; !rc && i < p->n; i++) rc = read_vertex(r, path, fmt, v, &c, p, i);
+    return rc;
 }
 
 int fs_read_ply(fs_particles *p, const char *path)
