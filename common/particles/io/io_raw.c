@@ -134,6 +134,76 @@ static int load_text(const char *path, char **out, size_t *size)
     return FS_OK;
 }
 
+/* A CSV file being read: its columns, and the rows stored so far. */
+typedef struct csv_read {
+    const char *path;
+    fs_particles *p;
+    int col[C_COUNT], have_cols, need;
+    unsigned fields;
+    size_t rows;
+} csv_read;
+
+/* The first line's columns (its names, or x, y, z and what follows when it is
+ * data), and the arrays for max_rows rows; *is_header: the line holds names. */
+static int take_columns(csv_read *c, char **field, int n, size_t max_rows, int *is_header)
+{
+    c->have_cols = 1;
+    *is_header = read_header(field, n, c->col);
+    if (c->col[C_X] < 0 || c->col[C_Y] < 0 || c->col[C_Z] < 0)
+        return fs_fail(FS_ERR_INPUT, "%s: CSV header has no x, y, z columns", c->path);
+    if (c->col[C_VX] >= 0 && c->col[C_VY] >= 0 && c->col[C_VZ] >= 0) c->fields |= FS_HAS_VELOCITY;
+    if (c->col[C_R] >= 0 && c->col[C_G] >= 0 && c->col[C_B] >= 0) c->fields |= FS_HAS_COLOR;
+    if (c->col[C_PHASE] >= 0) c->fields |= FS_HAS_PHASE;
+    for (int k = 0; k < C_COUNT; k++)
+        if (c->col[k] + 1 > c->need) c->need = c->col[k] + 1;
+    return fs_particles_alloc(c->p, max_rows, c->fields);
+}
+
+/* A data line's n fields as the next particle. */
+static int store_row(csv_read *c, char **field, int n, size_t lineno)
+{
+    fs_particles *p = c->p;
+    size_t r = c->rows;
+    if (n < c->need)
+        return fs_fail(FS_ERR_INPUT, "%s: line %zu has %d columns, expected %d", c->path, lineno, n, c->need);
+    float v[C_COUNT] = {0};
+    for (int k = 0; k < C_COUNT; k++)
+        if (c->col[k] >= 0 && !parse_float(field[c->col[k]], &v[k]))
+            return fs_fail(FS_ERR_INPUT, "%s: line %zu: bad number '%.32s'", c->path, lineno, field[c->col[k]]);
+    p->x[r] = v[C_X], p->y[r] = v[C_Y], p->z[r] = v[C_Z];
+    if (c->fields & FS_HAS_VELOCITY) p->vx[r] = v[C_VX], p->vy[r] = v[C_VY], p->vz[r] = v[C_VZ];
+    if (c->fields & FS_HAS_COLOR)
+        for (int k = 0; k < 3; k++) p->color[3 * r + k] = v[C_R + k];
+    if (c->fields & FS_HAS_PHASE) {
+        if (!(v[C_PHASE] >= -2e9f && v[C_PHASE] <= 2e9f))
+            return fs_fail(FS_ERR_INPUT, "%s: line %zu: phase out of range", c->path, lineno);
+        p->phase[r] = (int32_t)v[C_PHASE];
+    }
+    c->rows++;
+    return FS_OK;
+}
+
+/* Every line of text (LF-ended; '#' starts a comment) into c. */
+static int read_lines(csv_read *c, char *text, size_t max_rows)
+{
+    char *field[MAX_COLS];
+    size_t lineno = 0;
+    int rc = FS_OK;
+    for (char *line = text, *next; !rc && line; line = next) {
+        next = strchr(line, '\n');
+        if (next) *next++ = 0;
+        lineno++;
+        char *hash = strchr(line, '#');
+        if (hash) *hash = 0;
+        line[strcspn(line, "\r")] = 0;
+        int n = split_fields(line, field), is_header = 0;
+        if (n == 0 || (n == 1 && !field[0][0])) continue;
+        if (!c->have_cols && ((rc = take_columns(c, field, n, max_rows, &is_header)) || is_header)) continue;
+        rc = store_row(c, field, n, lineno);
+    }
+    return rc;
+}
+
 int fs_read_csv(fs_particles *p, const char *path)
 {
     char *text = NULL;
@@ -145,68 +215,13 @@ int fs_read_csv(fs_particles *p, const char *path)
         if (text[i] == '\r' && text[i + 1] != '\n') text[i] = '\n';
     size_t max_rows = 1;
     for (size_t i = 0; i < size; i++) max_rows += text[i] == '\n';
-
-    int col[C_COUNT], have_cols = 0, need = 3;
-    unsigned fields = 0;
-    size_t rows = 0, lineno = 0;
-    char *field[MAX_COLS];
-    for (char *line = text, *next; !rc && line; line = next) {
-        next = strchr(line, '\n');
-        if (next) *next++ = 0;
-        lineno++;
-        char *hash = strchr(line, '#');
-        if (hash) *hash = 0;
-        line[strcspn(line, "\r")] = 0;
-        int n = split_fields(line, field);
-        if (n == 0 || (n == 1 && !field[0][0])) continue;
-        if (!have_cols) {
-            have_cols = 1;
-            int is_header = read_header(field, n, col);
-            if (col[C_X] < 0 || col[C_Y] < 0 || col[C_Z] < 0) {
-                rc = fs_fail(FS_ERR_INPUT, "%s: CSV header has no x, y, z columns", path);
-                break;
-            }
-            if (col[C_VX] >= 0 && col[C_VY] >= 0 && col[C_VZ] >= 0) fields |= FS_HAS_VELOCITY;
-            if (col[C_R] >= 0 && col[C_G] >= 0 && col[C_B] >= 0) fields |= FS_HAS_COLOR;
-            if (col[C_PHASE] >= 0) fields |= FS_HAS_PHASE;
-            for (int c = 0; c < C_COUNT; c++)
-                if (col[c] + 1 > need) need = col[c] + 1;
-            rc = fs_particles_alloc(p, max_rows, fields);
-            if (rc || is_header) continue;
-        }
-        if (n < need) {
-            rc = fs_fail(FS_ERR_INPUT, "%s: line %zu has %d columns, expected %d", path, lineno, n, need);
-            break;
-        }
-        float v[C_COUNT] = {0};
-        for (int c = 0; c < C_COUNT && !rc; c++)
-            if (col[c] >= 0 && !parse_float(field[col[c]], &v[c]))
-                rc = fs_fail(FS_ERR_INPUT, "%s: line %zu: bad number '%.32s'", path, lineno, field[col[c]]);
-        if (rc) break;
-        p->x[rows] = v[C_X];
-        p->y[rows] = v[C_Y];
-        p->z[rows] = v[C_Z];
-        if (fields & FS_HAS_VELOCITY) {
-            p->vx[rows] = v[C_VX];
-            p->vy[rows] = v[C_VY];
-            p->vz[rows] = v[C_VZ];
-        }
-        if (fields & FS_HAS_COLOR)
-            for (int k = 0; k < 3; k++) p->color[3 * rows + k] = v[C_R + k];
-        if (fields & FS_HAS_PHASE) {
-            if (!(v[C_PHASE] >= -2e9f && v[C_PHASE] <= 2e9f)) {
-                rc = fs_fail(FS_ERR_INPUT, "%s: line %zu: phase out of range", path, lineno);
-                break;
-            }
-            p->phase[rows] = (int32_t)v[C_PHASE];
-        }
-        rows++;
-    }
+    csv_read c = {.path = path, .p = p, .need = 3};
+    rc = read_lines(&c, text, max_rows);
     free(text);
     if (rc) {
         fs_particles_free(p);
         return rc;
     }
-    p->n = rows; /* arrays were sized for every line; the unused tail is harmless */
+    p->n = c.rows; /* arrays were sized for every line; the unused tail is harmless */
     return FS_OK;
 }
