@@ -113,25 +113,81 @@ static int json_vec(const cJSON *a, int n, float *out, int positive)
     return 1;
 }
 
+/* Fluid region g of a scene file into q: a box {"min", "max"} (min < max) or a
+ * ball {"centre", "radius" > 0}, optional "color" 0..4 (d counts the colours). */
+static int json_region(const cJSON *g, region *q, scene_def *d, const char *path, int k)
+{
+    const cJSON *mn = cJSON_GetObjectItem(g, "min"), *mx = cJSON_GetObjectItem(g, "max"),
+                *c = cJSON_GetObjectItem(g, "centre"), *rad = cJSON_GetObjectItem(g, "radius"),
+                *col = cJSON_GetObjectItem(g, "color");
+    int ok = mn ? json_vec(mn, 3, q->lo, 0) && json_vec(mx, 3, q->hi, 0) && !c && !rad
+                : json_vec(c, 3, q->c, 0) && cJSON_IsNumber(rad) && rad->valuedouble > 0 && !mx;
+    for (int a = 0; ok && mn && a < 3; a++) ok = q->lo[a] < q->hi[a];
+    if (rad) q->rad = (float)rad->valuedouble;
+    if (col) {
+        ok = ok && cJSON_IsNumber(col) && col->valuedouble >= 0 && col->valuedouble <= 4 &&
+            col->valuedouble == (int)col->valuedouble;
+        q->phase = ok ? (int)col->valuedouble : 0;
+        if (q->phase + 1 > d->ncolors) d->ncolors = q->phase + 1;
+    }
+    if (ok) return FS_OK;
+    return fs_fail(FS_ERR_INPUT,
+                   "%s: fluid region %d: expected {\"min\", \"max\"} (min < max) or "
+                   "{\"centre\", \"radius\" > 0}, optional \"color\" 0..4",
+                   path, k);
+}
+
+/* One key of a scene file into d (and its obstacles into ob). */
+static int json_key(const cJSON *it, scene_def *d, fs_obstacles *ob, const char *path)
+{
+    if (!strcmp(it->string, "box"))
+        return json_vec(it, 3, d->box, 1) ? FS_OK : fs_fail(FS_ERR_INPUT, "%s: box: expected [x, y, z] > 0", path);
+    if (!strcmp(it->string, "obstacles")) return fs_obstacles_parse(it, path, ob);
+    if (strcmp(it->string, "fluid") || !cJSON_IsArray(it))
+        return fs_fail(FS_ERR_INPUT, "%s: unknown or malformed key '%s' (box, fluid, obstacles)", path, it->string);
+    const cJSON *g;
+    int rc = FS_OK;
+    cJSON_ArrayForEach(g, it)
+    {
+        if (d->nreg == 8) return fs_fail(FS_ERR_INPUT, "%s: fluid: at most 8 regions", path);
+        int k = d->nreg++;
+        if ((rc = json_region(g, &d->reg[k], d, path, k))) break;
+    }
+    return rc;
+}
+
+/* The scene file's JSON object (NULL with fs_fail set). */
+static cJSON *json_load(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
+        return NULL;
+    }
+    char *text = malloc(1 << 20);
+    size_t len = text ? fread(text, 1, (1 << 20) - 1, f) : 0;
+    fclose(f);
+    if (!text) {
+        fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
+        return NULL;
+    }
+    text[len] = 0;
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    if (root && cJSON_IsObject(root)) return root;
+    cJSON_Delete(root);
+    fs_fail(FS_ERR_INPUT, "%s: malformed JSON", path);
+    return NULL;
+}
+
 /* A scene file: {"box": [x, y, z], "fluid": [{"min": [..], "max": [..], "color": 0},
  * {"centre": [..], "radius": R, "color": 1}, ...], "obstacles": [..] (obstacles.h)}
  * in metres; particles 0 means the lattice at exactly that size, otherwise the
  * whole scene is scaled like the built-ins. */
 static int json_scene(const char *path, scene_def *d, fs_obstacles *ob, float r)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
-    char *text = malloc(1 << 20);
-    size_t len = text ? fread(text, 1, (1 << 20) - 1, f) : 0;
-    fclose(f);
-    if (!text) return fs_fail(FS_ERR_RUNTIME, "sph: out of memory");
-    text[len] = 0;
-    cJSON *root = cJSON_Parse(text);
-    free(text);
-    if (!root || !cJSON_IsObject(root)) {
-        cJSON_Delete(root);
-        return fs_fail(FS_ERR_INPUT, "%s: malformed JSON", path);
-    }
+    cJSON *root = json_load(path);
+    if (!root) return fs_error_code();
     memset(d, 0, sizeof *d);
     d->name = path;
     d->fill = 1;
@@ -139,48 +195,7 @@ static int json_scene(const char *path, scene_def *d, fs_obstacles *ob, float r)
     const cJSON *it;
     cJSON_ArrayForEach(it, root)
     {
-        if (!strcmp(it->string, "box")) {
-            if (!json_vec(it, 3, d->box, 1)) {
-                rc = fs_fail(FS_ERR_INPUT, "%s: box: expected [x, y, z] > 0", path);
-                break;
-            }
-        } else if (!strcmp(it->string, "fluid") && cJSON_IsArray(it)) {
-            const cJSON *g;
-            cJSON_ArrayForEach(g, it)
-            {
-                if (d->nreg == 8) {
-                    rc = fs_fail(FS_ERR_INPUT, "%s: fluid: at most 8 regions", path);
-                    break;
-                }
-                region *q = &d->reg[d->nreg++];
-                const cJSON *mn = cJSON_GetObjectItem(g, "min"), *mx = cJSON_GetObjectItem(g, "max"),
-                            *c = cJSON_GetObjectItem(g, "centre"), *rad = cJSON_GetObjectItem(g, "radius"),
-                            *col = cJSON_GetObjectItem(g, "color");
-                int ok = mn ? json_vec(mn, 3, q->lo, 0) && json_vec(mx, 3, q->hi, 0) && !c && !rad
-                            : json_vec(c, 3, q->c, 0) && cJSON_IsNumber(rad) && rad->valuedouble > 0 && !mx;
-                for (int a = 0; ok && mn && a < 3; a++) ok = q->lo[a] < q->hi[a];
-                if (rad) q->rad = (float)rad->valuedouble;
-                if (col) {
-                    ok = ok && cJSON_IsNumber(col) && col->valuedouble >= 0 && col->valuedouble <= 4 &&
-                        col->valuedouble == (int)col->valuedouble;
-                    q->phase = ok ? (int)col->valuedouble : 0;
-                    if (q->phase + 1 > d->ncolors) d->ncolors = q->phase + 1;
-                }
-                if (!ok) {
-                    rc = fs_fail(FS_ERR_INPUT,
-                                 "%s: fluid region %d: expected {\"min\", \"max\"} (min < max) or "
-                                 "{\"centre\", \"radius\" > 0}, optional \"color\" 0..4",
-                                 path, d->nreg - 1);
-                    break;
-                }
-            }
-            if (rc) break;
-        } else if (!strcmp(it->string, "obstacles")) {
-            if ((rc = fs_obstacles_parse(it, path, ob))) break;
-        } else {
-            rc = fs_fail(FS_ERR_INPUT, "%s: unknown or malformed key '%s' (box, fluid, obstacles)", path, it->string);
-            break;
-        }
+        if ((rc = json_key(it, d, ob, path))) break;
     }
     cJSON_Delete(root);
     if (rc) return rc;
