@@ -82,6 +82,66 @@ int fs_sph_gpu_read(fs_sph *s)
     return FS_OK;
 }
 
+/* The grid fs_grid_build() makes of these particles: the fluid never leaves
+ * the box, so the boundary shell fixes the bounds. Returns its cell count. */
+static double place_grid(const fs_sph *s, fs_sph_gpu *G)
+{
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < s->nb + s->nf; i++) {
+        float p[3] = {s->x[i], s->y[i], s->z[i]};
+        for (int a = 0; a < 3; a++) {
+            lo[a] = fminf(lo[a], p[a]);
+            hi[a] = fmaxf(hi[a], p[a]);
+        }
+    }
+    double cells = 1;
+    for (int a = 0; a < 3; a++) {
+        G->origin[a] = lo[a] - s->H;
+        G->dim[a] = (int)(floor(((double)hi[a] - G->origin[a]) / s->H) + 2);
+        cells *= G->dim[a];
+    }
+    memcpy(G->origin0, G->origin, sizeof G->origin);
+    memcpy(G->box0, s->box_lo, sizeof G->box0);
+    return cells;
+}
+
+/* run() dispatches one work group per 128 particles and per 64 cells, and the
+ * particles and the cell table are one storage block each (docs/DESIGN.md, "GL limits"). */
+static int check_limits(size_t n, double cells)
+{
+    GLint maxssbo = 0, maxgroups = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxssbo);
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxgroups);
+    if ((n + 127) / 128 > (size_t)maxgroups || ceil(cells / 64) > maxgroups)
+        return fs_fail(FS_ERR_INPUT,
+                       "sph: %zu particles (boundary included) or %.0f grid cells need more than "
+                       "GL_MAX_COMPUTE_WORK_GROUP_COUNT[x] = %d work groups on the GPU path",
+                       n, cells, maxgroups);
+    if ((cells + 1) * 4 > (double)(unsigned)maxssbo)
+        return fs_fail(FS_ERR_INPUT, "sph: %.0f grid cells exceed one shader storage buffer (%d bytes) on the GPU path",
+                       cells, maxssbo);
+    return FS_OK;
+}
+
+/* The storage buffers of n particles and the grid's cells. */
+static int make_buffers(fs_sph_gpu *G, size_t n)
+{
+    glCreateBuffers(B_N, G->buf);
+    size_t bytes[B_N] = {n * 16,
+                         n * 16,
+                         n * 4,
+                         (size_t)G->ncells * 4,
+                         ((size_t)G->ncells + 1) * 4,
+                         (size_t)G->nblocks * 4,
+                         n * 4,
+                         n * 16,
+                         n * 16,
+                         n * 8,
+                         16};
+    for (int b = 0; b < B_N; b++) glNamedBufferData(G->buf[b], (GLsizeiptr)bytes[b], NULL, GL_DYNAMIC_DRAW);
+    return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate the SPH buffers");
+}
+
 int fs_sph_gpu_init(fs_sph *s)
 {
     fs_sph_gpu *G = calloc(1, sizeof *G);
@@ -99,53 +159,12 @@ int fs_sph_gpu_init(fs_sph *s)
         const char *st[] = {prog_files[p], NULL};
         if (!(G->prog[p] = fs_program_build(st, NULL))) return FS_ERR_RUNTIME;
     }
-    /* The grid fs_grid_build() makes of these particles: the fluid never leaves
-     * the box, so the boundary shell fixes the bounds. */
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t i = 0; i < s->nb + s->nf; i++) {
-        float p[3] = {s->x[i], s->y[i], s->z[i]};
-        for (int a = 0; a < 3; a++) {
-            lo[a] = fminf(lo[a], p[a]);
-            hi[a] = fmaxf(hi[a], p[a]);
-        }
-    }
-    double cells = 1;
-    for (int a = 0; a < 3; a++) {
-        G->origin[a] = lo[a] - s->H;
-        G->dim[a] = (int)(floor(((double)hi[a] - G->origin[a]) / s->H) + 2);
-        cells *= G->dim[a];
-    }
-    memcpy(G->origin0, G->origin, sizeof G->origin);
-    memcpy(G->box0, s->box_lo, sizeof G->box0);
-    /* run() dispatches one work group per 128 particles and per 64 cells; the cell
-     * table is one storage block (docs/DESIGN.md, "GL limits") */
-    GLint maxgroups = 0;
-    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxgroups);
-    if ((n + 127) / 128 > (size_t)maxgroups || ceil(cells / 64) > maxgroups)
-        return fs_fail(FS_ERR_INPUT,
-                       "sph: %zu particles (boundary included) or %.0f grid cells need more than "
-                       "GL_MAX_COMPUTE_WORK_GROUP_COUNT[x] = %d work groups on the GPU path",
-                       n, cells, maxgroups);
-    if ((cells + 1) * 4 > (double)(unsigned)maxssbo)
-        return fs_fail(FS_ERR_INPUT, "sph: %.0f grid cells exceed one shader storage buffer (%d bytes) on the GPU path",
-                       cells, maxssbo);
+    double cells = place_grid(s, G);
+    int rc = check_limits(n, cells);
+    if (rc) return rc;
     G->ncells = (unsigned)cells;
     G->nblocks = (G->ncells + SPH_BLOCK - 1) / SPH_BLOCK;
-    glCreateBuffers(B_N, G->buf);
-    size_t bytes[B_N] = {n * 16,
-                         n * 16,
-                         n * 4,
-                         (size_t)G->ncells * 4,
-                         ((size_t)G->ncells + 1) * 4,
-                         (size_t)G->nblocks * 4,
-                         n * 4,
-                         n * 16,
-                         n * 16,
-                         n * 8,
-                         16};
-    for (int b = 0; b < B_N; b++) glNamedBufferData(G->buf[b], (GLsizeiptr)bytes[b], NULL, GL_DYNAMIC_DRAW);
-    if (glGetError() != GL_NO_ERROR) return fs_fail(FS_ERR_RUNTIME, "OpenGL: cannot allocate the SPH buffers");
-    return fs_sph_gpu_upload(s, 0, s->nb + s->nf);
+    return (rc = make_buffers(G, n)) ? rc : fs_sph_gpu_upload(s, 0, s->nb + s->nf);
 }
 
 static void set_common(const fs_sph *s, unsigned prog)
