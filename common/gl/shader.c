@@ -174,64 +174,66 @@ static char *with_counters(const char *defines)
     return s;
 }
 
-unsigned fs_program_build(const char *const *stages, const char *defines_in)
+/* Stage `name` expanded (includes, defines) and compiled into *sh; an error
+ * names the file and line of the source it came from. */
+static int compile_stage(const char *name, int first, const char *defines, srcmap *map, GLuint *sh)
 {
-    char *defines = with_counters(defines_in);
-    GLuint prog = glCreateProgram();
-    GLuint sh[8];
-    int nsh = 0;
-    char log[4096] = "";
-    srcmap map = {0};
-    for (int i = 0; stages[i] && nsh < 8; i++) {
-        GLenum type = stage_type(stages[i]);
-        if (!type) {
-            fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", stages[i]);
-            goto fail;
-        }
-        sbuf src = {0};
-        map.n = map.lines = 0;
-        int rc = expand(&src, stages[i], &map, defines, 0);
-        if (rc) {
-            free(src.s);
-            goto fail;
-        }
-        fs_shader_dump(stages[i], defines, src.s, i == 0);
-        GLuint s = glCreateShader(type);
-        const char *text = src.s;
-        glShaderSource(s, 1, &text, NULL);
-        glCompileShader(s);
+    GLenum type = stage_type(name);
+    if (!type) return fs_fail(FS_ERR_RUNTIME, "shaders/%s: unknown shader stage", name);
+    sbuf src = {0};
+    map->n = map->lines = 0;
+    int rc = expand(&src, name, map, defines, 0);
+    if (rc) {
         free(src.s);
-        sh[nsh++] = s;
-        GLint ok = 0;
-        glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            glGetShaderInfoLog(s, sizeof log, NULL, log);
-            if (getenv("FS_SHADER_DEBUG")) fprintf(stderr, "%s\n", log);
-            report(stages[i], log, &map);
-            goto fail;
-        }
-        glAttachShader(prog, s);
+        return rc;
     }
+    fs_shader_dump(name, defines, src.s, first);
+    GLuint s = *sh = glCreateShader(type);
+    const char *text = src.s;
+    glShaderSource(s, 1, &text, NULL);
+    glCompileShader(s);
+    free(src.s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (ok) return FS_OK;
+    char log[4096] = "";
+    glGetShaderInfoLog(s, sizeof log, NULL, log);
+    if (getenv("FS_SHADER_DEBUG")) fprintf(stderr, "%s\n", log);
+    report(name, log, map);
+    return FS_ERR_RUNTIME;
+}
+
+/* The program linked; a link error names the first stage. */
+static int link_program(GLuint prog, const char *first)
+{
     glLinkProgram(prog);
     GLint ok = 0;
     glGetProgramiv(prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        glGetProgramInfoLog(prog, sizeof log, NULL, log);
-        char *nl = strchr(log, '\n');
-        if (nl) *nl = 0;
-        fs_fail(FS_ERR_RUNTIME, "shaders/%s: link error: %s", stages[0], log);
-        goto fail;
+    if (ok) return FS_OK;
+    char log[4096] = "";
+    glGetProgramInfoLog(prog, sizeof log, NULL, log);
+    char *nl = strchr(log, '\n');
+    if (nl) *nl = 0;
+    return fs_fail(FS_ERR_RUNTIME, "shaders/%s: link error: %s", first, log);
+}
+
+unsigned fs_program_build(const char *const *stages, const char *defines_in)
+{
+    char *defines = with_counters(defines_in);
+    GLuint prog = glCreateProgram(), sh[8];
+    int nsh = 0, rc = FS_OK;
+    srcmap map = {0};
+    for (int i = 0; stages[i] && nsh < 8 && !rc; i++) {
+        GLuint s = 0;
+        rc = compile_stage(stages[i], i == 0, defines, &map, &s);
+        if (s) sh[nsh++] = s;
+        if (!rc) glAttachShader(prog, s);
     }
-    for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
-    free(map.file);
-    free(map.line);
-    free(defines);
-    return prog;
-fail:
+    if (!rc) rc = link_program(prog, stages[0]);
     free(defines);
     free(map.file);
     free(map.line);
     for (int i = 0; i < nsh; i++) glDeleteShader(sh[i]);
-    glDeleteProgram(prog);
-    return 0;
+    if (rc) glDeleteProgram(prog);
+    return rc ? 0 : prog;
 }
