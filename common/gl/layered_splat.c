@@ -152,8 +152,8 @@ static int upload_particles(fs_layered_splat *s, const fs_particles *p)
     return rc;
 }
 
-int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, const fs_particles *p, const fs_field *f,
-                         unsigned tex3d)
+/* The run's inputs make sense and the grid fits this context's viewport and layers. */
+static int check_run(const fs_density_grid *shape, const fs_field *f, unsigned tex3d)
 {
     if (!tex3d) return fs_fail(FS_ERR_INPUT, "layered splat: no 3D texture");
     if (!(f->H > 0) || !(f->volume > 0) || !isfinite(f->H) || !isfinite(f->volume))
@@ -166,12 +166,54 @@ int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, cons
     if (dim[0] > maxvp[0] || dim[1] > maxvp[1] || dim[2] > maxlayers)
         return fs_fail(FS_ERR_INPUT, "layered splat: %dx%dx%d points exceed this context's %dx%d viewport or %d layers",
                        dim[0], dim[1], dim[2], maxvp[0], maxvp[1], maxlayers);
+    return FS_OK;
+}
+
+/* Additive blending into every layer of the texture, with the grid's and the field's uniforms. */
+static void begin_splat(const fs_layered_splat *s, unsigned prog, const fs_density_grid *shape, const fs_field *f)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, s->fbo);
+    glViewport(0, 0, shape->dim[0], shape->dim[1]);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glUseProgram(prog);
+    glBindVertexArray(s->vao);
+    glUniform3f(glGetUniformLocation(prog, "u_origin"), shape->origin[0], shape->origin[1], shape->origin[2]);
+    glUniform1f(glGetUniformLocation(prog, "u_spacing"), shape->spacing);
+    glUniform3iv(glGetUniformLocation(prog, "u_dim"), 1, shape->dim);
+    glUniform1f(glGetUniformLocation(prog, "u_H"), f->H);
+    glUniform1f(glGetUniformLocation(prog, "u_V"), f->volume);
+    glUniform1i(glGetUniformLocation(prog, "u_kernel"), (int)f->kernel);
+}
+
+/* Every particle drawn once per pass of per_draw layers. */
+static void draw_passes(fs_layered_splat *s, unsigned prog, size_t n, int passes, int per_draw)
+{
+    const int u_layer0 = glGetUniformLocation(prog, "u_layer0");
+    for (int pass = 0; pass < passes; pass++) {
+        glUniform1i(u_layer0, pass * per_draw);
+        for (int b = 0; b < s->parts.n; b++) {
+            size_t chunk = s->parts.chunk, lo = (size_t)b * chunk, hi = lo + chunk < n ? lo + chunk : n;
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->parts.bufs[b]);
+            glDrawArrays(GL_POINTS, 0, (GLsizei)(hi - lo));
+            s->draws += hi - lo;
+        }
+    }
+}
+
+int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, const fs_particles *p, const fs_field *f,
+                         unsigned tex3d)
+{
+    int rc = check_run(shape, f, tex3d);
+    if (rc) return rc;
     s->draws = 0;
     const float zero = 0.0f;
     glClearTexImage(tex3d, 0, GL_RED, GL_FLOAT, &zero);
     if (p->n == 0) return FS_OK;
-    int rc = upload_particles(s, p);
-    if (rc) return rc;
+    if ((rc = upload_particles(s, p))) return rc;
+    const int *dim = shape->dim;
     glNamedFramebufferTexture(s->fbo, GL_COLOR_ATTACHMENT0, tex3d, 0); /* layered: the whole 3D texture */
     if (glCheckNamedFramebufferStatus(s->fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         return fs_fail(FS_ERR_RUNTIME, "layered splat: layered R32F framebuffer of %dx%dx%d is incomplete", dim[0],
@@ -183,31 +225,8 @@ int fs_layered_splat_run(fs_layered_splat *s, const fs_density_grid *shape, cons
     int per_draw = inv * s->layers, passes = (reach + per_draw - 1) / per_draw;
     unsigned prog = program(s, inv);
     if (!prog) return FS_ERR_RUNTIME;
-
-    glBindFramebuffer(GL_FRAMEBUFFER, s->fbo);
-    glViewport(0, 0, dim[0], dim[1]);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glUseProgram(prog);
-    glBindVertexArray(s->vao);
-    glUniform3f(glGetUniformLocation(prog, "u_origin"), shape->origin[0], shape->origin[1], shape->origin[2]);
-    glUniform1f(glGetUniformLocation(prog, "u_spacing"), shape->spacing);
-    glUniform3iv(glGetUniformLocation(prog, "u_dim"), 1, dim);
-    glUniform1f(glGetUniformLocation(prog, "u_H"), f->H);
-    glUniform1f(glGetUniformLocation(prog, "u_V"), f->volume);
-    glUniform1i(glGetUniformLocation(prog, "u_kernel"), (int)f->kernel);
-    const int u_layer0 = glGetUniformLocation(prog, "u_layer0");
-    for (int pass = 0; pass < passes; pass++) {
-        glUniform1i(u_layer0, pass * per_draw);
-        for (int b = 0; b < s->parts.n; b++) {
-            size_t chunk = s->parts.chunk, lo = (size_t)b * chunk, hi = lo + chunk < p->n ? lo + chunk : p->n;
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, s->parts.bufs[b]);
-            glDrawArrays(GL_POINTS, 0, (GLsizei)(hi - lo));
-            s->draws += hi - lo;
-        }
-    }
+    begin_splat(s, prog, shape, f);
+    draw_passes(s, prog, p->n, passes, per_draw);
     glDisable(GL_BLEND);
     glBindVertexArray(0);
     glUseProgram(0);
