@@ -192,13 +192,11 @@ static int upload_slices(surfels *s, const object_box *box, const fs_caustics_se
     return FS_OK;
 }
 
-/* The look: the scene's light and material; the caustics on the sample planes
- * (the floor, and with the object the planes slicing it up to its top); the
- * sliced object images. */
-static int build_look(surfels *s, surfel_look *l, fs_stages *t)
+/* The scene's light (normalised; straight up when it has none) and material. */
+static void scene_look(const surfels *s, surfel_look *l)
 {
     const fs_scene *sc = &s->scene;
-    int up = sc->up_axis, a = (up + 1) % 3, b = (up + 2) % 3;
+    int up = sc->up_axis;
     memset(l, 0, sizeof *l);
     memcpy(l->light_dir, sc->light_dir, sizeof l->light_dir);
     float ln = fs_v3_len(l->light_dir);
@@ -212,43 +210,62 @@ static int build_look(surfels *s, surfel_look *l, fs_stages *t)
     l->checker = sc->background == FS_BACKGROUND_CHECKER;
     l->floor_h = s->floor_h;
     l->check = sc->radius > 0 ? 8.0f * sc->radius : 1.0f;
-    if (!l->checker) return FS_OK; /* no floor: nothing under the water */
-    /* The maps span the grid's horizontal extent grown by the sideways reach
-     * of refracted light down to the floor. */
+}
+
+/* The caustics' setup: the light, and maps spanning the grid's horizontal
+ * extent grown by the sideways reach of refracted light down to the floor, one
+ * sample plane on it. */
+static void caustics_setup(const surfels *s, surfel_look *l, fs_caustics_setup *cs)
+{
     const fs_density_grid *g = &s->dg;
+    int up = l->up_axis, a = (up + 1) % 3, b = (up + 2) % 3;
     float top = g->origin[up] + (g->dim[up] - 1) * g->spacing;
     float reach = (top - l->floor_h) * 0.5f;
+    memset(cs, 0, sizeof *cs);
+    cs->up_axis = up;
+    memcpy(cs->light_dir, l->light_dir, sizeof cs->light_dir);
+    memcpy(cs->light_color, l->light_color, sizeof cs->light_color);
+    cs->ior = l->ior;
+    memcpy(cs->extinction, l->extinction, sizeof cs->extinction);
+    cs->rect_min[0] = g->origin[a] - reach;
+    cs->rect_min[1] = g->origin[b] - reach;
+    cs->rect_max[0] = g->origin[a] + (g->dim[a] - 1) * g->spacing + reach;
+    cs->rect_max[1] = g->origin[b] + (g->dim[b] - 1) * g->spacing + reach;
+    cs->top = top + g->spacing;
+    cs->screen_res = s->params.caustic_screen;
+    cs->plane_res = s->params.caustic_map;
+    cs->nplanes = 1;
+    cs->plane_height[0] = l->floor_h;
+    memcpy(l->rect_min, cs->rect_min, sizeof l->rect_min);
+    memcpy(l->rect_max, cs->rect_max, sizeof l->rect_max);
+}
+
+/* The box under the water, when there is one: sample planes evenly from the
+ * floor to its top. 1 when placed. */
+static int object_planes(const surfels *s, surfel_look *l, fs_caustics_setup *cs, object_box *box)
+{
+    if (s->params.object != OBJECT_BOX) return 0;
+    *box = place_object(s->fr.p, l->up_axis, l->floor_h);
+    if (!(box->top > box->bottom)) return 0;
+    int n = s->params.object_slices;
+    cs->nplanes = n + 1;
+    for (int k = 0; k <= n; k++) cs->plane_height[k] = box->bottom + (box->top - box->bottom) * k / n;
+    l->nslices = n;
+    memcpy(l->slice_h, cs->plane_height, (size_t)(n + 1) * sizeof(float));
+    return 1;
+}
+
+/* The look: the scene's light and material; the caustics on the sample planes
+ * (the floor, and with the object the planes slicing it up to its top); the
+ * sliced object images. */
+static int build_look(surfels *s, surfel_look *l, fs_stages *t)
+{
+    scene_look(s, l);
+    if (!l->checker) return FS_OK; /* no floor: nothing under the water */
     fs_caustics_setup cs;
-    memset(&cs, 0, sizeof cs);
-    cs.up_axis = up;
-    memcpy(cs.light_dir, l->light_dir, sizeof cs.light_dir);
-    memcpy(cs.light_color, l->light_color, sizeof cs.light_color);
-    cs.ior = l->ior;
-    memcpy(cs.extinction, l->extinction, sizeof cs.extinction);
-    cs.rect_min[0] = g->origin[a] - reach;
-    cs.rect_min[1] = g->origin[b] - reach;
-    cs.rect_max[0] = g->origin[a] + (g->dim[a] - 1) * g->spacing + reach;
-    cs.rect_max[1] = g->origin[b] + (g->dim[b] - 1) * g->spacing + reach;
-    cs.top = top + g->spacing;
-    cs.screen_res = s->params.caustic_screen;
-    cs.plane_res = s->params.caustic_map;
-    cs.nplanes = 1;
-    cs.plane_height[0] = l->floor_h;
-    memcpy(l->rect_min, cs.rect_min, sizeof l->rect_min);
-    memcpy(l->rect_max, cs.rect_max, sizeof l->rect_max);
+    caustics_setup(s, l, &cs);
     object_box box;
-    int object = s->params.object == OBJECT_BOX;
-    if (object) {
-        box = place_object(s->fr.p, up, l->floor_h);
-        object = box.top > box.bottom;
-    }
-    if (object) { /* sample planes evenly from the floor to the box's top */
-        int n = s->params.object_slices;
-        cs.nplanes = n + 1;
-        for (int k = 0; k <= n; k++) cs.plane_height[k] = box.bottom + (box.top - box.bottom) * k / n;
-        l->nslices = n;
-        memcpy(l->slice_h, cs.plane_height, (size_t)(n + 1) * sizeof(float));
-    }
+    int object = object_planes(s, l, &cs, &box);
     const float *maps = NULL;
     if (s->params.caustics) {
         double t0 = fs_gl_stage_start();
