@@ -1,6 +1,6 @@
 /* fluidsurf_mesh_build: the mesh method's surface of one particle set as a
  * triangle mesh the caller reads, without rendering, as `fluidsurf mesh` builds
- * it (cli/cmd_mesh.c): the scene's field sampled near the particles and meshed
+ * it (cli/commands/cmd_mesh.c): the scene's field sampled near the particles and meshed
  * by OpenVDB's volumeToMesh (methods/mesh/mesh_build.h). Without OpenVDB (the
  * lean build) the method does not exist and the function refuses in one line. */
 #include "api_internal.h"
