@@ -270,7 +270,7 @@ static int place_rows(const fs_panel_spec *s, panel_geom *g, int right)
 static int panel_geom_of(const fs_panel_spec *s, panel_geom *g)
 {
     memset(g, 0, sizeof *g);
-    int max_h, rc = check_tiles(s, &max_h);
+    int max_h = 0, rc = check_tiles(s, &max_h);
     if (rc) return rc;
     g->font = figure_font(max_h);
     g->title_font = g->font * 4 / 3;

@@ -322,7 +322,7 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
         if (strcmp(el[i].name, "vertex") == 0) vi = i;
     if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
     const ply_elem *v = &el[vi];
-    vertex_columns c;
+    vertex_columns c = {0};
     int rc = find_columns(v, path, &c);
     if (!rc) rc = skip_elements(r, path, fmt, el, vi);
     if (!rc) rc = check_room(r, path, fmt, v, file_size);
