@@ -13,7 +13,7 @@
 #include "fs_test.h"
 #include "gl_context.h"
 #include "particle_io.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "scene.h"
 #include "test_render.h"
 #include <math.h>
