@@ -153,30 +153,33 @@ static int channel_rank(const char *n)
     return 4;
 }
 
-static int read_pixels(exr_context_t f, const char *path, fs_image *img)
+/* The part's layout: scanline storage, its data window and channels, refused as bad input
+ * before anything is allocated when a corrupt or hostile header declares too much. */
+static int read_layout(exr_context_t f, const char *path, exr_attr_box2i_t *dw, const exr_attr_chlist_t **chl)
 {
     exr_storage_t st;
-    exr_attr_box2i_t dw;
-    const exr_attr_chlist_t *chl = NULL;
     exr_result_t er = exr_get_storage(f, 0, &st);
-    if (!er) er = exr_get_data_window(f, 0, &dw);
-    if (!er) er = exr_get_channels(f, 0, &chl);
+    if (!er) er = exr_get_data_window(f, 0, dw);
+    if (!er) er = exr_get_channels(f, 0, chl);
     if (er) return fs_fail(FS_ERR_INPUT, "%s: %s", path, why(er));
     if (st != EXR_STORAGE_SCANLINE)
         return fs_fail(FS_ERR_INPUT, "%s: only scanline EXR files are read (this one is tiled or deep)", path);
-    int64_t w = (int64_t)dw.max.x - dw.min.x + 1, h = (int64_t)dw.max.y - dw.min.y + 1;
-    int nch = chl ? chl->num_channels : 0;
+    int64_t w = (int64_t)dw->max.x - dw->min.x + 1, h = (int64_t)dw->max.y - dw->min.y + 1;
+    int nch = *chl ? (*chl)->num_channels : 0;
     if (w <= 0 || h <= 0 || nch <= 0) return fs_fail(FS_ERR_INPUT, "%s: image has no pixels", path);
-    /* A corrupt or hostile header's data window: refused as bad input before allocating. */
     if (w > (1 << 20) || h > (1 << 20) || w * h > ((int64_t)1 << 31) ||
         (uint64_t)(w * h) > SIZE_MAX / sizeof(float) / (uint64_t)nch)
         return fs_fail(FS_ERR_INPUT, "%s: image of %lldx%lld is too large", path, (long long)w, (long long)h);
     /* what the header declares must be what the file's bytes can unpack to (zlib: at most 1032:1) */
     if (fs_image_fits_file(path, (double)w, (double)h, nch)) return FS_ERR_INPUT;
-    /* order[k]: the file's channel k goes to output channel order[k]. */
-    int order[1024];
     if (nch > 1024) return fs_fail(FS_ERR_INPUT, "%s: %d channels (at most 1024 are read)", path, nch);
-    int next = 0;
+    return FS_OK;
+}
+
+/* order[k]: the file's channel k goes to output channel order[k]. */
+static int channel_order(const exr_attr_chlist_t *chl, const char *path, int *order)
+{
+    int nch = chl->num_channels, next = 0;
     for (int rank = 0; rank <= 4; rank++)
         for (int k = 0; k < nch; k++) {
             int r = channel_rank(chl->entries[k].name.str);
@@ -184,45 +187,79 @@ static int read_pixels(exr_context_t f, const char *path, fs_image *img)
             if (chl->entries[k].x_sampling != 1 || chl->entries[k].y_sampling != 1)
                 return fs_fail(FS_ERR_INPUT, "%s: subsampled channel '%s' is not read", path, chl->entries[k].name.str);
         }
-    img->w = (int)w;
-    img->h = (int)h;
+    return FS_OK;
+}
+
+static int alloc_image(fs_image *img, const exr_attr_box2i_t *dw, const exr_attr_chlist_t *chl, const int *order,
+                       const char *path)
+{
+    int w = dw->max.x - dw->min.x + 1, h = dw->max.y - dw->min.y + 1, nch = chl->num_channels;
+    img->w = w;
+    img->h = h;
     img->nch = nch;
     img->pix = malloc((size_t)w * h * nch * sizeof(float));
     img->chnames = calloc((size_t)nch, sizeof(char *));
     int ok = img->pix && img->chnames;
     for (int k = 0; ok && k < nch; k++) ok = (img->chnames[order[k]] = strdup(chl->entries[k].name.str)) != NULL;
-    if (!ok) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%dx%d image", path, (int)w, (int)h, nch);
+    if (!ok) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for a %dx%dx%d image", path, w, h, nch);
+    return FS_OK;
+}
+
+/* Points each decoded channel of the chunk at its place in img (NULL: a channel not read). */
+static void point_channels(exr_decode_pipeline_t *dec, const exr_attr_chlist_t *chl, const int *order, float *first_row,
+                           const fs_image *img)
+{
+    size_t row = (size_t)img->w * img->nch;
+    for (int k = 0; k < dec->channel_count; k++) {
+        exr_coding_channel_info_t *ch = &dec->channels[k];
+        int c = -1;
+        for (int j = 0; j < img->nch && c < 0; j++)
+            if (!strcmp(chl->entries[j].name.str, ch->channel_name)) c = order[j];
+        if (c < 0) {
+            ch->decode_to_ptr = NULL;
+            continue;
+        }
+        ch->decode_to_ptr = (uint8_t *)(first_row + c);
+        ch->user_pixel_stride = (int32_t)(img->nch * sizeof(float));
+        ch->user_line_stride = (int32_t)(row * sizeof(float));
+        ch->user_data_type = EXR_PIXEL_FLOAT;
+        ch->user_bytes_per_element = sizeof(float);
+    }
+}
+
+/* Decodes the part chunk by chunk into img's pixels, every channel as float. */
+static exr_result_t decode_chunks(exr_context_t f, const exr_attr_box2i_t *dw, const exr_attr_chlist_t *chl,
+                                  const int *order, fs_image *img)
+{
     int32_t lines = 0;
-    er = exr_get_scanlines_per_chunk(f, 0, &lines);
+    exr_result_t er = exr_get_scanlines_per_chunk(f, 0, &lines);
     exr_decode_pipeline_t dec;
     memset(&dec, 0, sizeof dec);
     int started = 0;
-    size_t row = (size_t)w * nch;
-    for (int64_t y = dw.min.y; !er && y <= dw.max.y; y += lines) {
+    for (int64_t y = dw->min.y; !er && y <= dw->max.y; y += lines) {
         exr_chunk_info_t ci;
         er = exr_read_scanline_chunk_info(f, 0, (int)y, &ci);
         if (!er) er = started ? exr_decoding_update(f, 0, &ci, &dec) : exr_decoding_initialize(f, 0, &ci, &dec);
         if (er) break;
-        for (int k = 0; k < dec.channel_count; k++) {
-            exr_coding_channel_info_t *ch = &dec.channels[k];
-            int c = -1;
-            for (int j = 0; j < nch && c < 0; j++)
-                if (!strcmp(chl->entries[j].name.str, ch->channel_name)) c = order[j];
-            if (c < 0) {
-                ch->decode_to_ptr = NULL;
-                continue;
-            }
-            ch->decode_to_ptr = (uint8_t *)(img->pix + (size_t)(ci.start_y - dw.min.y) * row + c);
-            ch->user_pixel_stride = (int32_t)(nch * sizeof(float));
-            ch->user_line_stride = (int32_t)(row * sizeof(float));
-            ch->user_data_type = EXR_PIXEL_FLOAT;
-            ch->user_bytes_per_element = sizeof(float);
-        }
+        point_channels(&dec, chl, order, img->pix + (size_t)(ci.start_y - dw->min.y) * img->w * img->nch, img);
         if (!started) er = exr_decoding_choose_default_routines(f, 0, &dec);
         started = 1;
         if (!er) er = exr_decoding_run(f, 0, &dec);
     }
     if (started) exr_decoding_destroy(f, &dec);
+    return er;
+}
+
+static int read_pixels(exr_context_t f, const char *path, fs_image *img)
+{
+    exr_attr_box2i_t dw;
+    const exr_attr_chlist_t *chl = NULL;
+    int order[1024];
+    int rc = read_layout(f, path, &dw, &chl);
+    if (!rc) rc = channel_order(chl, path, order);
+    if (!rc) rc = alloc_image(img, &dw, chl, order, path);
+    if (rc) return rc;
+    exr_result_t er = decode_chunks(f, &dw, chl, order, img);
     if (er) return fs_fail(FS_ERR_INPUT, "%s: %s", path, why(er));
     return FS_OK;
 }

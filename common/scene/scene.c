@@ -449,77 +449,112 @@ static char *read_all(const char *path, size_t *len)
     return buf;
 }
 
-int fs_scene_load(fs_scene *s, const char *path)
+/* The scene file's JSON tree, its bytes' hash kept in s (NULL after an error). */
+static cJSON *parse_file(fs_scene *s, const char *path)
 {
-    fs_scene_defaults(s);
-    if (strlen(path) >= sizeof s->path) return fs_fail(FS_ERR_INPUT, "%s: path too long", path);
-    strcpy(s->path, path);
     size_t len = 0;
     char *text = read_all(path, &len);
-    if (!text) return fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
+    if (!text) {
+        fs_fail(FS_ERR_INPUT, "%s: cannot read the scene file", path);
+        return NULL;
+    }
     s->hash = fs_fnv1a(FS_SCENE_HASH_START, text, len);
     if (!len) {
         free(text);
-        return fs_fail(FS_ERR_INPUT, "%s: empty scene file", path);
+        fs_fail(FS_ERR_INPUT, "%s: empty scene file", path);
+        return NULL;
     }
     const char *err = NULL;
     cJSON *root = cJSON_ParseWithOpts(text, &err, 1);
     if (!root) {
         int line = 1;
         for (const char *p = text; err && p < err; p++) line += *p == '\n';
-        free(text);
-        return fs_fail(FS_ERR_INPUT, "%s: malformed JSON near line %d", path, line);
+        fs_fail(FS_ERR_INPUT, "%s: malformed JSON near line %d", path, line);
     }
     free(text);
-    jctx c = {path, 0};
-    if (!cJSON_IsObject(root)) bad(&c, "(top level)", "must be an object");
+    return root;
+}
+
+/* The field's entries: the particles' radius and volume, the kernel, its support and iso. */
+static void parse_field(fs_scene *s, jctx *c, const cJSON *root)
+{
+    if (cJSON_HasObjectItem(root, "radius")) s->r_source = FS_R_SCENE;
+    get_num(c, root, "radius", &s->radius, 1e-9, 1e9);
+    get_num(c, root, "volume_scale", &s->volume_scale, 1e-6, 1e6);
+    get_num(c, root, "support", &s->support_r, 0.5, 64);
+    get_num(c, root, "iso", &s->iso, 1e-6, 1e6);
+    const char *k = get_str(c, root, "kernel");
+    if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0)
+        bad(c, "kernel", "must be cubic, poly6, spiky or wyvill");
+}
+
+static void parse_up(fs_scene *s, jctx *c, const cJSON *root)
+{
+    const char *up = get_str(c, root, "up");
+    if (!up) return;
+    s->up_source = FS_UP_SCENE;
+    if (strlen(up) == 1 && up[0] >= 'x' && up[0] <= 'z') s->up_axis = up[0] - 'x';
+    else if (!strcmp(up, "auto")) s->up_source = FS_UP_AUTO;
+    else bad(c, "up", "must be x, y, z or auto");
+}
+
+static void parse_light(fs_scene *s, jctx *c, const cJSON *v)
+{
+    static const char *const lkeys[] = {"direction", "color", "ambient", NULL};
+    if (!cJSON_IsObject(v)) {
+        bad(c, "light", "must be an object");
+        return;
+    }
+    check_keys(c, v, "light", lkeys);
+    get_vec3(c, v, "direction", s->light_dir);
+    get_vec3(c, v, "color", s->light_color);
+    get_num(c, v, "ambient", &s->ambient, 0, 10);
+    float n = fs_v3_len(s->light_dir);
+    if (!c->rc && n < 1e-12f) bad(c, "direction", "must not be zero");
+    else
+        for (int i = 0; i < 3; i++) s->light_dir[i] /= n;
+}
+
+static void parse_background(fs_scene *s, jctx *c, const cJSON *root)
+{
+    const char *bg = get_str(c, root, "background");
+    if (!bg) return;
+    if (!strcmp(bg, "sky")) s->background = FS_BACKGROUND_SKY;
+    else if (!strcmp(bg, "checker")) s->background = FS_BACKGROUND_CHECKER;
+    else bad(c, "background", "must be sky or checker");
+}
+
+/* The scene's entries in the order the errors are reported. */
+static void parse_scene(fs_scene *s, jctx *c, const cJSON *root)
+{
     static const char *const keys[] = {"particles",  "radius",    "volume_scale", "kernel",      "support",
                                        "iso",        "up",        "camera",       "light",       "material",
                                        "background", "obstacles", "methods",      "description", NULL};
-    if (!c.rc) check_keys(&c, root, NULL, keys);
+    if (!cJSON_IsObject(root)) bad(c, "(top level)", "must be an object");
+    if (!c->rc) check_keys(c, root, NULL, keys);
     const cJSON *v;
-    if (!c.rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(&c, "particles", "is missing");
-    else if (!c.rc) parse_particles(s, &c, v);
-    if (cJSON_HasObjectItem(root, "radius")) s->r_source = FS_R_SCENE;
-    get_num(&c, root, "radius", &s->radius, 1e-9, 1e9);
-    get_num(&c, root, "volume_scale", &s->volume_scale, 1e-6, 1e6);
-    get_num(&c, root, "support", &s->support_r, 0.5, 64);
-    get_num(&c, root, "iso", &s->iso, 1e-6, 1e6);
-    const char *k = get_str(&c, root, "kernel");
-    if (k && (int)(s->kernel = (fs_kernel)fs_kernel_from_name(k)) < 0)
-        bad(&c, "kernel", "must be cubic, poly6, spiky or wyvill");
-    const char *up = get_str(&c, root, "up");
-    if (up) {
-        s->up_source = FS_UP_SCENE;
-        if (strlen(up) == 1 && up[0] >= 'x' && up[0] <= 'z') s->up_axis = up[0] - 'x';
-        else if (!strcmp(up, "auto")) s->up_source = FS_UP_AUTO;
-        else bad(&c, "up", "must be x, y, z or auto");
-    }
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "camera"))) parse_camera(s, &c, v);
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "light"))) {
-        static const char *const lkeys[] = {"direction", "color", "ambient", NULL};
-        if (!cJSON_IsObject(v)) bad(&c, "light", "must be an object");
-        else {
-            check_keys(&c, v, "light", lkeys);
-            get_vec3(&c, v, "direction", s->light_dir);
-            get_vec3(&c, v, "color", s->light_color);
-            get_num(&c, v, "ambient", &s->ambient, 0, 10);
-            float n = fs_v3_len(s->light_dir);
-            if (!c.rc && n < 1e-12f) bad(&c, "direction", "must not be zero");
-            else
-                for (int i = 0; i < 3; i++) s->light_dir[i] /= n;
-        }
-    }
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "material"))) parse_material(s, &c, v);
-    const char *bg = get_str(&c, root, "background");
-    if (bg) {
-        if (!strcmp(bg, "sky")) s->background = FS_BACKGROUND_SKY;
-        else if (!strcmp(bg, "checker")) s->background = FS_BACKGROUND_CHECKER;
-        else bad(&c, "background", "must be sky or checker");
-    }
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "obstacles")))
-        c.rc = fs_obstacles_parse(v, path, &s->obstacles);
-    if (!c.rc && (v = cJSON_GetObjectItemCaseSensitive(root, "methods"))) parse_methods(s, &c, v);
+    if (!c->rc && !(v = cJSON_GetObjectItemCaseSensitive(root, "particles"))) bad(c, "particles", "is missing");
+    else if (!c->rc) parse_particles(s, c, v);
+    parse_field(s, c, root);
+    parse_up(s, c, root);
+    if (!c->rc && (v = cJSON_GetObjectItemCaseSensitive(root, "camera"))) parse_camera(s, c, v);
+    if (!c->rc && (v = cJSON_GetObjectItemCaseSensitive(root, "light"))) parse_light(s, c, v);
+    if (!c->rc && (v = cJSON_GetObjectItemCaseSensitive(root, "material"))) parse_material(s, c, v);
+    parse_background(s, c, root);
+    if (!c->rc && (v = cJSON_GetObjectItemCaseSensitive(root, "obstacles")))
+        c->rc = fs_obstacles_parse(v, c->path, &s->obstacles);
+    if (!c->rc && (v = cJSON_GetObjectItemCaseSensitive(root, "methods"))) parse_methods(s, c, v);
+}
+
+int fs_scene_load(fs_scene *s, const char *path)
+{
+    fs_scene_defaults(s);
+    if (strlen(path) >= sizeof s->path) return fs_fail(FS_ERR_INPUT, "%s: path too long", path);
+    strcpy(s->path, path);
+    cJSON *root = parse_file(s, path);
+    if (!root) return FS_ERR_INPUT;
+    jctx c = {path, 0};
+    parse_scene(s, &c, root);
     cJSON_Delete(root);
     return c.rc;
 }
