@@ -13,7 +13,7 @@
 #include "counters.h"
 #include "fs_error.h"
 #include "fs_test.h"
-#include "registry.h"
+#include "builtin_methods.h"
 #include "run.h"
 #include "scene.h"
 #include "test_render.h"
