@@ -1,13 +1,28 @@
-/* Images of the library: a rendered or read G-buffer, its stages and
- * provenance, and the metrics between two of them. */
+/* Images of the library: a rendered or read G-buffer (with the file's provenance
+ * and camera), or one of the caller's arrays, its stages and provenance. */
 #include "api_internal.h"
 #include "fs_error.h"
-#include "metrics.h"
-#include "obstacle_mask.h"
+#include "image_io.h"
+#include "output_file.h"
 #include "render_output.h"
+#include "camera_text.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* The file's provenance, and the camera it names (a file without one has none). */
+static int keep_file_facts(const char *path, fluidsurf_image *im)
+{
+    if (fs_read_image_provenance(path, &im->prov) < 0) return FS_ERR_INPUT;
+    const char *cam = fs_provenance_get(&im->prov, "camera");
+    if (!cam) return FLUIDSURF_OK;
+    unsigned given;
+    int rc = fs_camera_parse(cam, path, &im->camera, &given);
+    if (rc) return rc;
+    im->has_camera = 1;
+    return FLUIDSURF_OK;
+}
 
 int fluidsurf_image_read(const char *path, fluidsurf_image **out)
 {
@@ -17,8 +32,9 @@ int fluidsurf_image_read(const char *path, fluidsurf_image **out)
     *out = NULL;
     fluidsurf_image *im = calloc(1, sizeof *im);
     if (!im) return fs_fail(FS_ERR_RUNTIME, "out of memory");
-    if ((rc = fs_read_render(path, &im->im.g, &im->im.rgba, &im->radius))) {
-        free(im);
+    if (!(rc = fs_read_render(path, &im->im.g, &im->im.rgba, &im->radius))) rc = keep_file_facts(path, im);
+    if (rc) {
+        fluidsurf_image_free(im);
         return rc;
     }
     *out = im;
@@ -56,14 +72,66 @@ int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *n
     return FLUIDSURF_OK;
 }
 
-int fluidsurf_image_set_solid_depth(fluidsurf_image *im, const float *solid_depth)
+/* Names an AOV may not take: the core layers and the EXR's R G B A channels. */
+static int core_name(const char *name)
+{
+    static const char *const core[] = {"depth", "normal", "thickness", "coverage", "rgba", "R", "G", "B", "A"};
+    for (size_t i = 0; i < sizeof core / sizeof *core; i++)
+        if (!strcmp(core[i], name)) return 1;
+    return 0;
+}
+
+int fluidsurf_image_set_layer(fluidsurf_image *im, const char *name, int ncomp, const float *data)
 {
     int rc;
-    if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(solid_depth, "solid_depth"))) return rc;
-    float *have = fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH);
-    if (!have && (rc = fs_gbuffer_add_aov(&im->im.g, FS_AOV_SOLID_DEPTH, 1))) return rc;
-    copy_layer(fs_gbuffer_aov(&im->im.g, FS_AOV_SOLID_DEPTH), solid_depth, (size_t)im->im.g.w * im->im.g.h);
+    if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(name, "name")) || (rc = fs_api_check(data, "data")))
+        return rc;
+    if (core_name(name)) return fs_fail(FS_ERR_INPUT, "layer '%s': a core layer, set when the image is made", name);
+    fs_gbuffer *g = &im->im.g;
+    if ((rc = fs_gbuffer_add_aov(g, name, ncomp))) return rc; /* one of this name is kept, and written over */
+    copy_layer(fs_gbuffer_aov(g, name), data, (size_t)ncomp * g->w * g->h);
     return FLUIDSURF_OK;
+}
+
+int fluidsurf_image_set_solid_depth(fluidsurf_image *im, const float *solid_depth)
+{
+    return fluidsurf_image_set_layer(im, FS_AOV_SOLID_DEPTH, 1, solid_depth);
+}
+
+int fs_api_set_provenance(fs_provenance *p, const char *name, const char *value)
+{
+    int rc;
+    if ((rc = fs_api_check(name, "name")) || (rc = fs_api_check(value, "value"))) return rc;
+    size_t n = strlen(name), v = strlen(value);
+    if (strncmp(name, "fluidsurf:", 10) || n == 10 || n >= sizeof p->name[0] || strpbrk(name, "=\n\r"))
+        return fs_fail(FS_ERR_INPUT, "provenance name '%.60s': expected fluidsurf:NAME, at most %zu characters", name,
+                       sizeof p->name[0] - 1);
+    if (v >= sizeof p->value[0] || strpbrk(value, "\n\r"))
+        return fs_fail(FS_ERR_INPUT, "provenance %s: expected one line of at most %zu characters", name,
+                       sizeof p->value[0] - 1);
+    if (!fs_provenance_get(p, name + 10) && p->n == FS_PROV_MAX)
+        return fs_fail(FS_ERR_INPUT, "provenance %s: %d entries already", name, FS_PROV_MAX);
+    fs_camera cam = {0};
+    unsigned given;
+    if (!strcmp(name, "fluidsurf:camera") && (rc = fs_camera_parse(value, name, &cam, &given))) return rc;
+    fs_provenance_set(p, name + 10, value);
+    return FLUIDSURF_OK;
+}
+
+int fluidsurf_image_set_provenance(fluidsurf_image *im, const char *name, const char *value)
+{
+    int rc = fs_api_check(im, "image");
+    return rc ? rc : fs_api_set_provenance(&im->prov, name, value);
+}
+
+int fluidsurf_image_write(const fluidsurf_image *im, const char *path)
+{
+    int rc;
+    if ((rc = fs_api_check(im, "image")) || (rc = fs_api_check(path, "path")) || (rc = fs_check_render_path(path)))
+        return rc;
+    /* an EXR without the shaded image would give diff a black one to measure PSNR and SSIM on */
+    if (!im->im.rgba) return fs_fail(FS_ERR_INPUT, "%s: the image has no shaded rgba to write", path);
+    return fs_write_render(path, &im->im.g, im->im.rgba, &im->prov);
 }
 
 void fluidsurf_image_free(fluidsurf_image *im)
@@ -139,41 +207,4 @@ const char *fluidsurf_image_provenance_name(const fluidsurf_image *im, int i)
 const char *fluidsurf_image_provenance_value(const fluidsurf_image *im, int i)
 {
     return prov_ok(im, i) ? im->prov.value[i] : NULL;
-}
-
-int fluidsurf_metrics_compute2(const fluidsurf_image *a, const fluidsurf_image *b, double radius,
-                               fluidsurf_metrics *out, fluidsurf_depth_metrics *depth)
-{
-    int rc;
-    if ((rc = fs_api_check(a, "method image")) || (rc = fs_api_check(b, "reference image")) ||
-        (rc = fs_api_check(out, "out")))
-        return rc;
-    double r = radius > 0 ? radius : b->radius;
-    if (!(r > 0)) return fs_fail(FS_ERR_INPUT, "metrics: no radius (the reference image has none; pass one)");
-    fs_metrics m; /* masked as compare masks, where either image carries the solids' depth (the reference's first) */
-    const float *solids = fs_gbuffer_aov(&b->im.g, FS_AOV_SOLID_DEPTH);
-    if (!solids) solids = fs_gbuffer_aov(&a->im.g, FS_AOV_SOLID_DEPTH);
-    if ((rc = fs_metrics_compute_masked(solids, &a->im.g, a->im.rgba, &b->im.g, b->im.rgba, (float)r, &m, NULL)))
-        return rc;
-    *out = (fluidsurf_metrics){m.mask_iou,
-                               m.depth_bias_r,
-                               m.depth_rmse_r,
-                               m.depth_p95_r,
-                               m.normal_mean_deg,
-                               m.normal_p95_deg,
-                               m.interior_normal_mean_deg,
-                               m.psnr_db,
-                               m.ssim,
-                               m.n_both,
-                               m.n_union,
-                               m.n_interior};
-    if (depth)
-        *depth = (fluidsurf_depth_metrics){m.depth_median_r, m.depth_abs_p50_r, m.depth_abs_p95_r, m.depth_abs_p99_r,
-                                           m.depth_over_1r_frac};
-    return FLUIDSURF_OK;
-}
-
-int fluidsurf_metrics_compute(const fluidsurf_image *a, const fluidsurf_image *b, double radius, fluidsurf_metrics *out)
-{
-    return fluidsurf_metrics_compute2(a, b, radius, out, NULL);
 }

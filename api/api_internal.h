@@ -3,6 +3,7 @@
 #ifndef FS_API_INTERNAL_H
 #define FS_API_INTERNAL_H
 #include "fluidsurf/fluidsurf.h"
+#include "mesh/trimesh.h"
 #include "particles.h"
 #include "provenance.h"
 #include "run.h"
@@ -17,6 +18,12 @@ struct fluidsurf_particles {
 struct fluidsurf_scene {
     fs_scene s;
     int radius_set; /* set by the caller: wins over the file's and the estimate */
+};
+
+struct fluidsurf_mesh {
+    fs_trimesh m;
+    float radius;
+    fs_provenance prov;
 };
 
 struct fluidsurf_image {
@@ -48,5 +55,8 @@ int fs_api_gl_acquire(void);
 const struct fs_gl_context *fs_api_gl(void);
 /* code with the message of fs_fail kept (the library never prints). */
 int fs_api_check(const void *ptr, const char *what);
+/* Adds or replaces name ("fluidsurf:NAME") = value in p, after the checks of
+ * fluidsurf_image_set_provenance (FS_ERR_INPUT naming what is wrong). */
+int fs_api_set_provenance(fs_provenance *p, const char *name, const char *value);
 
 #endif

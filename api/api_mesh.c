@@ -5,20 +5,14 @@
  * lean build) the method does not exist and the function refuses in one line. */
 #include "api_internal.h"
 #include "fs_error.h"
-#include "mesh/trimesh.h"
 #if FS_WITH_OPENVDB
 #include "mesh/mesh.h"
 #endif
 
 #include <stdlib.h>
 
-struct fluidsurf_mesh {
-    fs_trimesh m;
-    float radius;
-};
-
 #if FS_WITH_OPENVDB
-/* Grid and mesh of p on the scene's field, one build at a time (fs_api_lock). */
+/* Grid and mesh of p on the scene's field, one build at a time (fs_api_lock), and its provenance. */
 static int build(const fs_scene *sc, const fs_particles *p, const double *values, fluidsurf_mesh *out)
 {
     fs_field f = fs_scene_field(sc);
@@ -32,6 +26,7 @@ static int build(const fs_scene *sc, const fs_particles *p, const double *values
     fs_api_lock(0);
     fs_grid_free(&g);
     out->radius = f.r;
+    fs_mesh_provenance(&out->prov, sc, values, 0);
     return rc;
 }
 #endif

@@ -1,6 +1,7 @@
 # Area "api": the C API (include/fluidsurf/fluidsurf.h) as a program links it,
 # libfluidsurf.so from this build: fluidsurf_mesh_build (refused without OpenVDB)
-# and the library's messages; that a dlclose leaves it (and OpenMP) loaded.
+# and the library's messages; the version-6 calls (test_api_io: metrics as diff,
+# an EXR's provenance and camera, writers, info); that a dlclose leaves it (and OpenMP) loaded.
 # The installed library: tests/python.cmake.
 if(TARGET fluidsurf_lib)
   fs_add_test(test_api fluidsurf_lib test_api.c)
@@ -9,6 +10,8 @@ if(TARGET fluidsurf_lib)
   target_link_libraries(test_api_compare PRIVATE m)
   fs_add_test(test_api_scene fluidsurf_lib test_api_scene.c)
   target_link_libraries(test_api_scene PRIVATE m)
+  fs_add_test(test_api_io fluidsurf_lib test_api_io.c)
+  target_link_libraries(test_api_io PRIVATE m)
   # dlopen'ed, not linked (an instrumented library cannot be loaded into an uninstrumented program)
   if(NOT FS_SANITIZE)
     add_executable(test_api_unload test_api_unload.c)

@@ -17,6 +17,13 @@ void fs_provenance_set(fs_provenance *p, const char *name, const char *value)
     p->attr[i].value = p->value[i];
 }
 
+const char *fs_provenance_get(const fs_provenance *p, const char *name)
+{
+    for (int i = 0; i < p->n; i++)
+        if (!strncmp(p->name[i], "fluidsurf:", 10) && !strcmp(p->name[i] + 10, name)) return p->value[i];
+    return NULL;
+}
+
 void fs_provenance_init_base(fs_provenance *p, const char *renderer, const char *gl_version)
 {
     char v[640];

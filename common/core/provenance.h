@@ -32,6 +32,8 @@ typedef struct fs_provenance {
 void fs_provenance_init_base(fs_provenance *p, const char *renderer, const char *gl_version);
 /* Adds or replaces "fluidsurf:NAME". */
 void fs_provenance_set(fs_provenance *p, const char *name, const char *value);
+/* The value of "fluidsurf:NAME", NULL when p has none. */
+const char *fs_provenance_get(const fs_provenance *p, const char *name);
 /* One line "# k=v; k=v ..." for CSV headers. */
 void fs_provenance_line(const fs_provenance *p, char *buf, int size);
 

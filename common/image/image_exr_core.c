@@ -313,3 +313,21 @@ int fs_exr_read_attr(const char *path, const char *name, char *buf, int size)
     exr_finish(&f);
     return found;
 }
+
+int fs_exr_read_provenance(const char *path, fs_provenance *out)
+{
+    static const char prefix[] = "fluidsurf:";
+    out->n = 0;
+    exr_context_t f = NULL;
+    int32_t count = 0;
+    if (open_read(path, &f)) return -1;
+    if (exr_get_attribute_count(f, 0, &count) != EXR_ERR_SUCCESS) count = 0;
+    for (int32_t i = 0; i < count; i++) {
+        const exr_attribute_t *a = NULL;
+        if (exr_get_attribute_by_index(f, 0, EXR_ATTR_LIST_FILE_ORDER, i, &a) != EXR_ERR_SUCCESS || !a) continue;
+        if (a->type != EXR_ATTR_STRING || strncmp(a->name, prefix, sizeof prefix - 1)) continue;
+        fs_provenance_set(out, a->name + sizeof prefix - 1, a->string->str ? a->string->str : "");
+    }
+    exr_finish(&f);
+    return out->n;
+}

@@ -10,6 +10,7 @@
 int fs_exr_is_scanline(const char *path);
 int fs_exr_read(const char *path, fs_image *img);
 int fs_exr_read_attr(const char *path, const char *name, char *buf, int size);
+int fs_exr_read_provenance(const char *path, fs_provenance *out);
 /* An image the readers above do not read (a tiled or deep EXR): through the
  * OpenImageIO module (oiio_load.c), or refused in the build without it (oiio_none.c). */
 int fs_read_image_oiio(const char *path, fs_image *img);

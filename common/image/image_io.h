@@ -4,7 +4,7 @@
  * string attributes). */
 #ifndef FS_IMAGE_IO_H
 #define FS_IMAGE_IO_H
-#include "provenance.h" /* fs_attr */
+#include "provenance.h" /* fs_attr, fs_provenance */
 #include "srgb.h"
 #ifdef __cplusplus
 extern "C" {
@@ -31,6 +31,9 @@ int fs_read_image(const char *path, fs_image *img);
 /* Reads the string attribute name of an image file into buf: 1 if present,
  * 0 if absent (buf = ""), -1 if the file cannot be read (fs_error_message says why). */
 int fs_read_image_attr(const char *path, const char *name, char *buf, int size);
+/* Every string attribute "fluidsurf:NAME" of an image file into out (in the file's
+ * order, FS_PROV_MAX at most): how many, 0 for a PNG, -1 if the file cannot be read. */
+int fs_read_image_provenance(const char *path, fs_provenance *out);
 void fs_image_free(fs_image *img);
 /* FS_ERR_INPUT (fs_fail) when a header's w x h x nch floats are more than the
  * file's bytes can unpack to (zlib's largest ratio, 1032:1, plus 1 MB): checked by

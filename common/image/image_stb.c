@@ -102,3 +102,11 @@ int fs_read_image_attr(const char *path, const char *name, char *buf, int size)
     if (kind == KIND_EXR) return fs_exr_read_attr(path, name, buf, size);
     return 0; /* our PNGs carry no attributes */
 }
+
+int fs_read_image_provenance(const char *path, fs_provenance *out)
+{
+    out->n = 0;
+    file_kind kind;
+    if (sniff(path, &kind) || fs_image_structure_check(path)) return -1;
+    return kind == KIND_EXR ? fs_exr_read_provenance(path, out) : 0;
+}

@@ -8,7 +8,7 @@ void fs_provenance_init(fs_provenance *p, const fs_scene *s, const char *rendere
     char v[640];
     fs_provenance_init_base(p, renderer, gl_version);
     snprintf(v, sizeof v, "%016llx", s->hash);
-    fs_provenance_set(p, "scene_hash", v);
+    if (s->hash) fs_provenance_set(p, "scene_hash", v); /* 0: the library's scene, no file or flags to hash */
     fs_provenance_set(p, "scene", s->path[0] ? s->path : "(command line)");
     fs_provenance_set(p, "source", s->synth.shape ? "synthetic" : s->source);
     snprintf(v, sizeof v, "%u", s->synth.seed);

@@ -1,5 +1,6 @@
 /* Provenance of an output rendered from a scene: the base entries (version,
- * commit, renderer, threads) plus scene hash, source, seed, r, field, camera. */
+ * commit, renderer, threads) plus scene hash (a scene of a file or of command-line
+ * options; the library's own scenes have none), source, seed, r, field, camera. */
 #ifndef FS_SCENE_PROVENANCE_H
 #define FS_SCENE_PROVENANCE_H
 #include "provenance.h"

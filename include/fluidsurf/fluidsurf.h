@@ -35,7 +35,13 @@
  * Version 4 added fluidsurf_compare (a study through compare's engine) and its
  * tables, and fluidsurf_image_set_solid_depth.
  * Version 5 added fluidsurf_compare_to_dir (the study's whole folder, as
- * `fluidsurf compare -o DIR` writes it). */
+ * `fluidsurf compare -o DIR` writes it).
+ * Version 6 added fluidsurf_metrics_compute3 (the metrics after `fluidsurf diff`'s
+ * check that two images can be compared); fluidsurf_image_read keeps the file's
+ * provenance and camera; fluidsurf_image_set_provenance, fluidsurf_image_set_layer
+ * and fluidsurf_image_write; fluidsurf_mesh_from_arrays, fluidsurf_mesh_write and
+ * a mesh's provenance; fluidsurf_particles_estimate_radius and
+ * fluidsurf_particles_stats (what `fluidsurf info` reports). */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -48,7 +54,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 5 };
+enum { FLUIDSURF_API_VERSION = 6 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -75,6 +81,27 @@ double fluidsurf_particles_radius(const fluidsurf_particles *p);
  * each), "phase" (1 int32 each); NULL when absent. ncomp may be NULL. */
 const void *fluidsurf_particles_column(const fluidsurf_particles *p, const char *name, int *ncomp);
 void fluidsurf_particles_free(fluidsurf_particles *p);
+/* Since version 6: the radius the spacing implies, as a render without one
+ * estimates it (r = (volume per particle)^(1/3) / 2, from the 32 nearest
+ * neighbours of a fixed sample of 4096 particles). FLUIDSURF_ERR_INPUT for
+ * fewer than 2 particles or no spacing (all at one point). */
+int fluidsurf_particles_estimate_radius(const fluidsurf_particles *p, double *radius);
+/* Since version 6: what `fluidsurf info` reports. */
+enum { FLUIDSURF_R_GIVEN = 0, FLUIDSURF_R_FILE = 1, FLUIDSURF_R_ESTIMATED = 2, FLUIDSURF_R_DEFAULT = 3 };
+typedef struct fluidsurf_particles_info {
+    size_t count;
+    double bbox_min[3], bbox_max[3];
+    double radius;           /* the r of the numbers below: the radius given, else the file's, else the estimate, else
+                                the default */
+    int radius_source;       /* FLUIDSURF_R_GIVEN, _FILE, _ESTIMATED or _DEFAULT */
+    double estimated_radius; /* the r the spacing implies; 0 when there is no spacing */
+    double nn_median;        /* median distance to the nearest neighbour (a fixed sample of 4096) */
+    double density_median;   /* median normalised density phi at particle centres (cubic, support 4r) */
+    double volume_scale;     /* the one phi was computed with: volume_scale / density_median would make it 1 */
+} fluidsurf_particles_info;
+/* radius: 0 for none given; volume_scale: V = volume_scale (2r)^3 (1: the default). */
+int fluidsurf_particles_stats(const fluidsurf_particles *p, double radius, double volume_scale,
+                              fluidsurf_particles_info *out);
 
 /* ---- scene: field, camera, appearance, method settings ----------------- */
 typedef struct fluidsurf_scene fluidsurf_scene;
@@ -153,7 +180,9 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *p, con
                      const char *const *params, int nparams, fluidsurf_image **out);
 /* The exact reference: fluidsurf_render with method "reference". */
 int fluidsurf_reference(const fluidsurf_scene *s, const fluidsurf_particles *p, fluidsurf_image **out);
-/* A G-buffer EXR written by fluidsurf (render -o OUT.exr, compare). */
+/* A G-buffer EXR written by fluidsurf (render -o OUT.exr, compare), with its
+ * provenance (every "fluidsurf:NAME" attribute) and, since version 5, the camera
+ * its fluidsurf:camera names (fluidsurf_image_camera). */
 int fluidsurf_image_read(const char *path, fluidsurf_image **out);
 /* An image of your own arrays (copied), w x h pixels: depth (1 per pixel,
  * INFINITY where empty), normal (3), coverage (1, 0 or 1); thickness (1) and
@@ -165,14 +194,29 @@ int fluidsurf_image_from_arrays(int w, int h, const float *depth, const float *n
  * where no solid is hit), copied into the layer "solid_depth", so that metrics
  * of an image made from arrays leave out what the solids hide, as compare does. */
 int fluidsurf_image_set_solid_depth(fluidsurf_image *im, const float *solid_depth);
+/* Since version 6: adds or replaces the provenance entry name ("fluidsurf:NAME",
+ * under 48 characters; value under 640), e.g. of an image made from arrays that a
+ * render had returned, so that fluidsurf_metrics_compute3 can check it. A
+ * "fluidsurf:camera" must read as a camera ("eye=x,y,z;target=...;up=...;fov=f;size=WxH"). */
+int fluidsurf_image_set_provenance(fluidsurf_image *im, const char *name, const char *value);
+/* Since version 6: a layer (AOV) name of ncomp (1 or 4) floats per pixel, copied
+ * (fluidsurf_image_set_solid_depth is name "solid_depth", 1); an existing one of
+ * that name is written over. Not a core layer (depth, normal, ...). */
+int fluidsurf_image_set_layer(fluidsurf_image *im, const char *name, int ncomp, const float *data);
+/* Since version 6: the image as `fluidsurf render -o` writes it, by the extension:
+ * .png (the shaded image, sRGB) or .exr (RGBA, the G-buffer, every layer, and the
+ * provenance as attributes), into a temporary file renamed at the end.
+ * FLUIDSURF_ERR_INPUT for another extension or an image without rgba. */
+int fluidsurf_image_write(const fluidsurf_image *im, const char *path);
 void fluidsurf_image_free(fluidsurf_image *im);
 int fluidsurf_image_width(const fluidsurf_image *im);
 int fluidsurf_image_height(const fluidsurf_image *im);
 /* The radius r the image was rendered with. */
 double fluidsurf_image_radius(const fluidsurf_image *im);
 /* The camera it was rendered with (the framing chosen, when the scene had
- * none): pass it to fluidsurf_scene_set_camera to keep a sequence's view.
- * FLUIDSURF_ERR_INPUT for an image that was read or made from arrays. */
+ * none): pass it to fluidsurf_scene_set_camera to keep a sequence's view, or to
+ * render a read EXR's view again. FLUIDSURF_ERR_INPUT for an image made from
+ * arrays, or read from a file without fluidsurf:camera. */
 int fluidsurf_image_camera(const fluidsurf_image *im, fluidsurf_camera *c);
 /* A layer: "depth" (1), "normal" (3), "thickness" (1), "coverage" (1), "rgba"
  * (4, the linear shaded image) or an AOV by name; NULL when absent. */
@@ -225,6 +269,17 @@ typedef struct fluidsurf_depth_metrics {
 /* fluidsurf_metrics_compute, plus the depth metrics above into depth (NULL: none). */
 int fluidsurf_metrics_compute2(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
                                fluidsurf_metrics *out, fluidsurf_depth_metrics *depth);
+/* Since version 6: fluidsurf_metrics_compute2 after the check `fluidsurf diff`
+ * makes, with its wording: images of different sizes, or of different cameras
+ * (provenance fluidsurf:camera), are refused (FLUIDSURF_ERR_INPUT); a different
+ * scene (fluidsurf:scene_hash) or r is a warning, one line each into warnings
+ * (size bytes, lines separated by '\n', "" when none; NULL: not wanted), or with
+ * FLUIDSURF_METRICS_STRICT a refusal, as `diff --strict`. Only what both images
+ * carry is checked: images made from arrays without provenance pass. */
+enum { FLUIDSURF_METRICS_STRICT = 1 };
+int fluidsurf_metrics_compute3(const fluidsurf_image *method, const fluidsurf_image *reference, double radius,
+                               int flags, fluidsurf_metrics *out, fluidsurf_depth_metrics *depth, char *warnings,
+                               size_t size);
 /* ---- meshes (since version 3) ------------------------------------------ */
 typedef struct fluidsurf_mesh fluidsurf_mesh;
 
@@ -249,6 +304,21 @@ const uint32_t *fluidsurf_mesh_triangles(const fluidsurf_mesh *m);
 /* The radius r it was built with. */
 double fluidsurf_mesh_radius(const fluidsurf_mesh *m);
 void fluidsurf_mesh_free(fluidsurf_mesh *m);
+/* Since version 6: a mesh of the caller's arrays (copied): nv vertices (3 floats
+ * each), their unit normals (NULL: the area-weighted mean of the adjacent
+ * triangles' normals), nt triangles (3 vertex indices each). */
+int fluidsurf_mesh_from_arrays(size_t nv, const float *vertices, const float *normals, size_t nt,
+                               const uint32_t *triangles, fluidsurf_mesh **out);
+/* Since version 6: provenance, "fluidsurf:NAME" entries (a built mesh's: version,
+ * commit, r, field, method, params, ...), as an image's. */
+int fluidsurf_mesh_set_provenance(fluidsurf_mesh *m, const char *name, const char *value);
+int fluidsurf_mesh_provenance_count(const fluidsurf_mesh *m);
+const char *fluidsurf_mesh_provenance_name(const fluidsurf_mesh *m, int i);
+const char *fluidsurf_mesh_provenance_value(const fluidsurf_mesh *m, int i);
+/* Since version 6: the mesh as `fluidsurf mesh` writes it, by the extension: .ply,
+ * .obj, .vtk or .vtp (.vtk and .vtp need FS_WITH_VTK), with its provenance in the
+ * header (PLY comments, OBJ comments, VTK field data). */
+int fluidsurf_mesh_write(const fluidsurf_mesh *m, const char *path);
 /* ---- studies (since version 4) ---------------------------------------- */
 typedef struct fluidsurf_study fluidsurf_study;
 enum { FLUIDSURF_STUDY_COUNTERS = 1 };

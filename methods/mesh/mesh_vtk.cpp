@@ -19,8 +19,11 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <clocale>
 #include <exception>
+#include <locale>
 #include <new>
+#include <string>
 
 namespace
 {
@@ -76,12 +79,26 @@ void add_provenance(vtkPolyData *pd, const fs_provenance *prov)
     }
 }
 
+// The process's locale, put back when this goes out of scope: VTK 9.1's legacy
+// writer (vtkDataWriter::OpenVTKFile) sets the global locale to "C" and leaves it,
+// which in Python turns open()'s default encoding into ASCII for the rest of the session.
+struct keep_locale {
+    std::locale cxx;
+    std::string c = std::setlocale(LC_ALL, nullptr);
+    ~keep_locale()
+    {
+        std::locale::global(cxx);
+        std::setlocale(LC_ALL, c.c_str());
+    }
+};
+
 } // namespace
 
 extern "C" int fs_mesh_write_vtk(const fs_trimesh *m, const char *path, const char *tmp, int xml,
                                  const fs_provenance *prov)
 {
     try {
+        keep_locale keep;
         vtkNew<vtkPolyData> pd;
         fill(pd, m);
         add_provenance(pd, prov);

@@ -4,55 +4,34 @@ exact reference and metrics, from NumPy arrays (docs/DESIGN.md, "The library").
     import fluidsurf
     out = fluidsurf.render(positions, 0.025, method="raycast_pca", width=256, height=256)
     out["depth"], out["normal"], out["rgb"], out["timings"]
-    vertices, faces, normals = fluidsurf.mesh(positions, 0.025)
+    fluidsurf.write_image(out, "view.exr")          # read_gbuffer() gives it back
+    m = fluidsurf.mesh(positions, 0.025)            # vertices, faces, normals = m
+    fluidsurf.write_mesh(m, "surface.ply")          # with its provenance
+    fluidsurf.info(positions), fluidsurf.estimate_radius(positions)
 
 A thin layer over libfluidsurf.so (include/fluidsurf/fluidsurf.h) through cffi's
 ABI mode: the C declarations are read from the header installed beside this
 file, and every call into the library releases the GIL. Set FLUIDSURF_LIBRARY to
 load another build of the library."""
 import copy
-import errno
 import functools
-import os
 import warnings
 
 import numpy as np
-from cffi import FFI
 
-from . import _arrays, _paths
+from . import _arrays
+from ._images import image_dict as _image_dict
+from ._images import image_from_dict as _image_from_dict
+from ._images import metrics, read_gbuffer, write_image
+from ._lib import Error, c_strings, existing_path, ffi, lib
+from ._lib import check as _check
+from ._lib import text as _text
+from ._meshes import Mesh, mesh_result, write_mesh
+from ._particles import Particles as _Particles
+from ._particles import estimate_radius, info, read_particles
 
-__all__ = ["Error", "read_particles", "read_gbuffer", "render", "compare", "mesh", "metrics", "methods", "version"]
-
-_here = os.path.dirname(os.path.abspath(__file__))
-
-
-def _declarations():
-    with open(os.path.join(_here, "fluidsurf.h"), encoding="utf-8") as f:
-        text = f.read()
-    begin, end = "/* cffi:begin */", "/* cffi:end */"
-    return text[text.index(begin) + len(begin):text.index(end)]
-
-
-ffi = FFI()
-ffi.cdef(_declarations())
-lib = ffi.dlopen(os.environ.get("FLUIDSURF_LIBRARY") or
-                 os.path.normpath(os.path.join(_here, _paths.LIB_FROM_PACKAGE, _paths.SONAME)))
-if lib.fluidsurf_api_version() < lib.FLUIDSURF_API_VERSION:
-    raise ImportError(f"libfluidsurf's API version {lib.fluidsurf_api_version()} is older than this module's")
-
-
-class Error(RuntimeError):
-    """A failure inside fluidsurf that is not the caller's input (OpenGL, memory)."""
-
-
-def _check(rc):
-    if rc != lib.FLUIDSURF_OK:
-        msg = ffi.string(lib.fluidsurf_last_error()).decode("utf-8", "replace")
-        raise (ValueError if rc == lib.FLUIDSURF_ERR_INPUT else Error)(msg)
-
-
-def _text(ptr):
-    return ffi.string(ptr).decode("utf-8", "replace") if ptr != ffi.NULL else None
+__all__ = ["Error", "Mesh", "read_particles", "read_gbuffer", "render", "compare", "mesh", "metrics", "methods",
+           "version", "write_image", "write_mesh", "info", "estimate_radius"]
 
 
 def version():
@@ -60,67 +39,15 @@ def version():
     return _text(lib.fluidsurf_version())
 
 
-def _path(path, name):
-    """path for the library, as bytes; FileNotFoundError naming the argument when
-    nothing is there (the library would say ValueError, as for a bad file)."""
-    p = os.fspath(path)
-    if not os.path.exists(p):
-        raise FileNotFoundError(errno.ENOENT, f"{name}: no such file", os.fsdecode(p))
-    return os.fsencode(p)
-
-
-# ---- particles --------------------------------------------------------------
-
-class _Particles:
-    """A libfluidsurf particle set over NumPy columns; keeps them alive."""
-
-    def __init__(self, positions, colors=None):
-        x, y, z, self.copied = _arrays.positions_columns(positions)
-        self._keep = [x, y, z]
-        out = ffi.new("fluidsurf_particles **")
-        _check(lib.fluidsurf_particles_wrap(len(x), *(ffi.from_buffer("float[]", c) for c in (x, y, z)), out))
-        self.handle = ffi.gc(out[0], lib.fluidsurf_particles_free)
-        if colors is not None:
-            c = _arrays.colors_array(colors, len(x))
-            self._keep.append(c)
-            _check(lib.fluidsurf_particles_set_color(self.handle, ffi.from_buffer("float[]", c)))
-
-    def column(self, name):
-        """The address libfluidsurf reads column name from (zero-copy checks)."""
-        return int(ffi.cast("uintptr_t", lib.fluidsurf_particles_column(self.handle, name.encode(), ffi.NULL)))
-
-
-def read_particles(path, format=None):
-    """A particle file as a dict: 'positions' (N x 3 float32) and the attributes
-    it holds: 'velocity' (N x 3), 'color' (N x 3 linear RGB), 'phase' (N int32),
-    'radius' (when the file stores one)."""
-    out = ffi.new("fluidsurf_particles **")
-    _check(lib.fluidsurf_particles_read(_path(path, "path"), format.encode() if format else ffi.NULL, out))
-    p = ffi.gc(out[0], lib.fluidsurf_particles_free)
-    n = lib.fluidsurf_particles_count(p)
-
-    def column(name, dtype, ncomp):
-        ptr = lib.fluidsurf_particles_column(p, name.encode(), ffi.NULL)
-        if ptr == ffi.NULL:
-            return None
-        a = np.frombuffer(ffi.buffer(ptr, n * ncomp * 4), dtype=dtype).copy()
-        return a.reshape((n, ncomp)) if ncomp > 1 else a
-
-    result = {"positions": np.stack([column(c, np.float32, 1) for c in "xyz"], axis=1)}
-    if column("vx", np.float32, 1) is not None:
-        result["velocity"] = np.stack([column(c, np.float32, 1) for c in ("vx", "vy", "vz")], axis=1)
-    for name, dtype, ncomp in (("color", np.float32, 3), ("phase", np.int32, 1)):
-        a = column(name, dtype, ncomp)
-        if a is not None:
-            result[name] = a
-    if lib.fluidsurf_particles_radius(p) > 0:
-        result["radius"] = float(lib.fluidsurf_particles_radius(p))
-    return result
-
-
 # ---- scenes -----------------------------------------------------------------
 
 _FIELD_KEYS = ("volume_scale", "iso", "support", "kernel")
+# splashsurf's (and pysplashsurf's) names of the mesh's settings, as ours:
+# cube_size is our cube (both in r); its smoothing length is half our support H
+# (its compact support is twice the smoothing length, both in r); its iso-surface
+# threshold is our iso (of the same normalised density).
+_SPLASHSURF_PARAMS = {"cube_size": "cube"}
+_SPLASHSURF_FIELD = {"smoothing_length": ("support", 2.0), "iso_surface_threshold": ("iso", 1.0)}
 
 
 def _scene(scene, radius, up=None, field=None):
@@ -130,7 +57,7 @@ def _scene(scene, radius, up=None, field=None):
     if scene is None:
         _check(lib.fluidsurf_scene_new(out))
     else:
-        _check(lib.fluidsurf_scene_load(_path(scene, "scene"), out))
+        _check(lib.fluidsurf_scene_load(existing_path(scene, "scene"), out))
     s = ffi.gc(out[0], lib.fluidsurf_scene_free)
     if radius is not None:
         _check(lib.fluidsurf_scene_set_radius(s, _arrays.positive(radius, "radius")))
@@ -143,11 +70,28 @@ def _scene(scene, radius, up=None, field=None):
     return s
 
 
+def _splashsurf_field(field):
+    """field with splashsurf's names as ours: smoothing_length l is support 2 l."""
+    out = {}
+    for key, value in field.items():
+        ours, scale = _SPLASHSURF_FIELD.get(key, (key, 1.0))
+        if ours in out:
+            raise ValueError(f"field: {key!r} and {ours!r} are one setting: give one of them")
+        if scale != 1.0:
+            value = scale * _arrays.positive(value, f"field['{key}']")
+        out[ours] = value
+    return out
+
+
 def _set_field(s, field):
     """field= over the scene's field; r stays as it was settled (radius=, the scene's, or unset)."""
+    if not isinstance(field, dict):
+        raise ValueError(f"field: expected a dict of {', '.join(_FIELD_KEYS)}, got {type(field).__name__}")
+    field = _splashsurf_field(field)
     unknown = sorted(set(field) - set(_FIELD_KEYS))
     if unknown:
-        raise ValueError(f"field: unknown key(s) {', '.join(map(repr, unknown))}; expected {', '.join(_FIELD_KEYS)}")
+        raise ValueError(f"field: unknown key(s) {', '.join(map(repr, unknown))}; expected {', '.join(_FIELD_KEYS)} "
+                         "(or splashsurf's smoothing_length, iso_surface_threshold)")
     f = ffi.new("fluidsurf_field *")
     _check(lib.fluidsurf_scene_get_field(s, f))
     for key in ("volume_scale", "iso", "support"):
@@ -321,45 +265,9 @@ def methods():
     return copy.deepcopy(list(_registry().values()))
 
 
-# ---- images -----------------------------------------------------------------
+# ---- renders ----------------------------------------------------------------
 
-def _provenance(im):
-    return {_text(lib.fluidsurf_image_provenance_name(im, i)): _text(lib.fluidsurf_image_provenance_value(im, i))
-            for i in range(lib.fluidsurf_image_provenance_count(im))}
-
-
-def _image_dict(im):
-    """A libfluidsurf image as arrays: the G-buffer, rgb, AOVs, timings, provenance."""
-    w, h = lib.fluidsurf_image_width(im), lib.fluidsurf_image_height(im)
-    ncomp = ffi.new("int *")
-
-    def layer(name):
-        ptr = lib.fluidsurf_image_layer(im, name.encode(), ncomp)
-        return None if ptr == ffi.NULL else _arrays.layer(ffi, ptr, w, h, ncomp[0])
-
-    d = {name: layer(name) for name in ("depth", "normal", "thickness", "coverage")}
-    rgba = layer("rgba")
-    if rgba is not None:
-        d["rgb"], d["alpha"] = rgba[..., :3].copy(), rgba[..., 3].copy()
-    for i in range(lib.fluidsurf_image_aov_count(im)):
-        name = _text(lib.fluidsurf_image_aov_name(im, i))
-        d[name] = layer(name)
-    d["timings"] = [{"stage": _text(lib.fluidsurf_image_stage_name(im, i)),
-                     "ms": lib.fluidsurf_image_stage_ms(im, i),
-                     "renderer": _text(lib.fluidsurf_image_stage_renderer(im, i))}
-                    for i in range(lib.fluidsurf_image_stage_count(im))]
-    d["provenance"] = _provenance(im)
-    d["radius"] = lib.fluidsurf_image_radius(im)
-    cam = ffi.new("fluidsurf_camera *")
-    if lib.fluidsurf_image_camera(im, cam) == lib.FLUIDSURF_OK:
-        d["camera"] = {"eye": list(cam.eye), "target": list(cam.target), "up": list(cam.up), "fov": cam.fov_deg}
-    return d
-
-
-def _c_settings(texts):
-    """("char *[]" or NULL, its count, the strings to keep alive) of "param=value" texts."""
-    keep = [ffi.new("char[]", t.encode()) for t in texts]
-    return (ffi.new("char *[]", keep) if keep else ffi.NULL), len(keep), keep
+_c_settings = c_strings
 
 
 def _render_handle(scene, particles, method, settings):
@@ -388,7 +296,8 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
     Returns a dict of H x W float32 arrays 'depth' (inf where empty), 'normal'
     (view space), 'thickness', 'coverage', 'rgb' (linear, the shared shading),
     'alpha', the method's AOVs by name, and 'timings', 'provenance', 'radius'
-    and 'camera' (the framing chosen: pass it on to keep a sequence's view)."""
+    'camera' (the framing chosen: pass it on to keep a sequence's view),
+    'width', 'height' and 'r_source' (provenance['fluidsurf:r_source'])."""
     method = _method(method, "method")
     settings = _settings(method, params)
     p = _Particles(positions, colors)
@@ -396,65 +305,6 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
     image = _image_dict(_render_handle(s, p, method, settings))
     _warn_estimated(image["provenance"])
     return image
-
-
-def read_gbuffer(path):
-    """A G-buffer EXR that fluidsurf wrote (render -o OUT.exr, compare), as render's dict."""
-    out = ffi.new("fluidsurf_image **")
-    _check(lib.fluidsurf_image_read(_path(path, "path"), out))
-    return _image_dict(ffi.gc(out[0], lib.fluidsurf_image_free))
-
-
-def _metrics_dict(m, d):
-    names = ("mask_iou", "depth_bias_r", "depth_rmse_r", "depth_p95_r", "normal_mean_deg", "normal_p95_deg",
-             "interior_normal_mean_deg", "psnr_db", "ssim", "n_both", "n_union", "n_interior")
-    depth = ("depth_median_r", "depth_abs_p50_r", "depth_abs_p95_r", "depth_abs_p99_r", "depth_over_1r_frac")
-    return {**{k: getattr(m, k) for k in names}, **{k: getattr(d, k) for k in depth}}
-
-
-def _metrics(image, reference, radius):
-    """fluidsurf_metrics_compute2 of two image handles, as a dict."""
-    m, d = ffi.new("fluidsurf_metrics *"), ffi.new("fluidsurf_depth_metrics *")
-    _check(lib.fluidsurf_metrics_compute2(image, reference, radius, m, d))
-    return _metrics_dict(m, d)
-
-
-def _image_from_dict(d, name):
-    if not isinstance(d, dict) or "depth" not in d:
-        raise ValueError(f"{name}: expected a dict as render() returns")
-    depth = np.ascontiguousarray(d["depth"], dtype=np.float32)
-    if depth.ndim != 2:
-        raise ValueError(f"{name}['depth']: expected an H x W array, got shape {depth.shape}")
-    h, w = depth.shape
-    normal = _arrays.image_array(d.get("normal"), (h, w, 3), f"{name}['normal']")
-    coverage = _arrays.image_array(d.get("coverage"), (h, w), f"{name}['coverage']")
-    thickness = _arrays.image_array(d.get("thickness"), (h, w), f"{name}['thickness']", required=False)
-    rgba = None
-    if d.get("rgb") is not None:
-        rgb = _arrays.image_array(d["rgb"], (h, w, 3), f"{name}['rgb']")
-        alpha = _arrays.image_array(d.get("alpha", np.ones((h, w))), (h, w), f"{name}['alpha']")
-        rgba = np.ascontiguousarray(np.dstack([rgb, alpha]), dtype=np.float32)
-    keep = [depth, normal, coverage, thickness, rgba]
-    ptr = [ffi.from_buffer("float[]", a) if a is not None else ffi.NULL for a in keep]
-    out = ffi.new("fluidsurf_image **")
-    _check(lib.fluidsurf_image_from_arrays(w, h, ptr[0], ptr[1], ptr[3], ptr[2], ptr[4], float(d.get("radius") or 0), out))
-    im = ffi.gc(out[0], lib.fluidsurf_image_free)
-    solids = _arrays.image_array(d.get("solid_depth"), (h, w), f"{name}['solid_depth']", required=False)
-    if solids is not None:  # a render in a scene with solids: metrics leave out what they hide
-        _check(lib.fluidsurf_image_set_solid_depth(im, ffi.from_buffer("float[]", solids)))
-    return im
-
-
-def metrics(image, reference, radius=None):
-    """The metrics of image against reference (dicts as render() returns, the
-    same size): IoU; depth bias, RMSE and p95 around the bias (in r); the depth
-    error's median, the 50th/95th/99th percentiles of its magnitude and the share
-    of pixels over 1 r, which a few far outliers do not move; normal error in
-    degrees, PSNR, SSIM (docs/DESIGN.md, "Metrics"). Where a dict carries
-    "solid_depth" (render() in a scene with solids), the pixels a solid hides are
-    left out, as compare leaves them out."""
-    a, b = _image_from_dict(image, "image"), _image_from_dict(reference, "reference")
-    return _metrics(a, b, 0 if radius is None else _arrays.positive(radius, "radius"))
 
 
 def _table(text):
@@ -577,24 +427,49 @@ def _frame_table(rows):
     return pandas.DataFrame(rows)
 
 
+def _splashsurf_params(params):
+    """params with splashsurf's names as ours: {'cube_size': 1.5} is {'cube': 1.5}."""
+    if not isinstance(params, dict):
+        return params
+    out = {}
+    for key, value in params.items():
+        method, _, name = key.rpartition(".") if isinstance(key, str) else ("", "", key)
+        ours = _SPLASHSURF_PARAMS.get(name, name)
+        k = f"{method}.{ours}" if method else ours
+        if k in out:
+            raise ValueError(f"params: {key!r} and {k!r} are one parameter: give one of them")
+        out[k] = value
+    return out
+
+
 def mesh(positions, radius=None, params=None, scene=None, field=None):
     """The surface of positions (N x 3) as a triangle mesh, as `fluidsurf mesh`
     makes it: marching cubes of the scene's field (the mesh method,
-    methods/mesh/README.md), without rendering. Returns (vertices, faces,
-    normals): N x 3 float32 in scene units, M x 3 int64 vertex indices wound
-    counter-clockwise seen from outside, N x 3 float32 unit outward normals (the
-    field's gradient; with smooth=weighted splashsurf's smoothed face normals),
-    as pysplashsurf's reconstruction gives them. radius, field and scene as
-    render() (a mesh has no up); params: {parameter: value} of the method mesh
-    (cube, the voxel size in r; smooth; smooth_iters; field; ...).
+    methods/mesh/README.md), without rendering. Returns a Mesh (vertices,
+    faces, normals), which unpacks as pysplashsurf's triple: N x 3 float32 in
+    scene units, M x 3 int64 vertex indices wound counter-clockwise seen from
+    outside, N x 3 float32 unit outward normals (the field's gradient; with
+    smooth=weighted splashsurf's smoothed face normals); its .provenance is what
+    write_mesh() writes into the file.
+    radius (splashsurf's particle_radius), field and scene as render() (a mesh
+    has no up). params: {parameter: value} of the method mesh: cube, the voxel
+    size in r (splashsurf's cube_size, accepted by that name: splashsurf's
+    README uses 1.5); smooth ('laplacian', 'taubin', or 'weighted':
+    splashsurf's weighted smoothing) and smooth_iters; field ('isotropic',
+    'anisotropic', 'zhu_bridson'); ... (methods() lists them all).
+    field={'support': H in r} is the kernel's compact support: splashsurf's
+    smoothing length is half of it (its -l=2 is our support 4, the default;
+    field={'smoothing_length': 2} says the same); field={'iso': 0.6} is
+    splashsurf's iso-surface threshold (also field={'iso_surface_threshold': 0.6}).
     Unlike splashsurf, faces that smoothing leaves with no area are collapsed
     (pieces shrunk to a point or a line are removed) and a normal that comes
     out of length 0 is taken from its faces or the field's gradient, so every
     normal is unit and every face has an area (methods/mesh/README.md,
-    "Deviations").
-    A library built without OpenVDB refuses (ValueError naming the option)."""
+    "Deviations"). Every argument is checked before the mesh is built
+    (ValueError naming it). A library built without OpenVDB refuses
+    (ValueError naming the option)."""
     # without OpenVDB the method is not registered: the library's refusal says why
-    settings = _settings("mesh", params) if "mesh" in _registry() else []
+    settings = _settings("mesh", _splashsurf_params(params)) if "mesh" in _registry() else []
     p = _Particles(positions)
     s = _scene(scene, radius, None, field)
     if radius is None and scene is None:  # arrays carry no r: the library estimates it
@@ -603,9 +478,4 @@ def mesh(positions, radius=None, params=None, scene=None, field=None):
     arr, n, _keep = _c_settings(settings)
     out = ffi.new("fluidsurf_mesh **")
     _check(lib.fluidsurf_mesh_build(s, p.handle, arr, n, out))
-    m = ffi.gc(out[0], lib.fluidsurf_mesh_free)
-    nv, nt = lib.fluidsurf_mesh_vertex_count(m), lib.fluidsurf_mesh_triangle_count(m)
-    vertices = _arrays.rows(ffi, lib.fluidsurf_mesh_vertices(m), nv, np.float32)
-    normals = _arrays.rows(ffi, lib.fluidsurf_mesh_normals(m), nv, np.float32)
-    faces = _arrays.rows(ffi, lib.fluidsurf_mesh_triangles(m), nt, np.uint32).astype(np.int64)
-    return vertices, faces, normals
+    return mesh_result(ffi.gc(out[0], lib.fluidsurf_mesh_free))
