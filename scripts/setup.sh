@@ -11,6 +11,7 @@ PKGS=(build-essential cmake pkg-config git
       xvfb xauth fonts-dejavu-core gnuplot-nox python3 python3-vtk9
       slurm-wlm munge
       python3-numpy python3-cffi python3-pytest python3-matplotlib
+      python3-venv python3-pip python3-setuptools python3-wheel # pip install . (pyproject.toml) into a venv
       chromium chromium-driver python3-selenium) # the report page's browser test (tests/report.cmake)
 missing=()
 for p in "${PKGS[@]}"; do

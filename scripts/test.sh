@@ -119,6 +119,8 @@ asan_build() {
 builds_behind() {
   renice -n 19 -p $BASHPID > /dev/null
   stage lean_build bash scripts/build_lean.sh build-lean
+  # pip install . from this clone into a fresh venv, CMake building build-pip/ (README)
+  stage pip_install bash tests/pip_install.sh "$PWD" "" "$PWD/out/pip_install"
   [ $sanitize = 1 ] || return 0
   stage asan_build asan_build
   stage fuzz_build bash tests/fuzz/build.sh build-fuzz

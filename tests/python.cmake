@@ -22,4 +22,9 @@ if(TARGET fluidsurf_lib AND FS_PYTHON3 AND NOT FS_SANITIZE AND FS_WITH_OSMESA)
            ${CMAKE_SOURCE_DIR}/experiments/data/splashsurf/cube_2366_particles.vtk ${CMAKE_BINARY_DIR}/test-out/python_exit 50)
   set_tests_properties(python_exit PROPERTIES FIXTURES_REQUIRED fs_installed TIMEOUT 1200 PROCESSORS 2 ENVIRONMENT
     "${FS_TEST_ENV};PYTHONPATH=${_prefix}/${FS_PYTHON_SITE};PYTHONDONTWRITEBYTECODE=1")
+  # pip install . into a fresh venv, this build packed as it is (tests/pip_install.sh;
+  # scripts/test.sh runs the whole path, CMake building build-pip/ from the clean clone)
+  add_test(NAME pip_install COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/pip_install.sh ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR}
+           ${CMAKE_BINARY_DIR}/test-out/pip_install)
+  set_tests_properties(pip_install PROPERTIES TIMEOUT 300 ENVIRONMENT "${FS_TEST_ENV}")
 endif()

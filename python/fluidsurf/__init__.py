@@ -15,6 +15,7 @@ file, and every call into the library releases the GIL. Set FLUIDSURF_LIBRARY to
 load another build of the library."""
 import copy
 import functools
+import os
 import warnings
 
 import numpy as np
