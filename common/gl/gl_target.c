@@ -42,6 +42,8 @@ void fs_gl_target_destroy(fs_gl_target *t)
     if (t->fbo_thickness) glDeleteFramebuffers(1, &t->fbo_thickness);
     if (t->tex[0]) glDeleteTextures(FS_TARGET_COUNT, t->tex);
     if (t->zbuf) glDeleteRenderbuffers(1, &t->zbuf);
+    fs_gl_readback_free(&t->rb);
+    free(t->normal_rgba);
     memset(t, 0, sizeof *t);
 }
 
@@ -77,18 +79,6 @@ void fs_gl_target_end_pass(void)
 {
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst)
-{
-    size_t row = (size_t)w * comps;
-    float *tmp = malloc(row * h * sizeof(float));
-    if (!tmp) return fs_fail(FS_ERR_RUNTIME, "out of memory reading back a %dx%d image", w, h);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(tex, 0, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, (GLsizei)(row * h * sizeof(float)), tmp);
-    for (int y = 0; y < h; y++) memcpy(dst + row * y, tmp + row * (h - 1 - y), row * sizeof(float));
-    free(tmp);
-    return FS_OK;
 }
 
 /* The context's own limit (llvmpipe: 128 MiB; NVIDIA: about 2 GiB), at most

@@ -1,8 +1,10 @@
 /* The G-buffer as GL render targets, shared by every GL method: float
  * attachments for eye depth, view normal (w = coverage), thickness, optional
- * colour, and a depth buffer (read back by method/gl_gbuffer.h). */
+ * colour, and a depth buffer (read back by method/gl_gbuffer.h through the
+ * target's pixel pack buffers, gl_readback.h). */
 #ifndef FS_GL_TARGET_H
 #define FS_GL_TARGET_H
+#include "gl_readback.h"
 #include "timing.h"
 #include <stddef.h>
 #ifdef __cplusplus
@@ -17,6 +19,8 @@ typedef struct fs_gl_target {
     unsigned fbo_thickness; /* thickness alone, for additive passes */
     unsigned tex[FS_TARGET_COUNT];
     unsigned zbuf;
+    fs_gl_readback rb;  /* the read back's buffers, kept between frames */
+    float *normal_rgba; /* the normal target as read back, w*h*4 floats (allocated on first read) */
 } fs_gl_target;
 
 int fs_gl_target_create(fs_gl_target *t, int w, int h);
@@ -30,8 +34,6 @@ void fs_gl_target_begin_surface(const fs_gl_target *t);
 void fs_gl_target_begin_thickness(const fs_gl_target *t);
 /* Back to the default framebuffer, blending off. */
 void fs_gl_target_end_pass(void);
-/* Reads a float texture (1 or 4 components) into dst, rows top to bottom. */
-int fs_gl_read_texture(unsigned tex, int comps, int w, int h, float *dst);
 /* A 2D texture of one level, nearest filtering (render targets, image load/store). */
 unsigned fs_gl_texture_2d(unsigned format, int w, int h);
 /* A 2D texture array of one level, linear filtering, clamped (maps sampled by position). */

@@ -68,6 +68,8 @@ int fs_gbuffer_add_aov(fs_gbuffer *g, const char *name, int ncomp)
     return FS_OK;
 }
 
+int fs_aov_own_look(const char *name) { return !strcmp(name, FS_AOV_OWN) || !strcmp(name, FS_AOV_CAUSTICS); }
+
 float *fs_gbuffer_aov(const fs_gbuffer *g, const char *name)
 {
     const fs_aov *a = find_aov(g, name);

@@ -47,6 +47,9 @@ int fs_gbuffer_alloc(fs_gbuffer *g, int w, int h);
  * a '.', for ncomp other than 1 or 4, or other than a well-known name's;
  * FS_ERR_RUNTIME when full or out of memory. */
 int fs_gbuffer_add_aov(fs_gbuffer *g, const char *name, int ncomp);
+/* 1 for the layers of a method's own look (own, caustics), which neither the
+ * shared shading nor the metrics read. */
+int fs_aov_own_look(const char *name);
 /* The AOV's data, NULL when g has none of that name. */
 float *fs_gbuffer_aov(const fs_gbuffer *g, const char *name);
 void fs_gbuffer_clear(fs_gbuffer *g); /* empty: depth inf, the rest 0 (AOVs too) */

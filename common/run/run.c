@@ -27,7 +27,8 @@ struct fs_run {
     int cur;           /* slot of the current frame, -1 when none */
     float floor_y;
     int floor_set;
-    char why[512]; /* why there is no frame (a failed upload) */
+    int shared_only; /* renders leave out the own look's layers (fs_run_shared_only) */
+    char why[512];   /* why there is no frame (a failed upload) */
 };
 
 void fs_run_image_free(fs_run_image *im)
@@ -175,13 +176,22 @@ int fs_run_export(fs_run *r, const char *path, const fs_provenance *prov)
     return r->m->export_file(r->self, path, prov ? prov : &own);
 }
 
-/* 1 when g holds exactly the AOVs m writes for frame p, in its order. */
-static int has_aovs(const fs_gbuffer *g, const fs_method *m, const fs_particles *p)
+void fs_run_shared_only(fs_run *r, int on) { r->shared_only = on; }
+
+/* Whether renders of r fill AOV d for frame p. */
+static int aov_wanted(const fs_run *r, const fs_aov_def *d, const fs_particles *p)
 {
+    return fs_method_aov_wanted(d, p) && !(r->shared_only && fs_aov_own_look(d->name));
+}
+
+/* 1 when g holds exactly the AOVs r's method writes for frame p, in its order. */
+static int has_aovs(const fs_gbuffer *g, const fs_run *r, const fs_particles *p)
+{
+    const fs_method *m = r->m;
     int k = 0;
     for (int i = 0; i < m->naovs; i++) {
         const fs_aov_def *d = &m->aovs[i];
-        if (!fs_method_aov_wanted(d, p)) continue;
+        if (!aov_wanted(r, d, p)) continue;
         if (k == g->naovs || strcmp(g->aov[k].name, d->name) || g->aov[k].ncomp != d->ncomp) return 0;
         k++;
     }
@@ -189,11 +199,12 @@ static int has_aovs(const fs_gbuffer *g, const fs_method *m, const fs_particles 
 }
 
 /* im->g at the camera size with the AOVs the method writes for frame p (none
- * that need the particles' colour when there is no frame), cleared. */
+ * that need the particles' colour when there is no frame, none of the own look's
+ * when r is shared only), cleared. */
 static int size_gbuffer(const fs_run *r, const fs_camera *cam, const fs_particles *p, fs_run_image *im)
 {
     fs_gbuffer *g = &im->g;
-    if (g->depth && g->w == cam->width && g->h == cam->height && has_aovs(g, r->m, p)) {
+    if (g->depth && g->w == cam->width && g->h == cam->height && has_aovs(g, r, p)) {
         fs_gbuffer_clear(g);
         return FS_OK;
     }
@@ -201,7 +212,7 @@ static int size_gbuffer(const fs_run *r, const fs_camera *cam, const fs_particle
     int rc = fs_gbuffer_alloc(g, cam->width, cam->height);
     for (int i = 0; i < r->m->naovs && !rc; i++) {
         const fs_aov_def *d = &r->m->aovs[i];
-        if (fs_method_aov_wanted(d, p)) rc = fs_gbuffer_add_aov(g, d->name, d->ncomp);
+        if (aov_wanted(r, d, p)) rc = fs_gbuffer_add_aov(g, d->name, d->ncomp);
     }
     return rc;
 }
@@ -257,7 +268,7 @@ void fs_run_provenance(const fs_run *r, const fs_provenance *base, int frame, fs
 
 const char *fs_run_stage_renderer(const fs_run *r, const char *stage)
 {
-    static const char *const cpu[] = {"load", "grid", "shade"};
+    static const char *const cpu[] = {"load", "grid", "shade", "renormalize", "own"};
     for (size_t i = 0; i < sizeof cpu / sizeof *cpu; i++)
         if (!strcmp(stage, cpu[i])) return "CPU";
     return r->renderer;

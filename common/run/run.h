@@ -65,6 +65,11 @@ int fs_run_export(fs_run *r, const char *path, const fs_provenance *prov);
 /* Renders the current frame: (re)allocates im->g to the camera size with the
  * layers the method writes, clears it, renders; adds the method's stages. On
  * failure im->g is still sized and empty, so a viewer can show the empty scene. */
+/* With on = 1, renders leave out the layers of the method's own look (own,
+ * caustics: fs_aov_own_look), so the method neither draws nor reads them back:
+ * for a caller that shades with the shared shading only and writes no EXR
+ * (the timing tools). Default 0: every layer the method declares. */
+void fs_run_shared_only(fs_run *r, int on);
 int fs_run_render(fs_run *r, const fs_camera *cam, fs_run_image *im, fs_stages *st);
 /* Fills im->rgba (allocated here): the shared shading over the scene's floor,
  * or the method's own appearance (FS_ERR_INPUT when it has none); adds "shade". */
@@ -76,8 +81,9 @@ void fs_run_set_floor(fs_run *r, float y);
 /* The provenance of this run's output for `frame`: base (or the scene's, when
  * base is NULL) plus method, params, gl_renderer and frame. */
 void fs_run_provenance(const fs_run *r, const fs_provenance *base, int frame, fs_provenance *out);
-/* The renderer a stage of this run ran on: loading, grids and shading are C on
- * the CPU; the method's own stages ran on fs_run_renderer. */
+/* The renderer a stage of this run ran on: loading, grids, shading, the normals'
+ * renormalization after the read back and the own image's compositing are C on
+ * the CPU; the method's other stages ran on fs_run_renderer. */
 const char *fs_run_stage_renderer(const fs_run *r, const char *stage);
 
 /* The counting render (docs/DESIGN.md, "Work counters"): a fresh run of m

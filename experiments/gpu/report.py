@@ -412,8 +412,8 @@ def inacio_cells(rs):
                     "volume": m("I", "volume"), "volume_gl": m("I", "volume", "gpu_ms"),
                     "ray": (m("I", "faces") or 0) + (m("I", "march") or 0),
                     "ray_gl": (m("I", "faces", "gpu_ms") or 0) + (m("I", "march", "gpu_ms") or 0),
-                    "render_I": (m("I", "readback") or 0) + (m("I", "shade") or 0),
-                    "spheres": sum(m("II", s) or 0 for s in ("upload", "splat", "readback", "shade")),
+                    "render_I": sum(m("I", s) or 0 for s in ("readback", "renormalize", "shade")),
+                    "spheres": sum(m("II", s) or 0 for s in ("upload", "splat", "readback", "renormalize", "shade")),
                     "splat_gl": m("II", "splat", "gpu_ms")}
     return cells
 

@@ -13,9 +13,9 @@
 #   Table I (volume_raycast, build=layered, grid GRID, rays stop at the surface):
 #     volume = its "volume" stage (particle upload + single-pass layered splat);
 #     raycast = "faces" + "march"; rendering = "readback" (G-buffer to the host)
-#     + the shared shading (C, fs_shade)
+#     + "renormalize" (its normals on the CPU) + the shared shading (C, fs_shade)
 #   Table II (spheres, opaque, no thickness pass): rendering = particle upload +
-#     "splat" + "readback" + shading
+#     "splat" + "readback" + "renormalize" + shading
 #   total = the sum of the stage medians (so the percentages add up to 100)
 #   volume_slice_ms (Table I rows): the volume stage with build=slice instead
 #     (iwasaki2006's multi-pass slice splatting + upload), same grid, same frames
@@ -105,7 +105,7 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
     x[cell, f, g[10], g[11]] += g[12] }
   END {
     print "# " prov
-    print "# ms, medians over the timed frames; total = the sum of the stage medians; rendering: Table I readback + shading, Table II particle upload + splat + readback + shading"
+    print "# ms, medians over the timed frames; total = the sum of the stage medians; rendering: Table I readback + renormalize + shading, Table II particle upload + splat + readback + renormalize + shading"
     print "table,particles_requested,particles,boundary,path,sim_renderer,gl_renderer,frames,t_first,t_last,steps_per_frame,simulation_ms,fetch_ms,volume_ms,raycast_ms,rendering_ms,total_ms,simulation_pct,fetch_pct,volume_pct,raycast_pct,rendering_pct,volume_slice_ms,note"
     for (tb = 1; tb <= 2; tb++) for (i = 1; i <= k; i++) {
       cell = order[i]; split(cell, c, SUBSEP); T = tb == 1 ? "I" : "II"
@@ -115,8 +115,8 @@ awk -v prov="$prov" -v limit="$LIMIT_S" '
       for (j = 1; j <= nf; j++) { f = F[j]
         S = S " " x[cell, f, "sim", "simulation"]; FE = FE " " x[cell, f, "sim", "fetch"]
         if (tb == 1) { V = V " " x[cell, f, "I", "volume"]; VS = VS " " x[cell, f, "I_slice", "volume"]; RC = RC " " (x[cell, f, "I", "faces"] + x[cell, f, "I", "march"])
-                       RE = RE " " (x[cell, f, "I", "readback"] + x[cell, f, "I", "shade"]) }
-        else RE = RE " " (x[cell, f, "II", "upload"] + x[cell, f, "II", "splat"] + x[cell, f, "II", "readback"] + x[cell, f, "II", "shade"]) }
+                       RE = RE " " (x[cell, f, "I", "readback"] + x[cell, f, "I", "renormalize"] + x[cell, f, "I", "shade"]) }
+        else RE = RE " " (x[cell, f, "II", "upload"] + x[cell, f, "II", "splat"] + x[cell, f, "II", "readback"] + x[cell, f, "II", "renormalize"] + x[cell, f, "II", "shade"]) }
       s = median(S); fe = median(FE); v = median(V); rc = median(RC); re = median(RE); tot = s + fe + v + rc + re
       line = sprintf("%s,%s,%s,%s,%s,%s,%s,%d,%s,%s,%s,%.1f,%.2f,%s,%s,%.1f,%.1f,%.1f,%.2f,%s,%s,%.1f,%s,%s", T, c[1], NP[cell], NB[cell], c[2],
         SR[cell], GR[cell], nfr[cell], t1[cell], t2[cell], median(STEPS[cell]), s, fe,

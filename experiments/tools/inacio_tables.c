@@ -147,6 +147,7 @@ int main(int argc, char **argv)
         if (k == 2 && fs_scene_add_set(&rr[k].scene, "volume_raycast.build=slice"))
             return die("scene"); /* its volume stage */
         if (fs_run_open(&rr[k].run, rr[k].m, &rr[k].scene, NULL, &ctx)) return die(rr[k].m->name);
+        fs_run_shared_only(rr[k].run, 1); /* shaded with the shared shading: no own image drawn or read */
     }
 
     /* settle: untimed frames; the first checked against the limit */

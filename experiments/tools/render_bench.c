@@ -11,7 +11,8 @@
  * defaults). Per variant the method is opened and the frame uploaded (stages
  * grid and upload, run 0); per size one untimed warm-up render (shader
  * compilation, target allocation), then RUNS timed renders. Only the method's
- * own stages are timed: no shading, no file output. Prints CSV rows without a
+ * own stages are timed: no shading, no file output, and the layers of a
+ * method's own look are left out (fs_run_shared_only). Prints CSV rows without a
  * header, each flushed at once (so a run cut short by a time limit keeps its
  * finished rows):
  *   label,particles,method,variant,size,run,stage,ms,gpu_ms,gl_renderer,gl_version
@@ -106,6 +107,7 @@ static int bench_variant(bench *b, const fs_scene *scene, const char *sizes, int
     fs_run *run = NULL;
     fs_stages st = {0};
     int rc = fs_run_open(&run, b->m, &s, NULL, b->ctx);
+    if (!rc) fs_run_shared_only(run, 1); /* no EXR, the shared shading: the own image is neither drawn nor read */
     if (!rc) rc = fs_run_upload(run, b->p, NULL, &st);
     if (!rc) rows(b, run, 0, 0, &st);
     char list[512];

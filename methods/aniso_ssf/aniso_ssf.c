@@ -341,7 +341,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         rc = thickness_pass(s, cam);
         fs_gl_stage_end(t, fs_gl_splat_stage(&s->cs, 1), t4);
     }
-    return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
+    return rc ? rc : fs_gl_target_read(&s->target, out, NULL, 0, t);
 }
 
 const fs_method fs_method_aniso_ssf = {

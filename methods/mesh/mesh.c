@@ -139,7 +139,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
 {
     mesh *s = self;
     int rc = fs_mesh_gl_draw(&s->gl, cam, s->thickness, st);
-    return rc ? rc : fs_gl_target_read_timed(&s->gl.target, out, st);
+    return rc ? rc : fs_gl_target_read(&s->gl.target, out, NULL, 0, st);
 }
 
 static int export_file(void *self, const char *path, const fs_provenance *prov)

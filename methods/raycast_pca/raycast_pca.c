@@ -227,7 +227,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     filter_pass(s, cam, proj);
     double t4 = fs_gl_stage_end(t, "filter", t3);
     rc = thickness_pass(s, cam, t, t4);
-    return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
+    return rc ? rc : fs_gl_target_read(&s->target, out, NULL, 0, t);
 }
 
 /* The particles as the compute splatter reads them: the grid's sorted vec4 positions. */

@@ -129,7 +129,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     fs_gl_target_clear(&s->target);
     if (s->path != FS_SPLAT_RASTER) {
         int rc = render_compute(s, cam, t, t0);
-        return rc ? rc : fs_gl_target_read_timed(&s->target, out, t);
+        return rc ? rc : fs_gl_target_read(&s->target, out, NULL, 0, t);
     }
     fs_gl_target_begin_surface(&s->target);
     set_uniforms(s->prog_surface, cam, s->radius);
@@ -142,7 +142,7 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
         fs_gl_stage_end(t, "thickness", t1);
     }
     fs_gl_target_end_pass();
-    return fs_gl_target_read_timed(&s->target, out, t);
+    return fs_gl_target_read(&s->target, out, NULL, 0, t);
 }
 
 const fs_method fs_method_spheres = {

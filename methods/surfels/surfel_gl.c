@@ -213,21 +213,21 @@ static void thickness_pass(const surfel_gl *s, const fs_camera *cam, const surfe
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
-/* The G-buffer and the own image (its alpha: the caustics layer). */
-static int read_back(const surfel_gl *s, int w, int h, fs_gbuffer *out, fs_stages *t)
+/* The G-buffer and the own image; the own image's alpha is the caustics layer,
+ * split from it on the CPU (stage "own"). */
+static int read_back(surfel_gl *s, fs_gbuffer *out, fs_stages *t)
 {
-    double t0 = fs_now_ms();
-    int rc = fs_gl_target_read(&s->target, out);
     float *own = fs_gbuffer_aov(out, FS_AOV_OWN), *caustics = fs_gbuffer_aov(out, FS_AOV_CAUSTICS);
-    if (!rc && own) {
-        rc = fs_gl_read_texture(s->own_tex, 4, w, h, own);
-        for (size_t i = 0, n = (size_t)w * h; !rc && i < n; i++) {
-            if (caustics) caustics[i] = own[4 * i + 3];
-            own[4 * i + 3] = 1.0f;
-        }
+    const fs_gl_read own_read = {s->own_tex, 4, own};
+    int rc = fs_gl_target_read(&s->target, out, &own_read, own ? 1 : 0, t);
+    if (rc || !own) return rc;
+    double t0 = fs_now_ms();
+    for (size_t i = 0, n = (size_t)out->w * out->h; i < n; i++) {
+        if (caustics) caustics[i] = own[4 * i + 3];
+        own[4 * i + 3] = 1.0f;
     }
-    fs_stages_add(t, "readback", fs_now_ms() - t0);
-    return rc;
+    fs_stages_add(t, "own", fs_now_ms() - t0);
+    return FS_OK;
 }
 
 int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look, const surfel_draw_opts *o,
@@ -248,5 +248,5 @@ int surfel_gl_render(surfel_gl *s, const fs_camera *cam, const surfel_look *look
         thickness_pass(s, cam, o);
         fs_gl_stage_end(t, "thickness", t3);
     }
-    return read_back(s, cam->width, cam->height, out, t);
+    return read_back(s, out, t);
 }

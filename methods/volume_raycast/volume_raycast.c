@@ -273,9 +273,10 @@ static void march(vr *s, const fs_camera *cam, const float ext[3], int own)
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
-/* The own image: the premultiplied transfer-function colour over the scene's
- * background (the shared shading of an empty G-buffer: sky or checker floor). */
-static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
+/* The own image (read back into the AOV): the premultiplied transfer-function
+ * colour over the scene's background (the shared shading of an empty G-buffer:
+ * sky or checker floor), on the CPU. */
+static int composite_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
 {
     int w = cam->width, h = cam->height;
     size_t n = (size_t)w * h;
@@ -295,9 +296,6 @@ static int read_own(vr *s, const fs_camera *cam, fs_gbuffer *out)
     fs_shade(&s->scene, cam, &empty, s->floor_h, s->background);
     fs_gbuffer_free(&empty);
     float *own = fs_gbuffer_aov(out, FS_AOV_OWN), *caustics = fs_gbuffer_aov(out, FS_AOV_CAUSTICS);
-    rc = fs_gl_read_texture(s->own_tex, 4, w, h, own);
-    if (rc) return rc;
-    /* premultiplied over the background */
     for (size_t i = 0; i < n; i++) {
         float *o = own + 4 * i, a = o[3];
         for (int c = 0; c < 3; c++) o[c] += (1.0f - a) * s->background[4 * i + c];
@@ -316,15 +314,19 @@ static int render(void *self, const fs_camera *cam, fs_gbuffer *out, fs_stages *
     if (rc) return rc;
     float ext[3];
     for (int a = 0; a < 3; a++) ext[a] = (float)(s->dg.dim[a] - 1) * s->dg.spacing;
-    int own = fs_gbuffer_aov(out, FS_AOV_OWN) != NULL; /* the caller allocates it when it wants the own image */
+    float *own = fs_gbuffer_aov(out, FS_AOV_OWN); /* the caller allocates it when it wants the own image */
     double t0 = fs_gl_stage_start();
     draw_faces(s, cam, ext);
     double t1 = fs_gl_stage_end(t, "faces", t0);
-    march(s, cam, ext, own);
-    double t2 = fs_gl_stage_end(t, "march", t1);
-    rc = fs_gl_target_read(&s->target, out);
-    if (!rc && own) rc = read_own(s, cam, out);
-    fs_stages_add(t, "readback", fs_now_ms() - t2);
+    march(s, cam, ext, own != NULL);
+    fs_gl_stage_end(t, "march", t1);
+    const fs_gl_read own_read = {s->own_tex, 4, own};
+    rc = fs_gl_target_read(&s->target, out, &own_read, own ? 1 : 0, t);
+    if (!rc && own) {
+        double t2 = fs_now_ms();
+        rc = composite_own(s, cam, out);
+        fs_stages_add(t, "own", fs_now_ms() - t2);
+    }
     if (!rc && glGetError() != GL_NO_ERROR) rc = fs_fail(FS_ERR_RUNTIME, "volume_raycast: OpenGL error");
     return rc;
 }
