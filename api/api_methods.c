@@ -2,6 +2,7 @@
 #include "api_internal.h"
 #include "fs_error.h"
 #include "method.h"
+#include "method_params.h"
 #include "params.h"
 
 static const fs_method *find(const char *name)
@@ -53,7 +54,7 @@ int fluidsurf_param_info(const char *method, int j, fluidsurf_param *out)
     const fs_method *m = find(method);
     int rc = fs_api_check(out, "out");
     if (rc) return rc;
-    if (!m) return fs_fail(FS_ERR_INPUT, "unknown method '%s'", method ? method : "(null)");
+    if (!m) return fs_method_fail_unknown(NULL, method ? method : "(null)");
     if (j < 0 || j >= m->nparams)
         return fs_fail(FS_ERR_INPUT, "%s has %d parameters, not %d", m->name, m->nparams, j + 1);
     const fs_param_def *d = &m->params[j];

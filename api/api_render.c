@@ -123,11 +123,7 @@ int fluidsurf_render(const fluidsurf_scene *s, const fluidsurf_particles *fp, co
         return rc;
     fs_api_init();
     const fs_method *m = fs_method_find(method);
-    if (!m) {
-        char names[600];
-        fs_method_names(names, sizeof names);
-        return fs_fail(FS_ERR_INPUT, "unknown method '%.60s' (methods: %s)", method, names);
-    }
+    if (!m) return fs_method_fail_unknown(NULL, method);
     fs_scene *sc = malloc(sizeof *sc);
     fs_particles p;
     double values[FS_MAX_PARAMS];

@@ -2,6 +2,7 @@
 #ifndef FS_CLI_H
 #define FS_CLI_H
 #include "gl_context.h"
+#include "method.h"
 #include "scene.h"
 
 int cmd_render(int argc, char **argv);
@@ -24,6 +25,10 @@ int cli_usage(const char *cmd, const char *fmt, ...) __attribute__((format(print
  * CMake option when this build leaves a built-in method out ("--method levelset
  * needs a build with FS_WITH_OPENVDB=ON"), else it is cli_usage's "unknown method". */
 int cli_unknown_method(const char *cmd, const char *option, const char *name);
+/* Every --set of the command line (sets, already checked to name a method and
+ * parameter) must be for one of the nrun methods that run: else FS_ERR_INPUT
+ * (fs_fail) in one line naming the setting and the methods that run. */
+int cli_sets_run(const char *const *sets, int nsets, const fs_method *const *run, int nrun);
 /* A scene from SCENE.json, or a default scene around a particle file (its up
  * axis auto: the first frame decides). */
 int cli_scene_from_arg(fs_scene *s, const char *arg);

@@ -1,6 +1,7 @@
 #include "cli.h"
 #include "method.h"
 #include "builtin_methods.h"
+#include "method_params.h"
 #include "fs_error.h"
 #include "frame_pattern.h"
 #include "frame_source.h"
@@ -41,7 +42,24 @@ int cli_unknown_method(const char *cmd, const char *option, const char *name)
         fprintf(stderr, "fluidsurf: %s %s needs a build with %s=ON\n", option, name, need);
         return FS_ERR_INPUT;
     }
-    return cli_usage(cmd, "unknown method '%s' (see 'fluidsurf methods')", name);
+    fs_method_fail_unknown(NULL, name);
+    return cli_usage(cmd, "%s", fs_error_message());
+}
+
+int cli_sets_run(const char *const *sets, int nsets, const fs_method *const *run, int nrun)
+{
+    for (int i = 0; i < nsets; i++) {
+        fs_param_setting split;
+        int rc = fs_param_split(sets[i], &split), found = 0;
+        if (rc) return rc;
+        for (int k = 0; k < nrun; k++) found |= !strcmp(run[k]->name, split.method);
+        if (found) continue;
+        char names[600] = "";
+        for (int k = 0, n = 0; k < nrun && n < (int)sizeof names; k++)
+            n += snprintf(names + n, sizeof names - n, "%s%s", k ? ", " : "", run[k]->name);
+        return fs_fail(FS_ERR_INPUT, "--set %s: %s does not run here (what runs: %s)", sets[i], split.method, names);
+    }
+    return FS_OK;
 }
 
 int cli_scene_from_arg(fs_scene *s, const char *arg)

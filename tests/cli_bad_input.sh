@@ -61,11 +61,17 @@ render zero_width_scene "width" "$T/zerowidth.json"
 render malformed_json "malformed JSON" "$T/malformed.json"
 render unknown_scene_key "radiuss" "$T/typo.json"
 render unknown_method "nosuchmethod" "$vtk" --method nosuchmethod
+# an unknown method lists the names, as --set does (issue 53: "see 'fluidsurf methods'")
+render unknown_method_lists "unknown method 'nosuchmethod' (methods: spheres, reference" "$vtk" --method nosuchmethod
 render unknown_param "nope" "$T/badparam.json"
 render unknown_param_flag "bogus" "$vtk" --set reference.bogus=1
 render bad_param_value "step_min" "$vtk" --set reference.step_min=abc
 render param_out_of_range "step_min" "$vtk" --set reference.step_min=-5
 render set_unknown_method "nomethod" "$vtk" --set nomethod.x=1
+# a setting for a method that does not run was ignored without a word (issue 53)
+render set_method_not_run "aniso_ssf does not run here (what runs: raycast_pca)" "$vtk" --method raycast_pca --set aniso_ssf.sigma=2
+expect_bad compare_set_not_run "aniso_ssf does not run here (what runs: spheres, reference)" compare "$vtk" --methods spheres --set aniso_ssf.sigma=2 -o "$T/out"
+expect_bad compare_set_analytic_only "reference does not run here (what runs: spheres)" compare "$DATA/../../scenes/box.json" --methods spheres --reference analytic --set reference.step_min=0.5 -o "$T/out"
 expect_bad bad_output_ext "out.txt" render "$vtk" -o "$T/out.txt"
 render unknown_option "--frobnicate" "$vtk" --frobnicate
 render bad_appearance "--appearance frob" "$vtk" --method surfels --appearance frob
@@ -118,6 +124,10 @@ render csv_no_z "x, y, z" "$T/noz.csv"
 render bgeo_magic "magic.bgeo" "$T/magic.bgeo"
 render vdb_magic "magic.vdb" "$T/magic.vdb"
 render folder_as_file "folder" "$T/folder.ply"
+# a directory without a particle extension was "unknown particle file extension" (issue 53)
+render directory_input "is a directory" "$T/folder.ply/.."
+expect_bad info_directory "is a directory" info "$T"
+expect_bad convert_directory "is a directory" convert "$T" -o "$T/out.ply"
 render forced_unknown_format "frob" "$vtk" --format frob
 
 # ---- scenes: duplicate keys, integers that a float would round or overflow
@@ -153,9 +163,10 @@ expect_bad diff_not_image "not an EXR or PNG" diff "$T/nan.csv" "$T/nan.csv"
 expect_bad methods_unknown "nosuch" methods nosuch
 expect_bad mesh_bad_cube "cube" mesh "$vtk" --set mesh.cube=-1 -o "$T/out.ply"
 expect_bad mesh_bad_output "out.stl" mesh "$vtk" -o "$T/out.stl"
+expect_bad mesh_set_not_run "reference does not run here (what runs: mesh)" mesh "$vtk" --set reference.step_min=0.5 -o "$T/out.ply"
 expect_bad mesh_truncated "truncated.ply" mesh "$T/truncated.ply" -o "$T/out.ply"
 expect_bad compare_bad_import "expected NAME=FILE" compare "$vtk" --import frob -o "$T/out"
-expect_bad compare_unknown_method "nosuchmethod" compare "$vtk" --methods nosuchmethod -o "$T/out"
+expect_bad compare_unknown_method "nosuchmethod' (methods: spheres, reference" compare "$vtk" --methods nosuchmethod -o "$T/out"
 expect_bad simulate_no_frames "frames" simulate dam_break --frames 0 -o "$T/out_%04d.ply"
 expect_bad simulate_bad_pattern "pattern" simulate dam_break --frames 1 -o "$T/out.ply"
 expect_bad render_output_is_folder "folder.ply" render "$vtk" -W 16 -H 16 -o "$T/folder.ply"

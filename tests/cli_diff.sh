@@ -109,5 +109,27 @@ check 'oiiotool --stats ref.exr 2>&1 | grep -q "InfCount: 0 0 0 0 0 0 0 0 0 0" &
   "oiiotool --stats: no inf or NaN in any channel"
 check 'iinfo -v ref.exr | grep -q "fluidsurf:empty_depth: \"0\""' "the EXR says how empty depth is marked"
 
+# 7. every gate (issue 53: only IoU, normal and depth had one): each passes where the metric
+# meets it and exits 3 naming itself (text and --json) where it does not
+gate() { # NAME OPTION PASSING FAILING FAILTEXT
+  local name=$1 opt=$2 pass=$3 bad=$4 text=$5 ok=0
+  d "g_$name" sph.exr ref.exr "$opt" "$pass"
+  d "gf_$name" sph.exr ref.exr "$opt" "$bad"
+  d "gj_$name" sph.exr ref.exr "$opt" "$bad" --json
+  [ "$(rc "g_$name")" = 0 ] && [ "$(rc "gf_$name")" = 3 ] && grep -qxF "FAIL $text" "gf_$name.out" &&
+    [ "$(rc "gj_$name")" = 3 ] && jtrue "gj_$name" "j['failed'] == ['$text']" && ok=1
+  check '[ $ok = 1 ]' "$opt $pass passes, $opt $bad exits 3 with 'FAIL $text' in text and JSON ($name = $(val same "$name"))"
+}
+gate ssim --fail-ssim 0.1 1 "ssim < 1"
+gate psnr_db --fail-psnr 1 1000 "psnr_db < 1000"
+gate interior_normal_mean_deg --fail-interior-normal-deg 90 0.001 "interior_normal_mean_deg > 0.001"
+gate depth_abs_p95_r --fail-depth-p95-r 1000 0 "depth_abs_p95_r > 0"
+d gates_all sph.exr ref.exr --json --fail-ssim 1 --fail-psnr 1000 --fail-interior-normal-deg 0.001 --fail-depth-p95-r 0
+check '[ "$(rc gates_all)" = 3 ] && jtrue gates_all "len(j[\"failed\"]) == 4"' "the four gates together: four in \"failed\""
+d gates_equal ref.exr ref.exr --fail-ssim 1 --fail-psnr 1000 --fail-interior-normal-deg 0 --fail-depth-p95-r 0
+check '[ "$(rc gates_equal)" = 0 ]' "equal files pass the strictest gates (PSNR infinite, SSIM 1, errors 0)"
+d gate_bad sph.exr ref.exr --fail-ssim 2
+check '[ "$(rc gate_bad)" = 2 ] && [ "$(lines gate_bad)" = 1 ] && grep -q -- "--fail-ssim" gate_bad.err' "--fail-ssim 2 is refused ($(cat gate_bad.err))"
+
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -27,21 +27,31 @@ static const char epilogue[] = "Prints the metrics of A against B (B is the refe
                                "solid hides are left out as compare leaves them out, and a line says how many.\n";
 
 typedef struct diff_opts {
-    float fail_iou, fail_normal, fail_depth, radius, nscale, dscale;
+    float fail_iou, fail_normal, fail_depth, fail_ssim, fail_psnr, fail_interior, fail_p95, radius, nscale, dscale;
     int strict, json;
     const char *out;
 } diff_opts;
+
+/* A metric that must stay at or above (low = 1) or at or below a threshold
+ * (a negative threshold: not asked). */
+static void gate(diff_fail *fails, int *n, const char *name, double value, double limit, int low)
+{
+    if (limit < 0 || (low ? value >= limit : value <= limit)) return;
+    snprintf(fails[(*n)++].text, sizeof fails->text, "%s %s %g", name, low ? "<" : ">", limit);
+}
 
 /* The thresholds crossed; a NAN metric (nothing to compare) never passes a threshold that asks for it. */
 static int thresholds(const diff_opts *o, const fs_metrics *m, diff_fail *fails)
 {
     int n = 0;
-    if (o->fail_iou >= 0 && !(m->mask_iou >= o->fail_iou))
-        snprintf(fails[n++].text, sizeof fails->text, "mask_iou < %g", o->fail_iou);
-    if (o->fail_normal >= 0 && !(m->normal_mean_deg <= o->fail_normal))
-        snprintf(fails[n++].text, sizeof fails->text, "normal_mean_deg > %g", o->fail_normal);
+    gate(fails, &n, "mask_iou", m->mask_iou, o->fail_iou, 1);
+    gate(fails, &n, "normal_mean_deg", m->normal_mean_deg, o->fail_normal, 0);
     if (o->fail_depth >= 0 && !(fabs(m->depth_bias_r) <= o->fail_depth && m->depth_rmse_r <= o->fail_depth))
         snprintf(fails[n++].text, sizeof fails->text, "|depth_bias_r| or depth_rmse_r > %g", o->fail_depth);
+    gate(fails, &n, "ssim", m->ssim, o->fail_ssim, 1);
+    gate(fails, &n, "psnr_db", m->psnr_db, o->fail_psnr, 1);
+    gate(fails, &n, "interior_normal_mean_deg", m->interior_normal_mean_deg, o->fail_interior, 0);
+    gate(fails, &n, "depth_abs_p95_r", m->depth_abs_p95_r, o->fail_p95, 0);
     return n;
 }
 
@@ -75,7 +85,7 @@ static int run_diff(const diff_opts *o, const char *const files[2], fs_gbuffer g
     }
     if (!rc && o->out) rc = write_heatmaps(o, files, g, rr, &m);
     if (rc) return rc;
-    diff_fail fails[3];
+    diff_fail fails[DIFF_GATES];
     int nfails = thresholds(o, &m, fails);
     if (o->json) diff_print_json(stdout, files, rr, masked, &m, fails, nfails);
     else diff_print_text(stdout, files, rr, masked, &m, fails, nfails);
@@ -85,7 +95,7 @@ static int run_diff(const diff_opts *o, const char *const files[2], fs_gbuffer g
 int cmd_diff(int argc, char **argv)
 {
     const char *files[2] = {NULL, NULL};
-    diff_opts o = {-1, -1, -1, 0, 0, 0, 0, 0, NULL};
+    diff_opts o = {-1, -1, -1, -1, -1, -1, -1, 0, 0, 0, 0, 0, NULL};
     int nfiles = 0, rc;
     const cli_opt opts[] = {
         CLI_FLOAT_OPT("--fail-iou", o.fail_iou, 0, 1, "X", "exit 3 when the mask IoU is below X"),
@@ -93,6 +103,14 @@ int cmd_diff(int argc, char **argv)
                       "exit 3 when the mean normal angle exceeds Y degrees"),
         CLI_FLOAT_OPT("--fail-depth-r", o.fail_depth, 0, 1e9, "Z",
                       "exit 3 when |depth bias| or depth RMSE exceeds Z r"),
+        CLI_FLOAT_OPT(
+            "--fail-depth-p95-r", o.fail_p95, 0, 1e9, "Z",
+            "exit 3 when the 95th percentile of |depth error|\n(depth_abs_p95_r, robust to outliers) exceeds Z r"),
+        CLI_FLOAT_OPT(
+            "--fail-interior-normal-deg", o.fail_interior, 0, 180, "Y",
+            "exit 3 when the mean normal angle over the interior\n(>= 3 px from either silhouette) exceeds Y degrees"),
+        CLI_FLOAT_OPT("--fail-ssim", o.fail_ssim, 0, 1, "S", "exit 3 when the SSIM is below S"),
+        CLI_FLOAT_OPT("--fail-psnr", o.fail_psnr, 0, 1e9, "DB", "exit 3 when the PSNR is below DB decibels"),
         CLI_OPT_RADIUS(o.radius, "A's provenance, fluidsurf:r"),
         CLI_FLAG_OPT("--strict", o.strict,
                      "refuse (exit 2) a different scene or r, or provenance that\ncannot tell, instead of warning"),

@@ -132,6 +132,7 @@ int cmd_mesh(int argc, char **argv)
         if ((rc = fs_scene_add_set(&scene, sets[i]))) return cli_error(rc);
     double params[FS_MAX_PARAMS];
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
+    if ((rc = cli_sets_run(sets, nsets, &m, 1))) return cli_error(rc);
     char opat[4096];
     if (fs_is_frame_pattern(out) && (rc = fs_frame_pattern(out, opat, sizeof opat))) return cli_error(rc);
     j.out = fs_is_frame_pattern(out) ? opat : out;

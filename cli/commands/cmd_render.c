@@ -374,6 +374,7 @@ int cmd_render(int argc, char **argv)
     if ((rc = check_args(&a, &m)) || (rc = scene_of(&a, &scene))) return rc;
     double params[FS_MAX_PARAMS];
     if ((rc = fs_method_params_resolve(m, &scene, params))) return cli_error(rc);
+    if ((rc = cli_sets_run(a.sets, a.nsets, &m, 1))) return cli_error(rc);
     render_plan pl = {a.out, a.exports, a.save_scene, a.nexports, 0, 1, a.radius, a.ctx_kind};
     if ((rc = frames_to_render(&scene, a.input, a.frames, a.frame, &pl))) return rc;
     static fs_ref_cache cache;

@@ -52,6 +52,25 @@ static int plan_variants(fs_study *s, const compare_args *o)
     return FS_OK;
 }
 
+/* Every --set is for a method that runs: a variant's, or the reference's when a
+ * reference is rendered (not analytic). */
+static int check_sets_run(const fs_study *s, const compare_args *o)
+{
+    const fs_method *run[FS_STUDY_MAX_ENTRIES + 1];
+    int n = 0;
+    for (int i = 0; i < s->nentries; i++) {
+        int seen = !s->entries[i].v.m; /* an import runs nothing */
+        for (int k = 0; k < n; k++) seen |= run[k] == s->entries[i].v.m;
+        if (!seen) run[n++] = s->entries[i].v.m;
+    }
+    const fs_method *ref = fs_method_find("reference");
+    int ref_runs = 0, listed = 0;
+    for (int i = 0; i < s->nrefs; i++) ref_runs |= !s->refs[i].analytic;
+    for (int k = 0; k < n; k++) listed |= run[k] == ref;
+    if (ref_runs && !listed && ref) run[n++] = ref;
+    return cli_sets_run(o->sets, o->nsets, run, n);
+}
+
 /* References and imports, the labels, the frames: all input is checked before the folder is made. */
 static int plan_references(fs_study *s, const compare_args *o)
 {
@@ -61,6 +80,7 @@ static int plan_references(fs_study *s, const compare_args *o)
     if (!rc && o->nimports && s->scene.frame_first >= 0 && s->scene.frame_last > s->scene.frame_first)
         rc = fs_fail(FS_ERR_INPUT, "--import needs a single-frame scene");
     for (int i = 0; i < o->nimports && !rc; i++) rc = fs_study_add_import(s, o->imports[i]);
+    if (!rc) rc = check_sets_run(s, o);
     if (!rc) rc = fs_study_check_labels(s);
     if (!rc) rc = fs_study_set_frames(s);
     return rc ? cli_error(rc) : FS_OK;

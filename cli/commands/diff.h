@@ -15,6 +15,8 @@
 int diff_check_comparable(const char *const files[2], const fs_gbuffer g[2], const float r[2], int strict,
                           int radius_given);
 
+/* How many --fail-* thresholds diff has. */
+#define DIFF_GATES 7
 /* One threshold that was crossed, as the "FAIL ..." text says it. */
 typedef struct diff_fail {
     char text[80];

@@ -13,6 +13,14 @@ void fs_method_names(char *buf, int size)
         n += snprintf(buf + n, size - n, "%s%s", i ? ", " : "", fs_method_at(i)->name);
 }
 
+int fs_method_fail_unknown(const char *context, const char *name)
+{
+    char names[600];
+    fs_method_names(names, sizeof names);
+    return fs_fail(FS_ERR_INPUT, "%s%sunknown method '%.60s' (methods: %s)", context ? context : "",
+                   context ? ": " : "", name, names);
+}
+
 void fs_method_param_names(const fs_method *m, char *buf, int size)
 {
     int n = 0;
@@ -29,10 +37,7 @@ int fs_method_setting_find(const char *text, fs_method_setting *out)
     char names[600];
     int rc = fs_param_split(text, &split);
     if (rc) return rc;
-    if (!(out->m = fs_method_find(split.method))) {
-        fs_method_names(names, sizeof names);
-        return fs_fail(FS_ERR_INPUT, "%s: unknown method '%s' (methods: %s)", text, split.method, names);
-    }
+    if (!(out->m = fs_method_find(split.method))) return fs_method_fail_unknown(text, split.method);
     if ((out->param = fs_method_param_index(out->m, split.param)) < 0) {
         fs_method_param_names(out->m, names, sizeof names);
         return fs_fail(FS_ERR_INPUT, "%s: %s has no parameter '%s' (its parameters: %s)", text, split.method,

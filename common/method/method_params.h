@@ -24,6 +24,9 @@ int fs_method_setting_parse(const fs_method_setting *set, const char *value, dou
 
 /* "a, b, c": the registered methods' names, and m's parameters' names (cut at size). */
 void fs_method_names(char *buf, int size);
+/* FS_ERR_INPUT (fs_fail): "[context: ]unknown method 'name' (methods: a, b, ...)",
+ * the one wording of every caller that looks a method up by name. */
+int fs_method_fail_unknown(const char *context, const char *name);
 void fs_method_param_names(const fs_method *m, char *buf, int size);
 
 /* The scene's resolver (fs_scene_set_resolver; the registry installs it): the setting's

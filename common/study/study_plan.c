@@ -43,7 +43,7 @@ int fs_study_add_methods(fs_study *s, const char *methods, const fs_sweep *sweep
     else fs_method_names(list, sizeof list);
     for (char *tok = strtok(list, ", "); tok && !rc; tok = strtok(NULL, ", ")) {
         const fs_method *m = fs_method_find(tok);
-        rc = m ? fs_study_add_method(s, m, sweeps, nsweeps) : fs_fail(FS_ERR_INPUT, "unknown method '%.60s'", tok);
+        rc = m ? fs_study_add_method(s, m, sweeps, nsweeps) : fs_method_fail_unknown(NULL, tok);
     }
     for (int i = 0; i < nsweeps && !rc; i++) {
         int used = 0;

@@ -44,7 +44,7 @@ static int check_input_file(const char *path)
 {
     struct stat st;
     if (stat(path, &st) != 0) return fs_fail(FS_ERR_INPUT, "%s: cannot open: %s", path, strerror(errno));
-    if (S_ISDIR(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: is a folder, not a particle file", path);
+    if (S_ISDIR(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: is a directory, not a particle file", path);
     if (!S_ISREG(st.st_mode)) return fs_fail(FS_ERR_INPUT, "%s: not a regular file", path);
     if (st.st_size == 0) return fs_fail(FS_ERR_INPUT, "%s: empty file", path);
     FILE *f = fopen(path, "rb");
@@ -68,6 +68,8 @@ int fs_particles_read(fs_particles *p, const char *path, const char *format)
 {
     memset(p, 0, sizeof *p);
     const char *fmt;
+    struct stat st; /* a directory first: its name says nothing of a format */
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) return check_input_file(path);
     int rc = pick_format(path, format, &fmt);
     if (rc) return rc;
     static const struct {
