@@ -63,7 +63,8 @@ if [ $mode = quick ]; then
   export FS_QUICK=1 FS_RESULTS=${FS_RESULTS:-out/quick/results}
   rm -rf "$FS_RESULTS"
 fi
-[ -x build/fluidsurf ] || bash scripts/build.sh build
+# every target, the experiments' tools too (scripts/demo.sh builds only fluidsurf); incremental
+bash scripts/build.sh build
 export BIN=${BIN:-$PWD/build/fluidsurf}
 
 # the papers

@@ -11,7 +11,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-bash scripts/build.sh build
+# only the command the demo runs: the tests and tools come with scripts/test.sh
+FS_BUILD_TARGET=fluidsurf bash scripts/build.sh build
 source experiments/lib.sh # FS_QUICK=1 (experiments/run_all.sh --quick): 128x128 into out/quick/demo
 out=out/$(quick "" quick/)demo
 mkdir -p "$(dirname "$out")"
