@@ -41,12 +41,13 @@ check 'grep -qF "| \`spheres_radius_scale-0p8_thickness-on\` | spheres | radius_
 read -r sw sh <<< "$(size "$T/sweep/panel.png")"
 check '[ "${sh:-0}" -ge $((2 * 48)) ] && [ "${sh:-0}" -le $((2 * 48 + 150)) ] && [ "${sw:-0}" -ge $((4 * 48)) ]' "sweep panel is a 2-row grid (${sw}x${sh})"
 
-# 2b. the parameter columns across methods: empty where a method has no such parameter,
-# its own value where it has one it does not sweep; a reference:P=V label
+# 2b. the parameter columns across methods: filled only on the rows of the method that sweeps
+# them, empty on the others' (the reference has a thickness of its own, which it does not
+# sweep: issue 53, the page's sweep grid showed such a row); a reference:P=V label
 "$BIN" compare "$box" --methods spheres,reference --set spheres.thickness=on,off --set spheres.radius_scale=0.8,1.2 \
   --reference reference:thickness=off -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/cols" 2>/dev/null; rc=$?
 check '[ $rc -eq 0 ] && grep -v "^#" "$T/cols/metrics.csv" | head -1 | grep -q "^method,variant,thickness,radius_scale,reference,frame,"' "parameter columns in --set order"
-check 'grep -q "^spheres,thickness=off;radius_scale=0.8,off,0.8,reference:thickness=off,," "$T/cols/metrics.csv" && grep -q "^reference,,on,,reference:thickness=off,," "$T/cols/metrics.csv"' "reference's row: its own thickness, no radius_scale"
+check 'grep -q "^spheres,thickness=off;radius_scale=0.8,off,0.8,reference:thickness=off,," "$T/cols/metrics.csv" && grep -q "^reference,,,,reference:thickness=off,," "$T/cols/metrics.csv"' "reference's row: no thickness (its own, not swept), no radius_scale"
 check '[ -s "$T/cols/reference_thickness-off.exr" ] && grep -qF "| \`reference_thickness-off\` | reference (ground truth) | thickness=off |" "$T/cols/report.md"' "a reference:P=V view is labelled reference_P-V, in report.md's table"
 
 # 3. --import of a written EXR gives zero error against itself

@@ -116,6 +116,8 @@ with open("seq.json", "w") as f:
 study("still", "still.json", "spheres,aniso_ssf,raycast_pca")
 study("seq", "seq.json", "spheres,aniso_ssf", ["--counters"])
 study("sweep", "still.json", "spheres", ["--set", "spheres.radius_scale=0.8,1.2"])
+# the reference has a thickness of its own, not swept: it is no cell of the grid (issue 53)
+study("sweep_ref", "still.json", "reference,spheres", ["--set", "spheres.thickness=on,off"])
 os.makedirs("shards")
 for k in (1, 2):
     r = run(["compare", "seq.json", "--methods", "spheres,aniso_ssf", "-W", "96", "-H", "64", "--repeat", "1", "-q",
@@ -313,6 +315,11 @@ try:
     bars = drv.find_elements(By.CSS_SELECTOR, "#timings-svg rect[data-stage]")
     tips = [b.find_element(By.TAG_NAME, "title").get_attribute("textContent") for b in bars]
     check(len(bars) > 3 and all(" on " in t and ": " in t for t in tips), "timings are stacked SVG bars with the stage and renderer (%s)" % tips[:1])
+    fills = {}
+    for b in bars:
+        fills.setdefault(b.get_attribute("data-stage"), set()).add(b.get_attribute("fill"))
+    check(all(len(f) == 1 for f in fills.values()) and len(set.union(*fills.values())) == len(fills),
+          "each of the %d stages has one colour, none shared (%s)" % (len(fills), sorted(fills)))
     press("l")
     shot = canvas_shot("c_heat_normal.png")
     heat = png("still/heat_normal_spheres.png")
@@ -333,6 +340,11 @@ try:
           canvas_matches(shot, png("sweep/spheres_radius_scale-0p8.png"), zoom()) < 0.95,
           "clicking the grid's second cell shows radius_scale 1.2 (%s)" % status().get_attribute("data-label"))
     drv.save_screenshot(os.path.join(OUT, "page_sweep.png"))
+    drv.get("file://" + os.path.abspath("sweep_ref/report.html"))
+    wait_for(lambda: "zoom" in status().text, "the second sweep's viewer")
+    titles = [c.get_attribute("title") for c in drv.find_elements(By.CSS_SELECTOR, "#grid td[data-i]")]
+    check(titles == ["spheres_thickness-on", "spheres_thickness-off"],
+          "the sweep grid holds the swept method's variants only, not the reference (%s)" % titles)
 
     # a folder with the numbers only (an older study's committed summary): the tables, no viewer, no error
     os.makedirs("numbers_only")

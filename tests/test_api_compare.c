@@ -130,6 +130,16 @@ int main(void)
     CHECK(t && strstr(t, "spheres,radius_scale=0.8,total,") && strstr(t, ",2,"), "timings: 2 runs per variant");
     CHECK_NEAR(cell(m, "reference", "", "mask_iou"), 1, 1e-12, "the reference against itself");
 
+    /* every method by default, but the reference is no method of the study unless named:
+     * the demo compared it with itself (issue 53) */
+    fluidsurf_study *all = NULL;
+    CHECK(!fluidsurf_compare(s, (const fluidsurf_particles *const *)p, 1, NULL, NULL, 0, NULL, 0, 1, 0, &all),
+          "fluidsurf_compare of every method: %s", fluidsurf_last_error());
+    const char *am = all ? fluidsurf_study_table(all, "metrics") : NULL;
+    CHECK(am && strstr(am, "\nspheres,") && strstr(am, "\nraycast_pca,") && !strstr(am, "\nreference,"),
+          "every method but the reference has a row");
+    fluidsurf_study_free(all);
+
     /* the same item through fluidsurf_render and the metrics of version 2 */
     fluidsurf_image *a, *ref;
     const char *par[] = {"radius_scale=0.8"};

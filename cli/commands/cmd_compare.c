@@ -34,7 +34,8 @@ static compare_args A; /* the parsed command line (the table below fills it) */
 
 static const cli_opt opts[] = {
     CLI_OPT_OUT(A.out, "DIR", "the output folder (made if missing)"),
-    CLI_STRING_OPT("--methods", A.methods, "a,b,c", "methods to run (default: every registered method)"),
+    CLI_STRING_OPT("--methods", A.methods, "a,b,c",
+                   "methods to run (default: every registered method but the reference, the ground truth)"),
     CLI_OPT_SET(A.sets, A.nsets),
     CLI_LIST_OPT("--reference", A.refspecs, A.nrefspecs, FS_STUDY_MAX_REFS, "SPEC",
                  "reference, reference:PARAM=V,... or analytic (repeatable;\n"

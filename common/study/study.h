@@ -82,6 +82,8 @@ typedef struct fs_study {
     int measure;                   /* metrics and temporal against the references (0: a shard, which has not all) */
     char pcols[FS_MAX_SWEEPS][64]; /* metrics.csv's parameter columns: each swept parameter's name once */
     int npcols;
+    const fs_method *swept[FS_MAX_SWEEPS]; /* sweep k's method, whose rows fill column swept_col[k] */
+    int swept_col[FS_MAX_SWEEPS], nswept;
     fs_study_entry entries[FS_STUDY_MAX_ENTRIES];
     fs_study_ref refs[FS_STUDY_MAX_REFS];
     double ref_temporal_deg; /* the first reference's own mean normal change */
@@ -118,8 +120,9 @@ int fs_study_check_labels(const fs_study *s);
 /* The scene's frames, or the ngiven frames set before (no cap: frames
  * stream); imports need one frame. */
 int fs_study_set_frames(fs_study *s);
-/* Adds the variants of each method of a comma list (every registered one when
- * NULL) and checks that each sweep is of one of them. */
+/* Adds the variants of each method of a comma list (when NULL every registered
+ * one but the reference, which is a method of the study only when named) and
+ * checks that each sweep is of one of them. */
 int fs_study_add_methods(fs_study *s, const char *methods, const fs_sweep *sweeps, int nsweeps);
 /* Loads the first frame and adopts its radius and camera for the whole study
  * (fs_scene_adopt_frame; note gets its message, "" when none). */

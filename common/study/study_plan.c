@@ -43,6 +43,7 @@ int fs_study_add_methods(fs_study *s, const char *methods, const fs_sweep *sweep
     else fs_method_names(list, sizeof list);
     for (char *tok = strtok(list, ", "); tok && !rc; tok = strtok(NULL, ", ")) {
         const fs_method *m = fs_method_find(tok);
+        if (!methods && m && !strcmp(m->name, "reference")) continue; /* a method of the study only when asked */
         rc = m ? fs_study_add_method(s, m, sweeps, nsweeps) : fs_method_fail_unknown(NULL, tok);
     }
     for (int i = 0; i < nsweeps && !rc; i++) {
@@ -140,12 +141,13 @@ int fs_study_add_import(fs_study *s, const char *spec)
 
 void fs_study_param_columns(fs_study *s, const fs_sweep *sweeps, int nsweeps)
 {
-    s->npcols = 0;
+    s->npcols = s->nswept = 0;
     for (int i = 0; i < nsweeps; i++) {
         const char *name = sweeps[i].m->params[sweeps[i].param].name;
-        int seen = 0;
-        for (int k = 0; k < s->npcols; k++) seen |= !strcmp(s->pcols[k], name);
-        if (!seen) snprintf(s->pcols[s->npcols++], sizeof s->pcols[0], "%s", name);
+        int c = 0;
+        while (c < s->npcols && strcmp(s->pcols[c], name)) c++;
+        if (c == s->npcols) snprintf(s->pcols[s->npcols++], sizeof s->pcols[0], "%s", name);
+        s->swept[s->nswept] = sweeps[i].m, s->swept_col[s->nswept++] = c;
     }
 }
 

@@ -38,11 +38,20 @@ static void provenance_header(const fs_study *s, FILE *f)
     fprintf(f, "%s\n", line);
 }
 
-/* Entry e's value of each parameter column, "" where its method has no such parameter. */
+/* 1 when entry e's method sweeps parameter column c. */
+static int sweeps_column(const fs_study *s, const fs_study_entry *e, int c)
+{
+    int yes = 0;
+    for (int k = 0; k < s->nswept; k++) yes |= s->swept_col[k] == c && s->swept[k] == e->v.m && !e->imported;
+    return yes;
+}
+
+/* Entry e's value of each parameter column, "" where its method does not sweep it
+ * (another method's parameter of that name is not the one swept). */
 static void param_cells(const fs_study *s, const fs_study_entry *e, FILE *f)
 {
     for (int c = 0; c < s->npcols; c++) {
-        const fs_method *m = e->imported ? NULL : e->v.m;
+        const fs_method *m = sweeps_column(s, e, c) ? e->v.m : NULL;
         for (int j = 0; m && j < m->nparams; j++)
             if (!strcmp(m->params[j].name, s->pcols[c])) {
                 char v[64];

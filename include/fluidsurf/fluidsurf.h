@@ -329,7 +329,8 @@ enum { FLUIDSURF_STUDY_COUNTERS = 1 };
  * timed renders, their median; 0: 3), the same tables.
  * frames: nframes particle sets (a sequence, framed and r settled on the
  * first), or NULL for the scene's own particle source (a scene file's frames).
- * methods: a comma list, NULL for every registered method. sets: nsets
+ * methods: a comma list, NULL for every registered method but the reference
+ * (the ground truth is a method of the study only when named). sets: nsets
  * "method.param=value" settings; a comma list of values sweeps the parameter
  * ("spheres.radius_scale=0.8,1.2"), as --set. references: nreferences of
  * "reference", "reference:param=value,...", "analytic" (0: "reference").

@@ -392,15 +392,27 @@
   }
 
   /* ---- a sweep grid: one method swept over one or two parameters ---- */
+  /* The method whose rows take more than one value of the swept columns: an older
+   * metrics.csv also filled them on other methods' rows (the reference's own field). */
+  function sweptMethod(params) {
+    var seen = {}, order = [];
+    T.metrics.rows.forEach(function (r) {
+      if (r[params[0]] === '') return;
+      if (!seen[r.method]) { seen[r.method] = []; order.push(r.method); }
+      var k = r[params[0]] + '\u0001' + (params[1] ? r[params[1]] : '');
+      if (seen[r.method].indexOf(k) < 0) seen[r.method].push(k);
+    });
+    return order.filter(function (m) { return seen[m].length > 1; })[0];
+  }
   function sweepGrid() {
     var mh = T.metrics ? T.metrics.header : [];
     var a = mh.indexOf('variant'), b = mh.indexOf('reference');
     var params = a >= 0 && b > a + 1 ? mh.slice(a + 1, b) : [];
     if (!params.length || params.length > 2) return;
-    var byKey = {}, byRow = {}, rows = [], cols = params[1] ? [] : [''];
+    var byKey = {}, byRow = {}, rows = [], cols = params[1] ? [] : [''], swept = sweptMethod(params);
     T.metrics.rows.forEach(function (r) {
       var i = methods.findIndex(function (w) { return w.method === r.method && w.variant === r.variant; });
-      if (i < 0 || r[params[0]] === '') return;
+      if (i < 0 || r.method !== swept || r[params[0]] === '') return; /* only the swept method's rows */
       var k = r[params[0]] + '\u0001' + (params[1] ? r[params[1]] : '');
       if (byKey[k] === undefined) { byKey[k] = i; byRow[k] = r; } /* the first reference's row */
       if (rows.indexOf(r[params[0]]) < 0) rows.push(r[params[0]]); /* in the study's order */
@@ -433,6 +445,12 @@
 
   /* ---- timings: stacked bars per stage ---- */
   var PALETTE = ['#4e79a7', '#f28e2b', '#e15759', '#76b7b2', '#59a14f', '#edc948', '#b07aa1', '#ff9da7', '#9c755f', '#bab0ac'];
+  /* Stage i of n, one colour each across the study: the palette while it lasts, else
+   * hues spaced evenly around the wheel, neighbours also apart in lightness. */
+  function stageColour(i, n) {
+    if (n <= PALETTE.length) return PALETTE[i];
+    return 'hsl(' + Math.round(i * 360 / n) + ', 60%, ' + (i % 2 ? 62 : 42) + '%)';
+  }
   function timingsChart(t) {
     var groups = [], byKey = {}, stages = [];
     t.rows.forEach(function (r) {
@@ -458,7 +476,7 @@
       s.appendChild(lab);
       g.parts.forEach(function (p) {
         var wpx = maxT > 0 ? p.ms / maxT * width : 0;
-        var rect = svg('rect', { x: x, y: y, width: Math.max(wpx, 0.5), height: rowH - 4, fill: PALETTE[stages.indexOf(p.stage) % PALETTE.length],
+        var rect = svg('rect', { x: x, y: y, width: Math.max(wpx, 0.5), height: rowH - 4, fill: stageColour(stages.indexOf(p.stage), stages.length),
                                  'data-stage': p.stage });
         var tt = svg('title');
         tt.textContent = g.name + ' · ' + p.stage + ': ' + p.ms + ' ms (min ' + p.min + ', max ' + p.max + ') on ' + p.renderer;
@@ -472,7 +490,7 @@
     });
     var lx = left, ly = groups.length * rowH + 20;
     stages.forEach(function (st, i) {
-      s.appendChild(svg('rect', { x: lx, y: ly, width: 10, height: 10, fill: PALETTE[i % PALETTE.length] }));
+      s.appendChild(svg('rect', { x: lx, y: ly, width: 10, height: 10, fill: stageColour(i, stages.length) }));
       var t2 = svg('text', { x: lx + 13, y: ly + 9 });
       t2.textContent = st;
       s.appendChild(t2);
