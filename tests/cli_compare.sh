@@ -106,6 +106,10 @@ check '[ $rc -eq 0 ] && [ ! -e "$T/reuse/spheres_radius_scale-0p8.png" ] && [ ! 
   "--force removes the earlier run's files only: $(ls "$T/reuse" | tr '\n' ' ')"
 "$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 --no-cache --resume -o "$T/reuse" 2> "$T/resume.err"; rc=$?
 check '[ $rc -eq 0 ] && grep -q "resume: 1 work item(s) loaded" "$T/resume.err"' "--resume into a used folder keeps what matches"
+before=$(snap "$T/reuse")
+"$BIN" compare "$box" --methods reference -W 32 -H 32 --repeat 1 -q --no-cache --resume -o "$T/reuse" 2> "$T/other.err"; rc=$?
+check '[ $rc -eq 2 ] && [ "$(wc -l < "$T/other.err")" -eq 1 ] && grep -q "^fluidsurf: $T/reuse: --resume: the earlier run there has views this one does not make (spheres.exr).*--force" "$T/other.err" && [ "$(snap "$T/reuse")" = "$before" ]' \
+  "--resume with another method list is refused, nothing changed: $(cat "$T/other.err")"
 rm "$T/reuse/fluidsurf-outputs.txt" # as an older fluidsurf left it
 "$BIN" compare "$box" --methods spheres -W 32 -H 32 --repeat 1 -q --no-cache -o "$T/reuse" 2> "$T/old.err"; rc=$?
 check '[ $rc -eq 2 ] && grep -q "holds another run.s outputs (metrics.csv" "$T/old.err"' "a folder an older fluidsurf wrote (no list) is recognised by its files"

@@ -175,6 +175,40 @@ int fs_outputs_claim(const char *dir, const char *what, int resume, int force)
     return rc;
 }
 
+/* 1 when the EXR name is one of the views': LABEL.exr, or LABEL_fNNNN.exr in a sequence. */
+static int exr_of_views(const char *name, const char *const *labels, int n)
+{
+    size_t len = strlen(name) - 4;
+    for (int i = 0; i < n; i++) {
+        size_t k = strlen(labels[i]);
+        if (strncmp(name, labels[i], k)) continue;
+        if (len == k) return 1;
+        if (len == k + 6 && !strncmp(name + k, "_f", 2) && strspn(name + k + 2, "0123456789") >= 4) return 1;
+    }
+    return 0;
+}
+
+int fs_outputs_resume_check(const char *dir, const char *const *labels, int n)
+{
+    found f = {0};
+    int rc = FS_OK, manifest = read_manifest(dir, &f, &rc);
+    if (!rc && !manifest) rc = read_legacy(dir, &f);
+    char other[512] = "";
+    int nother = 0;
+    for (int i = 0; i < f.n && !rc; i++) {
+        if (!ends_with(f.name[i], ".exr") || exr_of_views(f.name[i], labels, n)) continue;
+        size_t l = strlen(other);
+        if (nother++ < 4) snprintf(other + l, sizeof other - l, "%s%s", l ? ", " : "", f.name[i]);
+    }
+    if (!rc && nother)
+        rc = fs_fail(FS_ERR_INPUT,
+                     "%s: --resume: the earlier run there has views this one does not make (%s%s): resume it with its "
+                     "methods and settings, or --force to start afresh",
+                     dir, other, nother > 4 ? ", ..." : "");
+    free_found(&f);
+    return rc;
+}
+
 int fs_outputs_record(const char *path)
 {
     char list[4200];

@@ -19,6 +19,11 @@
  * it holds, unless force: then fluidsurf's own files are removed first, never
  * any other file. what: the command, for the message ("compare", "merge"). */
 int fs_outputs_claim(const char *dir, const char *what, int resume, int force);
+/* compare --resume: FS_ERR_INPUT in one line when dir holds an earlier run's
+ * view (an EXR, LABEL.exr or LABEL_fNNNN.exr) that is none of the n labels of
+ * this run's views (another method list or sweep), whose files would stay
+ * beside this run's tables; FS_OK otherwise. */
+int fs_outputs_resume_check(const char *dir, const char *const *labels, int n);
 /* Records path ("DIR/NAME", a file just renamed into place) in DIR's list. */
 int fs_outputs_record(const char *path);
 

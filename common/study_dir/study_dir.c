@@ -33,6 +33,17 @@ static int make_outdir(const char *dir, int *made)
     return FS_OK;
 }
 
+/* --resume: the folder's earlier views are all this run's (fs_outputs_resume_check). */
+static int resume_check(const fs_study_dir *r)
+{
+    const fs_study *s = r->s;
+    const char *labels[FS_STUDY_MAX_REFS + FS_STUDY_MAX_ENTRIES];
+    int n = 0;
+    for (int k = 0; k < s->nrefs; k++) labels[n++] = s->refs[k].label;
+    for (int i = 0; i < s->nentries; i++) labels[n++] = s->entries[i].label;
+    return fs_outputs_resume_check(r->outdir, labels, n);
+}
+
 /* The output folder (a merge's staging folder), made or claimed. */
 static int claim_folder(fs_study_dir *r)
 {
@@ -42,6 +53,7 @@ static int claim_folder(fs_study_dir *r)
     int rc = make_outdir(r->outdir, &r->made_outdir);
     /* a merge writes into its fresh staging folder; merge itself checks the output */
     if (!rc && !r->made_outdir && !r->merge) rc = fs_outputs_claim(r->outdir, "compare", r->o->resume, r->o->force);
+    if (!rc && !r->made_outdir && !r->merge && r->o->resume && !r->o->force) rc = resume_check(r);
     return rc;
 }
 
