@@ -67,7 +67,7 @@ one_frame() {
     read -r i m < <(stages "$input" "$s" auto)
     read -r p me te ie < <(counts "$input" "$s" auto)
     echo "$name,$n,$s,auto,1,$i,$m,$(awk -v a="$i" -v b="$m" 'BEGIN {printf "%.1f", a + b}'),$((p > 0)),,,,"
-    [ "$p" -gt 0 ] && break
+    if [ "$p" -gt 0 ]; then break; fi # auto may make none at every scanned size
   done
 }
 
