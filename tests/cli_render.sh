@@ -35,6 +35,13 @@ fi
 "$BIN" methods | grep -q 'step_min' || fail "methods does not list parameters"
 "$BIN" info "$cube" | grep -q 'particles: 2366' || fail "info count"
 "$BIN" convert "$cube" -o "$T/cube.ply" && "$BIN" info "$T/cube.ply" | grep -q 'particles: 2366' || fail "convert to ply"
+# every point array is listed and converted (issue 53: DualSPHysics' Idp and Rhop were dropped)
+crop=$SRC/experiments/data/dualsphysics/dambreak200k_t0.300_crop902.vtk
+"$BIN" info "$crop" | grep -qx 'point arrays: Idp (1 x uint32), Rhop (1 x float32)' || fail "info lists Idp and Rhop: $("$BIN" info "$crop" 2>&1 | grep -i array)"
+for e in ply bgeo vtk; do
+  "$BIN" convert "$crop" -o "$T/crop.$e" && "$BIN" info "$T/crop.$e" | grep -qx 'point arrays: Idp (1 x u*int32), Rhop (1 x float32)' || fail "convert to .$e keeps Idp and Rhop: $("$BIN" info "$T/crop.$e" 2>&1 | grep -i array)"
+done
+"$BIN" convert "$crop" -o "$T/crop.vdb" 2> "$T/vdb.err" && grep -q "keeps no point arrays: 2 of" "$T/vdb.err" || fail "convert to .vdb says what it drops: $(cat "$T/vdb.err")"
 # most particles on one point (a simulator's clamp piles them up): no spacing to measure,
 # an error only when nothing else gives a radius
 { echo x,y,z; for i in $(seq 50); do echo 0.5,0.5,0.5; done; for i in $(seq 10); do echo "0.$i,0,0"; done; } > "$T/piled.csv"

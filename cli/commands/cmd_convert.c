@@ -10,6 +10,8 @@
 /* what --help says after the options */
 static const char epilogue[] =
     "Reads vtk, vtu, bgeo, ply, vdb, raw, csv; writes vtk (legacy binary), bgeo, ply, vdb.\n"
+    "Every other point array of a vtk, vtu, bgeo or ply file (ids, densities, ...) is written\n"
+    "to vtk, bgeo and ply (bgeo: as float32 or int32); vdb keeps none (a note says so).\n"
     "Formats come from the extensions unless given. OUT is written atomically.\n"
     "IN may also be a scene .json: its first frame (a file or a synthetic shape) is written\n"
     "with the scene's r, e.g. to hand a synthetic set to another tool.\n";
@@ -47,6 +49,10 @@ int cmd_convert(int argc, char **argv)
     fs_particles p;
     rc = scene ? read_scene_frame(in, &p) : fs_particles_read(&p, in, from);
     if (rc) return cli_error(rc);
+    const char *fmt = to ? to : fs_format_from_path(out);
+    if (!rc && p.narrays && fmt && !strcmp(fmt, "vdb"))
+        fs_note("%s: .vdb keeps no point arrays: %d of %s not written (%s%s)", out, p.narrays, in, p.arrays[0].name,
+                p.narrays > 1 ? ", ..." : "");
     rc = fs_particles_write(&p, out, to);
     fs_particles_free(&p);
     return rc ? cli_error(rc) : 0;

@@ -7,7 +7,8 @@
 #include <stdio.h>
 
 /* what --help says after the options */
-static const char epilogue[] = "Prints the particle count, bounding box, attributes, the radius the spacing implies\n"
+static const char epilogue[] = "Prints the particle count, bounding box, attributes (and the file's other point\n"
+                               "arrays, which convert writes), the radius the spacing implies\n"
                                "(used when neither the file nor --radius gives one), the median nearest-neighbour\n"
                                "distance and the median normalised density phi at particle centres (cubic spline,\n"
                                "support 4r), so you can choose r and volume_scale (phi should read ~1 inside).\n"
@@ -26,6 +27,9 @@ static void print_info(const char *file, const fs_particles *p, const fs_particl
            p->bmax[1], p->bmax[2]);
     printf("attributes: position%s%s%s\n", fields & FS_HAS_VELOCITY ? " velocity" : "",
            fields & FS_HAS_COLOR ? " color" : "", fields & FS_HAS_PHASE ? " phase" : "");
+    static char arrays[FS_ARRAYS_TEXT_SIZE];
+    fs_particle_info_arrays(p, arrays, sizeof arrays);
+    if (arrays[0]) printf("point arrays: %s\n", arrays);
     printf("radius r: %g (%s)\n", r, source[in->source]);
     if (in->estimated > 0) printf("radius the spacing implies: %.6g (%.3g r)\n", in->estimated, in->estimated / r);
     char why[200];

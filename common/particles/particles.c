@@ -62,6 +62,8 @@ void fs_particles_free(fs_particles *p)
     free(p->vz);
     free(p->color);
     free(p->phase);
+    for (int i = 0; i < p->narrays; i++) free(p->arrays[i].data);
+    free(p->arrays);
     memset(p, 0, sizeof *p);
 }
 

@@ -9,6 +9,19 @@ extern "C" {
 
 enum { FS_HAS_VELOCITY = 1, FS_HAS_COLOR = 2, FS_HAS_PHASE = 4 };
 
+/* A per-particle array a file holds besides position, velocity, colour and phase
+ * (an id, a density, a pressure, normals): the readers of VTK, VTU, BGEO and PLY
+ * keep every numeric one, `info` lists them, `convert` writes them
+ * (particle_arrays.h). Integer types narrower than 32 bits are kept as int32,
+ * 64-bit integers as float64. */
+typedef enum { FS_ARRAY_F32, FS_ARRAY_F64, FS_ARRAY_I32, FS_ARRAY_U32 } fs_array_type;
+typedef struct fs_point_array {
+    char name[64];
+    int ncomp;          /* components per particle */
+    fs_array_type type; /* of every value */
+    void *data;         /* n * ncomp values, particle after particle */
+} fs_point_array;
+
 typedef struct fs_particles {
     size_t n;
     float *x, *y, *z;       /* positions, scene units */
@@ -17,6 +30,8 @@ typedef struct fs_particles {
     int32_t *phase;         /* phase / material id or NULL */
     float bmin[3], bmax[3]; /* bounding box, kept current by fs_particles_bounds */
     float radius;           /* radius stored in the file, 0 when unknown */
+    int narrays;            /* the file's other arrays (fs_point_array), freed with the set */
+    fs_point_array *arrays;
 } fs_particles;
 
 /* Allocates n particles with positions and the attributes named in fields

@@ -22,6 +22,12 @@ typedef struct fs_particle_info {
  * (all particles at one point) and neither radius nor the file gives r. */
 int fs_particle_info_compute(const fs_particles *p, float radius, float volume_scale, fs_particle_info *out);
 
+/* The bytes fs_particle_info_arrays needs for any set (FS_MAX_POINT_ARRAYS names). */
+#define FS_ARRAYS_TEXT_SIZE (64 * 96)
+/* "NAME (K x TYPE), ..." of p's other point arrays (particle_arrays.h), the ones
+ * `info` lists and convert writes, into out (size bytes, cut to fit); "" when none. */
+void fs_particle_info_arrays(const fs_particles *p, char *out, size_t size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,9 +1,13 @@
 /* Houdini classic BGEO (version 5, as partio writes it), gzip-compressed or not.
  * Layout: "Bgeo" 'V' int32 version, 8 int32 counts, point attribute definitions,
  * then per point x y z w (float32) and its attribute values, all big-endian.
- * Primitive/detail data after the points is ignored on reading. */
+ * Primitive/detail data after the points is ignored on reading. Read: v, Cd,
+ * phase, pscale (the first point's as the radius), and every numeric point
+ * attribute but v, Cd and phase as a point array (particle_arrays.h; string
+ * attributes are not kept); written back as float or int32 attributes. */
 #include "particle_io.h"
 #include "fs_error.h"
+#include "particle_arrays.h"
 #include "output_file.h"
 #include "bytes.h"
 #include <limits.h>
@@ -207,6 +211,28 @@ static void read_point(fs_particles *p, size_t i, const unsigned char *r, const 
     if (pa->pscale >= 0 && i == 0) p->radius = be32f(r + attrs[pa->pscale].offset);
 }
 
+/* Every numeric attribute but v, Cd and phase as a point array of p, filled from
+ * the n points of `record` bytes at r. */
+static int read_others(fs_particles *p, const unsigned char *r, size_t record, const bgeo_attr *attrs, int nattr,
+                       const point_attrs *pa)
+{
+    for (int i = 0; i < nattr && p->narrays < FS_MAX_POINT_ARRAYS; i++) {
+        const bgeo_attr *at = &attrs[i];
+        if (i == pa->v || i == pa->cd || i == pa->phase || at->type == BGEO_INDEX || !at->size ||
+            at->size > FS_MAX_ARRAY_COMPONENTS)
+            continue;
+        fs_point_array *a;
+        int rc =
+            fs_particles_add_array(p, at->name, (int)at->size, at->type == BGEO_INT ? FS_ARRAY_I32 : FS_ARRAY_F32, &a);
+        if (rc) return rc;
+        for (size_t k = 0; k < p->n * at->size; k++) {
+            const unsigned char *b = r + (k / at->size) * record + at->offset + 4 * (k % at->size);
+            fs_point_array_set(a, k, at->type == BGEO_INT ? (double)(int32_t)fs_be32(b) : (double)be32f(b));
+        }
+    }
+    return FS_OK;
+}
+
 /* The n points of `record` bytes each at the cursor. */
 static int read_points(fs_particles *p, const cursor *c, const bgeo_attr *attrs, int nattr, size_t n, size_t record)
 {
@@ -215,7 +241,7 @@ static int read_points(fs_particles *p, const cursor *c, const bgeo_attr *attrs,
     int rc = fs_particles_alloc(p, n, fields);
     if (rc) return rc;
     for (size_t i = 0; i < n; i++) read_point(p, i, c->p + i * record, attrs, &pa);
-    return FS_OK;
+    return read_others(p, c->p, record, attrs, nattr, &pa);
 }
 
 static int parse_bgeo(fs_particles *p, const char *path, const unsigned char *data, size_t size)
@@ -273,11 +299,65 @@ static unsigned char *put_attr(unsigned char *b, const char *name, unsigned size
     *b++ = (unsigned char)len;
     memcpy(b, name, len);
     b += len;
-    *b++ = 0;
+    *b++ = (unsigned char)(size >> 8);
     *b++ = (unsigned char)size;
     b = put32(b, (uint32_t)type);
     for (unsigned k = 0; k < size; k++) b = type == BGEO_INT ? put32(b, 0) : putf(b, def);
     return b;
+}
+
+/* What a point record holds besides x y z w. */
+typedef struct bgeo_out {
+    int has_v, has_c, has_ph, has_r; /* has_r: a constant pscale from the radius */
+    size_t record;                   /* bytes of a point */
+} bgeo_out;
+
+/* The header and the attribute definitions into a malloc'ed buffer (*len bytes). */
+static unsigned char *put_header(const fs_particles *p, bgeo_out *o, size_t *len)
+{
+    unsigned fields = fs_particles_fields(p);
+    o->has_v = !!(fields & FS_HAS_VELOCITY), o->has_c = !!(fields & FS_HAS_COLOR);
+    o->has_ph = !!(fields & FS_HAS_PHASE), o->has_r = p->radius > 0.0f && !fs_particles_array(p, "pscale");
+    o->record = 16 + 12 * (o->has_v + o->has_c) + 4 * (o->has_ph + o->has_r);
+    size_t size = 64 + 4 * 96;
+    for (int i = 0; i < p->narrays; i++) size += 80 + 4 * (size_t)p->arrays[i].ncomp;
+    unsigned char *head = malloc(size), *b = head;
+    if (!head) return NULL;
+    memcpy(b, "BgeoV", 5);
+    b += 5;
+    int32_t counts[9] = {5, (int32_t)p->n, 0, 0, 0, o->has_v + o->has_c + o->has_ph + o->has_r + p->narrays, 0, 0, 0};
+    for (int i = 0; i < 9; i++) b = put32(b, (uint32_t)counts[i]);
+    if (o->has_v) b = put_attr(b, "v", 3, BGEO_VECTOR, 0.0f);
+    if (o->has_c) b = put_attr(b, "Cd", 3, BGEO_FLOAT, 1.0f);
+    if (o->has_ph) b = put_attr(b, "phase", 1, BGEO_INT, 0.0f);
+    if (o->has_r) b = put_attr(b, "pscale", 1, BGEO_FLOAT, p->radius);
+    for (int i = 0; i < p->narrays; i++) {
+        const fs_point_array *a = &p->arrays[i];
+        int is_int = a->type == FS_ARRAY_I32 || a->type == FS_ARRAY_U32;
+        b = put_attr(b, a->name, (unsigned)a->ncomp, is_int ? BGEO_INT : BGEO_FLOAT, 0.0f);
+        o->record += 4 * (size_t)a->ncomp;
+    }
+    *len = (size_t)(b - head);
+    return head;
+}
+
+/* Particle i's record at w (ints as int32, floats as float32); returns its end. */
+static unsigned char *put_point(unsigned char *w, const fs_particles *p, const bgeo_out *o, size_t i)
+{
+    w = putf(putf(putf(putf(w, p->x[i]), p->y[i]), p->z[i]), 1.0f);
+    if (o->has_v) w = putf(putf(putf(w, p->vx[i]), p->vy[i]), p->vz[i]);
+    for (int k = 0; o->has_c && k < 3; k++) w = putf(w, p->color[3 * i + k]);
+    if (o->has_ph) w = put32(w, (uint32_t)p->phase[i]);
+    if (o->has_r) w = putf(w, p->radius);
+    for (int a = 0; a < p->narrays; a++) {
+        const fs_point_array *arr = &p->arrays[a];
+        int is_int = arr->type == FS_ARRAY_I32 || arr->type == FS_ARRAY_U32;
+        for (size_t c = 0, nc = (size_t)arr->ncomp; c < nc; c++) {
+            double v = fs_point_array_get(arr, i * nc + c);
+            w = is_int ? put32(w, (uint32_t)(int64_t)v) : putf(w, (float)v);
+        }
+    }
+    return w;
 }
 
 int fs_write_bgeo(const fs_particles *p, const char *path)
@@ -286,39 +366,15 @@ int fs_write_bgeo(const fs_particles *p, const char *path)
     char tmp[4096];
     int rc = fs_output_begin(path, tmp, sizeof tmp);
     if (rc) return rc;
-    unsigned fields = fs_particles_fields(p);
-    int has_v = fields & FS_HAS_VELOCITY, has_c = fields & FS_HAS_COLOR, has_ph = fields & FS_HAS_PHASE;
-    int has_r = p->radius > 0.0f;
-    int nattr = !!has_v + !!has_c + !!has_ph + has_r;
-
-    unsigned char head[256], *b = head;
-    memcpy(b, "BgeoV", 5);
-    b += 5;
-    int32_t counts[9] = {5, (int32_t)p->n, 0, 0, 0, nattr, 0, 0, 0};
-    for (int i = 0; i < 9; i++) b = put32(b, (uint32_t)counts[i]);
-    if (has_v) b = put_attr(b, "v", 3, BGEO_VECTOR, 0.0f);
-    if (has_c) b = put_attr(b, "Cd", 3, BGEO_FLOAT, 1.0f);
-    if (has_ph) b = put_attr(b, "phase", 1, BGEO_INT, 0.0f);
-    if (has_r) b = put_attr(b, "pscale", 1, BGEO_FLOAT, p->radius);
-
-    gzFile gz = gzopen(tmp, "wb6");
-    int ok = gz && gzwrite(gz, head, (unsigned)(b - head)) == (int)(b - head);
+    bgeo_out o;
+    size_t len = 0;
+    unsigned char *head = put_header(p, &o, &len);
     enum { CHUNK = 1024 };
-    unsigned char buf[CHUNK * 48], *w = buf; /* 48 bytes: the largest record */
+    unsigned char *buf = head ? malloc(CHUNK * o.record) : NULL, *w = buf;
+    gzFile gz = buf ? gzopen(tmp, "wb6") : NULL;
+    int ok = gz && gzwrite(gz, head, (unsigned)len) == (int)len;
     for (size_t i = 0; ok && i < p->n; i++) {
-        w = putf(w, p->x[i]);
-        w = putf(w, p->y[i]);
-        w = putf(w, p->z[i]);
-        w = putf(w, 1.0f);
-        if (has_v) {
-            w = putf(w, p->vx[i]);
-            w = putf(w, p->vy[i]);
-            w = putf(w, p->vz[i]);
-        }
-        if (has_c)
-            for (int k = 0; k < 3; k++) w = putf(w, p->color[3 * i + k]);
-        if (has_ph) w = put32(w, (uint32_t)p->phase[i]);
-        if (has_r) w = putf(w, p->radius);
+        w = put_point(w, p, &o, i);
         if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {
             ok = gzwrite(gz, buf, (unsigned)(w - buf)) == (int)(w - buf);
             w = buf;
@@ -327,9 +383,11 @@ int fs_write_bgeo(const fs_particles *p, const char *path)
     static const unsigned char tail[2] = {0x00, 0xff}; /* "begin extra" / "end extra" markers */
     ok = ok && gzwrite(gz, tail, 2) == 2;
     if (gz && gzclose(gz) != Z_OK) ok = 0;
+    int oom = !buf;
+    free(head), free(buf);
     if (!ok) {
         fs_output_end(path, tmp, 0);
-        return fs_fail(FS_ERR_RUNTIME, "%s: error writing BGEO data", path);
+        return fs_fail(FS_ERR_RUNTIME, oom ? "%s: out of memory writing BGEO" : "%s: error writing BGEO data", path);
     }
     return fs_output_end(path, tmp, 1);
 }

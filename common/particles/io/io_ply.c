@@ -1,9 +1,13 @@
 /* PLY point clouds: ascii, binary_little_endian and binary_big_endian readers,
  * binary little-endian writer. Only the "vertex" element is read: x y z
  * (float or double), optional vx vy vz, red green blue (8-bit /255, 16-bit
- * /65535, float as is), phase; other properties (normals...) are skipped. */
+ * /65535, float as is), phase; every other scalar property (normals, ids,
+ * densities...) as a point array of one component (particle_arrays.h), which
+ * the writer writes back (a point array of k components as NAME_0 ... NAME_k-1);
+ * list properties are skipped. */
 #include "particle_io.h"
 #include "fs_error.h"
+#include "particle_arrays.h"
 #include "output_file.h"
 #include <errno.h>
 #include <stdint.h>
@@ -228,37 +232,57 @@ static int find_prop(const ply_elem *e, const char *const *names)
     return -1;
 }
 
-/* Where the vertex element keeps each attribute fluidsurf reads (-1: absent),
- * and the colours' scale to [0, 1]. */
-typedef struct vertex_columns {
-    int x, y, z, vx, vy, vz, r, g, b, phase;
-    int has_v, has_c;
-    double cscale[3];
-} vertex_columns;
+/* The point array type that holds PLY type t's values. */
+static fs_array_type array_type_of(int t)
+{
+    return t == T_F32 ? FS_ARRAY_F32 : t == T_F64 ? FS_ARRAY_F64 : t == T_U32 ? FS_ARRAY_U32 : FS_ARRAY_I32;
+}
 
-static int find_columns(const ply_elem *v, const char *path, vertex_columns *c)
+/* Every scalar property of v not in used[] (a property index or -1) as a point
+ * array of p; arr[k] gets property k's array, or NULL. */
+static int add_others(const ply_elem *v, const int *used, int nused, fs_particles *p, fs_point_array **arr)
+{
+    for (int k = 0; k < v->nprops; k++) {
+        int taken = v->props[k].count_type != T_NONE;
+        for (int u = 0; u < nused; u++) taken |= used[u] == k;
+        arr[k] = NULL;
+        if (taken || p->narrays == FS_MAX_POINT_ARRAYS) continue;
+        int rc = fs_particles_add_array(p, v->props[k].name, 1, array_type_of(v->props[k].type), &arr[k]);
+        if (rc) return rc;
+    }
+    return FS_OK;
+}
+
+/* The vertex properties fluidsurf uses (indices, -1 when absent) and the colour scale. */
+typedef struct vertex_props {
+    int x, y, z, vx, vy, vz, r, g, b, ph, has_v, has_c;
+    double cscale[3];
+} vertex_props;
+
+static int vertex_props_of(const ply_elem *v, const char *path, vertex_props *vp)
 {
     static const char *const nx[] = {"x", NULL}, *const ny[] = {"y", NULL}, *const nz[] = {"z", NULL},
                              *const nvx[] = {"vx", NULL}, *const nvy[] = {"vy", NULL}, *const nvz[] = {"vz", NULL},
                              *const nr[] = {"red", "r", "diffuse_red", NULL},
                              *const ng[] = {"green", "g", "diffuse_green", NULL},
                              *const nb[] = {"blue", "b", "diffuse_blue", NULL}, *const nph[] = {"phase", NULL};
-    c->x = find_prop(v, nx), c->y = find_prop(v, ny), c->z = find_prop(v, nz);
-    c->vx = find_prop(v, nvx), c->vy = find_prop(v, nvy), c->vz = find_prop(v, nvz);
-    c->r = find_prop(v, nr), c->g = find_prop(v, ng), c->b = find_prop(v, nb), c->phase = find_prop(v, nph);
-    if (c->x < 0 || c->y < 0 || c->z < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY vertex element lacks x, y or z", path);
-    c->has_v = c->vx >= 0 && c->vy >= 0 && c->vz >= 0, c->has_c = c->r >= 0 && c->g >= 0 && c->b >= 0;
+    vp->x = find_prop(v, nx), vp->y = find_prop(v, ny), vp->z = find_prop(v, nz);
+    vp->vx = find_prop(v, nvx), vp->vy = find_prop(v, nvy), vp->vz = find_prop(v, nvz);
+    vp->r = find_prop(v, nr), vp->g = find_prop(v, ng), vp->b = find_prop(v, nb), vp->ph = find_prop(v, nph);
+    if (vp->x < 0 || vp->y < 0 || vp->z < 0)
+        return fs_fail(FS_ERR_INPUT, "%s: PLY vertex element lacks x, y or z", path);
+    vp->has_v = vp->vx >= 0 && vp->vy >= 0 && vp->vz >= 0, vp->has_c = vp->r >= 0 && vp->g >= 0 && vp->b >= 0;
     for (int k = 0; k < 3; k++) {
-        int t = c->has_c ? v->props[k == 0 ? c->r : k == 1 ? c->g : c->b].type : T_NONE;
-        c->cscale[k] = t == T_U8 ? 1.0 / 255 : t == T_U16 ? 1.0 / 65535 : 1.0;
+        int t = vp->has_c ? v->props[k == 0 ? vp->r : k == 1 ? vp->g : vp->b].type : T_F32;
+        vp->cscale[k] = t == T_U8 ? 1.0 / 255 : t == T_U16 ? 1.0 / 65535 : 1.0;
     }
     return FS_OK;
 }
 
-/* The elements before the vertex element (index vi), read past. */
-static int skip_elements(breader *r, const char *path, int fmt, const ply_elem *el, int vi)
+/* Reads past the elements before the vertex element (index vi). */
+static int skip_before(breader *r, const char *path, int fmt, const ply_elem *el, int vi)
 {
-    double val[MAX_PROPS];
+    double val;
     for (int e = 0; e < vi; e++)
         if (el[e].count && !el[e].nprops) /* nothing to read: a count no data backs */
             return fs_fail(FS_ERR_INPUT, "%s: PLY element '%s' has %llu records but no properties", path, el[e].name,
@@ -266,13 +290,13 @@ static int skip_elements(breader *r, const char *path, int fmt, const ply_elem *
     for (int e = 0; e < vi; e++)
         for (unsigned long long i = 0; i < el[e].count; i++)
             for (int k = 0; k < el[e].nprops; k++)
-                if (!read_prop(r, fmt, &el[e].props[k], &val[k]))
+                if (!read_prop(r, fmt, &el[e].props[k], &val))
                     return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY element '%s'", path, el[e].name);
     return FS_OK;
 }
 
 /* Refuses a vertex count the rest of the file cannot hold, before allocating for it. */
-static int check_room(const breader *r, const char *path, int fmt, const ply_elem *v, unsigned long long file_size)
+static int check_count(const breader *r, const char *path, int fmt, const ply_elem *v, unsigned long long file_size)
 {
     unsigned long long left = file_size > r->consumed ? file_size - r->consumed : 0, min_record = 0;
     for (int k = 0; k < v->nprops; k++)
@@ -284,32 +308,24 @@ static int check_room(const breader *r, const char *path, int fmt, const ply_ele
     return FS_OK;
 }
 
-/* Vertex i into p. */
-static int read_vertex(breader *r, const char *path, int fmt, const ply_elem *v, const vertex_columns *c,
-                       fs_particles *p, size_t i)
+/* Particle i from its property values val. */
+static int store_vertex(fs_particles *p, size_t i, const double *val, const vertex_props *vp, int nprops,
+                        fs_point_array *const *other, const char *path)
 {
-    double val[MAX_PROPS];
-    for (int k = 0; k < v->nprops; k++)
-        if (!read_prop(r, fmt, &v->props[k], &val[k]))
-            return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
-    p->x[i] = (float)val[c->x];
-    p->y[i] = (float)val[c->y];
-    p->z[i] = (float)val[c->z];
-    if (c->has_v) {
-        p->vx[i] = (float)val[c->vx];
-        p->vy[i] = (float)val[c->vy];
-        p->vz[i] = (float)val[c->vz];
+    p->x[i] = (float)val[vp->x], p->y[i] = (float)val[vp->y], p->z[i] = (float)val[vp->z];
+    if (vp->has_v) p->vx[i] = (float)val[vp->vx], p->vy[i] = (float)val[vp->vy], p->vz[i] = (float)val[vp->vz];
+    if (vp->has_c) {
+        p->color[3 * i] = (float)(val[vp->r] * vp->cscale[0]);
+        p->color[3 * i + 1] = (float)(val[vp->g] * vp->cscale[1]);
+        p->color[3 * i + 2] = (float)(val[vp->b] * vp->cscale[2]);
     }
-    if (c->has_c) {
-        p->color[3 * i] = (float)(val[c->r] * c->cscale[0]);
-        p->color[3 * i + 1] = (float)(val[c->g] * c->cscale[1]);
-        p->color[3 * i + 2] = (float)(val[c->b] * c->cscale[2]);
-    }
-    if (c->phase >= 0) {
-        if (!(val[c->phase] >= INT32_MIN && val[c->phase] <= INT32_MAX))
+    if (vp->ph >= 0) {
+        if (!(val[vp->ph] >= INT32_MIN && val[vp->ph] <= INT32_MAX))
             return fs_fail(FS_ERR_INPUT, "%s: PLY vertex %zu: phase out of range", path, i);
-        p->phase[i] = (int32_t)val[c->phase];
+        p->phase[i] = (int32_t)val[vp->ph];
     }
+    for (int k = 0; k < nprops; k++)
+        if (other[k]) fs_point_array_set(other[k], i, val[k]);
     return FS_OK;
 }
 
@@ -322,15 +338,32 @@ static int read_body(breader *r, const char *path, int fmt, const ply_elem *el, 
         if (strcmp(el[i].name, "vertex") == 0) vi = i;
     if (vi < 0) return fs_fail(FS_ERR_INPUT, "%s: PLY file has no vertex element", path);
     const ply_elem *v = &el[vi];
-    vertex_columns c = {0};
-    int rc = find_columns(v, path, &c);
-    if (!rc) rc = skip_elements(r, path, fmt, el, vi);
-    if (!rc) rc = check_room(r, path, fmt, v, file_size);
-    if (!rc)
-        rc = fs_particles_alloc(p, (size_t)v->count,
-                                (c.has_v ? FS_HAS_VELOCITY : 0) | (c.has_c ? FS_HAS_COLOR : 0) |
-                                    (c.phase >= 0 ? FS_HAS_PHASE : 0));
-    for (size_t i = 0; !rc && i < p->n; i++) rc = read_vertex(r, path, fmt, v, &c, p, i);
+    vertex_props vp = {0};
+    int rc = vertex_props_of(v, path, &vp);
+    if (!rc) rc = skip_before(r, path, fmt, el, vi);
+    if (!rc) rc = check_count(r, path, fmt, v, file_size);
+    unsigned fields =
+        (vp.has_v ? FS_HAS_VELOCITY : 0) | (vp.has_c ? FS_HAS_COLOR : 0) | (vp.ph >= 0 ? FS_HAS_PHASE : 0);
+    if (!rc) rc = fs_particles_alloc(p, (size_t)v->count, fields);
+    fs_point_array *other[MAX_PROPS];
+    const int used[] = {vp.x,
+                        vp.y,
+                        vp.z,
+                        vp.has_v ? vp.vx : -1,
+                        vp.has_v ? vp.vy : -1,
+                        vp.has_v ? vp.vz : -1,
+                        vp.has_c ? vp.r : -1,
+                        vp.has_c ? vp.g : -1,
+                        vp.has_c ? vp.b : -1,
+                        vp.ph};
+    if (!rc) rc = add_others(v, used, sizeof used / sizeof *used, p, other);
+    double val[MAX_PROPS];
+    for (size_t i = 0; !rc && i < p->n; i++) {
+        for (int k = 0; k < v->nprops; k++)
+            if (!read_prop(r, fmt, &v->props[k], &val[k]))
+                return fs_fail(FS_ERR_INPUT, "%s: truncated or malformed PLY data at vertex %zu of %zu", path, i, p->n);
+        rc = store_vertex(p, i, val, &vp, v->nprops, other, path);
+    }
     return rc;
 }
 
@@ -360,15 +393,58 @@ int fs_read_ply(fs_particles *p, const char *path)
 
 /* ---- writer: binary little endian ---- */
 
-static unsigned char *put_le32(unsigned char *b, float f)
+/* A 4- or 8-byte value at v, little-endian. */
+static unsigned char *put_le(unsigned char *b, const void *v, size_t n)
 {
-    uint32_t u;
-    memcpy(&u, &f, 4);
-    b[0] = (unsigned char)u;
-    b[1] = (unsigned char)(u >> 8);
-    b[2] = (unsigned char)(u >> 16);
-    b[3] = (unsigned char)(u >> 24);
-    return b + 4;
+    uint64_t u;
+    uint32_t u4;
+    if (n == 8) memcpy(&u, v, 8);
+    else memcpy(&u4, v, 4), u = u4;
+    for (size_t k = 0; k < n; k++) b[k] = (unsigned char)(u >> (8 * k));
+    return b + n;
+}
+
+static unsigned char *put_le32(unsigned char *b, float f) { return put_le(b, &f, 4); }
+
+/* The header; returns the bytes of one vertex record. */
+static size_t write_header(FILE *f, const fs_particles *p, unsigned fields)
+{
+    static const char *const ply_type[] = {"float", "double", "int", "uint"};
+    size_t record = 12;
+    fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment written by fluidsurf\n");
+    if (p->radius > 0) fprintf(f, "comment radius %.9g\n", p->radius);
+    fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", p->n);
+    if (fields & FS_HAS_VELOCITY) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n"), record += 12;
+    if (fields & FS_HAS_COLOR)
+        fprintf(f, "property float red\nproperty float green\nproperty float blue\n"), record += 12;
+    if (fields & FS_HAS_PHASE) fprintf(f, "property int phase\n"), record += 4;
+    for (int i = 0; i < p->narrays; i++) {
+        const fs_point_array *a = &p->arrays[i];
+        char name[64];
+        fs_array_safe_name(a->name, name);
+        for (int c = 0; c < a->ncomp; c++) {
+            if (a->ncomp == 1) fprintf(f, "property %s %s\n", ply_type[a->type], name);
+            else fprintf(f, "property %s %s_%d\n", ply_type[a->type], name, c);
+        }
+        record += (size_t)a->ncomp * fs_array_type_size(a->type);
+    }
+    fprintf(f, "end_header\n");
+    return record;
+}
+
+/* Particle i's record at w; returns its end. */
+static unsigned char *put_record(unsigned char *w, const fs_particles *p, unsigned fields, size_t i)
+{
+    w = put_le32(put_le32(put_le32(w, p->x[i]), p->y[i]), p->z[i]);
+    if (fields & FS_HAS_VELOCITY) w = put_le32(put_le32(put_le32(w, p->vx[i]), p->vy[i]), p->vz[i]);
+    for (int k = 0; fields & FS_HAS_COLOR && k < 3; k++) w = put_le32(w, p->color[3 * i + k]);
+    if (fields & FS_HAS_PHASE) w = put_le(w, &p->phase[i], 4);
+    for (int a = 0; a < p->narrays; a++) {
+        const fs_point_array *arr = &p->arrays[a];
+        size_t sz = fs_array_type_size(arr->type), nc = (size_t)arr->ncomp;
+        for (size_t c = 0; c < nc; c++) w = put_le(w, (const char *)arr->data + (i * nc + c) * sz, sz);
+    }
+    return w;
 }
 
 int fs_write_ply(const fs_particles *p, const char *path)
@@ -377,41 +453,21 @@ int fs_write_ply(const fs_particles *p, const char *path)
     int rc = fs_output_open(&out, path);
     if (rc) return rc;
     unsigned fields = fs_particles_fields(p);
-    int has_v = fields & FS_HAS_VELOCITY, has_c = fields & FS_HAS_COLOR, has_ph = fields & FS_HAS_PHASE;
-    FILE *f = out.f;
-    int ok = 1;
-    fprintf(f, "ply\nformat binary_little_endian 1.0\ncomment written by fluidsurf\n");
-    if (p->radius > 0) fprintf(f, "comment radius %.9g\n", p->radius);
-    fprintf(f, "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n", p->n);
-    if (has_v) fprintf(f, "property float vx\nproperty float vy\nproperty float vz\n");
-    if (has_c) fprintf(f, "property float red\nproperty float green\nproperty float blue\n");
-    if (has_ph) fprintf(f, "property int phase\n");
-    fprintf(f, "end_header\n");
+    size_t record = write_header(out.f, p, fields);
     enum { CHUNK = 1024 };
-    unsigned char buf[CHUNK * 40], *w = buf; /* 40 bytes: the largest record */
+    unsigned char *buf = malloc(CHUNK * record), *w = buf;
+    if (!buf) {
+        fs_output_close(&out, 0);
+        return fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    }
+    int ok = 1;
     for (size_t i = 0; ok && i < p->n; i++) {
-        w = put_le32(w, p->x[i]);
-        w = put_le32(w, p->y[i]);
-        w = put_le32(w, p->z[i]);
-        if (has_v) {
-            w = put_le32(w, p->vx[i]);
-            w = put_le32(w, p->vy[i]);
-            w = put_le32(w, p->vz[i]);
-        }
-        if (has_c)
-            for (int k = 0; k < 3; k++) w = put_le32(w, p->color[3 * i + k]);
-        if (has_ph) {
-            uint32_t u = (uint32_t)p->phase[i];
-            w[0] = (unsigned char)u;
-            w[1] = (unsigned char)(u >> 8);
-            w[2] = (unsigned char)(u >> 16);
-            w[3] = (unsigned char)(u >> 24);
-            w += 4;
-        }
+        w = put_record(w, p, fields, i);
         if ((i + 1) % CHUNK == 0 || i + 1 == p->n) {
-            ok = fwrite(buf, 1, (size_t)(w - buf), f) == (size_t)(w - buf);
+            ok = fwrite(buf, 1, (size_t)(w - buf), out.f) == (size_t)(w - buf);
             w = buf;
         }
     }
+    free(buf);
     return fs_output_close(&out, ok);
 }

@@ -1,5 +1,6 @@
 // Thin VTK 9 adapter: the XML .vtu reader (positions, plus "velocity", colour
-// and phase arrays when present). Legacy .vtk files are read and written by our
+// and phase arrays when present, and every other numeric point array as a
+// point array of its own, particle_arrays.h). Legacy .vtk files are read and written by our
 // own code (io_vtk_legacy.c): VTK's legacy readers crash on malformed files.
 //
 // VTK reports problems through vtkErrorMacro and may still hand back partial
@@ -10,6 +11,7 @@
 // anything VTK breaks on a damaged file stay there.
 #include "particle_io.h"
 #include "alloc_cap.h"
+#include "particle_arrays.h"
 #include "fs_error.h"
 #include "read_in_child.h"
 
@@ -129,6 +131,41 @@ vtkDataArray *find_array(vtkDataSet *ds, const char *const *names, int comps, vt
     return nullptr;
 }
 
+// The point array type that holds a VTK array's values (64-bit integers as float64).
+fs_array_type array_type_of(vtkDataArray *a)
+{
+    switch (a->GetDataType()) {
+    case VTK_FLOAT: return FS_ARRAY_F32;
+    case VTK_UNSIGNED_INT: return FS_ARRAY_U32;
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT: return FS_ARRAY_I32;
+    default: return FS_ARRAY_F64;
+    }
+}
+
+// Every numeric point-data array of n tuples but the used ones as a point array of p.
+int copy_others(fs_particles *p, vtkDataSet *ds, vtkIdType n, const vtkDataArray *const used[3])
+{
+    vtkPointData *pd = ds->GetPointData();
+    for (int i = 0; pd && i < pd->GetNumberOfArrays() && p->narrays < FS_MAX_POINT_ARRAYS; i++) {
+        vtkDataArray *a = pd->GetArray(i); // NULL for a string array
+        if (!a || a == used[0] || a == used[1] || a == used[2] || a->GetNumberOfTuples() != n) continue;
+        int nc = a->GetNumberOfComponents();
+        if (nc < 1 || nc > FS_MAX_ARRAY_COMPONENTS) continue;
+        fs_point_array *out;
+        int rc = fs_particles_add_array(p, a->GetName() ? a->GetName() : "", nc, array_type_of(a), &out);
+        if (rc) return rc;
+        for (vtkIdType t = 0; t < n; t++)
+            for (int c = 0; c < nc; c++)
+                fs_point_array_set(out, static_cast<size_t>(t) * nc + c, a->GetComponent(t, c));
+    }
+    return FS_OK;
+}
+
 // Copies positions and the optional arrays of ds into p.
 int copy_dataset(fs_particles *p, const char *path, vtkDataSet *ds)
 {
@@ -168,7 +205,8 @@ int copy_dataset(fs_particles *p, const char *path, vtkDataSet *ds)
             p->phase[i] = static_cast<int32_t>(v);
         }
     }
-    return FS_OK;
+    const vtkDataArray *const used[3] = {vel, col, ph};
+    return copy_others(p, ds, n, used);
 }
 
 int fail_vtk(const char *path, const ErrorLog &log, const char *fallback)

@@ -9,10 +9,14 @@
  * Read: DATASET POLYDATA or UNSTRUCTURED_GRID, ASCII or BINARY (big-endian),
  * versions 2.0 to 5.1 (5.x cells as OFFSETS + CONNECTIVITY). Kept: POINTS, and
  * from POINT_DATA or FIELD data the arrays named like a velocity (3
- * components), a colour (3; unsigned char scaled by 1/255) and "phase" (1).
- * Written: version 3.0 binary UNSTRUCTURED_GRID, one vertex cell per particle. */
+ * components), a colour (3; unsigned char scaled by 1/255) and "phase" (1);
+ * every other point array (one value tuple per point) as a point array of its
+ * own (particle_arrays.h), up to FS_MAX_POINT_ARRAYS of them.
+ * Written: version 3.0 binary UNSTRUCTURED_GRID, one vertex cell per particle,
+ * its point arrays as FIELD data after the known ones. */
 #include "particle_io.h"
 #include "fs_error.h"
+#include "particle_arrays.h"
 #include "output_file.h"
 #include <ctype.h>
 #include <errno.h>
@@ -41,8 +45,17 @@ typedef struct vtk_array {
     int ncomp, scale_uchar;
 } vtk_array;
 
+/* A point array fluidsurf does not use, kept as it is. */
+typedef struct vtk_other {
+    char name[64];
+    fs_array_type type;
+    vtk_array a;
+} vtk_other;
+
 typedef struct vtk_set {
     vtk_array pts, vel, col, phase;
+    int nother;
+    vtk_other other[FS_MAX_POINT_ARRAYS];
 } vtk_set;
 
 /* The token as printable text for a message (at most 32 characters). */
@@ -185,14 +198,35 @@ static vtk_array *slot_for(vtk_set *s, const char *name, int ncomp)
     return NULL;
 }
 
-/* An array of tuples x ncomp values; kept when tuples is the point count and its
- * name fills a slot. */
+/* The point array type that holds VTK type t's values (64-bit integers as float64). */
+static fs_array_type array_type_of(const char *t)
+{
+    if (!strcasecmp(t, "float")) return FS_ARRAY_F32;
+    if (!strcasecmp(t, "unsigned_int") || !strcasecmp(t, "vtktypeuint32")) return FS_ARRAY_U32;
+    if (type_size(t) <= 4 && strcasecmp(t, "double")) return FS_ARRAY_I32;
+    return FS_ARRAY_F64;
+}
+
+/* The slot of a point array that fluidsurf does not use: the next free one, or NULL. */
+static vtk_array *other_slot(vtk_set *s, const char *name, const char *t)
+{
+    if (s->nother == FS_MAX_POINT_ARRAYS) return NULL;
+    vtk_other *o = &s->other[s->nother++];
+    snprintf(o->name, sizeof o->name, "%s", name);
+    o->type = array_type_of(t);
+    return &o->a;
+}
+
+/* An array of tuples x ncomp values; kept when tuples is the point count: in the
+ * slot its name fills, else as a point array of its own. */
 static int array(vtk_in *in, vtk_set *s, const char *name, int ncomp, long long tuples, const char *t, const char *what,
                  int points_data)
 {
     if (ncomp <= 0 || ncomp > 1024) return fs_fail(FS_ERR_INPUT, "%s: bad VTK component count in %s", in->path, what);
     if (tuples > (1LL << 62) / ncomp) return fs_fail(FS_ERR_INPUT, "%s: VTK %s is too large", in->path, what);
-    vtk_array *slot = points_data && s->pts.v && tuples == s->pts.tuples ? slot_for(s, name, ncomp) : NULL;
+    int per_point = points_data && s->pts.v && tuples == s->pts.tuples && type_size(t);
+    vtk_array *slot = per_point ? slot_for(s, name, ncomp) : NULL;
+    if (per_point && !slot) slot = other_slot(s, name, t);
     double *v = NULL;
     int rc = values(in, tuples * ncomp, t, what, slot ? &v : NULL);
     if (rc || !slot) return rc;
@@ -342,6 +376,19 @@ static int sections(vtk_in *in, vtk_set *s)
     return rc;
 }
 
+/* The point arrays fluidsurf does not use into p, in the file's order. */
+static int others_to_particles(const vtk_set *s, fs_particles *p)
+{
+    for (int i = 0; i < s->nother; i++) {
+        const vtk_other *o = &s->other[i];
+        fs_point_array *a;
+        int rc = fs_particles_add_array(p, o->name, o->a.ncomp, o->type, &a);
+        if (rc) return rc;
+        for (size_t k = 0; k < p->n * (size_t)o->a.ncomp; k++) fs_point_array_set(a, k, o->a.v[k]);
+    }
+    return FS_OK;
+}
+
 /* Moves the kept arrays into p. */
 static int to_particles(const vtk_set *s, const char *path, fs_particles *p)
 {
@@ -363,7 +410,7 @@ static int to_particles(const vtk_set *s, const char *path, fs_particles *p)
             p->phase[i] = (int32_t)v;
         }
     }
-    return FS_OK;
+    return others_to_particles(s, p);
 }
 
 int fs_read_vtk(fs_particles *p, const char *path)
@@ -378,13 +425,16 @@ int fs_read_vtk(fs_particles *p, const char *path)
     if (!rc && map == MAP_FAILED) rc = fs_fail(FS_ERR_INPUT, "%s: cannot map: %s", path, strerror(errno));
     if (rc) return rc;
     vtk_in in = {path, map, (size_t)st.st_size, 0, 0};
-    vtk_set s;
-    memset(&s, 0, sizeof s);
-    rc = header(&in);
-    if (!rc) rc = sections(&in, &s);
-    if (!rc) rc = to_particles(&s, path, p);
+    vtk_set *s = calloc(1, sizeof *s);
+    rc = s ? header(&in) : fs_fail(FS_ERR_RUNTIME, "%s: out of memory", path);
+    if (!rc) rc = sections(&in, s);
+    if (!rc) rc = to_particles(s, path, p);
     munmap(map, (size_t)st.st_size);
-    free(s.pts.v), free(s.vel.v), free(s.col.v), free(s.phase.v);
+    if (s) {
+        free(s->pts.v), free(s->vel.v), free(s->col.v), free(s->phase.v);
+        for (int i = 0; i < s->nother; i++) free(s->other[i].a.v);
+    }
+    free(s);
     if (rc) fs_particles_free(p);
     return rc;
 }
@@ -417,10 +467,41 @@ static void be_f32(be_writer *w, float x)
     be_u32(w, u);
 }
 
+static void be_u64(be_writer *w, uint64_t v)
+{
+    be_u32(w, (uint32_t)(v >> 32));
+    be_u32(w, (uint32_t)v);
+}
+
 static void be_text(be_writer *w, const char *s)
 {
     be_flush(w);
     if (w->ok && fputs(s, w->f) < 0) w->ok = 0;
+}
+
+/* The point arrays as FIELD data: "name ncomp n type", big-endian values. */
+static void write_others(be_writer *w, const fs_particles *p)
+{
+    static const char *const vtk_type[] = {"float", "double", "int", "unsigned_int"};
+    char line[256], name[64];
+    snprintf(line, sizeof line, "FIELD FieldData %d\n", p->narrays);
+    be_text(w, line);
+    for (int i = 0; i < p->narrays; i++) {
+        const fs_point_array *a = &p->arrays[i];
+        fs_array_safe_name(a->name, name);
+        snprintf(line, sizeof line, "%s %d %zu %s\n", name, a->ncomp, p->n, vtk_type[a->type]);
+        be_text(w, line);
+        size_t nv = p->n * (size_t)a->ncomp;
+        for (size_t k = 0; k < nv; k++) {
+            if (a->type == FS_ARRAY_F32) be_f32(w, ((const float *)a->data)[k]);
+            else if (a->type == FS_ARRAY_F64) {
+                uint64_t u;
+                memcpy(&u, (const double *)a->data + k, 8);
+                be_u64(w, u);
+            } else be_u32(w, ((const uint32_t *)a->data)[k]);
+        }
+        be_text(w, "\n");
+    }
 }
 
 static void write_body(be_writer *w, const fs_particles *p)
@@ -440,7 +521,7 @@ static void write_body(be_writer *w, const fs_particles *p)
     be_text(w, line);
     for (size_t i = 0; i < n; i++) be_u32(w, 1); /* VTK_VERTEX */
     be_text(w, "\n");
-    if (fields) {
+    if (fields || p->narrays) {
         snprintf(line, sizeof line, "POINT_DATA %zu\n", n);
         be_text(w, line);
     }
@@ -459,6 +540,7 @@ static void write_body(be_writer *w, const fs_particles *p)
         for (size_t i = 0; i < n; i++) be_u32(w, (uint32_t)p->phase[i]);
         be_text(w, "\n");
     }
+    if (p->narrays) write_others(w, p);
     be_flush(w);
 }
 

@@ -1,7 +1,9 @@
-/* fs_read_in_child: the child reads and writes a header, then every array it has,
- * down a pipe; the parent allocates from the header and reads them back. */
+/* fs_read_in_child: the child reads and writes a header, then every array it has
+ * and its point arrays (particle_arrays.h), each after a description, down a
+ * pipe; the parent allocates from the header and reads them back. */
 #include "read_in_child.h"
 #include "fs_error.h"
+#include "particle_arrays.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -19,8 +21,15 @@ typedef struct {
     uint32_t fields;
     uint64_t n;
     float radius;
+    int32_t narrays;
     char msg[1024];
 } child_result;
+
+/* What the child sends before each point array's values. */
+typedef struct {
+    char name[64];
+    int32_t ncomp, type;
+} array_head;
 
 static int write_all(int fd, const void *buf, size_t size)
 {
@@ -87,13 +96,36 @@ static void child_read(int fd, const char *path, int (*read_fn)(fs_particles *, 
     memset(&res, 0, sizeof res);
     res.rc = read_fn(&p, path);
     if (res.rc) snprintf(res.msg, sizeof res.msg, "%s", fs_error_message());
-    else res.n = p.n, res.fields = fs_particles_fields(&p), res.radius = p.radius;
+    else res.n = p.n, res.fields = fs_particles_fields(&p), res.radius = p.radius, res.narrays = p.narrays;
     int ok = write_all(fd, &res, sizeof res);
     void *ptr[8];
     size_t bytes[8];
     for (int i = 0, k = arrays_of(&p, ptr, bytes); ok && !res.rc && i < k; i++)
         if (bytes[i]) ok = write_all(fd, ptr[i], bytes[i]);
+    for (int i = 0; ok && !res.rc && i < p.narrays; i++) {
+        const fs_point_array *a = &p.arrays[i];
+        array_head h = {"", a->ncomp, (int32_t)a->type};
+        memcpy(h.name, a->name, sizeof h.name);
+        ok =
+            write_all(fd, &h, sizeof h) && write_all(fd, a->data, p.n * (size_t)a->ncomp * fs_array_type_size(a->type));
+    }
     _exit(ok ? 0 : 3);
+}
+
+/* The point arrays after the particles: 1 when all came, else 0 (the pipe ran dry,
+ * or one could not be held: *rc then says why). */
+static int receive_arrays(int fd, fs_particles *p, int narrays, int *rc)
+{
+    for (int i = 0; i < narrays; i++) {
+        array_head h;
+        fs_point_array *a;
+        if (!read_all(fd, &h, sizeof h)) return 0;
+        h.name[sizeof h.name - 1] = 0;
+        if (h.type < FS_ARRAY_F32 || h.type > FS_ARRAY_U32) return 0;
+        if ((*rc = fs_particles_add_array(p, h.name, h.ncomp, (fs_array_type)h.type, &a))) return 0;
+        if (!read_all(fd, a->data, p->n * (size_t)a->ncomp * fs_array_type_size(a->type))) return 0;
+    }
+    return 1;
 }
 
 /* The parent: the child's particles into p (FS_OK), the child's own refusal, this
@@ -110,9 +142,10 @@ static int receive(int fd, fs_particles *p, child_result *res)
     for (int i = 0, k = arrays_of(p, ptr, bytes); ok && i < k; i++)
         if (bytes[i]) ok = read_all(fd, ptr[i], bytes[i]);
     p->radius = res->radius;
+    if (ok) ok = receive_arrays(fd, p, res->narrays, &rc);
     if (ok) return FS_OK;
     fs_particles_free(p);
-    return -1;
+    return rc ? rc : -1;
 }
 
 int fs_read_in_child(fs_particles *p, const char *path, int (*read_fn)(fs_particles *, const char *), const char *what)
