@@ -79,6 +79,25 @@ const void *fluidsurf_particles_column(const fluidsurf_particles *p, const char 
     return NULL;
 }
 
+int fluidsurf_particles_array_count(const fluidsurf_particles *p) { return p ? p->p.narrays : 0; }
+
+const void *fluidsurf_particles_array(const fluidsurf_particles *p, int i, const char **name, int *ncomp, int *type)
+{
+    static const int types[] = {[FS_ARRAY_F32] = FLUIDSURF_ARRAY_F32,
+                                [FS_ARRAY_F64] = FLUIDSURF_ARRAY_F64,
+                                [FS_ARRAY_I32] = FLUIDSURF_ARRAY_I32,
+                                [FS_ARRAY_U32] = FLUIDSURF_ARRAY_U32};
+    if (name) *name = NULL;
+    if (ncomp) *ncomp = 0;
+    if (type) *type = 0;
+    if (!p || i < 0 || i >= p->p.narrays) return NULL;
+    const fs_point_array *a = &p->p.arrays[i];
+    if (name) *name = a->name;
+    if (ncomp) *ncomp = a->ncomp;
+    if (type) *type = types[a->type];
+    return a->data;
+}
+
 void fluidsurf_particles_free(fluidsurf_particles *p)
 {
     if (!p) return;

@@ -1,12 +1,14 @@
 /* The C API's version-6 calls as a program links them: metrics that refuse what
  * `fluidsurf diff` refuses (fluidsurf_metrics_compute3), an EXR's provenance and
  * camera read back and rendered again bit for bit, images and meshes written with
- * their provenance, and `fluidsurf info`'s numbers of a particle set. */
+ * their provenance, and `fluidsurf info`'s numbers of a particle set; version 7's
+ * point arrays of a file read. */
 #include "fluidsurf/fluidsurf.h"
 #include "fs_test.h"
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define R 0.025f
 #define OUT FS_TEST_OUT "/test_api_io"
@@ -258,6 +260,34 @@ static void particle_stats(fluidsurf_particles *p, size_t n)
     fluidsurf_particles_free(pile);
 }
 
+/* Version 7: the DualSPHysics crop's Idp and Rhop, as `fluidsurf info` lists them;
+ * none on wrapped arrays (p). */
+static void point_arrays(const fluidsurf_particles *p)
+{
+    CHECK(fluidsurf_particles_array_count(p) == 0 && !fluidsurf_particles_array(p, 0, NULL, NULL, NULL),
+          "wrapped arrays have no point arrays");
+    fluidsurf_particles *f = NULL;
+    int rc = fluidsurf_particles_read(FS_TEST_DATA "/dualsphysics/dambreak200k_t0.300_crop902.vtk", NULL, &f);
+    CHECK(!rc && fluidsurf_particles_count(f) == 902 && fluidsurf_particles_array_count(f) == 2,
+          "the crop read with its 2 arrays: %s", rc ? fluidsurf_last_error() : "");
+    if (rc) return;
+    const char *name[2];
+    int ncomp[2], type[2];
+    const uint32_t *idp = fluidsurf_particles_array(f, 0, &name[0], &ncomp[0], &type[0]);
+    const float *rhop = fluidsurf_particles_array(f, 1, &name[1], &ncomp[1], &type[1]);
+    CHECK(idp && rhop && !strcmp(name[0], "Idp") && !strcmp(name[1], "Rhop") && ncomp[0] == 1 && ncomp[1] == 1 &&
+              type[0] == FLUIDSURF_ARRAY_U32 && type[1] == FLUIDSURF_ARRAY_F32,
+          "Idp (1 x uint32) and Rhop (1 x float32)");
+    size_t bad = 0, same = 0;
+    for (size_t i = 0; idp && rhop && i < 902; i++)
+        bad += !(rhop[i] >= 853 && rhop[i] <= 1087), same += i && idp[i] == idp[i - 1];
+    CHECK(idp && rhop && !bad && !same, "densities in 853-1087 (%zu not), ids not repeated (%zu)", bad, same);
+    CHECK(!fluidsurf_particles_array(f, 2, &name[0], NULL, NULL) && !name[0] &&
+              !fluidsurf_particles_array(f, -1, NULL, NULL, NULL),
+          "an index out of range gives NULL");
+    fluidsurf_particles_free(f);
+}
+
 int main(void)
 {
     CHECK(fluidsurf_api_version() >= 6 && FLUIDSURF_API_VERSION >= 6, "API version 6: %d", fluidsurf_api_version());
@@ -274,6 +304,7 @@ int main(void)
     meshes(p);
 #endif
     particle_stats(p, n);
+    point_arrays(p);
     fluidsurf_particles_free(p);
     TEST_DONE();
 }

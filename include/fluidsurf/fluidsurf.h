@@ -41,7 +41,9 @@
  * provenance and camera; fluidsurf_image_set_provenance, fluidsurf_image_set_layer
  * and fluidsurf_image_write; fluidsurf_mesh_from_arrays, fluidsurf_mesh_write and
  * a mesh's provenance; fluidsurf_particles_estimate_radius and
- * fluidsurf_particles_stats (what `fluidsurf info` reports). */
+ * fluidsurf_particles_stats (what `fluidsurf info` reports).
+ * Version 7 added fluidsurf_particles_array_count and fluidsurf_particles_array
+ * (a particle file's other point arrays, which `fluidsurf info` lists). */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -54,7 +56,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 6 };
+enum { FLUIDSURF_API_VERSION = 7 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -80,6 +82,14 @@ double fluidsurf_particles_radius(const fluidsurf_particles *p);
 /* A column: "x", "y", "z", "vx", "vy", "vz" (1 float each), "color" (3 floats
  * each), "phase" (1 int32 each); NULL when absent. ncomp may be NULL. */
 const void *fluidsurf_particles_column(const fluidsurf_particles *p, const char *name, int *ncomp);
+/* Since version 7: a read file's other point arrays, those `fluidsurf info` lists
+ * and `convert` writes (DualSPHysics' Idp and Rhop, SPlisHSPlasH's id): how many
+ * (0 for wrapped arrays), and array i (0 <= i < count): its name (owned by p),
+ * components per particle and type, and its count x ncomp values, particle after
+ * particle; NULL for an i out of range. name, ncomp and type may be NULL. */
+enum { FLUIDSURF_ARRAY_F32 = 0, FLUIDSURF_ARRAY_F64 = 1, FLUIDSURF_ARRAY_I32 = 2, FLUIDSURF_ARRAY_U32 = 3 };
+int fluidsurf_particles_array_count(const fluidsurf_particles *p);
+const void *fluidsurf_particles_array(const fluidsurf_particles *p, int i, const char **name, int *ncomp, int *type);
 void fluidsurf_particles_free(fluidsurf_particles *p);
 /* Since version 6: the radius the spacing implies, as a render without one
  * estimates it (r = (volume per particle)^(1/3) / 2, from the 32 nearest

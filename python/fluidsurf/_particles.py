@@ -3,7 +3,7 @@ read, and what `fluidsurf info` reports on them."""
 import numpy as np
 
 from . import _arrays
-from ._lib import check, existing_path, ffi, lib
+from ._lib import check, existing_path, ffi, lib, text
 
 
 class Particles:
@@ -28,7 +28,9 @@ class Particles:
 def read_particles(path, format=None):
     """A particle file as a dict: 'positions' (N x 3 float32) and the attributes
     it holds: 'velocity' (N x 3), 'color' (N x 3 linear RGB), 'phase' (N int32),
-    'radius' (when the file stores one)."""
+    'radius' (when the file stores one), and 'arrays', the file's other point
+    arrays that `fluidsurf info` lists, by name (N or N x K of float32, float64,
+    int32 or uint32: DualSPHysics' Idp and Rhop, SPlisHSPlasH's id)."""
     out = ffi.new("fluidsurf_particles **")
     check(lib.fluidsurf_particles_read(existing_path(path, "path"), format.encode() if format else ffi.NULL, out))
     p = ffi.gc(out[0], lib.fluidsurf_particles_free)
@@ -50,7 +52,26 @@ def read_particles(path, format=None):
             result[name] = a
     if lib.fluidsurf_particles_radius(p) > 0:
         result["radius"] = float(lib.fluidsurf_particles_radius(p))
+    arrays = _point_arrays(p, n)
+    if arrays:
+        result["arrays"] = arrays
     return result
+
+
+_ARRAY_TYPES = {lib.FLUIDSURF_ARRAY_F32: np.float32, lib.FLUIDSURF_ARRAY_F64: np.float64,
+                lib.FLUIDSURF_ARRAY_I32: np.int32, lib.FLUIDSURF_ARRAY_U32: np.uint32}
+
+
+def _point_arrays(p, n):
+    """The read set p's other point arrays as {name: copied array}."""
+    name, ncomp, kind = ffi.new("const char **"), ffi.new("int *"), ffi.new("int *")
+    out = {}
+    for i in range(lib.fluidsurf_particles_array_count(p)):
+        ptr = lib.fluidsurf_particles_array(p, i, name, ncomp, kind)
+        dtype = np.dtype(_ARRAY_TYPES[kind[0]])
+        a = np.frombuffer(ffi.buffer(ptr, n * ncomp[0] * dtype.itemsize), dtype=dtype).copy()
+        out[text(name[0])] = a.reshape((n, ncomp[0])) if ncomp[0] > 1 else a
+    return out
 
 
 def estimate_radius(positions):

@@ -19,6 +19,7 @@ SRC = os.environ["FS_SRC"]
 BIN = os.environ["FS_BIN"]
 DAM = os.path.join(SRC, "experiments/data/splashsurf/dam_break_frame_23_24389_particles.ply")
 BGEO = os.path.join(SRC, "experiments/data/splashsurf/dam_break_frame_9_6859_particles.bgeo")
+CROP = os.path.join(SRC, "experiments/data/dualsphysics/dambreak200k_t0.300_crop902.vtk")
 R = 0.025
 SIZE = 128
 
@@ -81,6 +82,12 @@ def test_read_particles_attributes():
     assert np.isfinite(d["positions"]).all()
     ply = fluidsurf.read_particles(DAM)
     assert ply["positions"].shape == (24389, 3) and ply["velocity"].shape == (24389, 3)
+    assert "arrays" not in ply
+    crop = fluidsurf.read_particles(CROP)  # the file's other point arrays, as `fluidsurf info` lists them
+    assert list(crop["arrays"]) == ["Idp", "Rhop"]
+    idp, rhop = crop["arrays"]["Idp"], crop["arrays"]["Rhop"]
+    assert idp.dtype == np.uint32 and idp.shape == (902,) and len(np.unique(idp)) == 902
+    assert rhop.dtype == np.float32 and rhop.shape == (902,) and ((rhop >= 853) & (rhop <= 1087)).all()
 
 
 def test_methods_and_compare(dam):
