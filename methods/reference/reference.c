@@ -340,14 +340,18 @@ static ref_interior want_interior(const reference *R, const fs_camera *cam)
 
 /* Once per upload, when the image is large enough for them to pay: the coarse
  * sub-cell bounds (stage "bounds") and the fine interior proofs as want_interior
- * says (stage "interior"); with interior=demand both are made by the march, a
- * cell's when a ray first needs it. A small image marches without. */
+ * says (stage "interior"); with interior=demand both are made by the march, a cell's
+ * when a ray first needs it, and so are the bounds with thickness off. A small image
+ * marches without. */
 static int prepare(reference *R, const fs_camera *cam, fs_stages *st)
 {
     if (R->prepared) return FS_OK;
     R->prepared = 1;
     if (!R->accel || R->zb || rays_per_cell(R->nnear, cam) < FS_REF_BOUNDS_VISITS) return FS_OK;
-    int demand = R->thickness && R->interior == REF_INTERIOR_DEMAND;
+    /* thickness off: a ray stops at its first hit, so only the cells in front of the
+     * surface are walked; their bounds are made when a ray first walks them (README.md,
+     * step 1) instead of every near cell's up front */
+    int demand = !R->thickness || R->interior == REF_INTERIOR_DEMAND;
     double t0 = fs_now_ms();
     int rc = fs_ref_bounds_build(R, demand);
     if (!rc && st && R->sub && !demand) fs_stages_add(st, "bounds", fs_now_ms() - t0);
