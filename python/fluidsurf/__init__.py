@@ -106,11 +106,15 @@ def _set_field(s, field):
     _check(lib.fluidsurf_scene_set_field(s, f))
 
 
+# what the warnings for an estimated r add: README.md's "r." has the measured spread
+_R_ESTIMATED_CAVEAT = "low or high on a simulation's own frames; pass radius="
+
+
 def _warn_estimated(prov):
     """Python's form of the command line's note: r came from the spacing, not the caller."""
     if prov.get("fluidsurf:r_source") == "estimated":
         warnings.warn(f"no radius given: r = {float(prov['fluidsurf:r']):.6g} estimated from the particle spacing "
-                      "(a few percent low on compressed SPH output; pass radius=)", stacklevel=3)
+                      f"({_R_ESTIMATED_CAVEAT})", stacklevel=3)
 
 
 def _view(s, width, height, camera):
@@ -414,8 +418,7 @@ def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, h
         if t != ffi.NULL:
             texts[name] = _text(t)
     if "r_source=estimated" in texts["metrics"].splitlines()[0]:
-        warnings.warn("no radius given: r estimated from the particle spacing (a few percent low on compressed SPH "
-                      "output; pass radius=)", stacklevel=2)
+        warnings.warn(f"no radius given: r estimated from the particle spacing ({_R_ESTIMATED_CAVEAT})", stacklevel=2)
     result = {name: _frame_table(_table(t)) for name, t in texts.items()}
     return result if tables else result["metrics"]
 
@@ -474,8 +477,7 @@ def mesh(positions, radius=None, params=None, scene=None, field=None):
     p = _Particles(positions)
     s = _scene(scene, radius, None, field)
     if radius is None and scene is None:  # arrays carry no r: the library estimates it
-        warnings.warn("no radius given: r estimated from the particle spacing (a few percent low on compressed "
-                      "SPH output; pass radius=)", stacklevel=2)
+        warnings.warn(f"no radius given: r estimated from the particle spacing ({_R_ESTIMATED_CAVEAT})", stacklevel=2)
     arr, n, _keep = _c_settings(settings)
     out = ffi.new("fluidsurf_mesh **")
     _check(lib.fluidsurf_mesh_build(s, p.handle, arr, n, out))
