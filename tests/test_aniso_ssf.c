@@ -7,7 +7,7 @@
 #include "eigen3.h"
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "method.h"
 #include "builtin_methods.h"
 #include "test_render.h"
@@ -357,10 +357,7 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     c_vs_glsl();
     sprite_depth();
     filters();

@@ -10,7 +10,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "image_io.h"
 #include "surfels/caustics.h"
 #include "surfels/surfel_set.h"
@@ -463,10 +463,7 @@ static void test_bad(fs_caustics *c)
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     test_surfel_set();
     fs_caustics *c = fs_caustics_create();
     CHECK(c != NULL, "create: %s", fs_error_message());

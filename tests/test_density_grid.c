@@ -6,7 +6,7 @@
 #include "density_splat.h"
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "particle_io.h"
 #include "timing.h"
 #include <stdlib.h>
@@ -268,8 +268,7 @@ int main(void)
                  FS_WITH_VTK ? "dam_break_frame_23_24389_particles.vtk" : "dam_break_frame_9_6859_particles.bgeo"))
         TEST_DONE();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
+    if (fs_test_gl_context(&ctx)) {
         fs_particles_free(&dam);
         TEST_DONE();
     }

@@ -3,7 +3,7 @@
 #include "fs_error.h"
 #include "fs_test.h"
 #include "gl.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "kernels.h"
 #include "shader.h"
 #include <stdlib.h>
@@ -86,9 +86,7 @@ static void test_kernels_agree(void)
 int main(void)
 {
     fs_gl_context ctx;
-    int rc = fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16);
-    CHECK(rc == FS_OK, "default context: %s", fs_error_message());
-    if (rc) TEST_DONE();
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     printf("renderer: %s, version: %s\n", ctx.renderer, ctx.version);
     CHECK(strstr(ctx.version, "4.5") == ctx.version || strstr(ctx.version, "4.6") == ctx.version, "version %s",
           ctx.version);

@@ -6,7 +6,7 @@
  * alone (name, need), for tests/gl_limits_needs.py. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "gl_limits.h"
 #include <stdlib.h>
 #include <string.h>
@@ -50,9 +50,7 @@ static void test_refusals(const fs_gl_limit *t, int n)
 static void test_context(const fs_gl_limit *t, int n)
 {
     fs_gl_context ctx;
-    int rc = fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16);
-    CHECK(rc == FS_OK, "context: %s", fs_error_message());
-    if (rc) return;
+    if (fs_test_gl_context(&ctx)) return;
     long long have[MAXN] = {0};
     if (n > MAXN) return;
     fs_gl_limits_query(have);

@@ -6,7 +6,7 @@
  * the memory refusal; inside leaves made tiles change no vertex. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "grid.h"
 #include "mesh/mesh_build.h"
 #include "mesh/mesh_sample.h"
@@ -250,10 +250,7 @@ int main(void)
     ball_mesh();
     interior_tiles();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     dam_break();
     fs_gl_context_destroy(&ctx);
     TEST_DONE();

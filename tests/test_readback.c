@@ -8,7 +8,7 @@
  * core layers and no own layer. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "image_io.h"
 #include "builtin_methods.h"
 #include "render_output.h"
@@ -136,9 +136,7 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    int rc = fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16);
-    CHECK(rc == FS_OK, "context: %s", fs_error_message());
-    if (!rc) {
+    if (!fs_test_gl_context(&ctx)) {
         all_methods();
         fs_gl_context_destroy(&ctx);
     }

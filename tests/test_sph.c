@@ -5,7 +5,7 @@
  * particles; bad parameters are refused. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "particles.h"
 #include "sph.h"
 #include "timing.h"
@@ -224,10 +224,7 @@ int main(void)
     dam_break_short();
     spouts();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     cpu_vs_gpu("dam_break", 1000, 20, ctx.renderer);
     cpu_vs_gpu("spouts", 1500, 40, ctx.renderer);
     moved_box();

@@ -2,7 +2,7 @@
  * ray-sphere answer (coverage, depth, normal, thickness), then a golden image. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "golden.h"
 #include "method.h"
 #include "builtin_methods.h"
@@ -124,10 +124,7 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     const fs_method *m = fs_method_find("spheres");
     CHECK(m != NULL, "spheres is not registered");
     if (m) {

@@ -11,7 +11,7 @@
 #include "fs_error.h"
 #include "frame_source.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "particle_io.h"
 #include "builtin_methods.h"
 #include "scene.h"
@@ -172,10 +172,7 @@ int main(void)
 {
     fs_methods_register_builtin();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     frame frames[2] = {{0}};
     int (*load[2])(frame *) = {load_demo, load_dualsphysics};
     for (int k = 0; k < 2; k++) {

@@ -5,7 +5,7 @@
  * the clean frame's. Renders at 128x128 on the real OSMesa context. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "method.h"
 #include "builtin_methods.h"
 #include "metrics.h"
@@ -84,10 +84,7 @@ static void check_method(const char *m, const fs_particles *p, const fs_particle
 int main(void)
 {
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     fs_particles p, q;
     fs_scene s;
     fs_field f;

@@ -5,7 +5,7 @@
  * caustics AOV, and the exports. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "method.h"
 #include "builtin_methods.h"
 #include "run.h"
@@ -217,10 +217,7 @@ int main(void)
     fs_methods_register_builtin();
     extraction_on_sphere();
     fs_gl_context ctx;
-    if (fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16)) {
-        CHECK(0, "context: %s", fs_error_message());
-        TEST_DONE();
-    }
+    if (fs_test_gl_context(&ctx)) TEST_DONE();
     against_reference();
     own_appearance_and_exports();
     fs_gl_context_destroy(&ctx);
