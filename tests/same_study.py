@@ -7,7 +7,10 @@ manifest's timings, report.html's embedded copies of them); EXRs by their
 header attributes (fluidsurf:runs, fluidsurf:frame_ms and capDate masked) and
 their pixel chunks byte for byte; PNGs chunk by chunk. panel.png's captions
 hold frame times: compare it byte for byte only when the runs' clocks agree,
-else --skip it. Prints one line per difference; exit 1 when there is one.
+else --skip it. --any-commit: what the commit decides is masked too (two builds compared,
+experiments/study/same_outputs.sh): the commit and dirty flag, the EXRs' fluidsurf:item (a
+hash of their provenance) and the reference cache's file names (its key holds the commit). Prints one line per difference;
+exit 1 when there is one.
 tests/python/test_fluidsurf.py uses it for Python's compare(out=DIR) against
 `fluidsurf compare -o DIR`."""
 import json
@@ -18,6 +21,10 @@ import zlib
 from pathlib import Path
 
 TIME = "T"
+ANY_COMMIT = False
+# "commit=abc; dirty=0" (CSV), "fluidsurf:commit`: abc" (report.md), "commit\tabc" (shard.txt)
+COMMIT = re.compile(r"\b(commit|dirty)(`?[=:\t] ?)([0-9a-f]+|unknown)\b")
+CACHE_FILE = re.compile(r"\bgbuffer-[0-9a-f]{16}\.exr")
 
 
 def mask_csv(text):
@@ -79,7 +86,13 @@ def mask_shard(text):
     return "".join(out)
 
 
+def mask_commit(text):
+    return CACHE_FILE.sub("gbuffer-C.exr", COMMIT.sub(r"\1\2C", text)) if ANY_COMMIT else text
+
+
 def mask_attr(name, value):
+    if ANY_COMMIT and name in ("fluidsurf:commit", "fluidsurf:dirty", "fluidsurf:item"):
+        return "C"
     if name == "fluidsurf:runs":
         return mask_runs(value)
     if name in ("fluidsurf:frame_ms", "capDate"):
@@ -124,6 +137,14 @@ def exr_parts(b):
     return attrs, [o - header_end for o in offsets], b[table_end:]
 
 
+def exr_differs(a, b):
+    """None, or which attributes differ, or that the pixels do."""
+    names = sorted(n for n in set(a[0]) | set(b[0]) if a[0].get(n) != b[0].get(n))
+    if names:
+        return "EXR attributes differ: " + ", ".join(names)
+    return None if a == b else "EXR pixels differ"
+
+
 def png_chunks(b):
     pos, out = 8, []
     while pos < len(b):
@@ -144,10 +165,10 @@ def same(a, b, name):
     if x == y:
         return None
     if name.endswith(".exr"):
-        return None if exr_parts(x) == exr_parts(y) else "EXR differs (attributes or pixels)"
+        return exr_differs(exr_parts(x), exr_parts(y))
     if name.endswith(".png"):
         return None if png_chunks(x) == png_chunks(y) else "PNG differs"
-    tx, ty = x.decode("utf-8", "replace"), y.decode("utf-8", "replace")
+    tx, ty = mask_commit(x.decode("utf-8", "replace")), mask_commit(y.decode("utf-8", "replace"))
     if name.endswith(".csv"):
         tx, ty = mask_csv(tx), mask_csv(ty)
     elif name.endswith(".md"):
@@ -165,12 +186,15 @@ def same(a, b, name):
 
 
 def main(argv):
+    global ANY_COMMIT
     skip = set()
     args = []
     it = iter(argv)
     for a in it:
         if a == "--skip":
             skip.add(next(it))
+        elif a == "--any-commit":
+            ANY_COMMIT = True
         else:
             args.append(a)
     A, B = Path(args[0]), Path(args[1])
