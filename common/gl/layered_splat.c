@@ -119,6 +119,15 @@ int fs_density_texture_upload(unsigned tex, const fs_density_grid *g)
 {
     if (!g->data) return fs_fail(FS_ERR_INPUT, "density texture: grid not initialised");
     glTextureSubImage3D(tex, 0, 0, 0, 0, g->dim[0], g->dim[1], g->dim[2], GL_RED, GL_FLOAT, g->data);
+    /* A driver may defer the upload until the texture is first used, so that it lands in
+     * the next stage's time (on the H200, the march after build=slice took 2-5 ms where the
+     * same march after the layered build took 0.1: issue 52). One texel copied on the GL
+     * makes the upload happen now, inside the build's timed stage. */
+    unsigned one = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &one);
+    glTextureStorage3D(one, 1, GL_R32F, 1, 1, 1);
+    glCopyImageSubData(tex, GL_TEXTURE_3D, 0, 0, 0, 0, one, GL_TEXTURE_3D, 0, 0, 0, 0, 1, 1, 1);
+    glDeleteTextures(1, &one);
     return glGetError() == GL_NO_ERROR ? FS_OK : fs_fail(FS_ERR_RUNTIME, "density texture: upload failed");
 }
 

@@ -28,12 +28,15 @@
  * calls; gpu_ms: the GL clock (gl_stage.h) for the GL stages and the GPU path's
  * simulation, empty otherwise. With INACIO_TABLES_PNG=PREFIX
  * in the environment, the last frame's shaded images are written to
- * PREFIX_volume_raycast.png and PREFIX_spheres.png (to check what was timed). */
+ * PREFIX_I.png (volume_raycast, layered), PREFIX_II.png (spheres) and
+ * PREFIX_I_slice.png (to check what was timed), at most INACIO_TABLES_PNG_MAX
+ * pixels a side when that is set (png_small.h). */
 #include "fs_error.h"
 #include "gl.h"
 #include "gl_context.h"
 #include "gl_stage.h"
 #include "image_io.h"
+#include "png_small.h"
 #include "method.h"
 #include "builtin_methods.h"
 #include "run.h"
@@ -86,6 +89,16 @@ static int render_with(renderer *r, fs_sph *sim, const fs_camera *cam, const fs_
     fs_sph_box(sim, lo, hi);
     fs_run_set_floor(r->run, lo[r->scene.up_axis]);
     return fs_run_shade(r->run, cam, &r->im, FS_APPEARANCE_SHARED, st);
+}
+
+/* The last frame's image of one table, when INACIO_TABLES_PNG asks for it. */
+static int write_png(const float *rgba, int size, const char *table)
+{
+    const char *prefix = getenv("INACIO_TABLES_PNG"), *max = getenv("INACIO_TABLES_PNG_MAX");
+    if (!prefix) return FS_OK;
+    char path[1200];
+    snprintf(path, sizeof path, "%s_%s.png", prefix, table);
+    return fs_write_png_small(path, rgba, size, size, max ? atoi(max) : size);
 }
 
 int main(int argc, char **argv)
@@ -190,14 +203,7 @@ int main(int argc, char **argv)
             fs_stages st = {0};
             if (render_with(&rr[k], sim, &cam, &np, &st, k == 1)) return die(rr[k].m->name);
             for (int i = 0; i < st.n; i++) row(f, t, steps, table[k], st.name[i], st.ms[i], st.gpu_ms[i]);
-            const char *prefix = getenv("INACIO_TABLES_PNG");
-            if (prefix && f == settle + frames && k < 2) {
-                char path[1200];
-                snprintf(path, sizeof path, "%s_%s.png", prefix, rr[k].m->name);
-                const char *ch[4] = {"R", "G", "B", "A"};
-                fs_image im = {size, size, 4, ch, rr[k].im.rgba};
-                if (fs_write_png(path, &im)) return die(path);
-            }
+            if (f == settle + frames && write_png(rr[k].im.rgba, size, table[k])) return die("png");
         }
         fs_particles_free(&p);
         p = np;

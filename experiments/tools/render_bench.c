@@ -21,12 +21,14 @@
  * GL_VERSION on two lines; --limits the context's value of every GL limit fluidsurf
  * relies on, as CSV "limit,value,need,what" (gl_limits.h). With RENDER_BENCH_PNG=PREFIX, the last render of each
  * variant and size is shaded and written to PREFIX_<variant>_<size>.png, to look
- * at what was timed. */
+ * at what was timed; RENDER_BENCH_PNG_SIZE=N writes it for size N only, and
+ * RENDER_BENCH_PNG_MAX=M shrinks it to at most M pixels a side (png_small.h). */
 #include "frame_source.h"
 #include "fs_error.h"
 #include "gl_context.h"
 #include "gl_limits.h"
 #include "image_io.h"
+#include "png_small.h"
 #include "method.h"
 #include "builtin_methods.h"
 #include "run.h"
@@ -64,17 +66,16 @@ static void rows(const bench *b, const fs_run *run, int size, int r, const fs_st
 
 static int write_png(fs_run *run, const fs_camera *cam, fs_run_image *im, const char *variant, int size)
 {
-    const char *prefix = getenv("RENDER_BENCH_PNG");
-    if (!prefix) return FS_OK;
+    const char *prefix = getenv("RENDER_BENCH_PNG"), *only = getenv("RENDER_BENCH_PNG_SIZE"),
+               *max = getenv("RENDER_BENCH_PNG_MAX");
+    if (!prefix || (only && atoi(only) != size)) return FS_OK;
     char path[1200], v[256];
     snprintf(v, sizeof v, "%s", variant);
     for (char *c = v; *c; c++)
         if (!strchr("abcdefghijklmnopqrstuvwxyz0123456789_.-", *c)) *c = '_';
     snprintf(path, sizeof path, "%s_%s_%d.png", prefix, v, size);
     int rc = fs_run_shade(run, cam, im, FS_APPEARANCE_SHARED, NULL);
-    const char *ch[4] = {"R", "G", "B", "A"};
-    fs_image img = {size, size, 4, ch, im->rgba};
-    return rc ? rc : fs_write_png(path, &img);
+    return rc ? rc : fs_write_png_small(path, im->rgba, size, size, max ? atoi(max) : size);
 }
 
 /* One size: a warm-up render, then runs timed ones (fs_study_time_renders), one row per run and stage. */
