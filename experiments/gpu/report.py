@@ -6,6 +6,8 @@ timed runs); the papers' numbers are the ones their tables and text print.
     python3 experiments/gpu/report.py DIR > DIR/README.md
     python3 experiments/gpu/report.py --tables DIR > DIR/tables.csv
     python3 experiments/gpu/report.py --check DIR      exit 1 when DIR/README.md or DIR/tables.csv is stale
+    python3 experiments/gpu/report.py --bounds DIR     exit 1 when the run breaks a bound the next GPU run
+                                                       must meet (the two marches of inacio2010's Table I)
 
 tables.csv holds every number of the README's tables, unrounded, one a row (table, the row's
 first one or two cells as key and sub, column, value), so that prose elsewhere can cite them
@@ -423,7 +425,58 @@ def inacio(d):
     if not rs:
         return "No inacio2010 rows.\n"
     c = inacio_cells(rs)
-    return inacio_table1(c) + "\n" + inacio_table2(c) + "\n" + inacio_trends(c)
+    return inacio_table1(c) + "\n" + inacio_table2(c) + "\n" + inacio_trends(c) + "\n" + marches(d)[0]
+
+
+def march_frames(rs):
+    """(requested count, path) -> table (I, I_slice) -> the march's timed frames, on the GL
+    clock where every frame has it, else on the wall clock."""
+    per = defaultdict(lambda: defaultdict(list))
+    for r in rs:
+        if r["table"] in ("I", "I_slice") and r["stage"] == "march":
+            per[(int(r["particles_requested"]), r["path"])][r["table"]].append(r)
+    out = {}
+    for k, t in per.items():
+        if t["I"] and t["I_slice"]:
+            col = "gpu_ms" if all(num(r["gpu_ms"]) for r in t["I"] + t["I_slice"]) else "ms"
+            out[k] = {n: [num(r[col]) for r in t[n]] for n in ("I", "I_slice")}
+    return out
+
+
+def marches(d):
+    """The bound of issue 52 on one run: volume_raycast's march over the layered volume (Table
+    I) and over the slice-built volume of the same particles (I_slice) do the same work on the
+    same grid (tests/test_volume_raycast_builds.c: the same hits within a grid spacing), so
+    their medians must agree within the run's spread: the largest max / min of one cell's
+    timed frames of either march. (text, the cells outside it)."""
+    fr = march_frames(rows(d, "inacio2010_tables.csv"))
+    if not fr:
+        return "", []
+    dm = [num(r["gpu_ms_median"]) for r in rows(d, "demo_timings.csv")
+          if r["method"] == "volume_raycast" and r["variant"] == "" and r["stage"] == "march"]
+    demo_note = (" For scale: the demo's march (the layered build, %s, grid 256, every ray marched to the box's "
+                 "exit for the thickness) takes %.2f ms on the GL clock in this run; Table I's march stops at the "
+                 "surface, on fewer pixels and a coarser grid (run.sh: 512^2 and 128 in full mode)." % (
+                     demo_size(d), dm[0])) if dm and dm[0] else ""
+    spread = max(max(v) / min(v) for t in fr.values() for v in t.values() if min(v) > 0)
+    body, bad = [], []
+    for k in sorted(fr):
+        a, b = med(fr[k]["I"]), med(fr[k]["I_slice"])
+        q = b / a if a else float("inf")
+        ok = 1 / spread <= q <= spread
+        if not ok:
+            bad.append(k)
+        body.append((k[0], k[1], fmt(a, "%.3f"), fmt(b, "%.3f"), fmt(q, "%.2f"), "yes" if ok else "**no**"))
+    text = ("The march on both volumes (issue 52): the same march shader over the layered volume (Table I) and "
+            "over the slice-built volume of the same particles (`I_slice`), medians of the timed frames (ms, "
+            "the GL clock where every frame has it). The two do the same work (the same grid, the same hits: "
+            "tests/test_volume_raycast_builds.c), so they must agree within the run's spread, the largest "
+            "max / min of one cell's frames of either march: %.2f here.%s %s\n\n" % (
+                spread, demo_note, "Every cell agrees." if not bad else
+                "%d of %d cells do not (experiments/gpu/README.md, \"The march on both volumes\", says why)."
+                % (len(bad), len(fr))))
+    return text + table(("particles", "path", "march, layered", "march, slice-built", "slice / layered",
+                         "within the spread"), body, "inacio2010_marches"), bad
 
 
 def inacio_table1(c):
@@ -656,9 +709,20 @@ def about(d):
     return ABOUT_GPU % raster_evidence(d) if ("h200" in r or "h100" in r) else ""
 
 
+def demo_gl(rs):
+    """(method, variant) -> the sum of its stages' GL-clock medians in a demo_timings.csv."""
+    out = defaultdict(float)
+    for x in rs:
+        g = num(x["gpu_ms_median"])
+        if g is not None:
+            out[(x["method"], x["variant"])] += g
+    return out
+
+
 def repeat(d):
-    """A second run in DIR/repeat (another lease, another machine maybe): the ratio of its
-    GL-clock frame times to this run's, per cell, for the two render tables."""
+    """A second run in DIR/repeat (run.sh's step repeat: another call, another machine maybe):
+    the ratio of its GL-clock frame times to this run's, per cell, for the render tables it
+    repeats (xiao2017's at one size, xu2022's when a whole run was repeated) and the demo."""
     r = os.path.join(d, "repeat")
     if not os.path.isdir(r):
         return ""
@@ -670,6 +734,10 @@ def repeat(d):
         q = sorted(b[k][1] / a[k][1] for k in a if k in b and a[k][1] and b[k][1])
         if q:
             body.append((name, len(q), "%.2f" % statistics.median(q), "%.2f" % q[0], "%.2f" % q[-1]))
+    a, b = demo_gl(rows(d, "demo_timings.csv")), demo_gl(rows(r, "demo_timings.csv"))
+    q = sorted(b[k] / a[k] for k in a if k in b and a[k] and b[k])
+    if q:
+        body.append(("demo_timings.csv", len(q), "%.2f" % statistics.median(q), "%.2f" % q[0], "%.2f" % q[-1]))
     return ("## Repeatability\n\nThe same script run again (`repeat/`: %s, %s, %s), each cell's GL-clock frame "
             "time over this run's:\n\n" % (env.get("date", "?"), env.get("gl_renderer", "?").strip('"'),
                                              provenance(r, "env.csv"))
@@ -716,9 +784,22 @@ def stale(d, name, text, how):
     return None
 
 
+def bounds(d):
+    """--bounds: exit 1 when the run breaks a bound the next GPU run must meet (issue 52: the
+    two marches agree within the run's spread)."""
+    if not march_frames(rows(d, "inacio2010_tables.csv")):
+        print("report.py: %s: no march rows of inacio2010's Table I (the step did not run here): nothing to bound" % d)
+        return
+    bad = marches(d)[1]
+    if bad:
+        sys.exit("report.py: %s: the march over the slice-built volume and over the layered one differ beyond the "
+                 "run's spread in %d cell(s): %s" % (d, len(bad), ", ".join("%d %s" % k for k in bad)))
+    print("report.py: %s: the two marches agree within the run's spread" % d)
+
+
 def main():
     args = sys.argv[1:]
-    mode = args.pop(0) if args and args[0] in ("--check", "--tables") else None
+    mode = args.pop(0) if args and args[0] in ("--check", "--tables", "--bounds") else None
     d = (args or ["results/gpu"])[0]
     if not os.path.isfile(os.path.join(d, "env.csv")):
         sys.stderr.write("report.py: %s: no env.csv: not a folder of experiments/gpu/run.sh\n" % d)
@@ -728,6 +809,9 @@ def main():
         return
     if mode == "--tables":
         sys.stdout.write(tables_csv(d))
+        return
+    if mode == "--bounds":
+        bounds(d)
         return
     errs = [e for e in (stale(d, "README.md", report(d), "python3 experiments/gpu/report.py %s > %s/README.md" % (d, d)),
                         stale(d, "tables.csv", tables_csv(d),

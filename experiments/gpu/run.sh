@@ -13,6 +13,13 @@
 #                      on the GL against the exact CPU sum (experiments/tools/density_bench)
 #   demo               `fluidsurf compare` of the bundled dam break at 1024^2, and of the
 #                      sprite-splatting methods with splat=compute (demo_splat_*.csv)
+#   repeat             the xiao2017 cells at 1024^2 and the demo again, into DIR/repeat/,
+#                      for the run-to-run spread (report.py's repeatability section)
+#   check              experiments/gpu/check.sh into DIR/check/: the GL limits as a CSV,
+#                      every shader variant compiled by the driver
+# Every timed cell keeps one small image of what it timed in DIR/images/ (at most 256
+# pixels a side; render_bench's at the cell's smallest size, inacio_tables' last frame
+# of each table); the density grid step renders no image.
 # Every row holds the wall time between glFinish calls and the GL clock's time of the
 # stage (gpu_ms), GL_RENDERER and GL_VERSION. The large particle sets are generated
 # where the script runs (synthetic boxes, the simulator): nothing big is carried.
@@ -22,16 +29,17 @@
 # copy of the repository on a GPU node has no .git), else from this repository.
 #
 # Usage: experiments/gpu/run.sh [--quick] [-o DIR] [--bin DIR] [--steps LIST]
-#   --quick  the same steps at small sizes, for llvmpipe (the ctest gpu_quick; budget 170 s)
+#   --quick  the same steps at small sizes, for llvmpipe (the ctest gpu_quick; budget 300 s)
 #   -o DIR   output folder (default out/gpu, out/gpu-quick with --quick); it holds
 #            env.csv, status.csv and one CSV per step
 #   --bin    folder with fluidsurf, render_bench, inacio_tables, density_bench: a
 #            scripts/pack_lean.sh folder, or a build folder (default build-lean)
 #   --steps  the steps to run, comma-separated, of xiao2017_table1, xu2022_fig9,
-#            inacio2010_tables, iwasaki2006_density_grid, demo_compare (default all):
-#            with both splat paths the whole study may not fit one device call, so a
-#            first call runs xiao2017_table1 and a second the rest, each into its own DIR
-# FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 290, quick 170)
+#            inacio2010_tables, iwasaki2006_density_grid, demo_compare, repeat, check
+#            (default all): the whole study does not fit one device call, so a first
+#            call runs xiao2017_table1 and a second the rest, each into its own DIR
+#            (experiments/gpu/README.md; experiments/gpu/merge.sh joins the two)
+# FLUIDSURF_GL picks the context (default egl). BUDGET_S (default 290, quick 300)
 # caps the whole run: a cell that would start after the budget is spent is written
 # to status.csv as skipped, so a lease of about 15 minutes has room for a retry.
 # Each step but the last has a share of it (SHARE_* seconds), so one slow step cannot
@@ -40,7 +48,7 @@
 # (status.csv says which; the rows of the others are written all the same), 2 bad usage.
 set -uo pipefail
 usage() { echo "run.sh: $1 (usage: run.sh [--quick] [-o DIR] [--bin DIR] [--steps LIST])" >&2; exit 2; }
-QUICK=0 OUTDIR="" BINDIR="" STEPS=xiao2017_table1,xu2022_fig9,inacio2010_tables,iwasaki2006_density_grid,demo_compare
+QUICK=0 OUTDIR="" BINDIR="" STEPS=xiao2017_table1,xu2022_fig9,inacio2010_tables,iwasaki2006_density_grid,demo_compare,repeat,check
 ALL_STEPS=$STEPS
 while [ $# -gt 0 ]; do
   case $1 in
@@ -72,13 +80,14 @@ FS=$(tool fluidsurf) RB=$(tool render_bench) IT=$(tool inacio_tables) DB=$(tool 
 [ -n "$FS" ] && [ -n "$RB" ] && [ -n "$IT" ] && [ -n "$DB" ] || exit 2
 
 if [ $QUICK = 1 ]; then
-  BUDGET_S=${BUDGET_S:-170}
+  BUDGET_S=${BUDGET_S:-300}
   T1_SIDES="16 24" T1_SIZES="128,192" T1_RUNS=1
   F9_SIDES="16" F9_SIZE=96 F9_RUNS=1
-  IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=1 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
+  IN_COUNTS="1024" IN_SETTLE=1 IN_FRAMES=3 IN_SIZE=64 IN_GRID=32 IN_LIMIT=30
   DG_SCENE=experiments/scenes/dam_break_ply.json DG_RES="64" DG_RUNS=1 DG_ONE=64
-  DEMO_SIZE=128 DEMO_RUNS=1
+  DEMO_SIZE=128 DEMO_RUNS=1 RP_SIZE=192
   SHARE_F9=${SHARE_F9:-30} SHARE_IN=${SHARE_IN:-30} SHARE_DG=${SHARE_DG:-15} SHARE_DEMO=${SHARE_DEMO:-40}
+  SHARE_RP=${SHARE_RP:-40} SHARE_CK=${SHARE_CK:-90}
 else
   BUDGET_S=${BUDGET_S:-290}
   # cube sides whose cubes come nearest xiao2017's sets: 779,752 2,027,776 12,394,215 37,975,520 142,612,764
@@ -86,10 +95,11 @@ else
   F9_SIDES="46 67 100 144" F9_SIZE=1024 F9_RUNS=3
   IN_COUNTS="1024 2048 4096 8192 32768 131072" IN_SETTLE=2 IN_FRAMES=3 IN_SIZE=512 IN_GRID=128 IN_LIMIT=20
   DG_SCENE=experiments/scenes/box_200k.json DG_RES="128 256" DG_RUNS=3 DG_ONE=256
-  DEMO_SIZE=1024 DEMO_RUNS=3
+  DEMO_SIZE=1024 DEMO_RUNS=3 RP_SIZE=1024
   SHARE_F9=${SHARE_F9:-40} SHARE_IN=${SHARE_IN:-40} SHARE_DG=${SHARE_DG:-45} SHARE_DEMO=${SHARE_DEMO:-30}
+  SHARE_RP=${SHARE_RP:-70} SHARE_CK=${SHARE_CK:-60}
 fi
-mkdir -p "$OUTDIR"
+mkdir -p "$OUTDIR/images"
 if [ -f "$BINDIR/provenance" ]; then PROV=$(cat "$BINDIR/provenance")
 else source experiments/lib.sh; PROV=$(study_commit); fi
 TMP=$(mktemp -d)
@@ -125,6 +135,8 @@ cell() {
   echo "$step,$name,$(($(date +%s) - t0)),$rc,$note" >> "$OUTDIR/status.csv"
   printf '%-10s %-28s %4ss  exit %s %s\n' "$step" "$name" "$(($(date +%s) - t0))" "$rc" "$note"
 }
+# the environment of a timed cell's tool: keep a small image of what it timed, named PREFIX...
+shots() { echo "RENDER_BENCH_PNG=$OUTDIR/images/$1 RENDER_BENCH_PNG_SIZE=$2 RENDER_BENCH_PNG_MAX=256 INACIO_TABLES_PNG=$OUTDIR/images/$1 INACIO_TABLES_PNG_MAX=256"; }
 box_scene() { # box_scene SIDE: a synthetic lattice box of SIDE^3 particles (r = 0.025, jitter 0.1 r)
   local f=$TMP/box_$1.json
   printf '{"particles": {"synthetic": "box", "size": [%d, %d, %d], "jitter": 0.1, "seed": 1}, "radius": 0.025, "material": "water", "background": "checker"}\n' "$1" "$1" "$1" > "$f"
@@ -161,14 +173,16 @@ for a in off on; do variants+=("aniso_ssf.anisotropy=$a;aniso_ssf.filter=narrow;
 if want xu2022_fig9; then
   step_share "$SHARE_F9"
   for side in $F9_SIDES; do
-    cell xu2022_fig9 "box_${side}^3" 90 "$RB" "$(box_scene "$side")" "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
+    cell xu2022_fig9 "box_${side}^3" 90 env $(shots "xu2022_box_$side" "$F9_SIZE") "$RB" "$(box_scene "$side")" \
+      "box_$side" aniso_ssf "$F9_SIZE" "$F9_RUNS" "${variants[@]}"
   done
 fi
 # ---- inacio2010 Tables I and II: simulation and rendering, CPU path and GPU path ----
 if want inacio2010_tables; then
   step_share "$SHARE_IN"
   for n in $IN_COUNTS; do for path in cpu gpu; do
-    cell inacio2010_tables "${n}_$path" 60 "$IT" "$n" "$path" "$IN_SETTLE" "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
+    cell inacio2010_tables "${n}_$path" 60 env $(shots "inacio2010_${n}_$path" 0) "$IT" "$n" "$path" "$IN_SETTLE" \
+      "$IN_FRAMES" "$IN_SIZE" "$IN_GRID" "$IN_LIMIT"
   done; done
 fi
 # ---- iwasaki2006 section 4: the density grid, slice splatting against the exact CPU sum ----
@@ -192,14 +206,33 @@ if want demo_compare; then
     --repeat "$DEMO_RUNS" -q -o "$TMP/demo_splat"
 fi
 
+# ---- the repeat: the xiao2017 cells at one size and the demo again, for the run-to-run spread ----
+if want repeat; then # the demo first, the largest box last, so a spent share cuts only the biggest cells
+  step_share "$SHARE_RP"
+  cell repeat "dam_break_${DEMO_SIZE}" 90 "$FS" compare --no-cache experiments/scenes/dam_break_ply.json \
+    -W "$DEMO_SIZE" -H "$DEMO_SIZE" --repeat "$DEMO_RUNS" -q -o "$TMP/repeat_demo"
+  : > "$TMP/repeat.raw" # render_bench's rows only
+  for side in $T1_SIDES; do
+    cell repeat "xiao2017_box_${side}^3_$RP_SIZE" 60 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$RP_SIZE" \
+      "$T1_RUNS" "raycast_pca.splat=compute" "raycast_pca.splat=raster"
+  done
+  mv "$TMP/repeat.raw" "$TMP/repeat_xiao.raw"
+fi
+# ---- the node's check: GL limits, every shader variant compiled by the driver (check.sh) ----
+if want check; then
+  step_share "$SHARE_CK"
+  cell check gpu_check "$SHARE_CK" env FLUIDSURF_REQUIRE_GPU="${FLUIDSURF_REQUIRE_GPU:-0}" \
+    bash experiments/gpu/check.sh $([ $QUICK = 1 ] && echo --quick) --bin "$BINDIR" -o "$OUTDIR/check"
+fi
+
 # ---- xiao2017 Table 1: raycast_pca, particle count x image size, the sprite passes on the
 # compute splatter, then on the raster; last, largest set last, so a spent budget cuts only
 # the biggest cells ----
 if want xiao2017_table1; then
   STEP_END="" # the rest of the budget
   for side in $T1_SIDES; do
-    cell xiao2017_table1 "box_${side}^3" 200 "$RB" "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS" \
-      "raycast_pca.splat=compute" "raycast_pca.splat=raster"
+    cell xiao2017_table1 "box_${side}^3" 200 env $(shots "xiao2017_box_$side" "${T1_SIZES%%,*}") "$RB" \
+      "$(box_scene "$side")" "box_$side" raycast_pca "$T1_SIZES" "$T1_RUNS" "raycast_pca.splat=compute" "raycast_pca.splat=raster"
   done
 fi
 # ---- the CSVs, each with its header and the GL version on every row ----
@@ -220,6 +253,12 @@ demo_csvs() { # demo_csvs FOLDER PREFIX: FOLDER's timings.csv and metrics.csv as
     awk -v r="$glr" -v v="$glv" 'NR == 1 {print $0 ",gl_renderer,gl_version"; next} {print $0 "," r "," v}'; } > "$OUTDIR/$2_metrics.csv"
 }
 [ -f "$TMP/demo_splat/timings.csv" ] && demo_csvs "$TMP/demo_splat" demo_splat
+if [ -f "$TMP/repeat_xiao.raw" ] || [ -f "$TMP/repeat_demo/timings.csv" ]; then # repeat/: a run folder of its own
+  mkdir -p "$OUTDIR/repeat"
+  sed "s/^date,.*/date,$(date -u +%FT%TZ)/" "$OUTDIR/env.csv" > "$OUTDIR/repeat/env.csv"
+  [ -f "$TMP/repeat_xiao.raw" ] && { echo "# experiments/gpu/run.sh; $PROV"; echo "$RB_HEAD"; cat "$TMP/repeat_xiao.raw"; } > "$OUTDIR/repeat/xiao2017_table1.csv"
+  [ -f "$TMP/repeat_demo/timings.csv" ] && (OUTDIR=$OUTDIR/repeat && demo_csvs "$TMP/repeat_demo" demo)
+fi
 if [ -f "$TMP/demo/timings.csv" ]; then
   demo_csvs "$TMP/demo" demo
   mkdir -p "$OUTDIR/demo" && cp "$TMP"/demo/*.png "$OUTDIR/demo/" 2> /dev/null # to look at what the GPU drew
