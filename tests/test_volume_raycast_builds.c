@@ -9,7 +9,7 @@
  * The exact CPU grid is checked the same way, as the third witness. */
 #include "fs_error.h"
 #include "fs_test.h"
-#include "gl_context.h"
+#include "test_gl_context.h"
 #include "builtin_methods.h"
 #include "density_grid.h"
 #include "method.h"
@@ -105,9 +105,7 @@ static void check_builds(void)
 int main(void)
 {
     fs_gl_context ctx;
-    int have_gl = fs_gl_context_create(&ctx, fs_gl_context_default_kind(), 16, 16) == FS_OK;
-    CHECK(have_gl, "context: %s", fs_error_message());
-    if (have_gl) {
+    if (fs_test_gl_context(&ctx) == FS_OK) {
         fs_methods_register_builtin();
         check_builds();
         fs_gl_context_destroy(&ctx);
