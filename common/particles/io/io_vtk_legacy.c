@@ -122,24 +122,34 @@ static size_t type_size(const char *t)
     return 0;
 }
 
-/* One binary big-endian value of type t (size sz) at p. */
-static double binary_value(const unsigned char *p, const char *t, size_t sz)
+/* How a binary value of a type is decoded: decided once per array, not per value. */
+typedef enum { VTK_FLOAT, VTK_DOUBLE, VTK_UNSIGNED, VTK_SIGNED } vtk_kind;
+
+static vtk_kind binary_kind(const char *t)
+{
+    if (strcasecmp(t, "float") == 0) return VTK_FLOAT;
+    if (strcasecmp(t, "double") == 0) return VTK_DOUBLE;
+    if (strncasecmp(t, "unsigned", 8) == 0 || strncasecmp(t, "vtktypeuint", 11) == 0) return VTK_UNSIGNED;
+    return VTK_SIGNED;
+}
+
+/* One binary big-endian value of kind `kind` (size sz) at p. */
+static double binary_value(const unsigned char *p, vtk_kind kind, size_t sz)
 {
     uint64_t u = 0;
     for (size_t k = 0; k < sz; k++) u = u << 8 | p[k];
-    int is_unsigned = strncasecmp(t, "unsigned", 8) == 0 || strncasecmp(t, "vtktypeuint", 11) == 0;
-    if (strcasecmp(t, "float") == 0) {
+    if (kind == VTK_FLOAT) {
         uint32_t w = (uint32_t)u;
         float f;
         memcpy(&f, &w, 4);
         return f;
     }
-    if (strcasecmp(t, "double") == 0) {
+    if (kind == VTK_DOUBLE) {
         double d;
         memcpy(&d, &u, 8);
         return d;
     }
-    if (is_unsigned) return (double)u;
+    if (kind == VTK_UNSIGNED) return (double)u;
     int shift = (int)(64 - 8 * sz); /* sign-extend */
     return (double)((int64_t)(u << shift) >> shift);
 }
@@ -162,7 +172,8 @@ static int values(vtk_in *in, long long cnt, const char *t, const char *what, do
         if (!v) return fs_fail(FS_ERR_RUNTIME, "%s: out of memory for %lld VTK values", in->path, cnt);
     }
     if (in->binary) {
-        for (long long i = 0; v && i < cnt; i++) v[i] = binary_value(in->b + in->pos + (size_t)i * sz, t, sz);
+        vtk_kind kind = binary_kind(t);
+        for (long long i = 0; v && i < cnt; i++) v[i] = binary_value(in->b + in->pos + (size_t)i * sz, kind, sz);
         in->pos += (size_t)cnt * sz;
     } else {
         char tok[64], *end;
