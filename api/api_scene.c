@@ -131,14 +131,14 @@ int fluidsurf_scene_set_camera(fluidsurf_scene *s, const fluidsurf_camera *c)
             return fs_fail(FS_ERR_INPUT, "camera: eye, target and up must be finite");
         d2 += (c->target[i] - c->eye[i]) * (c->target[i] - c->eye[i]), u2 += c->up[i] * c->up[i];
     }
-    if (!(d2 > 0) || !(u2 > 0)) return fs_fail(FS_ERR_INPUT, "camera: eye equals target, or up is zero");
+    if (!(d2 > 0)) return fs_fail(FS_ERR_INPUT, "camera: eye equals target");
     if (!(c->fov_deg > 0 && c->fov_deg < 180))
         return fs_fail(FS_ERR_INPUT, "camera: fov %g: expected (0, 180) degrees", c->fov_deg);
-    fs_camera *k = &s->s.camera;
+    fs_camera k = s->s.camera;
     for (int i = 0; i < 3; i++)
-        k->eye[i] = (float)c->eye[i], k->target[i] = (float)c->target[i], k->up[i] = (float)c->up[i];
-    k->fovy_deg = (float)c->fov_deg, k->width = c->width, k->height = c->height;
-    s->s.has_camera = 1;
+        k.eye[i] = (float)c->eye[i], k.target[i] = (float)c->target[i], k.up[i] = (float)c->up[i];
+    k.fovy_deg = (float)c->fov_deg, k.width = c->width, k.height = c->height;
+    fs_scene_place_camera(&s->s, &k, u2 > 0); /* up 0: the scene's up axis, as --camera without up= */
     return FLUIDSURF_OK;
 }
 

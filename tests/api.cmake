@@ -1,7 +1,9 @@
 # Area "api": the C API (include/fluidsurf/fluidsurf.h) as a program links it,
 # libfluidsurf.so from this build: fluidsurf_mesh_build (refused without OpenVDB)
 # and the library's messages; the version-6 calls (test_api_io: metrics as diff,
-# an EXR's provenance and camera, writers, info); that a dlclose leaves it (and OpenMP) loaded.
+# an EXR's provenance and camera, writers, info); the version-8 calls (test_api_scene:
+# --camera's text, a frame pattern as the source, render --save-scene); that a dlclose
+# leaves it (and OpenMP) loaded.
 # The installed library: tests/python.cmake.
 if(TARGET fluidsurf_lib)
   fs_add_test(test_api fluidsurf_lib test_api.c)

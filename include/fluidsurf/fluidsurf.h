@@ -43,7 +43,12 @@
  * a mesh's provenance; fluidsurf_particles_estimate_radius and
  * fluidsurf_particles_stats (what `fluidsurf info` reports).
  * Version 7 added fluidsurf_particles_array_count and fluidsurf_particles_array
- * (a particle file's other point arrays, which `fluidsurf info` lists). */
+ * (a particle file's other point arrays, which `fluidsurf info` lists).
+ * Version 8 added the command line's input and camera options:
+ * fluidsurf_scene_set_source (a particle file, or a frame pattern with
+ * FIRST:LAST:STEP), fluidsurf_scene_set_camera_text (--camera's text) and
+ * fluidsurf_scene_save (render --save-scene); fluidsurf_scene_set_camera takes
+ * up = 0 for the scene's up axis. */
 #ifndef FLUIDSURF_H
 #define FLUIDSURF_H
 #include <stddef.h>
@@ -56,7 +61,7 @@ extern "C" {
 /* The text between the cffi markers is also the Python module's declaration
  * list (python/fluidsurf/__init__.py): plain C only, no preprocessor. */
 /* cffi:begin */
-enum { FLUIDSURF_API_VERSION = 7 };
+enum { FLUIDSURF_API_VERSION = 8 };
 enum { FLUIDSURF_OK = 0, FLUIDSURF_ERR_RUNTIME = 1, FLUIDSURF_ERR_INPUT = 2 };
 
 int fluidsurf_api_version(void);
@@ -147,8 +152,14 @@ int fluidsurf_scene_set_up(fluidsurf_scene *s, const char *up);
 int fluidsurf_scene_set_radius(fluidsurf_scene *s, double radius);
 /* The scene's camera; *placed is 0 while it is framed on the particles at render time. */
 int fluidsurf_scene_get_camera(const fluidsurf_scene *s, fluidsurf_camera *c, int *placed);
-/* Places the camera (no framing any more). */
+/* Places the camera (no framing any more). An up of 0, 0, 0 (since version 8)
+ * follows the scene's up axis, as a scene file's camera without "up" does. */
 int fluidsurf_scene_set_camera(fluidsurf_scene *s, const fluidsurf_camera *c);
+/* Since version 8: places the camera from the command line's --camera text,
+ * "eye=X,Y,Z;target=X,Y,Z[;up=x|y|z|X,Y,Z][;fov=DEG][;size=WxH]"; keys left out
+ * keep the scene's camera's values, and without up= its up follows the scene's
+ * up axis. FLUIDSURF_ERR_INPUT naming the problem (nothing changed) otherwise. */
+int fluidsurf_scene_set_camera_text(fluidsurf_scene *s, const char *text);
 /* The image size; the camera stays framed or placed. */
 int fluidsurf_scene_set_size(fluidsurf_scene *s, int width, int height);
 /* A method parameter, "method.param=value", as --set on the command line; parsed and checked
@@ -157,6 +168,18 @@ int fluidsurf_scene_set(fluidsurf_scene *s, const char *setting);
 /* A scene with a particle source: its frames are first..last (0..0 for one file). */
 int fluidsurf_scene_frames(const fluidsurf_scene *s, int *first, int *last);
 int fluidsurf_scene_read_frame(const fluidsurf_scene *s, int frame, fluidsurf_particles **out);
+/* Since version 8: the scene's particle source, as the command line's input: a
+ * particle file (first = last = step = 0), or a frame pattern ("f_%04d.vtk" or
+ * "f_{}.vtk") read at frames first, first + step, ... up to last (--frames
+ * FIRST:LAST:STEP). fluidsurf_compare with frames NULL then compares those frames. */
+int fluidsurf_scene_set_source(fluidsurf_scene *s, const char *path, int first, int last, int step);
+/* Since version 8: writes the scene as a scene file (path ending .json), as
+ * `render --save-scene` does: settled on p as a render of p settles it (r, the
+ * up axis and the framed camera), so that loading the file and rendering p with
+ * it gives the same image. Numbers exact, paths absolute; the scene needs a
+ * particle source (a scene file's, or fluidsurf_scene_set_source), whose frames
+ * the file names (p is not written). FLUIDSURF_ERR_INPUT without one. */
+int fluidsurf_scene_save(const fluidsurf_scene *s, const fluidsurf_particles *p, const char *path);
 
 /* ---- methods ------------------------------------------------------------ */
 typedef struct fluidsurf_param {

@@ -16,6 +16,7 @@ load another build of the library."""
 import copy
 import functools
 import os
+import re
 import warnings
 
 import numpy as np
@@ -118,26 +119,63 @@ def _warn_estimated(prov):
 
 
 def _view(s, width, height, camera):
-    """The image size and, when given, the camera of scene s."""
+    """The image size and, when given, the camera of scene s: a dict, or the command
+    line's --camera text ("eye=X,Y,Z;target=X,Y,Z[;up=..][;fov=..][;size=WxH]")."""
     _check(lib.fluidsurf_scene_set_size(s, _arrays.size(width, "width"), _arrays.size(height, "height")))
-    if camera is not None:
+    if isinstance(camera, str):
+        _check(lib.fluidsurf_scene_set_camera_text(s, camera.encode()))
+    elif camera is not None:
         _check(lib.fluidsurf_scene_set_camera(s, _camera(camera, width, height)))
     return s
 
 
 def _camera(camera, width, height):
     if not isinstance(camera, dict) or "eye" not in camera or "target" not in camera:
-        raise ValueError("camera: expected a dict with 'eye' and 'target' (and optionally 'up', 'fov')")
+        raise ValueError("camera: expected a dict with 'eye' and 'target' (and optionally 'up', 'fov'), or a text "
+                         "'eye=X,Y,Z;target=X,Y,Z[;up=..][;fov=..]'")
     unknown = set(camera) - {"eye", "target", "up", "fov"}
     if unknown:
         raise ValueError(f"camera: unknown keys {sorted(unknown)}")
     c = ffi.new("fluidsurf_camera *")
     c.eye = _arrays.vector3(camera["eye"], "camera['eye']")
     c.target = _arrays.vector3(camera["target"], "camera['target']")
-    c.up = _arrays.vector3(camera.get("up", (0, 1, 0)), "camera['up']")
+    # without 'up' (0, 0, 0): the scene's up axis, as --camera without up=
+    c.up = _arrays.vector3(camera.get("up", (0, 0, 0)), "camera['up']")
     c.fov_deg = _arrays.positive(camera.get("fov", 40), "camera['fov']")
     c.width, c.height = width, height
     return c
+
+
+_PATTERN = re.compile(r"\{\}|%[0-9]*d")
+
+
+def _source(s, path, frames):
+    """Scene s reads path, as the command line's input: a particle file, or a frame
+    pattern ('f_{}.vtk', 'f_%04d.vtk') with frames 'FIRST:LAST[:STEP]' or a number."""
+    text = os.fsdecode(os.fspath(path))
+    if not _PATTERN.search(text):
+        if frames is not None:
+            raise ValueError(f"frames: {text} is not a frame pattern ({{}} or %04d)")
+        existing_path(text, "positions")  # FileNotFoundError naming it
+        span = (0, 0, 0)
+    elif isinstance(frames, int) and not isinstance(frames, bool):
+        span = (frames, frames, 1)
+    else:
+        m = re.fullmatch(r"(\d+):(\d+)(?::(\d+))?", frames) if isinstance(frames, str) else None
+        if not m:
+            raise ValueError(f"frames={frames!r}: {text} is a frame pattern: give 'FIRST:LAST[:STEP]' or a frame number")
+        span = (int(m[1]), int(m[2]), int(m[3] or 1))
+    _check(lib.fluidsurf_scene_set_source(s, os.fsencode(text), *span))
+    return span[0]
+
+
+class _Frame:
+    """A frame the library read from the scene's source (fluidsurf_scene_read_frame)."""
+
+    def __init__(self, s, frame):
+        out = ffi.new("fluidsurf_particles **")
+        _check(lib.fluidsurf_scene_read_frame(s, frame, out))
+        self.handle = ffi.gc(out[0], lib.fluidsurf_particles_free)
 
 
 # ---- methods and their parameters ---------------------------------------------
@@ -284,16 +322,22 @@ def _render_handle(scene, particles, method, settings):
 
 
 def render(positions, radius=None, method="raycast_pca", width=512, height=512, camera=None, params=None,
-           scene=None, colors=None, up=None, field=None):
+           scene=None, colors=None, up=None, field=None, frame=None, save_scene=None):
     """Renders positions (N x 3, float32 or float64, any order) with one method.
+    positions may also be a particle file's path, or a frame pattern ('f_{}.vtk',
+    'f_%04d.vtk') with frame=N, read by the library as `fluidsurf render` reads it;
+    save_scene: a .json path (positions a path) to write the scene as rendered, as
+    `render --save-scene` does: rendering that file gives the same image.
 
     radius: r (None: the scene's, else the r the spacing implies, as the command
     line estimates, with a UserWarning saying so; provenance['r_source'] tells);
     up: 'auto' (the default without scene=: the particles decide, as the command
     line's --up auto; provenance['up'] says which), 'x', 'y' or 'z';
     field: {'volume_scale', 'iso', 'support', 'kernel'} over the scene's;
-    camera: {'eye', 'target', 'up', 'fov'} (None: frames the particles as the
-    command line does); params: {parameter: value} (or {'method.parameter':
+    camera: {'eye', 'target', 'up', 'fov'} (without 'up' the scene's up axis),
+    or --camera's text 'eye=X,Y,Z;target=X,Y,Z[;up=..][;fov=..][;size=WxH]', or
+    read_gbuffer(path)['camera'] (None: frames the particles as the command line
+    does); params: {parameter: value} (or {'method.parameter':
     value}) of the method, values of the types methods() gives (an enum's name,
     True/False); scene: a scene file whose field, light and settings to use;
     colors: N x 3 linear RGB. A missing file raises FileNotFoundError; an unknown
@@ -305,9 +349,17 @@ def render(positions, radius=None, method="raycast_pca", width=512, height=512, 
     'width', 'height' and 'r_source' (provenance['fluidsurf:r_source'])."""
     method = _method(method, "method")
     settings = _settings(method, params)
-    p = _Particles(positions, colors)
-    s = _view(_scene(scene, radius, up, field), width, height, camera)
+    s = _scene(scene, radius, up, field)
+    is_path = isinstance(positions, (str, bytes, os.PathLike))
+    if frame is not None and (not isinstance(frame, int) or isinstance(frame, bool)):
+        raise ValueError(f"frame={frame!r}: expected one frame number")
+    if save_scene is not None and not is_path:
+        raise ValueError("save_scene: give positions as a particle file or a frame pattern (the scene names it)")
+    p = _Frame(s, _source(s, positions, frame)) if is_path else _Particles(positions, colors)
+    s = _view(s, width, height, camera)
     image = _image_dict(_render_handle(s, p, method, settings))
+    if save_scene is not None:
+        _check(lib.fluidsurf_scene_save(s, p.handle, os.fsencode(os.fspath(save_scene))))
     _warn_estimated(image["provenance"])
     return image
 
@@ -360,13 +412,15 @@ def _sweep_sets(sweep, names):
 
 def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, height=None, camera=None,
             params=None, reference="reference", scene=None, colors=None, up=None, field=None, sweep=None,
-            repeat=3, counters=False, tables=False, out=None, force=False):
+            repeat=3, counters=False, tables=False, out=None, force=False, frames=None):
     """Each method variant against the reference on a particle set or a sequence,
     through the engine of `fluidsurf compare` (common/study, fluidsurf_compare):
     the same metrics, the same timing protocol (a warm-up, then `repeat` timed
     renders, their median as frame_ms), the same tables.
-    positions: an N x 3 array, a list of them (a sequence), or None with scene=
-    (the scene file's own particle source, as `fluidsurf compare s.json`).
+    positions: an N x 3 array, a list of them (a sequence), a particle file's
+    path, a frame pattern ('f_{}.vtk', 'f_%04d.vtk') with frames='FIRST:LAST[:STEP]'
+    (read frame by frame, as `fluidsurf compare PATTERN --frames`), or None with
+    scene= (the scene file's own particle source, as `fluidsurf compare s.json`).
     radius, up, field, scene as render(); width and height default to 512 (a
     scene file's own size with scene=). params: {method: {parameter: value}} or
     {'method.parameter': value}; sweep: {'method.parameter': [v1, v2, ...]}, as
@@ -392,24 +446,30 @@ def compare(positions=None, radius=None, methods=("raycast_pca",), width=None, h
     names = list(dict.fromkeys([*methods, "reference"]))
     settings = _study_settings(params, names)
     sets = [f"{m}.{t}" for m, texts in settings.items() for t in texts] + _sweep_sets(sweep, names)
-    frames = _frames(positions, colors)
-    if not frames and scene is None:
-        raise ValueError("positions: give particles, or scene= a scene file with its own particle source")
     s = _scene(scene, radius, up, field)
+    own_source = scene is not None
+    if isinstance(positions, (str, bytes, os.PathLike)):
+        _source(s, positions, frames)
+        positions, own_source = None, True
+    elif frames is not None:
+        raise ValueError("frames: give positions as a frame pattern ('f_{}.vtk')")
+    given = _frames(positions, colors)
+    if not given and not own_source:
+        raise ValueError("positions: give particles, or scene= a scene file with its own particle source")
     if width is not None or height is not None or scene is None:
         _view(s, width or 512, height or 512, camera)
     elif camera is not None:
         raise ValueError("camera: give width and height with it")
     c_sets, nsets, _keep = _c_settings(sets)
     c_refs, nrefs, _keep_refs = _c_settings(refs)
-    handles = ffi.new("fluidsurf_particles *[]", [f.handle for f in frames]) if frames else ffi.NULL
+    handles = ffi.new("fluidsurf_particles *[]", [f.handle for f in given]) if given else ffi.NULL
     flags = (lib.FLUIDSURF_STUDY_COUNTERS if counters else 0) | (lib.FLUIDSURF_STUDY_FORCE if force else 0)
     made = ffi.new("fluidsurf_study **")
     if out is None:
-        _check(lib.fluidsurf_compare(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs, nrefs,
+        _check(lib.fluidsurf_compare(s, handles, len(given), ",".join(methods).encode(), c_sets, nsets, c_refs, nrefs,
                                      int(repeat), flags, made))
     else:
-        _check(lib.fluidsurf_compare_to_dir(s, handles, len(frames), ",".join(methods).encode(), c_sets, nsets, c_refs,
+        _check(lib.fluidsurf_compare_to_dir(s, handles, len(given), ",".join(methods).encode(), c_sets, nsets, c_refs,
                                             nrefs, int(repeat), flags, os.fspath(out).encode(), made))
     study = ffi.gc(made[0], lib.fluidsurf_study_free)
     texts = {}

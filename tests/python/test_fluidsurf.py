@@ -583,3 +583,78 @@ def test_metrics_leave_out_what_solids_hide(tmp_path):
     rows = rows.to_dict("records") if hasattr(rows, "to_dict") else rows
     assert rows[0]["n_both"] == masked["n_both"]
     assert rows[0]["normal_mean_deg"] == pytest.approx(masked["normal_mean_deg"], rel=1e-5)
+
+
+# ---- the command line's camera and frame options (API version 8, issue 54) ----
+# camera= as --camera's text, a dict without 'up' (the scene's up axis) or
+# read_gbuffer's camera (--camera-from: the same image); a particle file or a frame
+# pattern as positions with frame= and frames= (render and compare); save_scene=
+# (render --save-scene), a scene file the command line renders into the same image.
+# r is estimated from the spacing on both sides (the command line's and the module's): the same r
+estimated_r = pytest.mark.filterwarnings("ignore:no radius given")
+CUBE = os.path.join(SRC, "experiments/data/splashsurf/cube_2366_particles.vtk")
+COLUMN = os.path.join(SRC, "experiments/data/splashsurf/hilbert2_7954_particles.vtk")  # stands on z = 0: up z
+
+
+def run_cli(*args):
+    subprocess.run([BIN, *map(str, args), "-q"], check=True)
+
+
+def same_depth(a, b):
+    np.testing.assert_array_equal(a["depth"], b["depth"])
+    np.testing.assert_array_equal(a["coverage"], b["coverage"])
+
+
+@estimated_r
+def test_camera_from_a_cli_exr_renders_the_same_image(tmp_path):
+    run_cli("render", COLUMN, "--method", "reference", "-W", 24, "-H", 18, "-o", tmp_path / "a.exr")
+    a = fluidsurf.read_gbuffer(tmp_path / "a.exr")
+    assert a["camera"]["up"] == [0, 0, 1]  # the framed camera stands on the floor's axis
+    b = fluidsurf.render(COLUMN, method="reference", width=24, height=18, camera=a["camera"])
+    same_depth(a, b)
+    assert b["camera"] == a["camera"]
+
+
+@estimated_r
+def test_camera_text_and_dict_without_up_follow_the_scene_up(tmp_path):
+    # the module requires the library's version of its header, 8 or later for these calls
+    assert fluidsurf.lib.fluidsurf_api_version() >= fluidsurf.lib.FLUIDSURF_API_VERSION >= 8
+    text = fluidsurf.render(COLUMN, method="reference", width=16, height=16, camera="eye=3,2,1;target=0,0,0.5")
+    assert text["camera"]["up"] == [0, 0, 1]
+    plain = fluidsurf.render(COLUMN, method="reference", width=16, height=16,
+                             camera={"eye": (3, 2, 1), "target": (0, 0, 0.5)})
+    assert plain["camera"]["up"] == [0, 0, 1]
+    same_depth(text, plain)
+    given = fluidsurf.render(COLUMN, method="reference", camera="eye=3,2,1;target=0,0,0.5;up=x;size=20x10")
+    assert given["camera"]["up"] == [1, 0, 0] and given["depth"].shape == (10, 20)
+    with pytest.raises(ValueError, match="target"):
+        fluidsurf.render(COLUMN, method="reference", width=16, height=16, camera="eye=1,2,3")
+
+
+@estimated_r
+def test_frame_patterns_in_render_and_compare(tmp_path):
+    for f in (1, 2, 3):
+        os.symlink(CUBE, tmp_path / f"f_{f}.vtk")
+    pattern = str(tmp_path / "f_{}.vtk")
+    one = fluidsurf.render(pattern, frame=2, method="reference", width=16, height=16)
+    assert one["coverage"].sum() > 0
+    same_depth(one, fluidsurf.render(CUBE, method="reference", width=16, height=16))
+    rows = fluidsurf.compare(pattern, frames="1:3:2", methods=["spheres"], width=16, height=16, repeat=1)
+    frames = sorted({int(r["frame"]) for r in (rows.to_dict("records") if hasattr(rows, "to_dict") else rows)})
+    assert frames == [1, 3]
+    with pytest.raises(ValueError, match="frame pattern"):
+        fluidsurf.render(pattern, method="reference", width=16, height=16)
+    with pytest.raises(ValueError, match="not a frame pattern"):
+        fluidsurf.compare(CUBE, frames="1:2", methods=["spheres"], width=16, height=16)
+    with pytest.raises(ValueError, match="3..1|first <= last"):
+        fluidsurf.compare(pattern, frames="3:1", methods=["spheres"], width=16, height=16)
+
+
+@estimated_r
+def test_save_scene_renders_the_same_image_on_the_command_line(tmp_path):
+    a = fluidsurf.render(COLUMN, method="reference", width=24, height=18, save_scene=tmp_path / "s.json")
+    run_cli("render", tmp_path / "s.json", "--method", "reference", "-o", tmp_path / "b.exr")
+    same_depth(a, fluidsurf.read_gbuffer(tmp_path / "b.exr"))
+    with pytest.raises(ValueError, match="save_scene"):
+        fluidsurf.render(np.zeros((10, 3)), 0.025, method="reference", save_scene=tmp_path / "t.json")
+    assert not (tmp_path / "t.json").exists()
