@@ -50,10 +50,10 @@ int cmd_convert(int argc, char **argv)
     rc = scene ? read_scene_frame(in, &p) : fs_particles_read(&p, in, from);
     if (rc) return cli_error(rc);
     const char *fmt = to ? to : fs_format_from_path(out);
-    if (!rc && p.narrays && fmt && !strcmp(fmt, "vdb"))
+    rc = fs_particles_write(&p, out, to);
+    if (!rc && p.narrays && fmt && !strcmp(fmt, "vdb")) /* after the write: a refused .vdb drops nothing */
         fs_note("%s: .vdb keeps no point arrays: %d of %s not written (%s%s)", out, p.narrays, in, p.arrays[0].name,
                 p.narrays > 1 ? ", ..." : "");
-    rc = fs_particles_write(&p, out, to);
     fs_particles_free(&p);
     return rc ? cli_error(rc) : 0;
 }
