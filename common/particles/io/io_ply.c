@@ -239,17 +239,22 @@ static fs_array_type array_type_of(int t)
 }
 
 /* Every scalar property of v not in used[] (a property index or -1) as a point
- * array of p; arr[k] gets property k's array, or NULL. */
+ * array of p; arr[k] gets property k's array, or NULL. The pointers are taken once
+ * every array is added: each add may move p->arrays. */
 static int add_others(const ply_elem *v, const int *used, int nused, fs_particles *p, fs_point_array **arr)
 {
+    int index[MAX_PROPS];
     for (int k = 0; k < v->nprops; k++) {
         int taken = v->props[k].count_type != T_NONE;
         for (int u = 0; u < nused; u++) taken |= used[u] == k;
-        arr[k] = NULL;
+        index[k] = -1;
         if (taken || p->narrays == FS_MAX_POINT_ARRAYS) continue;
-        int rc = fs_particles_add_array(p, v->props[k].name, 1, array_type_of(v->props[k].type), &arr[k]);
+        fs_point_array *a;
+        int rc = fs_particles_add_array(p, v->props[k].name, 1, array_type_of(v->props[k].type), &a);
         if (rc) return rc;
+        index[k] = p->narrays - 1;
     }
+    for (int k = 0; k < v->nprops; k++) arr[k] = index[k] >= 0 ? &p->arrays[index[k]] : NULL;
     return FS_OK;
 }
 
