@@ -8,6 +8,7 @@
  * metrics.csv is the table returned; a used folder is refused unless forced.
  * (tests/python/test_fluidsurf.py holds the folder against the command line's.) */
 #include "fluidsurf/fluidsurf.h"
+#include "api_slab.h"
 #include "fs_test.h"
 #include <math.h>
 #include <stdio.h>
@@ -21,11 +22,7 @@
 /* A slab of particles on a lattice of spacing 2r, shifted by dx (a moving frame). */
 static size_t slab(float *x, float *y, float *z, float dx)
 {
-    size_t n = 0;
-    for (int i = 0; i < 10; i++)
-        for (int j = 0; j < 4; j++)
-            for (int k = 0; k < 10; k++) x[n] = 2 * R * i + dx, y[n] = 2 * R * j, z[n] = 2 * R * k, n++;
-    return n;
+    return api_slab(x, y, z, 10, 4, 10, R, dx);
 }
 
 /* Rows of a CSV table (the provenance line and the header left out). */

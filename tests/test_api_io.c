@@ -4,6 +4,7 @@
  * their provenance, and `fluidsurf info`'s numbers of a particle set; version 7's
  * point arrays of a file read. */
 #include "fluidsurf/fluidsurf.h"
+#include "api_slab.h"
 #include "fs_test.h"
 #include <stdint.h>
 #include <stdio.h>
@@ -16,11 +17,7 @@
 /* A slab of particles on a lattice of spacing 2r: n of them into x, y, z. */
 static size_t slab(float *x, float *y, float *z)
 {
-    size_t n = 0;
-    for (int i = 0; i < 10; i++)
-        for (int j = 0; j < 4; j++)
-            for (int k = 0; k < 8; k++) x[n] = 2 * R * i, y[n] = 2 * R * j, z[n] = 2 * R * k, n++;
-    return n;
+    return api_slab(x, y, z, 10, 4, 8, R, 0);
 }
 
 /* A render of p with r radius (0: estimated) and the up axis up, w x 32 pixels, through

@@ -7,6 +7,7 @@
  * source, compared frame by frame; fluidsurf_scene_save writes a scene that
  * renders the same image and saves back to the same bytes. */
 #include "fluidsurf/fluidsurf.h"
+#include "api_slab.h"
 #include "fs_test.h"
 #include <math.h>
 #include <stdio.h>
@@ -18,11 +19,7 @@
 
 static size_t slab(float *x, float *y, float *z)
 {
-    size_t n = 0;
-    for (int i = 0; i < 8; i++)
-        for (int j = 0; j < 3; j++)
-            for (int k = 0; k < 8; k++) x[n] = 2 * R * i, y[n] = 2 * R * j, z[n] = 2 * R * k, n++;
-    return n;
+    return api_slab(x, y, z, 8, 3, 8, R, 0);
 }
 
 /* Covered pixels of a render of method with its settings. */
