@@ -20,10 +20,7 @@
 #define R 0.025f
 
 /* A slab of particles on a lattice of spacing 2r, shifted by dx (a moving frame). */
-static size_t slab(float *x, float *y, float *z, float dx)
-{
-    return api_slab(x, y, z, 10, 4, 10, R, dx);
-}
+static size_t slab(float *x, float *y, float *z, float dx) { return api_slab(x, y, z, 10, 4, 10, R, dx); }
 
 /* Rows of a CSV table (the provenance line and the header left out). */
 static int rows(const char *csv)

@@ -15,10 +15,7 @@
 #define OUT FS_TEST_OUT "/test_api_io"
 
 /* A slab of particles on a lattice of spacing 2r: n of them into x, y, z. */
-static size_t slab(float *x, float *y, float *z)
-{
-    return api_slab(x, y, z, 10, 4, 8, R, 0);
-}
+static size_t slab(float *x, float *y, float *z) { return api_slab(x, y, z, 10, 4, 8, R, 0); }
 
 /* A render of p with r radius (0: estimated) and the up axis up, w x 32 pixels, through
  * cam (NULL: framed); NULL on failure. */

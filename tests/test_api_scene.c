@@ -17,10 +17,7 @@
 
 #define R 0.025f
 
-static size_t slab(float *x, float *y, float *z)
-{
-    return api_slab(x, y, z, 8, 3, 8, R, 0);
-}
+static size_t slab(float *x, float *y, float *z) { return api_slab(x, y, z, 8, 3, 8, R, 0); }
 
 /* Covered pixels of a render of method with its settings. */
 static long covered(const fluidsurf_scene *s, const fluidsurf_particles *p, const char *method, const char *set)
